@@ -1,0 +1,2 @@
+#![no_std]
+//! IEC 61131-3 runtime.
