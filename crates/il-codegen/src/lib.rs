@@ -6,3 +6,5 @@
 pub mod ast;
 pub mod diag;
 pub mod syntax;
+pub mod emit;
+pub mod sema;
