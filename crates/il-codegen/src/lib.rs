@@ -4,5 +4,8 @@
 //! result, flow), `emit` (Rust tokens). Every stage collects [`diag::Diagnostic`]s.
 
 pub mod ast;
+pub mod check;
 pub mod diag;
 pub mod syntax;
+
+pub use check::check_source;
