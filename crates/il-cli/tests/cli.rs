@@ -197,7 +197,7 @@ fn json_is_one_object_per_line() {
     let out = stdout(&o);
     assert!(out.ends_with('\n'));
     let lines: Vec<&str> = out.lines().collect();
-    assert!(lines.len() >= 2 && lines.len() % 2 == 0, "{out}");
+    assert!(lines.len() >= 2 && lines.len().is_multiple_of(2), "{out}");
     for line in lines {
         let v = json::parse(line);
         assert_eq!(json::get(&v, "file"), &json::J::Str(f.clone()));
