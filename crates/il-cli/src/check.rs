@@ -121,18 +121,15 @@ pub fn run(
             }
         }
     }
-    if format == Format::Human {
-        if let Some(s) = summary(&totals) {
-            let _ = writeln!(
-                err,
-                "{}",
-                if totals.errors + totals.unreadable > 0 {
-                    error_line(color, &s)
-                } else {
-                    warning_line(color, &s)
-                }
-            );
-        }
+    if format == Format::Human
+        && let Some(s) = summary(&totals)
+    {
+        let line = if totals.errors + totals.unreadable > 0 {
+            error_line(color, &s)
+        } else {
+            warning_line(color, &s)
+        };
+        let _ = writeln!(err, "{line}");
     }
     let _ = out.flush();
     let _ = err.flush();
