@@ -1,1 +1,60 @@
-fn main() {}
+//! `ilc`: the command-line front end of the IL compiler.
+
+mod check;
+mod cli;
+
+use std::io;
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    // Usage errors exit with 2 (clap's own exit), --help and --version with 0.
+    let matches = cli::command().get_matches();
+    match matches.subcommand() {
+        Some(("check", m)) => {
+            let files: Vec<String> = m
+                .get_many::<String>("files")
+                .into_iter()
+                .flatten()
+                .cloned()
+                .collect();
+            let format = match m.get_one::<String>("message-format").map(String::as_str) {
+                Some("json") => check::Format::Json,
+                _ => check::Format::Human,
+            };
+            let color = format == check::Format::Human
+                && check::use_color(m.get_one::<String>("color").map_or("auto", String::as_str));
+            let totals = check::run(
+                &files,
+                format,
+                color,
+                &mut io::stdout().lock(),
+                &mut io::stderr().lock(),
+            );
+            if totals.errors + totals.unreadable > 0 {
+                ExitCode::from(1)
+            } else {
+                ExitCode::SUCCESS
+            }
+        }
+        Some(("explain", m)) => {
+            let code = m.get_one::<String>("code").map_or("", String::as_str);
+            match il_codegen::diag::codes::lookup(code) {
+                Some(info) => {
+                    println!(
+                        "{}: {}\n\n{}",
+                        info.code,
+                        info.title,
+                        info.explanation.trim_end()
+                    );
+                    ExitCode::SUCCESS
+                }
+                None => {
+                    eprintln!("error: no diagnostic code `{code}` (codes look like IL0003)");
+                    ExitCode::from(1)
+                }
+            }
+        }
+        // subcommand_required: clap has already refused this.
+        _ => ExitCode::from(2),
+    }
+}

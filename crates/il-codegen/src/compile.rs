@@ -16,18 +16,6 @@ pub struct Compiled {
     pub pous: Vec<String>,
 }
 
-/// Parse and check without emitting: every diagnostic of the file.
-pub fn check_source(file: &SourceFile) -> Vec<Diagnostic> {
-    let (unit, mut diags) = syntax::parse(file);
-    // Semantic checks on a tree with syntax errors would mostly repeat them.
-    if !has_errors(&diags) {
-        let (_, more) = sema::check(file, &unit);
-        diags.extend(more);
-    }
-    sort(&mut diags);
-    diags
-}
-
 /// Compile one source to Rust tokens, or return every diagnostic (errors
 /// and warnings) when it has errors.
 pub fn compile(file: &SourceFile, opts: emit::Options) -> Result<Compiled, Vec<Diagnostic>> {

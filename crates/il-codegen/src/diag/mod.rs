@@ -7,6 +7,11 @@
 use crate::ast::Span;
 
 pub mod codes;
+pub mod json;
+pub mod render;
+
+pub use json::to_json;
+pub use render::{render, render_short};
 
 /// A source file and its line table.
 #[derive(Clone, Debug)]

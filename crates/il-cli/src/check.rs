@@ -1,0 +1,217 @@
+//! `ilc check`: read, check, report.
+
+use std::io::{self, IsTerminal, Read, Write};
+use std::path::Path;
+
+use il_codegen::diag::{Diagnostic, Severity, SourceFile, render, to_json};
+
+/// How diagnostics are written.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    Human,
+    Json,
+}
+
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Totals {
+    pub errors: usize,
+    pub warnings: usize,
+    /// Files that could not be read.
+    pub unreadable: usize,
+}
+
+/// Decide whether to colour: `always`, `never`, or `auto` (stderr is a
+/// terminal and `NO_COLOR` is unset or empty).
+pub fn use_color(when: &str) -> bool {
+    match when {
+        "always" => true,
+        "never" => false,
+        _ => {
+            io::stderr().is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
+        }
+    }
+}
+
+/// Read one source. `-` is standard input. The error names the path.
+pub fn read_source(path: &str) -> Result<SourceFile, String> {
+    let (name, bytes) = if path == "-" {
+        let mut buf = Vec::new();
+        io::stdin()
+            .read_to_end(&mut buf)
+            .map_err(|e| format!("cannot read standard input: {e}"))?;
+        ("<stdin>".to_string(), buf)
+    } else {
+        let p = Path::new(path);
+        if p.is_dir() {
+            return Err(format!("cannot read `{path}`: it is a directory"));
+        }
+        let bytes =
+            std::fs::read(p).map_err(|e| format!("cannot read `{path}`: {}", io_reason(&e)))?;
+        (path.to_string(), bytes)
+    };
+    // Spans are u32 byte offsets.
+    if bytes.len() > u32::MAX as usize {
+        return Err(format!(
+            "`{name}` is too large ({} bytes; at most 4 GiB)",
+            bytes.len()
+        ));
+    }
+    let text = String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let ok = &e.as_bytes()[..at];
+        let line = ok.iter().filter(|&&b| b == b'\n').count() + 1;
+        let col = ok.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
+        format!(
+            "`{name}` is not UTF-8 text (invalid byte 0x{:02X} at line {line}, byte {col} of the line); \
+             convert it to UTF-8 first, e.g. `iconv -f latin1 -t utf-8`",
+            e.as_bytes()[at]
+        )
+    })?;
+    Ok(SourceFile::new(name, text))
+}
+
+fn io_reason(e: &io::Error) -> String {
+    match e.kind() {
+        io::ErrorKind::NotFound => "no such file".to_string(),
+        io::ErrorKind::PermissionDenied => "permission denied".to_string(),
+        _ => e.to_string(),
+    }
+}
+
+/// Every diagnostic of one file. The single place where `ilc` runs the
+/// compiler's checks: [`il_codegen::check_source`] gets every new stage.
+pub fn check_file(file: &SourceFile) -> Vec<Diagnostic> {
+    il_codegen::check_source(file)
+}
+
+/// Run `ilc check` over `paths`, writing JSON to `out` and everything else to
+/// `err`. Returns the totals; the caller turns them into the exit status.
+pub fn run(
+    paths: &[String],
+    format: Format,
+    color: bool,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> Totals {
+    let mut totals = Totals::default();
+    for path in paths {
+        let file = match read_source(path) {
+            Ok(f) => f,
+            Err(msg) => {
+                totals.unreadable += 1;
+                let _ = writeln!(err, "{}", error_line(color, &msg));
+                continue;
+            }
+        };
+        let diags = check_file(&file);
+        for d in &diags {
+            match d.severity {
+                Severity::Error => totals.errors += 1,
+                Severity::Warning => totals.warnings += 1,
+            }
+        }
+        match format {
+            Format::Human => {
+                let _ = err.write_all(render(&file, &diags, color).as_bytes());
+            }
+            Format::Json => {
+                for d in &diags {
+                    let _ = writeln!(out, "{}", to_json(&file, d));
+                }
+            }
+        }
+    }
+    if format == Format::Human
+        && let Some(s) = summary(&totals)
+    {
+        let line = if totals.errors + totals.unreadable > 0 {
+            error_line(color, &s)
+        } else {
+            warning_line(color, &s)
+        };
+        let _ = writeln!(err, "{line}");
+    }
+    let _ = out.flush();
+    let _ = err.flush();
+    totals
+}
+
+fn plural(n: usize, word: &str) -> String {
+    if n == 1 {
+        format!("1 {word}")
+    } else {
+        format!("{n} {word}s")
+    }
+}
+
+fn summary(t: &Totals) -> Option<String> {
+    let mut parts = Vec::new();
+    if t.errors > 0 {
+        parts.push(plural(t.errors, "error"));
+    }
+    if t.warnings > 0 {
+        parts.push(plural(t.warnings, "warning"));
+    }
+    if t.unreadable > 0 {
+        parts.push(format!("{} not read", plural(t.unreadable, "file")));
+    }
+    if parts.is_empty() {
+        return None;
+    }
+    Some(if t.errors + t.unreadable > 0 {
+        format!("check failed: {}", parts.join(", "))
+    } else {
+        format!("{} emitted", parts.join(", "))
+    })
+}
+
+pub fn error_line(color: bool, msg: &str) -> String {
+    if color {
+        format!("\x1b[1m\x1b[91merror\x1b[0m\x1b[1m: {msg}\x1b[0m")
+    } else {
+        format!("error: {msg}")
+    }
+}
+
+fn warning_line(color: bool, msg: &str) -> String {
+    if color {
+        format!("\x1b[1m\x1b[93mwarning\x1b[0m\x1b[1m: {msg}\x1b[0m")
+    } else {
+        format!("warning: {msg}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn summaries() {
+        assert_eq!(summary(&Totals::default()), None);
+        let t = Totals {
+            errors: 1,
+            warnings: 2,
+            unreadable: 0,
+        };
+        assert_eq!(summary(&t).unwrap(), "check failed: 1 error, 2 warnings");
+        let t = Totals {
+            errors: 0,
+            warnings: 1,
+            unreadable: 0,
+        };
+        assert_eq!(summary(&t).unwrap(), "1 warning emitted");
+        let t = Totals {
+            errors: 0,
+            warnings: 0,
+            unreadable: 2,
+        };
+        assert_eq!(summary(&t).unwrap(), "check failed: 2 files not read");
+    }
+
+    #[test]
+    fn missing_file_names_the_path() {
+        let e = read_source("/nonexistent/dir/x.il").unwrap_err();
+        assert!(e.contains("`/nonexistent/dir/x.il`"), "{e}");
+        assert!(e.contains("no such file"), "{e}");
+    }
+}

@@ -1,0 +1,95 @@
+//! The command line of `ilc` (clap builder API).
+
+use clap::{Arg, ArgAction, Command, builder::PossibleValuesParser};
+
+const ABOUT: &str = "Check IEC 61131-3 Instruction List (IL) sources";
+
+const LONG_ABOUT: &str = "\
+ilc checks IEC 61131-3 Instruction List (IL) sources and reports every problem
+it finds, with the line and column and a suggestion where it has one.";
+
+const EXAMPLES: &str = "\
+Examples:
+  ilc check motor.il                     Check one file; silent when it is fine
+  ilc check src/*.il                     Check several files (all are checked)
+  ilc check --message-format json a.il   One JSON object per diagnostic on stdout
+  ilc check --color always a.il | less -R
+  cat a.il | ilc check -                 Read the source from standard input
+  ilc explain IL0003                     What a diagnostic code means
+
+Exit status:
+  0  no errors (warnings may have been printed)
+  1  at least one error, or a file could not be read
+  2  the command line itself is wrong";
+
+const CHECK_EXAMPLES: &str = "\
+Examples:
+  ilc check motor.il
+  ilc check --message-format json motor.il conveyor.il
+  ilc check --color never - < motor.il
+
+JSON output: one object per line on stdout, with the fields file, line, column,
+end_line, end_column (1-based; columns count characters), severity, code,
+message, label, secondary, notes, help (string or null) and rendered (the
+human-readable text). Nothing else is written to stdout.";
+
+/// The whole command line.
+pub fn command() -> Command {
+    Command::new("ilc")
+        .version(env!("CARGO_PKG_VERSION"))
+        .about(ABOUT)
+        .long_about(LONG_ABOUT)
+        .after_long_help(EXAMPLES)
+        .subcommand_required(true)
+        .arg_required_else_help(true)
+        .subcommand(
+            Command::new("check")
+                .about("Parse and check IL files; print diagnostics")
+                .after_long_help(CHECK_EXAMPLES)
+                .arg(
+                    Arg::new("files")
+                        .value_name("FILE")
+                        .help("IL source files to check (`-` reads standard input)")
+                        .required(true)
+                        .num_args(1..)
+                        .action(ArgAction::Append),
+                )
+                .arg(
+                    Arg::new("message-format")
+                        .long("message-format")
+                        .value_name("FORMAT")
+                        .help("How diagnostics are written")
+                        .long_help(
+                            "How diagnostics are written: `human` renders them for people on \
+                             stderr; `json` writes one JSON object per diagnostic per line on stdout",
+                        )
+                        .value_parser(PossibleValuesParser::new(["human", "json"]))
+                        .default_value("human"),
+                )
+                .arg(
+                    Arg::new("color")
+                        .long("color")
+                        .value_name("WHEN")
+                        .help("Colour the human output")
+                        .long_help(
+                            "Colour the human output: `auto` colours only when stderr is a \
+                             terminal and NO_COLOR is not set",
+                        )
+                        .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
+                        .default_value("auto"),
+                ),
+        )
+        .subcommand(
+            Command::new("explain")
+                .about("Explain a diagnostic code, e.g. IL0003")
+                .arg(Arg::new("code").value_name("CODE").required(true)),
+        )
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn command_is_well_formed() {
+        super::command().debug_assert();
+    }
+}

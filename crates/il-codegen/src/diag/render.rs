@@ -1,0 +1,338 @@
+//! Rendering diagnostics for people: rustc-like reports (via `annotate-snippets`)
+//! for terminals and build scripts, and a compact form for `compile_error!`.
+//!
+//! Every function here accepts any span, including spans past the end of the
+//! text, reversed spans, empty spans and spans that cut a UTF-8 character:
+//! they are clamped, never a panic.
+
+use annotate_snippets::{AnnotationKind, Group, Level, Renderer, Snippet};
+
+pub use super::json::to_json;
+use super::{Diagnostic, Severity, SourceFile};
+use crate::ast::Span;
+
+/// A span made safe to slice `text` with: inside the text, `lo <= hi`, both on
+/// char boundaries (`lo` rounded down, `hi` rounded up).
+pub(crate) fn clamp_span(text: &str, span: Span) -> (usize, usize) {
+    let len = text.len();
+    let mut lo = (span.lo as usize).min(len);
+    let mut hi = (span.hi as usize).min(len).max(lo);
+    while !text.is_char_boundary(lo) {
+        lo -= 1;
+    }
+    while !text.is_char_boundary(hi) {
+        hi += 1;
+    }
+    if span.hi <= span.lo {
+        hi = lo; // empty (or reversed) stays empty
+    }
+    (lo, hi)
+}
+
+/// Where an empty span at `pos` is best shown. A position after the last line
+/// break of the file (an empty last "line") or on a line break itself is shown
+/// at the end of the line before it, the way rustc points at "end of file".
+fn visible_point(text: &str, pos: usize) -> usize {
+    let mut p = pos;
+    // At the very end after a trailing newline: step back over line breaks.
+    if p == text.len() {
+        while p > 0 && matches!(text.as_bytes()[p - 1], b'\n' | b'\r') {
+            p -= 1;
+        }
+    }
+    p
+}
+
+/// A span as shown: clamped ([`clamp_span`]), without the line breaks it ends
+/// with, and, when empty, moved to a visible point ([`visible_point`]).
+pub(crate) fn display_span(text: &str, span: Span) -> (usize, usize) {
+    let (lo, mut hi) = clamp_span(text, span);
+    // A span that ends with a line break is shown on the line it ends.
+    while hi > lo + 1 && matches!(text.as_bytes()[hi - 1], b'\n' | b'\r') {
+        hi -= 1;
+    }
+    if lo == hi {
+        let p = visible_point(text, lo);
+        (p, p)
+    } else {
+        (lo, hi)
+    }
+}
+
+/// The byte range of the lines that `lo..hi` touches (without the final line break).
+fn line_range(text: &str, lo: usize, hi: usize) -> (usize, usize) {
+    let start = text[..lo].rfind('\n').map_or(0, |i| i + 1);
+    let mut end = text[hi..].find('\n').map_or(text.len(), |i| hi + i);
+    // A CRLF line is shown without its CR.
+    if end > hi && text.as_bytes()[end - 1] == b'\r' {
+        end -= 1;
+    }
+    (start, end)
+}
+
+fn ordered<'d>(text: &str, diags: &'d [Diagnostic]) -> Vec<&'d Diagnostic> {
+    let mut v: Vec<&'d Diagnostic> = diags.iter().collect();
+    // Stable: equal positions keep the order in which the stages reported them.
+    v.sort_by_key(|d| clamp_span(text, d.span));
+    v
+}
+
+/// Render diagnostics the way rustc does (`error[IL0003]: ...`, ` --> file:line:col`,
+/// the source lines with carets and labels, `= note:` and `= help:`), sorted by
+/// position, each followed by an empty line. `color` adds ANSI styles.
+pub fn render(file: &SourceFile, diags: &[Diagnostic], color: bool) -> String {
+    let renderer = if color {
+        Renderer::styled()
+    } else {
+        Renderer::plain()
+    };
+    let mut out = String::new();
+    for d in ordered(&file.text, diags) {
+        out.push_str(&render_one(&renderer, file, d));
+        out.push_str("\n\n");
+    }
+    out
+}
+
+fn render_one(renderer: &Renderer, file: &SourceFile, d: &Diagnostic) -> String {
+    let text = file.text.as_str();
+    let level = match d.severity {
+        Severity::Error => Level::ERROR,
+        Severity::Warning => Level::WARNING,
+    };
+    let fix = |span: Span| display_span(text, span);
+    let primary = fix(d.span);
+    let secondary: Vec<((usize, usize), &str)> = d
+        .secondary
+        .iter()
+        .map(|(s, l)| (fix(*s), l.as_str()))
+        .collect();
+
+    // Hand annotate-snippets only the lines the spans touch (plus what lies
+    // between them; it folds long unannotated stretches), not the whole file.
+    let lo = secondary.iter().map(|s| s.0.0).fold(primary.0, usize::min);
+    let hi = secondary.iter().map(|s| s.0.1).fold(primary.1, usize::max);
+    let (start, end) = line_range(text, lo, hi);
+    let source = &text[start..end];
+    let (first_line, _) = file.line_col(start as u32);
+    // Spans that run past `end` (a span over a final line break) are cut there.
+    let rel = |(a, b): (usize, usize)| (a - start).min(source.len())..(b - start).min(source.len());
+
+    let mut primary_ann = AnnotationKind::Primary.span(rel(primary));
+    if !d.label.is_empty() {
+        primary_ann = primary_ann.label(d.label.as_str());
+    }
+    let mut snippet = Snippet::source(source)
+        .line_start(first_line)
+        .path(file.name.as_str())
+        .fold(true)
+        .annotation(primary_ann);
+    for (span, label) in &secondary {
+        let mut ann = AnnotationKind::Context.span(rel(*span));
+        if !label.is_empty() {
+            ann = ann.label(*label);
+        }
+        snippet = snippet.annotation(ann);
+    }
+    let mut group: Group<'_> = level
+        .primary_title(d.message.as_str())
+        .id(d.code)
+        .element(snippet);
+    for note in &d.notes {
+        group = group.element(Level::NOTE.message(note.as_str()));
+    }
+    if let Some(help) = &d.help {
+        group = group.element(Level::HELP.message(help.as_str()));
+    }
+    renderer.render(&[group])
+}
+
+/// One compact, self-contained message for `compile_error!` inside `il!`, where
+/// rustc can only point at the whole string literal: the code, the message, the
+/// IL position, the source line with a caret line under the span, the notes and
+/// the help.
+///
+/// ```text
+/// IL0003: expected an operand after `LD` (at line 12, column 5)
+///    |
+/// 12 |     LD
+///    |     ^^ operand missing here
+///    = help: write `LD x` ...
+/// ```
+pub fn render_short(file: &SourceFile, d: &Diagnostic) -> String {
+    let text = file.text.as_str();
+    let (lo_shown, hi) = display_span(text, d.span);
+    let (line, col) = file.line_col(lo_shown as u32);
+    let mut out = String::new();
+    if d.severity == Severity::Warning {
+        out.push_str("warning ");
+    }
+    out.push_str(&format!(
+        "{}: {} (at line {line}, column {col})\n",
+        d.code, d.message
+    ));
+
+    let src_line = file.line_text(line);
+    let num = line.to_string();
+    let pad = " ".repeat(num.len());
+    // The caret line copies tabs so that it lines up under the source line.
+    let prefix: String = src_line
+        .chars()
+        .take(col - 1)
+        .map(|c| if c == '\t' { '\t' } else { ' ' })
+        .collect();
+    let on_line = src_line.chars().count().saturating_sub(col - 1);
+    let span_chars = text[lo_shown..hi.max(lo_shown)]
+        .chars()
+        .take_while(|&c| c != '\n')
+        .count();
+    let carets = "^".repeat(span_chars.min(on_line).max(1));
+    let shown = printable(src_line);
+    let sep = if shown.is_empty() { "" } else { " " };
+    out.push_str(&format!(
+        "{pad} |\n{num} |{sep}{shown}\n{pad} | {prefix}{carets}"
+    ));
+    if !d.label.is_empty() {
+        out.push(' ');
+        out.push_str(&d.label);
+    }
+    out.push('\n');
+    for note in &d.notes {
+        out.push_str(&format!("{pad} = note: {note}\n"));
+    }
+    if let Some(help) = &d.help {
+        out.push_str(&format!("{pad} = help: {help}\n"));
+    }
+    out.truncate(out.trim_end().len());
+    out
+}
+
+/// Control characters other than tab shown as U+FFFD so that a message never
+/// carries terminal escapes or moves the cursor.
+fn printable(s: &str) -> String {
+    s.chars()
+        .map(|c| {
+            if c.is_control() && c != '\t' {
+                '\u{FFFD}'
+            } else {
+                c
+            }
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn file(text: &str) -> SourceFile {
+        SourceFile::new("t.il", text)
+    }
+
+    #[test]
+    fn clamp_handles_everything() {
+        let t = "aé b"; // é is 2 bytes at 1..3
+        assert_eq!(clamp_span(t, Span::new(2, 2)), (1, 1));
+        assert_eq!(clamp_span(t, Span::new(2, 3)), (1, 3));
+        assert_eq!(clamp_span(t, Span::new(0, 2)), (0, 3));
+        assert_eq!(clamp_span(t, Span::new(9, 20)), (5, 5));
+        assert_eq!(clamp_span(t, Span::new(4, 1)), (4, 4));
+        assert_eq!(clamp_span("", Span::new(3, 7)), (0, 0));
+    }
+
+    #[test]
+    fn plain_error_has_rustc_shape() {
+        let f = file("PROGRAM p\n    LD\nEND_PROGRAM\n");
+        let d = Diagnostic::error(
+            "IL0003",
+            Span::new(14, 16),
+            "expected an operand after `LD`",
+        )
+        .with_label("operand missing")
+        .with_note("every LD loads one operand")
+        .with_help("write `LD x`");
+        let r = render(&f, &[d], false);
+        assert!(
+            r.starts_with("error[IL0003]: expected an operand after `LD`\n"),
+            "{r}"
+        );
+        assert!(r.contains(" --> t.il:2:5\n"), "{r}");
+        assert!(r.contains("2 |     LD\n"), "{r}");
+        assert!(r.contains("^^ operand missing"), "{r}");
+        assert!(r.contains("= note: every LD loads one operand"), "{r}");
+        assert!(r.contains("= help: write `LD x`"), "{r}");
+        assert!(!r.contains('\x1b'));
+        assert!(r.ends_with("\n\n"));
+    }
+
+    #[test]
+    fn color_adds_escapes_only_when_asked() {
+        let f = file("LD x\n");
+        let d = Diagnostic::warning("IL0100", Span::new(3, 4), "unused");
+        assert!(render(&f, std::slice::from_ref(&d), true).contains('\x1b'));
+        let plain = render(&f, &[d], false);
+        assert!(plain.starts_with("warning[IL0100]: unused"), "{plain}");
+    }
+
+    #[test]
+    fn sorted_by_position() {
+        let f = file("a\nb\nc\n");
+        let d1 = Diagnostic::error("IL0001", Span::new(4, 5), "third line");
+        let d2 = Diagnostic::error("IL0002", Span::new(0, 1), "first line");
+        let r = render(&f, &[d1, d2], false);
+        assert!(r.find("first line").unwrap() < r.find("third line").unwrap());
+    }
+
+    #[test]
+    fn odd_spans_do_not_panic() {
+        for text in [
+            "",
+            "\n",
+            "x",
+            "x\n",
+            "x\r\n",
+            "é\n\t\u{0}\u{1b}[31m",
+            "\n\n\n",
+            "a\u{301}b",
+        ] {
+            let f = file(text);
+            for lo in 0..text.len() as u32 + 3 {
+                for hi in 0..text.len() as u32 + 3 {
+                    let d = Diagnostic::error("IL0001", Span { lo, hi }, "m")
+                        .with_label("l")
+                        .with_secondary(Span { lo: hi, hi: lo }, "s");
+                    let _ = render(&f, std::slice::from_ref(&d), false);
+                    let _ = render(&f, std::slice::from_ref(&d), true);
+                    let _ = render_short(&f, &d);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn eof_span_points_at_end_of_last_line() {
+        let f = file("PROGRAM p\n  LD x\n");
+        let d = Diagnostic::error("IL0002", Span::new(17, 17), "expected `END_PROGRAM`");
+        let r = render(&f, std::slice::from_ref(&d), false);
+        assert!(r.contains(" --> t.il:2:7"), "{r}");
+        let s = render_short(&f, &d);
+        assert!(s.contains("(at line 2, column 7)"), "{s}");
+    }
+
+    #[test]
+    fn short_form() {
+        let f = file("PROGRAM p\n\tLD\nEND_PROGRAM\n");
+        let d = Diagnostic::error(
+            "IL0003",
+            Span::new(11, 13),
+            "expected an operand after `LD`",
+        )
+        .with_label("here")
+        .with_help("write `LD x`");
+        let s = render_short(&f, &d);
+        assert_eq!(
+            s,
+            "IL0003: expected an operand after `LD` (at line 2, column 2)\n  |\n2 | \tLD\n  | \t^^ here\n  = help: write `LD x`"
+        );
+    }
+}

