@@ -11,6 +11,7 @@ pub mod check;
 pub mod compile;
 pub mod diag;
 pub mod emit;
+pub mod expand;
 pub mod sema;
 pub mod syntax;
 
