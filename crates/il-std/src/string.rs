@@ -13,7 +13,6 @@ pub const DEFAULT_STRING_LEN: usize = 80;
 
 /// Operations shared by [`STRING`] and [`WSTRING`], used by the string functions of
 /// [`func`](crate::func).
-#[allow(dead_code)] // used by func (next step)
 pub trait AnyString: Copy + Default + PartialEq + PartialOrd {
     /// One character: `u8` for `STRING`, `u16` for `WSTRING`.
     type Unit: Copy + PartialEq + 'static;
