@@ -198,6 +198,20 @@ mod tests {
     use super::*;
     use std::vec::Vec;
 
+    #[cfg(feature = "std")]
+    #[test]
+    fn real_clock_moves_forward() {
+        let mut c = Cycle::new();
+        c.set_now(TIME::from_secs(5));
+        let clock = RealClock::start(&c);
+        std::thread::sleep(std::time::Duration::from_millis(2));
+        clock.update(&mut c);
+        assert!(c.now() >= TIME::from_ms(5002));
+        assert!(c.now_dt().date() > crate::DATE::from_ymd(2020, 1, 1).unwrap());
+        let e: &dyn std::error::Error = &Fault::default();
+        assert!(!std::format!("{e}").is_empty());
+    }
+
     #[test]
     fn time_and_dt() {
         let mut c = Cycle::new();

@@ -14,7 +14,13 @@
 //!
 //! The crate is `#![no_std]`, has no dependencies, never allocates and never panics on any
 //! input. The optional `std` feature adds `std::error::Error` for [`Fault`] and a wall-clock
-//! helper [`RealClock`].
+//! helper `RealClock`.
+//!
+//! Conventions the compiler relies on: integer arithmetic wraps; integer `DIV`/`MOD` by zero
+//! gives 0 and generated code records the fault with the `*_checked` variants of [`func`]
+//! ([`func::div_checked`], [`func::mod_checked`], [`conv::real_to_int_checked`] ...);
+//! `REAL` → integer conversions round half to even and saturate; `TIME_TO_*`/`*_TO_TIME`
+//! count milliseconds; strings never allocate and truncate to their capacity.
 //!
 //! ```
 //! use il_std::{Cycle, TIME, TON, FunctionBlock};
