@@ -10,7 +10,7 @@
 //! writes `$OUT_DIR/motor.rs`, which the crate includes with
 //! `include!(concat!(env!("OUT_DIR"), "/motor.rs"));`.
 
-use crate::compile::compile_to_file;
+use crate::compile::compile_all_to_files;
 use crate::diag::{SourceFile, render::render};
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -77,38 +77,40 @@ impl Builder {
             Some(d) => d,
             None => return Err(Error { rendered: "error: no output directory: OUT_DIR is not set (call Builder::out_dir outside build scripts)".into() }),
         };
-        let mut outputs = Vec::new();
+        let mut sources = Vec::new();
         let mut failed = String::new();
         for path in &self.files {
             if cargo {
                 println!("cargo:rerun-if-changed={}", path.display());
             }
-            let text = match std::fs::read_to_string(path) {
-                Ok(t) => t,
-                Err(e) => {
-                    failed.push_str(&format!("error: cannot read IL file `{}`: {e}\n", path.display()));
-                    continue;
-                }
-            };
-            let file = SourceFile::new(path.display().to_string(), text);
-            match compile_to_file(&file) {
-                Ok((code, warnings)) => {
-                    if cargo && !warnings.is_empty() {
-                        for line in render(&file, &warnings, false).lines() {
-                            println!("cargo:warning={line}");
-                        }
-                    }
-                    let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "il".into());
-                    outputs.push((out_dir.join(format!("{stem}.rs")), code));
-                }
-                Err(diags) => failed.push_str(&render(&file, &diags, false)),
+            match std::fs::read_to_string(path) {
+                Ok(t) => sources.push(SourceFile::new(path.display().to_string(), t)),
+                Err(e) => failed.push_str(&format!("error: cannot read IL file `{}`: {e}\n", path.display())),
             }
         }
         if !failed.is_empty() {
             return Err(Error { rendered: failed });
         }
+        // All files form one program: a FUNCTION_BLOCK of one is usable in another.
+        let outputs = match compile_all_to_files(&sources) {
+            Ok(o) => o,
+            Err(per_file) => {
+                let rendered = per_file.iter().map(|(i, d)| render(&sources[*i], d, false)).collect::<String>();
+                return Err(Error { rendered });
+            }
+        };
+        let mut planned = Vec::new();
+        for ((code, warnings), (path, file)) in outputs.into_iter().zip(self.files.iter().zip(&sources)) {
+            if cargo && !warnings.is_empty() {
+                for line in render(file, &warnings, false).lines() {
+                    println!("cargo:warning={line}");
+                }
+            }
+            let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "il".into());
+            planned.push((out_dir.join(format!("{stem}.rs")), code));
+        }
         let mut written = Vec::new();
-        for (path, code) in outputs {
+        for (path, code) in planned {
             write_if_changed(&path, &code).map_err(|e| Error { rendered: format!("error: cannot write `{}`: {e}", path.display()) })?;
             written.push(path);
         }

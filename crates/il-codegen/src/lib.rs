@@ -17,4 +17,4 @@ pub mod syntax;
 
 pub use builder::{Builder, Error};
 pub use check::check_source;
-pub use compile::{Compiled, compile, compile_to_file, format_file};
+pub use compile::{Compiled, compile, compile_all_to_files, compile_to_file, format_file};

@@ -127,7 +127,7 @@ impl Pou<'_> {
         let mut last_line = 0;
         for s in stmts {
             if self.opts.line_markers && s.line != last_line && s.line != 0 {
-                let n = s.line;
+                let n = proc_macro2::Literal::u32_unsuffixed(s.line);
                 out.extend(quote!(__il_line!(#n);));
                 last_line = s.line;
             }

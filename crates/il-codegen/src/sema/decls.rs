@@ -19,6 +19,10 @@ pub(crate) struct PouSig {
     /// Upper-case name → index into `vars`.
     pub index: HashMap<String, usize>,
     pub ret: Option<Ty>,
+    /// Index of the source file that declares it.
+    pub file: usize,
+    /// Variables whose declaration had an error (their uses are not reported).
+    pub poisoned: HashSet<String>,
 }
 
 impl PouSig {
@@ -38,46 +42,59 @@ impl Env {
     }
 }
 
-pub(crate) fn collect(cx: &mut Cx, unit: &ast::CompilationUnit) -> Env {
+pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
     let mut env = Env { pous: HashMap::new() };
-    let mut seen: HashMap<String, Span> = HashMap::new();
-    let pous: Vec<&ast::Pou> = unit
-        .items
+    let mut seen: HashMap<String, (usize, Span)> = HashMap::new();
+    let pous: Vec<(usize, &ast::Pou)> = units
         .iter()
-        .filter_map(|i| match i {
-            ast::Item::Pou(p) => Some(p),
-            _ => None,
+        .enumerate()
+        .flat_map(|(f, u)| {
+            u.items.iter().filter_map(move |i| match i {
+                ast::Item::Pou(p) => Some((f, p)),
+                _ => None,
+            })
         })
         .collect();
-    for p in &pous {
+    for (f, p) in &pous {
         let key = p.name.key();
-        if let Some(prev) = seen.insert(key.clone(), p.name.span) {
-            cx.err(DUPLICATE_DECL, p.name.span, format!("`{}` is declared twice", p.name))
-                .add_secondary(prev, "first declared here");
-        } else if stdfb::lookup(&key).is_some() || super::stdfn::is_std(&key) {
-            cx.err(DUPLICATE_DECL, p.name.span, format!("`{}` is the name of a standard block or function", p.name));
+        if let Some((pf, prev)) = seen.get(&key).copied() {
+            let other = cxs[pf].file.name.clone();
+            let d = cxs[*f].err(DUPLICATE_DECL, p.name.span, format!("`{}` is declared twice", p.name));
+            if pf == *f {
+                d.add_secondary(prev, "first declared here");
+            } else {
+                d.add_note(format!("first declared in {other}"));
+            }
+        } else {
+            seen.insert(key.clone(), (*f, p.name.span));
+            if stdfb::lookup(&key).is_some() || super::stdfn::is_std(&key) {
+                cxs[*f].err(DUPLICATE_DECL, p.name.span, format!("`{}` is the name of a standard block or function", p.name));
+            }
         }
     }
     let fb_names: HashSet<String> =
-        pous.iter().filter(|p| p.kind == PouKind::FunctionBlock).map(|p| p.name.key()).collect();
-    for p in &pous {
+        pous.iter().filter(|(_, p)| p.kind == PouKind::FunctionBlock).map(|(_, p)| p.name.key()).collect();
+    for (f, p) in &pous {
         if env.pous.contains_key(&p.name.key()) {
             continue;
         }
-        let sig = pou_sig(cx, &fb_names, p);
+        let mut sig = pou_sig(&mut cxs[*f], &fb_names, p);
+        sig.file = *f;
         env.pous.insert(p.name.key(), sig);
     }
-    for item in &unit.items {
-        match item {
-            ast::Item::Types(decls) => {
-                if let Some(d) = decls.first() {
-                    cx.err(UNSUPPORTED, d.span, "user-defined types (TYPE ... END_TYPE) are not supported yet");
+    for (f, unit) in units.iter().enumerate() {
+        for item in &unit.items {
+            match item {
+                ast::Item::Types(decls) => {
+                    if let Some(d) = decls.first() {
+                        cxs[f].err(UNSUPPORTED, d.span, "user-defined types (TYPE ... END_TYPE) are not supported yet");
+                    }
                 }
+                ast::Item::Configuration(c) => {
+                    cxs[f].err(UNSUPPORTED, c.name.span, "CONFIGURATION is not supported yet");
+                }
+                ast::Item::Pou(_) => {}
             }
-            ast::Item::Configuration(c) => {
-                cx.err(UNSUPPORTED, c.name.span, "CONFIGURATION is not supported yet");
-            }
-            ast::Item::Pou(_) => {}
         }
     }
     env
@@ -85,7 +102,15 @@ pub(crate) fn collect(cx: &mut Cx, unit: &ast::CompilationUnit) -> Env {
 
 fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
     check_ident(cx, &p.name);
-    let mut sig = PouSig { kind: p.kind, name: p.name.name.clone(), vars: Vec::new(), index: HashMap::new(), ret: None };
+    let mut sig = PouSig {
+        kind: p.kind,
+        name: p.name.name.clone(),
+        vars: Vec::new(),
+        index: HashMap::new(),
+        ret: None,
+        file: 0,
+        poisoned: HashSet::new(),
+    };
     if p.kind == PouKind::Function {
         sig.ret = p.return_type.as_ref().and_then(|t| resolve_type(cx, fb_names, t));
         if let Some(Ty::Fb(_)) = sig.ret {
@@ -114,7 +139,11 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
                 // R_EDGE/F_EDGE inputs: accepted, evaluated as plain BOOL by the caller's value.
                 // (The edge is the caller's concern in IEC; documented in the guide.)
             }
-            let Some(ty) = resolve_type(cx, fb_names, &decl.ty) else { continue };
+            let Some(ty) = resolve_type(cx, fb_names, &decl.ty) else {
+                // Already reported; uses of these names stay silent.
+                sig.poisoned.extend(decl.names.iter().map(|n| n.key()));
+                continue;
+            };
             if p.kind == PouKind::Function && matches!(ty, Ty::Fb(_)) {
                 cx.err(BAD_OPERATOR_TYPE, decl.ty.span(), "a FUNCTION cannot hold function block instances (it has no memory)");
                 continue;
@@ -376,36 +405,43 @@ pub(crate) fn describe(lit: &LitClass) -> String {
 }
 
 /// Refuse calls that lead back to the caller, and FBs that contain themselves.
-pub(crate) fn check_recursion(cx: &mut Cx, env: &Env, unit: &ast::CompilationUnit) {
-    // Edges: POU → POUs it calls (functions) or instantiates (FB types).
-    let mut edges: HashMap<String, Vec<(String, Span)>> = HashMap::new();
-    for item in &unit.items {
-        let ast::Item::Pou(p) = item else { continue };
-        let me = p.name.key();
-        let out = edges.entry(me.clone()).or_default();
-        if let Some(sig) = env.pou(&me) {
-            for v in &sig.vars {
-                if let Ty::Fb(t) = &v.ty {
-                    if env.pou(t).is_some() {
-                        out.push((t.clone(), p.name.span));
+pub(crate) fn check_recursion(cxs: &mut [Cx], env: &Env, units: &[&ast::CompilationUnit]) {
+    // Edges: POU → POUs it calls (functions) or instantiates (FB types), with
+    // the file and span of the reference.
+    let mut edges: HashMap<String, Vec<(String, usize, Span)>> = HashMap::new();
+    for (f, unit) in units.iter().enumerate() {
+        for item in &unit.items {
+            let ast::Item::Pou(p) = item else { continue };
+            let me = p.name.key();
+            let out = edges.entry(me.clone()).or_default();
+            if let Some(sig) = env.pou(&me) {
+                for v in &sig.vars {
+                    if let Ty::Fb(t) = &v.ty {
+                        if env.pou(t).is_some() {
+                            out.push((t.clone(), f, p.name.span));
+                        }
                     }
                 }
             }
+            let mut calls = Vec::new();
+            collect_calls(&p.body, env, &mut calls);
+            out.extend(calls.into_iter().map(|(k, s)| (k, f, s)));
         }
-        collect_calls(&p.body, env, out);
     }
     let mut reported = HashSet::new();
-    for start in edges.keys() {
+    let mut starts: Vec<&String> = edges.keys().collect();
+    starts.sort();
+    for start in starts {
         // Depth-first search for a path back to `start`.
         let mut stack = vec![(start.clone(), vec![start.clone()])];
         let mut visited = HashSet::new();
         while let Some((node, path)) = stack.pop() {
-            for (next, span) in edges.get(&node).into_iter().flatten() {
+            for (next, f, span) in edges.get(&node).into_iter().flatten() {
                 if next == start {
                     if reported.insert(start.clone()) {
                         let mut names: Vec<String> = path.iter().map(|k| env.pou(k).map_or(k.clone(), |s| s.name.clone())).collect();
                         names.push(env.pou(start).map_or(start.clone(), |s| s.name.clone()));
-                        cx.err(RECURSION, *span, format!("recursion is not allowed: {}", names.join(" → ")));
+                        cxs[*f].err(RECURSION, *span, format!("recursion is not allowed: {}", names.join(" → ")));
                     }
                 } else if visited.insert(next.clone()) {
                     let mut p = path.clone();

@@ -584,6 +584,8 @@ impl Walk<'_, '_> {
             (Root::Ret, self.sig.ret.clone()?, false)
         } else if self.sig.kind == PouKind::Function && v.base.is("ENO") {
             (Root::Eno, Ty::BOOL, false)
+        } else if self.sig.poisoned.contains(&v.base.key()) {
+            return None; // its declaration was already reported
         } else {
             let names: Vec<&str> = self.sig.vars.iter().map(|v| v.name.as_str()).collect();
             let hint = suggest(&v.base.name, names).map(|s| format!("did you mean `{s}`?"));

@@ -6,7 +6,7 @@ use super::decls::LitClass;
 use super::ir::StdCall;
 use super::types::{DEFAULT_STRING_LEN, Elem, Ty};
 use crate::ast::{Ident, Span};
-use super::sig_mock::{self as sig, Class, Ext, ParamTy, Signature};
+use il_std::signature::{self as sig, Class, Ext, ParamTy, Signature};
 
 pub(crate) fn is_std(key: &str) -> bool {
     sig::lookup(key).is_some()
