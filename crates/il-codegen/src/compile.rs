@@ -31,14 +31,20 @@ pub fn compile(file: &SourceFile, opts: emit::Options) -> Result<Compiled, Vec<D
         return Err(diags);
     }
     let tokens = emit::program(&program, opts);
-    Ok(Compiled { tokens, warnings: diags, pous: program.pous.iter().map(|p| p.name.clone()).collect() })
+    Ok(Compiled {
+        tokens,
+        warnings: diags,
+        pous: program.pous.iter().map(|p| p.name.clone()).collect(),
+    })
 }
 
 /// Compile several files as one program (POUs of one may use those of
 /// another). On success, one formatted `.rs` text and the warnings per file;
 /// otherwise the diagnostics of every file (index, diagnostics).
 #[allow(clippy::type_complexity)]
-pub fn compile_all_to_files(files: &[SourceFile]) -> Result<Vec<(String, Vec<Diagnostic>)>, Vec<(usize, Vec<Diagnostic>)>> {
+pub fn compile_all_to_files(
+    files: &[SourceFile],
+) -> Result<Vec<(String, Vec<Diagnostic>)>, Vec<(usize, Vec<Diagnostic>)>> {
     let mut units = Vec::new();
     let mut all: Vec<Vec<Diagnostic>> = Vec::new();
     for f in files {
@@ -59,7 +65,10 @@ pub fn compile_all_to_files(files: &[SourceFile]) -> Result<Vec<(String, Vec<Dia
                 .zip(all)
                 .map(|((f, p), mut w)| {
                     sort(&mut w);
-                    (format_file(f, &emit::program(&p, emit::Options { line_markers: true })), w)
+                    (
+                        format_file(f, &emit::program(&p, emit::Options { line_markers: true })),
+                        w,
+                    )
                 })
                 .collect());
         }
@@ -116,5 +125,7 @@ pub fn format_file(file: &SourceFile, tokens: &TokenStream) -> String {
 
 /// A line comment cannot be escaped from, but keep control characters out.
 fn sanitize_comment(s: &str) -> String {
-    s.chars().map(|c| if c.is_control() { ' ' } else { c }).collect()
+    s.chars()
+        .map(|c| if c.is_control() { ' ' } else { c })
+        .collect()
 }

@@ -45,11 +45,19 @@ pub(crate) fn constant(c: &Const) -> TokenStream {
             let lit = Literal::i64_suffixed(*v);
             quote!(#ty(#lit))
         }
-        Const::Str { value, wide: false, len } => {
+        Const::Str {
+            value,
+            wide: false,
+            len,
+        } => {
             let n = *len as usize;
             quote!(::il_std::STRING::<#n>::from_str_truncating(#value).0)
         }
-        Const::Str { value, wide: true, len } => {
+        Const::Str {
+            value,
+            wide: true,
+            len,
+        } => {
             let n = *len as usize;
             quote!(::il_std::WSTRING::<#n>::from_str_truncating(#value).0)
         }
@@ -87,7 +95,11 @@ pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
                 }
                 let v = constant(&items[i]);
                 let (a, b) = (i, j);
-                arms.push(if a == b { quote!(#a => #v,) } else { quote!(#a..=#b => #v,) });
+                arms.push(if a == b {
+                    quote!(#a => #v,)
+                } else {
+                    quote!(#a..=#b => #v,)
+                });
                 i = j + 1;
             }
             let d = default_value(elem);
@@ -193,13 +205,21 @@ impl Pou<'_> {
     /// An `Option<&T>` / `Option<&mut T>` chain down an indexed path.
     fn chain(&self, p: &Place, ids: &[proc_macro2::Ident], mutable: bool) -> TokenStream {
         let root = self.root(&p.root);
-        let mut chain = if mutable { quote!(::core::option::Option::Some(&mut #root)) } else { quote!(::core::option::Option::Some(&#root)) };
+        let mut chain = if mutable {
+            quote!(::core::option::Option::Some(&mut #root))
+        } else {
+            quote!(::core::option::Option::Some(&#root))
+        };
         let mut k = 0;
         for e in &p.path {
             match e {
                 PathElem::Field(f) => {
                     let f = member_ident(f);
-                    chain = if mutable { quote!(#chain.map(|__x| &mut __x.#f)) } else { quote!(#chain.map(|__x| &__x.#f)) };
+                    chain = if mutable {
+                        quote!(#chain.map(|__x| &mut __x.#f))
+                    } else {
+                        quote!(#chain.map(|__x| &__x.#f))
+                    };
                 }
                 PathElem::Index { subs, .. } => {
                     for _ in subs {
@@ -289,7 +309,13 @@ impl Pou<'_> {
                 let v = self.value(v, line);
                 quote!(!#v)
             }
-            Expr::Bin { op, ty, lhs, rhs, negate_rhs } => {
+            Expr::Bin {
+                op,
+                ty,
+                lhs,
+                rhs,
+                negate_rhs,
+            } => {
                 let l = self.receiver(lhs, line);
                 let mut r = self.value(rhs, line);
                 if *negate_rhs {
@@ -297,7 +323,13 @@ impl Pou<'_> {
                 }
                 self.binary(*op, ty, l, r, line)
             }
-            Expr::TimeScale { div, time, lhs, num, rhs } => {
+            Expr::TimeScale {
+                div,
+                time,
+                lhs,
+                num,
+                rhs,
+            } => {
                 let t = time.rust();
                 let l = self.receiver(lhs, line);
                 let r = self.receiver(rhs, line);
@@ -314,14 +346,21 @@ impl Pou<'_> {
                     }
                 }
             }
-            Expr::CallUser { name, args, outputs, out_types } => {
+            Expr::CallUser {
+                name,
+                args,
+                outputs,
+                out_types,
+            } => {
                 let f = rust_ident(name);
                 let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
                 if out_types.is_empty() {
                     return quote!(#f(__ctx, #(#args,)*));
                 }
                 // Every output needs a place, read by `=>` or not.
-                let ids: Vec<_> = (0..out_types.len()).map(|k| format_ident!("__o{}", k)).collect();
+                let ids: Vec<_> = (0..out_types.len())
+                    .map(|k| format_ident!("__o{}", k))
+                    .collect();
                 let lets = out_types.iter().zip(&ids).map(|(t, id)| {
                     let ty = rust_ty(t);
                     let d = default_value(t);
@@ -398,14 +437,22 @@ impl Pou<'_> {
             BinOp::Lt => quote!(#l < #r),
             BinOp::Add | BinOp::Sub if dur.is_some() => {
                 let t = dur.unwrap_or_default();
-                if op == BinOp::Add { quote!(#t(#l.0.wrapping_add(#r.0))) } else { quote!(#t(#l.0.wrapping_sub(#r.0))) }
+                if op == BinOp::Add {
+                    quote!(#t(#l.0.wrapping_add(#r.0)))
+                } else {
+                    quote!(#t(#l.0.wrapping_sub(#r.0)))
+                }
             }
             BinOp::Add if int => quote!(#l.wrapping_add(#r)),
             BinOp::Sub if int => quote!(#l.wrapping_sub(#r)),
             BinOp::Mul if int => quote!(#l.wrapping_mul(#r)),
             BinOp::Div | BinOp::Mod if int => {
                 let fault = self.fault("DivisionByZero", line);
-                let f = if op == BinOp::Div { quote!(wrapping_div) } else { quote!(wrapping_rem) };
+                let f = if op == BinOp::Div {
+                    quote!(wrapping_div)
+                } else {
+                    quote!(wrapping_rem)
+                };
                 quote!({
                     let __d = #r;
                     if __d == 0 { #fault; 0 } else { #l.#f(__d) }

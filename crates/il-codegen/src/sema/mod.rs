@@ -18,13 +18,24 @@ pub use codes::CODES;
 /// diagnostic is an error.
 pub fn check(file: &SourceFile, unit: &ast::CompilationUnit) -> (ir::Program, Vec<Diagnostic>) {
     let (mut programs, mut diags) = check_all(&[(file, unit)]);
-    (programs.pop().unwrap_or_default(), diags.pop().unwrap_or_default())
+    (
+        programs.pop().unwrap_or_default(),
+        diags.pop().unwrap_or_default(),
+    )
 }
 
 /// Check several files as one program (a FUNCTION_BLOCK of one file used in
 /// another). Returns one program and one diagnostic list per file.
-pub fn check_all(units: &[(&SourceFile, &ast::CompilationUnit)]) -> (Vec<ir::Program>, Vec<Vec<Diagnostic>>) {
-    let mut cxs: Vec<Cx> = units.iter().map(|(file, _)| Cx { file, diags: Vec::new() }).collect();
+pub fn check_all(
+    units: &[(&SourceFile, &ast::CompilationUnit)],
+) -> (Vec<ir::Program>, Vec<Vec<Diagnostic>>) {
+    let mut cxs: Vec<Cx> = units
+        .iter()
+        .map(|(file, _)| Cx {
+            file,
+            diags: Vec::new(),
+        })
+        .collect();
     let asts: Vec<&ast::CompilationUnit> = units.iter().map(|(_, u)| *u).collect();
     let env = decls::collect(&mut cxs, &asts);
     let mut programs = Vec::new();
@@ -56,18 +67,31 @@ impl Cx<'_> {
     pub fn line(&self, span: Span) -> u32 {
         self.file.line_col(span.lo).0 as u32
     }
-    pub fn err(&mut self, code: &'static str, span: Span, msg: impl Into<String>) -> &mut Diagnostic {
+    pub fn err(
+        &mut self,
+        code: &'static str,
+        span: Span,
+        msg: impl Into<String>,
+    ) -> &mut Diagnostic {
         self.diags.push(Diagnostic::error(code, span, msg));
         self.diags.last_mut().expect("just pushed")
     }
-    pub fn warn(&mut self, code: &'static str, span: Span, msg: impl Into<String>) -> &mut Diagnostic {
+    pub fn warn(
+        &mut self,
+        code: &'static str,
+        span: Span,
+        msg: impl Into<String>,
+    ) -> &mut Diagnostic {
         self.diags.push(Diagnostic::warning(code, span, msg));
         self.diags.last_mut().expect("just pushed")
     }
 }
 
 /// Case-insensitive "did you mean": the closest of `candidates` to `name`.
-pub(crate) fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+pub(crate) fn suggest<'a>(
+    name: &str,
+    candidates: impl IntoIterator<Item = &'a str>,
+) -> Option<&'a str> {
     let up = name.to_ascii_uppercase();
     let mut best: Option<(usize, &str)> = None;
     for c in candidates {
