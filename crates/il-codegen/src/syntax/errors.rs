@@ -476,6 +476,30 @@ pub fn parse_error(
                     .with_label("not an IL operator"),
                 );
             }
+            if has(expected, "ARRAY") && has(expected, "STRUCT") {
+                let after = prev.map_or(String::new(), |(l, _, h)| {
+                    format!(" after `{}`", snippet(*l, *h))
+                });
+                return Some(
+                    Diagnostic::error(code::DECL_SYNTAX, span, format!("expected a type{after}"))
+                        .with_label(format!("found {found}"))
+                        .with_help("write a type such as `INT`, `BOOL`, `ARRAY [0..9] OF INT` or a type name"),
+                );
+            }
+            if has(expected, "AT") && has(expected, ":") {
+                let after = prev.map_or(String::new(), |(l, _, h)| {
+                    format!(" after `{}`", snippet(*l, *h))
+                });
+                return Some(
+                    Diagnostic::error(
+                        code::DECL_SYNTAX,
+                        span,
+                        format!("expected `:` and a type{after}"),
+                    )
+                    .with_label(format!("found {found}"))
+                    .with_help("declarations have the form `name : TYPE;`"),
+                );
+            }
             if has(expected, ";") {
                 // A declaration: name it.
                 let start = toks[..idx]
@@ -490,6 +514,12 @@ pub fn parse_error(
                                 | Tok::NonRetain
                                 | Tok::Struct
                                 | Tok::Type
+                                | Tok::Pou(_)
+                                | Tok::Task
+                                | Tok::Configuration
+                                | Tok::Resource
+                                | Tok::EndVar
+                                | Tok::EndResource
                         )
                     })
                     .map_or(0, |i| i + 1);

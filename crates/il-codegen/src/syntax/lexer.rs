@@ -497,7 +497,8 @@ impl<'a> Lexer<'a> {
                     self.op_field = true;
                 }
             }
-            Mode::Header if self.header_toks > 0 => {
+            Mode::Header => {
+                self.header_incomplete(at);
                 self.mode = Mode::Body;
                 self.op_field = true;
                 self.dirty = false;
@@ -891,6 +892,7 @@ impl<'a> Lexer<'a> {
                 self.in_resource = false;
             }
             (Mode::Header, Tok::Var(_)) => {
+                self.header_incomplete(s);
                 self.mode = Mode::Var;
                 self.var_ret = Mode::Body;
             }
@@ -957,6 +959,31 @@ impl<'a> Lexer<'a> {
             _ => {}
         }
         self.push(s, kw, e);
+    }
+
+    /// A POU header ends (line break or VAR): synthesize a missing name or
+    /// result type so that the rest of the POU still parses.
+    fn header_incomplete(&mut self, at: usize) {
+        match self.out.last() {
+            Some((lo, Tok::Pou(k), hi)) => {
+                let (lo, hi, k) = (*lo, *hi, *k);
+                self.diag(
+                    code::SYNTAX,
+                    lo,
+                    hi,
+                    format!(
+                        "expected the name of the {} after `{}`",
+                        k.keyword(),
+                        &self.src[lo..hi]
+                    ),
+                    "name missing",
+                );
+                self.out.push((at, Tok::Ident(String::new()), at));
+            }
+            Some((_, Tok::Colon, _)) => self.out.push((at, Tok::Ident(String::new()), at)),
+            _ => {}
+        }
+        self.header_toks += 1;
     }
 
     fn start_orphan(&mut self) {
