@@ -7,10 +7,18 @@ use common::*;
 
 #[test]
 fn load_store_set_reset() {
-    assert!(matches!(one("LD x"), InstrKind::Load { negate: false, operand } if name_of(&operand) == "x"));
+    assert!(
+        matches!(one("LD x"), InstrKind::Load { negate: false, operand } if name_of(&operand) == "x")
+    );
     assert!(matches!(one("LDN x"), InstrKind::Load { negate: true, .. }));
-    assert!(matches!(one("ST x"), InstrKind::Store { negate: false, .. }));
-    assert!(matches!(one("STN x"), InstrKind::Store { negate: true, .. }));
+    assert!(matches!(
+        one("ST x"),
+        InstrKind::Store { negate: false, .. }
+    ));
+    assert!(matches!(
+        one("STN x"),
+        InstrKind::Store { negate: true, .. }
+    ));
     assert!(matches!(one("S x"), InstrKind::Set { .. }));
     assert!(matches!(one("R x"), InstrKind::Reset { .. }));
     assert!(matches!(one("NOT"), InstrKind::Not));
@@ -42,7 +50,11 @@ fn expression_operators_and_modifiers() {
     ];
     for (text, op, neg) in cases {
         match one(&format!("{text} y")) {
-            InstrKind::Expr { op: o, negate, operand } => {
+            InstrKind::Expr {
+                op: o,
+                negate,
+                operand,
+            } => {
                 assert_eq!((o, negate), (op, neg), "{text}");
                 assert_eq!(name_of(&operand), "y");
             }
@@ -51,28 +63,63 @@ fn expression_operators_and_modifiers() {
     }
     // `&N` glued to its operand is still `&N` then the operand... only with a space;
     // `&x` is `&` with operand x.
-    assert!(matches!(one("&x"), InstrKind::Expr { op: And, negate: false, operand } if name_of(&operand) == "x"));
+    assert!(
+        matches!(one("&x"), InstrKind::Expr { op: And, negate: false, operand } if name_of(&operand) == "x")
+    );
 }
 
 #[test]
 fn jumps_calls_returns_with_conditions() {
     use Cond::*;
-    for (text, cond) in [("JMP", Always), ("JMPC", IfTrue), ("JMPCN", IfFalse), ("JMPNC", IfFalse)] {
+    for (text, cond) in [
+        ("JMP", Always),
+        ("JMPC", IfTrue),
+        ("JMPCN", IfFalse),
+        ("JMPNC", IfFalse),
+    ] {
         let k = instrs(&format!("{text} l\nl: LD x"));
-        assert!(matches!(&k[0], InstrKind::Jump { cond: c, label } if *c == cond && label.is("l")), "{text}");
+        assert!(
+            matches!(&k[0], InstrKind::Jump { cond: c, label } if *c == cond && label.is("l")),
+            "{text}"
+        );
     }
-    for (text, cond) in [("CAL", Always), ("CALC", IfTrue), ("CALCN", IfFalse), ("CALNC", IfFalse)] {
-        assert!(matches!(one(&format!("{text} fb")), InstrKind::Call { cond: c, args: None, .. } if c == cond), "{text}");
+    for (text, cond) in [
+        ("CAL", Always),
+        ("CALC", IfTrue),
+        ("CALCN", IfFalse),
+        ("CALNC", IfFalse),
+    ] {
+        assert!(
+            matches!(one(&format!("{text} fb")), InstrKind::Call { cond: c, args: None, .. } if c == cond),
+            "{text}"
+        );
     }
-    for (text, cond) in [("RET", Always), ("RETC", IfTrue), ("RETCN", IfFalse), ("RETNC", IfFalse)] {
-        assert!(matches!(one(text), InstrKind::Return { cond: c } if c == cond), "{text}");
+    for (text, cond) in [
+        ("RET", Always),
+        ("RETC", IfTrue),
+        ("RETCN", IfFalse),
+        ("RETNC", IfFalse),
+    ] {
+        assert!(
+            matches!(one(text), InstrKind::Return { cond: c } if c == cond),
+            "{text}"
+        );
     }
 }
 
 #[test]
 fn fb_input_operators_table_54() {
     use FbInputOp::*;
-    for (text, op) in [("S1", S1), ("R1", R1), ("CLK", Clk), ("CU", Cu), ("CD", Cd), ("PV", Pv), ("IN", In), ("PT", Pt)] {
+    for (text, op) in [
+        ("S1", S1),
+        ("R1", R1),
+        ("CLK", Clk),
+        ("CU", Cu),
+        ("CD", Cd),
+        ("PV", Pv),
+        ("IN", In),
+        ("PT", Pt),
+    ] {
         match one(&format!("{text} inst")) {
             InstrKind::FbInput { op: o, instance } => {
                 assert_eq!(o, op);
@@ -90,18 +137,50 @@ fn fb_input_operators_table_54() {
 #[test]
 fn operator_names_are_variables_in_the_operand_field() {
     let k = instrs("LD R1\nST IN\nAND S\nLD PV.Q\nR1 R1");
-    assert_eq!(name_of(match &k[0] { InstrKind::Load { operand, .. } => operand, _ => panic!() }), "R1");
-    assert_eq!(name_of(match &k[1] { InstrKind::Store { target, .. } => target, _ => panic!() }), "IN");
-    assert_eq!(name_of(match &k[2] { InstrKind::Expr { operand, .. } => operand, _ => panic!() }), "S");
-    assert!(matches!(&k[3], InstrKind::Load { operand: Operand::Var(v), .. } if v.base.is("PV") && v.path.len() == 1));
-    assert!(matches!(&k[4], InstrKind::FbInput { op: FbInputOp::R1, .. }));
+    assert_eq!(
+        name_of(match &k[0] {
+            InstrKind::Load { operand, .. } => operand,
+            _ => panic!(),
+        }),
+        "R1"
+    );
+    assert_eq!(
+        name_of(match &k[1] {
+            InstrKind::Store { target, .. } => target,
+            _ => panic!(),
+        }),
+        "IN"
+    );
+    assert_eq!(
+        name_of(match &k[2] {
+            InstrKind::Expr { operand, .. } => operand,
+            _ => panic!(),
+        }),
+        "S"
+    );
+    assert!(
+        matches!(&k[3], InstrKind::Load { operand: Operand::Var(v), .. } if v.base.is("PV") && v.path.len() == 1)
+    );
+    assert!(matches!(
+        &k[4],
+        InstrKind::FbInput {
+            op: FbInputOp::R1,
+            ..
+        }
+    ));
 }
 
 #[test]
 fn case_insensitive() {
     let p = pou("program P\nvar X : int; end_var\nld x\nSt X\nJmpC l\nl: rEt\nend_program");
     assert_eq!(p.body.len(), 5);
-    assert!(matches!(&p.body[0], Stmt::Instr(Instr { kind: InstrKind::Load { .. }, .. })));
+    assert!(matches!(
+        &p.body[0],
+        Stmt::Instr(Instr {
+            kind: InstrKind::Load { .. },
+            ..
+        })
+    ));
     assert_eq!(p.var_blocks[0].kind, VarKind::Var);
 }
 
@@ -121,7 +200,10 @@ fn spans_point_at_the_source() {
 #[test]
 fn operands_with_paths_indexes_and_bits() {
     match one("LD a.b[i, 2].c.3") {
-        InstrKind::Load { operand: Operand::Var(v), .. } => {
+        InstrKind::Load {
+            operand: Operand::Var(v),
+            ..
+        } => {
             assert!(v.base.is("a"));
             assert_eq!(v.path.len(), 4);
             assert!(matches!(&v.path[1], Accessor::Index(ix, _) if ix.len() == 2));
@@ -134,19 +216,44 @@ fn operands_with_paths_indexes_and_bits() {
 #[test]
 fn deferred_short_and_long_forms() {
     match one("AND( x\nOR y\n)") {
-        InstrKind::Deferred { op: ExprOp::And, negate: false, first: Some(f), body, .. } => {
+        InstrKind::Deferred {
+            op: ExprOp::And,
+            negate: false,
+            first: Some(f),
+            body,
+            ..
+        } => {
             assert_eq!(name_of(&f), "x");
             assert_eq!(body.len(), 1);
         }
         other => panic!("{other:?}"),
     }
     match one("ORN(\nLD x\nAND y\n)") {
-        InstrKind::Deferred { op: ExprOp::Or, negate: true, first: None, body, .. } => assert_eq!(body.len(), 2),
+        InstrKind::Deferred {
+            op: ExprOp::Or,
+            negate: true,
+            first: None,
+            body,
+            ..
+        } => assert_eq!(body.len(), 2),
         other => panic!("{other:?}"),
     }
     // Glued operand, as in plcemu: `ADD(%MD3`.
-    assert!(matches!(one("ADD(%MD3\nDIV %MD0\n)"), InstrKind::Deferred { first: Some(Operand::Addr(_)), .. }));
-    assert!(matches!(one("&N( a\n)"), InstrKind::Deferred { op: ExprOp::And, negate: true, .. }));
+    assert!(matches!(
+        one("ADD(%MD3\nDIV %MD0\n)"),
+        InstrKind::Deferred {
+            first: Some(Operand::Addr(_)),
+            ..
+        }
+    ));
+    assert!(matches!(
+        one("&N( a\n)"),
+        InstrKind::Deferred {
+            op: ExprOp::And,
+            negate: true,
+            ..
+        }
+    ));
 }
 
 #[test]
@@ -173,7 +280,9 @@ fn deferred_close_span_and_instr_span() {
     let u = ok(src);
     let Item::Pou(p) = &u.items[0] else { panic!() };
     let Stmt::Instr(i) = &p.body[0] else { panic!() };
-    let InstrKind::Deferred { close_span, .. } = &i.kind else { panic!() };
+    let InstrKind::Deferred { close_span, .. } = &i.kind else {
+        panic!()
+    };
     assert_eq!(&src[close_span.range()], ")");
     assert_eq!(&src[i.span.range()], "AND( x\n)");
 }
@@ -183,7 +292,13 @@ fn labels_alone_and_before_instructions() {
     let b = body("start:\nLD x\nnext: ST y\n  (* comment *)\nlast:");
     assert!(matches!(&b[0], Stmt::Label(l) if l.is("start")));
     assert!(matches!(&b[2], Stmt::Label(l) if l.is("next")));
-    assert!(matches!(&b[3], Stmt::Instr(Instr { kind: InstrKind::Store { .. }, .. })));
+    assert!(matches!(
+        &b[3],
+        Stmt::Instr(Instr {
+            kind: InstrKind::Store { .. },
+            ..
+        })
+    ));
     assert!(matches!(&b[4], Stmt::Label(l) if l.is("last")));
     assert_eq!(b.len(), 5);
 }
@@ -191,23 +306,36 @@ fn labels_alone_and_before_instructions() {
 #[test]
 fn function_calls_non_formal_and_formal() {
     match one("LIMIT 0, 100") {
-        InstrKind::FnCall { name, args: CallArgs::NonFormal(a) } => {
+        InstrKind::FnCall {
+            name,
+            args: CallArgs::NonFormal(a),
+        } => {
             assert!(name.is("LIMIT"));
             assert_eq!(a.len(), 2);
         }
         other => panic!("{other:?}"),
     }
-    assert!(matches!(one("BCD_TO_INT"), InstrKind::FnCall { args: CallArgs::NonFormal(a), .. } if a.is_empty()));
-    assert!(matches!(one("SIN x"), InstrKind::FnCall { args: CallArgs::NonFormal(a), .. } if a.len() == 1));
+    assert!(
+        matches!(one("BCD_TO_INT"), InstrKind::FnCall { args: CallArgs::NonFormal(a), .. } if a.is_empty())
+    );
+    assert!(
+        matches!(one("SIN x"), InstrKind::FnCall { args: CallArgs::NonFormal(a), .. } if a.len() == 1)
+    );
     match one("LIMIT(MN := 0, IN := x, MX := 100)") {
-        InstrKind::FnCall { args: CallArgs::Formal(a), .. } => {
+        InstrKind::FnCall {
+            args: CallArgs::Formal(a),
+            ..
+        } => {
             assert_eq!(a.len(), 3);
             assert!(a[1].name.is("IN"));
         }
         other => panic!("{other:?}"),
     }
     match one("LIMIT(\n  MN := 0,\n  IN := x,\n  MX := 100\n)") {
-        InstrKind::FnCall { args: CallArgs::Formal(a), .. } => assert_eq!(a.len(), 3),
+        InstrKind::FnCall {
+            args: CallArgs::Formal(a),
+            ..
+        } => assert_eq!(a.len(), 3),
         other => panic!("{other:?}"),
     }
 }
@@ -216,18 +344,27 @@ fn function_calls_non_formal_and_formal() {
 fn cal_three_forms_of_table_53() {
     // 1. formal list, one line, with an output.
     match one("CAL C10(CU := %IX10, PV := 15, Q => done, NOT QD => nd)") {
-        InstrKind::Call { cond: Cond::Always, target, args: Some(CallArgs::Formal(a)) } => {
+        InstrKind::Call {
+            cond: Cond::Always,
+            target,
+            args: Some(CallArgs::Formal(a)),
+        } => {
             assert_eq!(name_of(&target), "C10");
             assert_eq!(a.len(), 4);
             assert!(matches!(&a[0].kind, ParamKind::Input(Operand::Addr(_))));
-            assert!(matches!(&a[2].kind, ParamKind::Output { negate: false, target } if name_of(target) == "done"));
+            assert!(
+                matches!(&a[2].kind, ParamKind::Output { negate: false, target } if name_of(target) == "done")
+            );
             assert!(matches!(&a[3].kind, ParamKind::Output { negate: true, .. }));
         }
         other => panic!("{other:?}"),
     }
     // 1b. formal list over several lines, `=>` included.
     match one("CAL C10(\n    CU := x,\n    R := c.q,\n    Q => done\n   )") {
-        InstrKind::Call { args: Some(CallArgs::Formal(a)), .. } => assert_eq!(a.len(), 3),
+        InstrKind::Call {
+            args: Some(CallArgs::Formal(a)),
+            ..
+        } => assert_eq!(a.len(), 3),
         other => panic!("{other:?}"),
     }
     // 2. loads and stores of the inputs, then CAL.
@@ -236,15 +373,30 @@ fn cal_three_forms_of_table_53() {
     // 3. input operators.
     assert!(matches!(one("PV C10"), InstrKind::FbInput { .. }));
     // non-formal list, empty list, array element as target.
-    assert!(matches!(one("CAL f(10, e_1, 'x')"), InstrKind::Call { args: Some(CallArgs::NonFormal(a)), .. } if a.len() == 3));
-    assert!(matches!(one("CAL f()"), InstrKind::Call { args: Some(CallArgs::Formal(a)), .. } if a.is_empty()));
-    assert!(matches!(one("CALC timers[2]"), InstrKind::Call { target: Operand::Var(v), .. } if v.path.len() == 1));
-    assert!(matches!(one("CALCN f (IN := TRUE)"), InstrKind::Call { cond: Cond::IfFalse, args: Some(_), .. }));
+    assert!(
+        matches!(one("CAL f(10, e_1, 'x')"), InstrKind::Call { args: Some(CallArgs::NonFormal(a)), .. } if a.len() == 3)
+    );
+    assert!(
+        matches!(one("CAL f()"), InstrKind::Call { args: Some(CallArgs::Formal(a)), .. } if a.is_empty())
+    );
+    assert!(
+        matches!(one("CALC timers[2]"), InstrKind::Call { target: Operand::Var(v), .. } if v.path.len() == 1)
+    );
+    assert!(matches!(
+        one("CALCN f (IN := TRUE)"),
+        InstrKind::Call {
+            cond: Cond::IfFalse,
+            args: Some(_),
+            ..
+        }
+    ));
 }
 
 #[test]
 fn begin_il_end_il() {
-    let p = pou("FUNCTION_BLOCK fb\nVAR x : BOOL; END_VAR\nBEGIN_IL\n  LD x\n  ST x\nEND_IL\nEND_FUNCTION_BLOCK");
+    let p = pou(
+        "FUNCTION_BLOCK fb\nVAR x : BOOL; END_VAR\nBEGIN_IL\n  LD x\n  ST x\nEND_IL\nEND_FUNCTION_BLOCK",
+    );
     assert!(p.begin_il);
     assert_eq!(p.body.len(), 2);
     let e = err1("PROGRAM p\nBEGIN_IL\nLD x\nEND_PROGRAM", "IL0028", 2, 1);
@@ -253,9 +405,26 @@ fn begin_il_end_il() {
 
 #[test]
 fn kas_ide_spellings() {
-    assert!(matches!(one("JMPNC l"), InstrKind::Jump { cond: Cond::IfFalse, .. }));
-    assert!(matches!(one("CALNC fb"), InstrKind::Call { cond: Cond::IfFalse, .. }));
-    assert!(matches!(one("RETNC"), InstrKind::Return { cond: Cond::IfFalse }));
+    assert!(matches!(
+        one("JMPNC l"),
+        InstrKind::Jump {
+            cond: Cond::IfFalse,
+            ..
+        }
+    ));
+    assert!(matches!(
+        one("CALNC fb"),
+        InstrKind::Call {
+            cond: Cond::IfFalse,
+            ..
+        }
+    ));
+    assert!(matches!(
+        one("RETNC"),
+        InstrKind::Return {
+            cond: Cond::IfFalse
+        }
+    ));
 }
 
 #[test]

@@ -253,6 +253,23 @@ fn operand_start(t: &Tok) -> bool {
     matches!(t, Tok::Ident(_) | Tok::Lit(_) | Tok::Addr(_))
 }
 
+/// Index of the first token (labels excluded) of the line that holds `toks[idx]`.
+fn line_first(file: &SourceFile, toks: &[Spanned], idx: usize) -> usize {
+    let mut i = idx;
+    while i > 0 {
+        let (_, t, h) = &toks[i - 1];
+        if matches!(t, Tok::Nl | Tok::Label(_)) {
+            break;
+        }
+        let cur = toks[i].0;
+        if file.text.get(*h..cur).is_none_or(|gap| gap.contains('\n')) {
+            break;
+        }
+        i -= 1;
+    }
+    i
+}
+
 /// Map one lalrpop error to a diagnostic (None when the lexer already
 /// reported the cause).
 pub fn parse_error(
@@ -321,27 +338,26 @@ pub fn parse_error(
                 .find(|&i| toks[i].0 == lo && toks[i].1 == *tok)
                 .unwrap_or(idx);
             let prev = idx.checked_sub(1).map(|i| &toks[i]);
-            let prev2 = idx.checked_sub(2).map(|i| &toks[i].1);
             let span = Span::new(lo, hi);
             let found = if *tok == Tok::Nl {
                 "the end of the line".to_string()
             } else {
                 format!("`{}`", snippet(lo, hi))
             };
+            if *tok != Tok::Nl && has(expected, "Ld") && line_first(file, toks, idx) == idx {
+                return Some(
+                    Diagnostic::error(
+                        code::EXPECTED_INSTRUCTION,
+                        span,
+                        format!("expected an instruction, found {found}"),
+                    )
+                    .with_label("not an IL operator"),
+                );
+            }
             if let Some((plo, ptok, phi)) = prev {
                 let op = snippet(*plo, *phi);
                 let pspan = Span::new(*plo, *phi);
-                let at_op = matches!(
-                    prev2,
-                    None | Some(
-                        Tok::Nl
-                            | Tok::Label(_)
-                            | Tok::Orphan
-                            | Tok::EndVar
-                            | Tok::EndIl
-                            | Tok::BeginIl
-                    )
-                );
+                let at_op = line_first(file, toks, idx - 1) == idx - 1;
                 match ptok {
                     Tok::Ld(_)
                     | Tok::St(_)
@@ -411,18 +427,6 @@ pub fn parse_error(
                             )),
                         );
                     }
-                    Tok::Nl | Tok::Label(_) | Tok::EndVar
-                        if !operand_start(tok) && has(expected, "Ld") =>
-                    {
-                        return Some(
-                            Diagnostic::error(
-                                code::EXPECTED_INSTRUCTION,
-                                span,
-                                format!("expected an instruction, found {found}"),
-                            )
-                            .with_label("not an IL operator"),
-                        );
-                    }
                     _ => {}
                 }
             }
@@ -435,11 +439,7 @@ pub fn parse_error(
             }
             if *tok == Tok::Comma && has(expected, "Nl") {
                 // `ADD cycle, 1`: an operator with an argument list (echidna dialect).
-                let line_op = toks[..idx]
-                    .iter()
-                    .rev()
-                    .take_while(|(_, t, _)| !matches!(t, Tok::Nl | Tok::Label(_)))
-                    .last();
+                let line_op = toks.get(line_first(file, toks, idx));
                 if let Some((ol, ot, oh)) = line_op
                     && !matches!(ot, Tok::Ident(_))
                 {

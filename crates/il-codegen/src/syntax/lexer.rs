@@ -136,6 +136,10 @@ pub struct Lexer<'a> {
     defer_stack: Vec<usize>,
     excess: usize,
     in_resource: bool,
+    /// Declarations: open `(`, `[` and STRUCT; ARRAY keywords in this declaration.
+    nest: usize,
+    arrays: usize,
+    nest_reported: bool,
     out: Vec<Spanned>,
     diags: Vec<Diagnostic>,
 }
@@ -328,6 +332,9 @@ pub fn lex(src: &str) -> (Vec<Spanned>, Vec<Diagnostic>) {
         defer_stack: Vec::new(),
         excess: 0,
         in_resource: false,
+        nest: 0,
+        arrays: 0,
+        nest_reported: false,
         out: Vec::new(),
         diags: Vec::new(),
     };
@@ -595,7 +602,7 @@ impl<'a> Lexer<'a> {
 
     /// Close deferred parentheses left open at the end of a body.
     fn close_deferred(&mut self, at: usize) {
-        if let Some(&first) = self.defer_stack.last() {
+        if let Some(&first) = self.defer_stack.first() {
             let n = self.defer_stack.len();
             self.diag(
                 code::PAREN,
@@ -637,6 +644,9 @@ impl<'a> Lexer<'a> {
             return self.operand_token();
         }
         let start = self.pos;
+        if self.excess > 0 {
+            return self.skip_excess_line();
+        }
         match self.peek(0) {
             b')' => {
                 self.pos += 1;
@@ -679,6 +689,35 @@ impl<'a> Lexer<'a> {
                 self.operand_token();
             }
         }
+    }
+
+    /// Inside parentheses nested too deep (already reported): skip whole
+    /// lines, only counting the parentheses they open and close, so that the
+    /// parser sees neither them nor a cascade of errors.
+    fn skip_excess_line(&mut self) {
+        let start = self.pos;
+        let end = self.src[start..]
+            .find('\n')
+            .map_or(self.b.len(), |i| start + i);
+        let line = &self.src[start..end];
+        let word_len = line
+            .bytes()
+            .take_while(|&c| is_ident(c) || c == b'&')
+            .count();
+        let word = line[..word_len].to_ascii_uppercase();
+        let opens = (word.starts_with('&') || matches!(operator(&word), Some(Tok::Expr(_))))
+            && line[word_len..].trim_start().starts_with('(')
+            && !line[word_len..].trim_start().starts_with("(*");
+        if line.starts_with(')') {
+            self.excess -= 1;
+        } else if opens {
+            self.excess += 1;
+        } else if end_pou_kind(&word).is_some() {
+            // The body ends: close_deferred will report and repair.
+            self.excess = 0;
+            return self.op_word();
+        }
+        self.pos = end;
     }
 
     fn op_word(&mut self) {
@@ -958,7 +997,52 @@ impl<'a> Lexer<'a> {
             }
             _ => {}
         }
+        match kw {
+            Tok::Struct | Tok::Array => {
+                if !self.nest_ok(s, e) {
+                    return;
+                }
+                if kw == Tok::Struct {
+                    self.nest += 1;
+                } else {
+                    self.arrays += 1;
+                }
+            }
+            Tok::EndStruct => self.nest = self.nest.saturating_sub(1),
+            Tok::EndVar | Tok::EndType | Tok::EndConfiguration => {
+                self.nest = 0;
+                self.arrays = 0;
+                self.nest_reported = false;
+            }
+            _ => {}
+        }
         self.push(s, kw, e);
+    }
+
+    /// Declarations nest at most MAX_DEFER_DEPTH deep; beyond, the token is
+    /// replaced by an error token (deep trees overflow the stack when dropped).
+    fn nest_ok(&mut self, lo: usize, hi: usize) -> bool {
+        if self.nest + self.arrays < MAX_DEFER_DEPTH {
+            return true;
+        }
+        if !self.nest_reported {
+            self.nest_reported = true;
+            self.diag(
+                code::TOO_DEEP,
+                lo,
+                hi,
+                format!("this declaration is nested more than {MAX_DEFER_DEPTH} deep"),
+                "too deep",
+            );
+        }
+        // Skip the rest of the declaration: one error token, so that the
+        // parser's recovery does not walk a deep stack once per token.
+        let end = self.src[hi..].find(';').map_or(self.b.len(), |i| hi + i);
+        self.pos = end;
+        self.nest = 0;
+        self.arrays = 0;
+        self.push(lo, Tok::Error, end.max(hi));
+        false
     }
 
     /// A POU header ends (line break or VAR): synthesize a missing name or
@@ -1060,10 +1144,11 @@ impl<'a> Lexer<'a> {
                         self.defer_stack.push(start);
                         self.push(start, Tok::LParen, start + 1);
                     }
-                } else {
-                    if body {
-                        self.arg_depth += 1;
-                    }
+                } else if body {
+                    self.arg_depth += 1;
+                    self.push(start, Tok::LParen, start + 1);
+                } else if self.nest_ok(start, start + 1) {
+                    self.nest += 1;
                     self.push(start, Tok::LParen, start + 1);
                 }
             }
@@ -1071,8 +1156,24 @@ impl<'a> Lexer<'a> {
                 self.pos += 1;
                 if body && self.arg_depth > 0 {
                     self.arg_depth -= 1;
+                } else if !body {
+                    self.nest = self.nest.saturating_sub(1);
                 }
                 self.push(start, Tok::RParen, start + 1);
+            }
+            b'[' if !body => {
+                if self.nest_ok(start, start + 1) {
+                    self.nest += 1;
+                    self.punct(start, 1, Tok::LBracket);
+                }
+            }
+            b']' if !body => {
+                self.nest = self.nest.saturating_sub(1);
+                self.punct(start, 1, Tok::RBracket);
+            }
+            b';' if !body => {
+                self.arrays = 0;
+                self.punct(start, 1, Tok::Semi);
             }
             b'[' => self.punct(start, 1, Tok::LBracket),
             b']' => self.punct(start, 1, Tok::RBracket),

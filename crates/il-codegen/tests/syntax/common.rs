@@ -9,7 +9,11 @@ pub use il_codegen::syntax::parse;
 pub fn ok(src: &str) -> CompilationUnit {
     let f = SourceFile::new("t.il", src);
     let (u, d) = parse(&f);
-    assert!(d.is_empty(), "unexpected diagnostics for\n{src}\n{}", show(&f, &d));
+    assert!(
+        d.is_empty(),
+        "unexpected diagnostics for\n{src}\n{}",
+        show(&f, &d)
+    );
     u
 }
 
@@ -97,7 +101,10 @@ pub fn lit(o: &Operand) -> &LitKind {
 /// The literal operand of `LD <text>`.
 pub fn ld_lit(text: &str) -> Literal {
     match one(&format!("LD {text}")) {
-        InstrKind::Load { operand: Operand::Lit(l), .. } => l,
+        InstrKind::Load {
+            operand: Operand::Lit(l),
+            ..
+        } => l,
         other => panic!("{text}: {other:?}"),
     }
 }
