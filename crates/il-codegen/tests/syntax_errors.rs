@@ -454,3 +454,43 @@ fn pathological_nesting_does_not_overflow() {
         println!("case {i}: {:?}", t.elapsed());
     }
 }
+
+#[test]
+fn operand_expected_in_lists() {
+    let e = errs(&prog("CAL fb(IN := )"));
+    assert_eq!(
+        e.iter()
+            .map(|e| (e.0, e.1, e.2, e.3.as_str()))
+            .collect::<Vec<_>>(),
+        [("IL0003", 3, 14, "expected an operand after `:=`")]
+    );
+    assert_eq!(
+        line3("LIMIT 1, ", "IL0003", 10),
+        "expected an operand after `,`"
+    );
+}
+
+#[test]
+fn partial_address_only_in_declarations() {
+    assert_eq!(
+        line3("LD %I*", "IL0022", 4),
+        "a partly specified address (`%I*`) may only appear in a declaration"
+    );
+}
+
+#[test]
+fn every_emitted_code_is_documented() {
+    let srcs = [
+        prog("LD\nNOT x\nJMP\nCAL\nLD x y\n5\n)\nAND( x\nJMP l\n)\nLD 1x\nLD T#1x\nLD D#2000-1-40\nLD 'x\nLD %Z\nLD x ; c\nLD @\n{p}"),
+        "LD x\n".to_string(),
+        "FUNCTION f\nLD x\nVAR y : ; END_VAR\nBEGIN_IL\nEND_FUNCTION_BLOCK\nCONFIGURATION c TASK t (X := 1); END_CONFIGURATION\n(*".to_string(),
+    ];
+    for src in srcs {
+        let (_, d) = parse(&SourceFile::new("t", src));
+        for d in d {
+            let info = il_codegen::diag::codes::lookup(d.code)
+                .unwrap_or_else(|| panic!("{} is not in CODES", d.code));
+            assert!(!info.explanation.is_empty());
+        }
+    }
+}

@@ -229,7 +229,7 @@ fn friendly(t: &str) -> Option<String> {
         "FbIn" => "an FB input operator".into(),
         "VarKw" => "VAR".into(),
         "PouKw" => "PROGRAM".into(),
-        "EndPou" => "END_PROGRAM".into(),
+        "EndPou" => "an END_ keyword".into(),
         "Orphan" | "EndOrphan" | "MissingEndVar" | "ErrorTok" => return None,
         other => format!("`{other}`"),
     })
@@ -328,7 +328,8 @@ pub fn parse_error(
             token: (lo, tok, hi),
             expected,
         } => {
-            if *tok == Tok::Error {
+            // Error tokens and zero-width repairs were reported by the lexer.
+            if *tok == Tok::Error || (*lo == *hi && *tok != Tok::Nl) {
                 return None;
             }
             let (lo, hi) = (*lo, *hi);
@@ -429,6 +430,24 @@ pub fn parse_error(
                     }
                     _ => {}
                 }
+            }
+            if has(expected, "Lit")
+                && has(expected, "Addr")
+                && has(expected, "IdentTok")
+                && !operand_start(tok)
+            {
+                let after = prev.map_or(String::new(), |(l, _, h)| {
+                    format!(" after `{}`", snippet(*l, *h))
+                });
+                return Some(
+                    Diagnostic::error(
+                        code::MISSING_OPERAND,
+                        span,
+                        format!("expected an operand{after}"),
+                    )
+                    .with_label(format!("found {found}"))
+                    .with_help("an operand is a variable, a literal or a direct address"),
+                );
             }
             if *tok == Tok::Nl && has(expected, ")") {
                 return Some(
@@ -558,10 +577,50 @@ pub fn parse_error(
             } else {
                 code::SYNTAX
             };
+            let mut wanted: Vec<String> = expected.iter().filter_map(|e| friendly(e)).collect();
+            wanted.dedup();
+            let after = prev.map_or(String::new(), |(l, _, h)| {
+                format!(" after `{}`", snippet(*l, *h))
+            });
+            let msg = match wanted.len() {
+                1 => format!("expected {}{after}, found {found}", wanted[0]),
+                2..=4 => {
+                    let last = wanted.pop().unwrap_or_default();
+                    format!(
+                        "expected {} or {last}{after}, found {found}",
+                        wanted.join(", ")
+                    )
+                }
+                _ if *tok == Tok::Nl => format!("the line ends too early{after}"),
+                _ => format!("unexpected {found}"),
+            };
             Some(
-                Diagnostic::error(code_, span, format!("unexpected {found}"))
+                Diagnostic::error(code_, span, msg)
                     .with_label(format!("expected {}", expected_list(expected))),
             )
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn codes_are_unique_documented_and_in_range() {
+        let mut seen = std::collections::HashSet::new();
+        for c in CODES {
+            assert!(seen.insert(c.code), "duplicate {}", c.code);
+            let n: u32 = c
+                .code
+                .strip_prefix("IL")
+                .and_then(|n| n.parse().ok())
+                .expect(c.code);
+            assert!((1..=99).contains(&n), "{}", c.code);
+            assert_eq!(c.code.len(), 6);
+            assert!(!c.title.is_empty() && !c.title.contains('\n'));
+            assert!(c.explanation.len() > 40, "{}", c.code);
+        }
+        assert_eq!(CODES.len(), 31);
     }
 }

@@ -873,6 +873,18 @@ impl<'a> Lexer<'a> {
                 let (s, e) = self.read_word();
                 let up = self.src[s..e].to_ascii_uppercase();
                 self.pos = start;
+                if up.starts_with("END_") && (decl_keyword(&up).is_some() || up == "END_IL") {
+                    self.pos = e;
+                    let opener = up.trim_start_matches("END_").to_string();
+                    self.diag(
+                        code::MISSING_END,
+                        s,
+                        e,
+                        format!("`{}` without a matching `{opener}`", &self.src[s..e]),
+                        "nothing to close",
+                    );
+                    return;
+                }
                 if pou_kind(&up).is_none() && up != "TYPE" && up != "CONFIGURATION" {
                     return self.start_orphan();
                 }
@@ -971,6 +983,20 @@ impl<'a> Lexer<'a> {
                 self.pos = s;
                 self.mode = Mode::Top;
                 return;
+            }
+            (Mode::Config, Tok::EndConfiguration | Tok::Resource) if self.in_resource => {
+                self.diag(
+                    code::MISSING_END,
+                    s,
+                    e,
+                    "missing END_RESOURCE before this",
+                    "the resource should end before this",
+                );
+                self.out.push((s, Tok::EndResource, s));
+                self.in_resource = kw == Tok::Resource;
+                if kw == Tok::EndConfiguration {
+                    self.mode = Mode::Top;
+                }
             }
             (Mode::Config, Tok::EndConfiguration) => self.mode = Mode::Top,
             (Mode::Config, Tok::Resource) => self.in_resource = true,
@@ -1604,6 +1630,12 @@ impl<'a> Lexer<'a> {
             ));
         }
         self.pos = i;
+        if partial && self.mode == Mode::Body {
+            error.get_or_insert((
+                "a partly specified address (`%I*`) may only appear in a declaration".into(),
+                Some("give the full address, e.g. `%IX0.0`, or use the declared variable".into()),
+            ));
+        }
         if let Some((m, help)) = error {
             let d = self.diag(code::BAD_ADDRESS, start, i, m, "invalid address");
             d.help = help;
