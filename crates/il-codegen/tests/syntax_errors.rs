@@ -446,6 +446,7 @@ fn pathological_nesting_does_not_overflow() {
             "ARRAY [1..2] OF ".repeat(100_000)
         ),
         format!("TYPE t : {} END_TYPE", "STRUCT a : ".repeat(100_000)),
+        prog(&format!("LD a{}\nST x", "[b".repeat(100_000))),
     ];
     for (i, src) in cases.into_iter().enumerate() {
         let t = std::time::Instant::now();

@@ -497,6 +497,8 @@ impl<'a> Lexer<'a> {
                     self.arg_depth = 0;
                 }
                 if self.arg_depth == 0 {
+                    self.nest = 0;
+                    self.nest_reported = false;
                     if self.dirty {
                         self.out.push((at, Tok::Nl, at + 1));
                         self.dirty = false;
@@ -1063,7 +1065,8 @@ impl<'a> Lexer<'a> {
         }
         // Skip the rest of the declaration: one error token, so that the
         // parser's recovery does not walk a deep stack once per token.
-        let end = self.src[hi..].find(';').map_or(self.b.len(), |i| hi + i);
+        let stop = if self.mode == Mode::Body { '\n' } else { ';' };
+        let end = self.src[hi..].find(stop).map_or(self.b.len(), |i| hi + i);
         self.pos = end;
         self.nest = 0;
         self.arrays = 0;
@@ -1201,8 +1204,16 @@ impl<'a> Lexer<'a> {
                 self.arrays = 0;
                 self.punct(start, 1, Tok::Semi);
             }
-            b'[' => self.punct(start, 1, Tok::LBracket),
-            b']' => self.punct(start, 1, Tok::RBracket),
+            b'[' => {
+                if self.nest_ok(start, start + 1) {
+                    self.nest += 1;
+                    self.punct(start, 1, Tok::LBracket);
+                }
+            }
+            b']' => {
+                self.nest = self.nest.saturating_sub(1);
+                self.punct(start, 1, Tok::RBracket);
+            }
             b',' => self.punct(start, 1, Tok::Comma),
             b';' => self.punct(start, 1, Tok::Semi),
             b':' if self.peek(1) == b'=' => self.punct(start, 2, Tok::Assign),
