@@ -77,9 +77,10 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
         quote!(let mut #id: #ty = #d;)
     });
     let temp_locals = pou.vars.iter().enumerate().filter(|(i, v)| {
-        !p.in_self(*i)
-            && !(pou.kind == PouKind::Function
-                && matches!(v.kind, VarKind::Input | VarKind::Output))
+        // FUNCTION inputs and outputs are parameters, FB memory is in `self`.
+        let param =
+            pou.kind == PouKind::Function && matches!(v.kind, VarKind::Input | VarKind::Output);
+        !(p.in_self(*i) || param)
     });
     let temp_locals = temp_locals.map(|(_, v)| {
         let id = rust_ident(&v.name);
@@ -164,11 +165,12 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
             quote! {
                 #[doc = #doc]
                 #[derive(Clone, Debug, PartialEq)]
-                #[allow(non_snake_case, non_camel_case_types)]
+                #[allow(non_snake_case, non_camel_case_types, clippy::all)]
                 pub struct #name {
                     #(#decls)*
                 }
 
+                #[allow(clippy::all)]
                 impl ::core::default::Default for #name {
                     fn default() -> Self {
                         Self { #(#inits)* }

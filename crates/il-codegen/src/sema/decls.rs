@@ -583,10 +583,10 @@ pub(crate) fn check_recursion(cxs: &mut [Cx], env: &Env, units: &[&ast::Compilat
             let out = edges.entry(me.clone()).or_default();
             if let Some(sig) = env.pou(&me) {
                 for v in &sig.vars {
-                    if let Ty::Fb(t) = &v.ty {
-                        if env.pou(t).is_some() {
-                            out.push((t.clone(), f, p.name.span));
-                        }
+                    if let Ty::Fb(t) = &v.ty
+                        && env.pou(t).is_some()
+                    {
+                        out.push((t.clone(), f, p.name.span));
                     }
                 }
             }
@@ -637,13 +637,12 @@ fn collect_calls(body: &[ast::Stmt], env: &Env, out: &mut Vec<(String, Span)>) {
             ast::InstrKind::Call {
                 target: Operand::Var(v),
                 ..
-            } if v.path.is_empty() => {
-                if env
+            } if v.path.is_empty()
+                && env
                     .pou(&v.base.name)
-                    .is_some_and(|s| s.kind == PouKind::Function)
-                {
-                    out.push((v.base.key(), v.base.span));
-                }
+                    .is_some_and(|s| s.kind == PouKind::Function) =>
+            {
+                out.push((v.base.key(), v.base.span));
             }
             ast::InstrKind::Deferred { body, .. } => collect_calls(body, env, out),
             _ => {}

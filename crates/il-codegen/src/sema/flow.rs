@@ -228,10 +228,10 @@ impl Walk<'_, '_> {
     }
 
     fn push(&mut self, op: Op) {
-        if let Op::SetCr { ty, .. } = &op {
-            if !self.cr_types.contains(ty) {
-                self.cr_types.push(ty.clone());
-            }
+        if let Op::SetCr { ty, .. } = &op
+            && !self.cr_types.contains(ty)
+        {
+            self.cr_types.push(ty.clone());
         }
         self.out.push(ir::Stmt {
             op,
@@ -307,10 +307,8 @@ impl Walk<'_, '_> {
         let span = i.span;
         match &i.kind {
             InstrKind::Load { negate, operand } => {
-                if !negate {
-                    if let Some(inst) = self.fb_operand(operand, &["CTD", "CTUD"]) {
-                        return self.fb_input(inst, "LD", cr, span);
-                    }
+                if !negate && let Some(inst) = self.fb_operand(operand, &["CTD", "CTUD"]) {
+                    return self.fb_input(inst, "LD", cr, span);
                 }
                 self.load(*negate, operand, span)
             }
@@ -550,22 +548,21 @@ impl Walk<'_, '_> {
                     return cr;
                 }
                 // CAL of a FUNCTION with a formal list (3rd edition, STACK_INT).
-                if let Operand::Var(v) = target {
-                    if v.path.is_empty()
-                        && self.sig.var(&v.base.name).is_none()
-                        && self.is_function(&v.base.name)
-                    {
-                        if *cond != Cond::Always {
-                            self.err(
-                                UNSUPPORTED,
-                                i.op_span,
-                                "CALC/CALCN of a FUNCTION is not supported; use JMPCN around it",
-                            );
-                            return cr;
-                        }
-                        let args = args.clone().unwrap_or(CallArgs::Formal(Vec::new()));
-                        return self.fn_call(&v.base, &args, cr, span, true);
+                if let Operand::Var(v) = target
+                    && v.path.is_empty()
+                    && self.sig.var(&v.base.name).is_none()
+                    && self.is_function(&v.base.name)
+                {
+                    if *cond != Cond::Always {
+                        self.err(
+                            UNSUPPORTED,
+                            i.op_span,
+                            "CALC/CALCN of a FUNCTION is not supported; use JMPCN around it",
+                        );
+                        return cr;
                     }
+                    let args = args.clone().unwrap_or(CallArgs::Formal(Vec::new()));
+                    return self.fn_call(&v.base, &args, cr, span, true);
                 }
                 let Some(inst) = self.place_of(target, false) else {
                     return Cr::Undef(Why::AfterCal(self.line));
@@ -1418,39 +1415,38 @@ impl Walk<'_, '_> {
             };
         }
         // TIME scaled by a number.
-        if matches!(bop, BinOp::Mul | BinOp::Div) {
-            if let (Arg::Typed(lv, Ty::Elem(te)), r) = (&lhs, &rhs) {
-                if te.is_duration() {
-                    let (rv, ne) = match r {
-                        Arg::Typed(v, Ty::Elem(n)) if n.is_num() => (v.clone(), *n),
-                        Arg::Lit(LitClass::Int(n), _) if i64::try_from(*n).is_ok() => {
-                            (Value::Const(Const::Int(*n, Elem::LINT)), Elem::LINT)
-                        }
-                        Arg::Lit(LitClass::Real(f, _), _) => {
-                            (Value::Const(Const::Real(*f, Elem::LREAL)), Elem::LREAL)
-                        }
-                        _ => {
-                            self.err(
-                                TYPE_MISMATCH,
-                                span,
-                                format!("{} of {} needs a number", op.name(), te.name()),
-                            );
-                            return bad;
-                        }
-                    };
-                    self.push(Op::SetCr {
-                        ty: Ty::Elem(*te),
-                        expr: Expr::TimeScale {
-                            div: bop == BinOp::Div,
-                            time: *te,
-                            lhs: lv.clone(),
-                            num: ne,
-                            rhs: rv,
-                        },
-                    });
-                    return Cr::Val(Ty::Elem(*te));
+        if matches!(bop, BinOp::Mul | BinOp::Div)
+            && let (Arg::Typed(lv, Ty::Elem(te)), r) = (&lhs, &rhs)
+            && te.is_duration()
+        {
+            let (rv, ne) = match r {
+                Arg::Typed(v, Ty::Elem(n)) if n.is_num() => (v.clone(), *n),
+                Arg::Lit(LitClass::Int(n), _) if i64::try_from(*n).is_ok() => {
+                    (Value::Const(Const::Int(*n, Elem::LINT)), Elem::LINT)
                 }
-            }
+                Arg::Lit(LitClass::Real(f, _), _) => {
+                    (Value::Const(Const::Real(*f, Elem::LREAL)), Elem::LREAL)
+                }
+                _ => {
+                    self.err(
+                        TYPE_MISMATCH,
+                        span,
+                        format!("{} of {} needs a number", op.name(), te.name()),
+                    );
+                    return bad;
+                }
+            };
+            self.push(Op::SetCr {
+                ty: Ty::Elem(*te),
+                expr: Expr::TimeScale {
+                    div: bop == BinOp::Div,
+                    time: *te,
+                    lhs: lv.clone(),
+                    num: ne,
+                    rhs: rv,
+                },
+            });
+            return Cr::Val(Ty::Elem(*te));
         }
         let (ty, lv, rv) = match (lhs, rhs) {
             (Arg::Typed(lv, t), Arg::Typed(rv, u)) => {

@@ -45,10 +45,10 @@ pub fn check_all(
             ast::Item::Pou(p) => Some(p),
             _ => None,
         }) {
-            if env.pou(&pou.name.name).is_some_and(|s| s.file == f) {
-                if let Some(checked) = flow::check_pou(&mut cxs[f], &env, pou) {
-                    program.pous.push(checked);
-                }
+            if env.pou(&pou.name.name).is_some_and(|s| s.file == f)
+                && let Some(checked) = flow::check_pou(&mut cxs[f], &env, pou)
+            {
+                program.pous.push(checked);
             }
         }
         programs.push(program);

@@ -158,24 +158,24 @@ pub(crate) fn resolve(key: &str, args: &[ArgShape]) -> Result<Resolved, ResolveE
             }
         }
     }
-    if t.is_none() {
-        if let Some(c) = t_class {
-            t = args
-                .iter()
-                .enumerate()
-                .find_map(|(i, a)| match (param_of(s, i), a) {
-                    (Some(ParamTy::T(_)), ArgShape::Lit(l)) => lit_default(l, Some(c)),
-                    _ => None,
-                });
-        }
+    if t.is_none()
+        && let Some(c) = t_class
+    {
+        t = args
+            .iter()
+            .enumerate()
+            .find_map(|(i, a)| match (param_of(s, i), a) {
+                (Some(ParamTy::T(_)), ArgShape::Lit(l)) => lit_default(l, Some(c)),
+                _ => None,
+            });
     }
-    if let (Some(t), Some(c)) = (&t, t_class) {
-        if !in_class(t, c) {
-            return Err(err(
-                false,
-                format!("{} is not defined for {t} (needs {c:?})", s.name),
-            ));
-        }
+    if let (Some(t), Some(c)) = (&t, t_class)
+        && !in_class(t, c)
+    {
+        return Err(err(
+            false,
+            format!("{} is not defined for {t} (needs {c:?})", s.name),
+        ));
     }
     let mut params = Vec::new();
     for (i, a) in args.iter().enumerate() {
@@ -209,13 +209,13 @@ pub(crate) fn resolve(key: &str, args: &[ArgShape]) -> Result<Resolved, ResolveE
                 })?,
             },
         };
-        if let ArgShape::Ty(have) = a {
-            if *have != ty {
-                return Err(err(
-                    false,
-                    format!("argument {} of {} must be {ty}, not {have}", i + 1, s.name),
-                ));
-            }
+        if let ArgShape::Ty(have) = a
+            && *have != ty
+        {
+            return Err(err(
+                false,
+                format!("argument {} of {} must be {ty}, not {have}", i + 1, s.name),
+            ));
         }
         params.push(ty);
     }
