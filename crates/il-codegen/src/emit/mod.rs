@@ -56,7 +56,8 @@ struct Pou<'a> {
 impl Pou<'_> {
     /// Whether variable `i` lives in `self` (FB/PROGRAM memory) or is a local.
     fn in_self(&self, i: usize) -> bool {
-        self.pou.kind != PouKind::Function && self.pou.vars[i].kind != VarKind::Temp
+        let v = &self.pou.vars[i];
+        self.pou.kind != PouKind::Function && v.kind != VarKind::Temp && v.location.is_none()
     }
 }
 
@@ -157,6 +158,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 let init = values::init_value(&v.ty, v.init.as_ref());
                 quote!(#id: #init,)
             });
+            let addresses = addresses(pou);
             let method_doc = if pou.kind == PouKind::Program {
                 " Run one scan."
             } else {
@@ -178,6 +180,10 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 }
 
                 impl #name {
+                    /// The located variables and direct addresses this POU
+                    /// reads or writes in `Cycle::io`, for binding I/O.
+                    pub const ADDRESSES: &'static [::il_std::Located] = &[#(#addresses),*];
+
                     #[doc = #method_doc]
                     #allow
                     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
@@ -194,4 +200,28 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
             }
         }
     }
+}
+
+fn addresses(pou: &CheckedPou) -> Vec<TokenStream> {
+    let located = pou
+        .vars
+        .iter()
+        .filter_map(|v| v.location.as_ref().map(|l| (v.name.as_str(), l)));
+    let direct = pou.addresses.iter().map(|l| (l.text.as_str(), l));
+    located
+        .chain(direct)
+        .map(|(name, l)| {
+            let area = match l.area {
+                crate::ast::Area::Input => quote!(::il_std::Area::Input),
+                crate::ast::Area::Output => quote!(::il_std::Area::Output),
+                crate::ast::Area::Memory => quote!(::il_std::Area::Memory),
+            };
+            let (text, byte, ty) = (&l.text, l.byte, l.elem.name());
+            let bit = match l.bit {
+                Some(b) => quote!(::core::option::Option::Some(#b)),
+                None => quote!(::core::option::Option::None),
+            };
+            quote!(::il_std::Located { name: #name, address: #text, area: #area, byte: #byte, bit: #bit, ty: #ty })
+        })
+        .collect()
 }

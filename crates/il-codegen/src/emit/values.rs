@@ -1,8 +1,9 @@
 //! Values, places and expressions.
 
 use super::{Pou, rust_ident, rust_ty};
+use crate::ast::Area;
 use crate::ast::{PouKind, VarKind};
-use crate::sema::ir::{BinOp, Const, Expr, Init, PathElem, Place, Root, StdCall, Value};
+use crate::sema::ir::{BinOp, Const, Expr, Init, Loc, PathElem, Place, Root, StdCall, Value};
 use crate::sema::types::{Elem, Ty};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
@@ -167,6 +168,8 @@ impl Pou<'_> {
         match r {
             Root::Ret => quote!(__ret),
             Root::Eno => quote!(__eno),
+            // Reads and writes of the process image go through `read`/`write`.
+            Root::Addr(_) => quote!(__ctx.io),
             Root::Var(i) => {
                 let v = &self.pou.vars[*i];
                 let id = rust_ident(&v.name);
@@ -249,6 +252,9 @@ impl Pou<'_> {
     }
 
     pub(crate) fn read(&self, p: &Place, line: u32) -> TokenStream {
+        if let Root::Addr(l) = &p.root {
+            return io_read(l);
+        }
         if !Self::has_index(p) {
             return self.simple_path(p);
         }
@@ -267,6 +273,9 @@ impl Pou<'_> {
 
     /// Store `value` (already evaluated tokens) into a place.
     pub(crate) fn write(&self, p: &Place, value: TokenStream, line: u32) -> TokenStream {
+        if let Root::Addr(l) = &p.root {
+            return io_write(l, value);
+        }
         if !Self::has_index(p) {
             let path = self.simple_path(p);
             return quote!(#path = #value;);
@@ -465,6 +474,54 @@ impl Pou<'_> {
             BinOp::Mod => quote!(#l % #r),
         }
     }
+}
+
+fn area(l: &Loc) -> TokenStream {
+    match l.area {
+        Area::Input => quote!(::il_std::Area::Input),
+        Area::Output => quote!(::il_std::Area::Output),
+        Area::Memory => quote!(::il_std::Area::Memory),
+    }
+}
+
+/// Read a located value from the process image.
+fn io_read(l: &Loc) -> TokenStream {
+    let a = area(l);
+    let b = l.byte;
+    if let Some(bit) = l.bit {
+        return quote!(__ctx.io.bit(#a, #b, #bit));
+    }
+    match l.elem {
+        Elem::BYTE | Elem::USINT => quote!(__ctx.io.byte(#a, #b)),
+        Elem::SINT => quote!(__ctx.io.byte(#a, #b).cast_signed()),
+        Elem::WORD | Elem::UINT => quote!(__ctx.io.word(#a, #b)),
+        Elem::INT => quote!(__ctx.io.word(#a, #b).cast_signed()),
+        Elem::DWORD | Elem::UDINT => quote!(__ctx.io.dword(#a, #b)),
+        Elem::DINT => quote!(__ctx.io.dword(#a, #b).cast_signed()),
+        Elem::REAL => quote!(f32::from_bits(__ctx.io.dword(#a, #b))),
+        Elem::LWORD | Elem::ULINT => quote!(__ctx.io.lword(#a, #b)),
+        Elem::LINT => quote!(__ctx.io.lword(#a, #b).cast_signed()),
+        _ => quote!(f64::from_bits(__ctx.io.lword(#a, #b))),
+    }
+}
+
+/// Store a value (tokens of its Rust type) into the process image.
+fn io_write(l: &Loc, v: TokenStream) -> TokenStream {
+    let a = area(l);
+    let b = l.byte;
+    if let Some(bit) = l.bit {
+        return quote!({ let __v: bool = #v; __ctx.io.set_bit(#a, #b, #bit, __v); });
+    }
+    let ty = l.elem.rust();
+    let (set, conv) = match l.elem {
+        Elem::BYTE | Elem::USINT | Elem::SINT => (quote!(set_byte), quote!(__v as u8)),
+        Elem::WORD | Elem::UINT | Elem::INT => (quote!(set_word), quote!(__v as u16)),
+        Elem::DWORD | Elem::UDINT | Elem::DINT => (quote!(set_dword), quote!(__v as u32)),
+        Elem::REAL => (quote!(set_dword), quote!(__v.to_bits())),
+        Elem::LREAL => (quote!(set_lword), quote!(__v.to_bits())),
+        _ => (quote!(set_lword), quote!(__v as u64)),
+    };
+    quote!({ let __v: #ty = #v; __ctx.io.#set(#a, #b, #conv); })
 }
 
 fn member_ident(name: &str) -> proc_macro2::Ident {

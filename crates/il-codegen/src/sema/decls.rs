@@ -1,7 +1,7 @@
 //! Declarations: POU interfaces, variable types, initial values, literals.
 
 use super::codes::*;
-use super::ir::{Const, Init, Var};
+use super::ir::{Const, Init, Loc, Var};
 use super::types::{DEFAULT_STRING_LEN, Elem, Ty};
 use super::{Cx, stdfb, suggest};
 use crate::ast::{
@@ -169,13 +169,6 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
             _ => {}
         }
         for decl in &block.decls {
-            if let Some(loc) = &decl.location {
-                cx.err(
-                    UNSUPPORTED,
-                    loc.span,
-                    "located variables (AT %...) are not supported yet",
-                );
-            }
             if decl.edge.is_some() {
                 // R_EDGE/F_EDGE inputs: accepted, evaluated as plain BOOL by the caller's value.
                 // (The edge is the caller's concern in IEC; documented in the guide.)
@@ -192,6 +185,27 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
                     "a FUNCTION cannot hold function block instances (it has no memory)",
                 );
                 continue;
+            }
+            let location = match &decl.location {
+                None => None,
+                Some(_) if p.kind == PouKind::Function => {
+                    cx.err(
+                        BAD_ADDRESS,
+                        decl.span,
+                        "a FUNCTION cannot have located variables (AT %...)",
+                    );
+                    continue;
+                }
+                Some(a) => match resolve_addr(cx, a, Some(&ty)) {
+                    Some(l) => Some(l),
+                    None => {
+                        sig.poisoned.extend(decl.names.iter().map(|n| n.key()));
+                        continue;
+                    }
+                },
+            };
+            if location.is_some() && decl.init.is_some() {
+                cx.warn(BAD_INIT, decl.span, "the initial value of a located variable is not applied: the host owns the process image");
             }
             let init = decl.init.as_ref().and_then(|i| init_value(cx, i, &ty));
             for name in &decl.names {
@@ -221,6 +235,7 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
                 sig.index.insert(key, sig.vars.len());
                 sig.vars.push(Var {
                     name: name.name.clone(),
+                    location: location.clone(),
                     kind: block.kind,
                     ty: ty.clone(),
                     init: init.clone(),
@@ -231,6 +246,105 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
         }
     }
     sig
+}
+
+/// Resolve a direct address, checking it against the process image and,
+/// for a located variable, against its declared type.
+pub(crate) fn resolve_addr(
+    cx: &mut Cx,
+    a: &ast::DirectAddress,
+    declared: Option<&Ty>,
+) -> Option<Loc> {
+    use ast::{AddrSize, Area};
+    let text = cx.file.snippet(a.span).to_string();
+    if a.partial {
+        cx.err(
+            UNSUPPORTED,
+            a.span,
+            "partly specified addresses (%I*, %Q*) are not supported yet",
+        );
+        return None;
+    }
+    let (width, default) = match a.size {
+        AddrSize::Default | AddrSize::X => (0, Elem::BOOL),
+        AddrSize::B => (1, Elem::BYTE),
+        AddrSize::W => (2, Elem::WORD),
+        AddrSize::D => (4, Elem::DWORD),
+        AddrSize::L => (8, Elem::LWORD),
+    };
+    let (byte, bit) = match (width, a.path.as_slice()) {
+        (0, [n]) => ((*n / 8) as usize, Some((*n % 8) as u8)),
+        (0, [b, n]) if *n < 8 => (*b as usize, Some(*n as u8)),
+        (0, [_, n]) => {
+            cx.err(
+                BAD_ADDRESS,
+                a.span,
+                format!("bit {n} does not exist: a byte has bits 0 to 7"),
+            );
+            return None;
+        }
+        (w, [n]) => ((*n as usize).saturating_mul(w), None),
+        _ => {
+            cx.err(BAD_ADDRESS, a.span, format!("`{text}`: only `%IXbyte.bit`, `%IXbit` and `%IBn`/`%IWn`/`%IDn`/`%ILn` addresses are supported"));
+            return None;
+        }
+    };
+    let (cap, area_name) = match a.area {
+        Area::Input => (il_std::INPUT_BYTES, "inputs"),
+        Area::Output => (il_std::OUTPUT_BYTES, "outputs"),
+        Area::Memory => (il_std::MEMORY_BYTES, "memory"),
+    };
+    if byte.saturating_add(width.max(1)) > cap {
+        cx.err(
+            BAD_ADDRESS,
+            a.span,
+            format!("`{text}` is outside the process image ({cap} bytes of {area_name})"),
+        );
+        return None;
+    }
+    let elem = match declared {
+        None => default,
+        Some(Ty::Elem(e)) => {
+            let fits = match width {
+                0 => *e == Elem::BOOL,
+                1 => matches!(e, Elem::BYTE | Elem::SINT | Elem::USINT),
+                2 => matches!(e, Elem::WORD | Elem::INT | Elem::UINT),
+                4 => matches!(e, Elem::DWORD | Elem::DINT | Elem::UDINT | Elem::REAL),
+                _ => matches!(e, Elem::LWORD | Elem::LINT | Elem::ULINT | Elem::LREAL),
+            };
+            if !fits {
+                let what = match width {
+                    0 => "a bit (BOOL)",
+                    1 => "a byte (BYTE, SINT, USINT)",
+                    2 => "a word (WORD, INT, UINT)",
+                    4 => "a double word (DWORD, DINT, UDINT, REAL)",
+                    _ => "a long word (LWORD, LINT, ULINT, LREAL)",
+                };
+                cx.err(
+                    BAD_ADDRESS,
+                    a.span,
+                    format!("`{text}` is {what}; it cannot hold {}", e.name()),
+                );
+                return None;
+            }
+            *e
+        }
+        Some(t) => {
+            cx.err(
+                BAD_ADDRESS,
+                a.span,
+                format!("a {t} cannot be located at a direct address"),
+            );
+            return None;
+        }
+    };
+    Some(Loc {
+        area: a.area,
+        byte,
+        bit,
+        elem,
+        text,
+    })
 }
 
 /// Names with `__` or a trailing `_` are not IEC identifiers, and the generated

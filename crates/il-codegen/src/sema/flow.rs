@@ -88,6 +88,7 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
         save_types: Vec::new(),
         jumped: vec![false; n],
         line: 0,
+        addresses: Vec::new(),
     };
     // Fixpoint: the lattice per label is short (dead → literal → type → mixed),
     // so a few rounds settle it; the cap only guards against oscillation bugs.
@@ -127,6 +128,7 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
         ret: sig.ret.clone(),
         body: w.out,
         label_count: n,
+        addresses: w.addresses,
         cr_types: w.cr_types,
         save_types: w.save_types,
     })
@@ -211,6 +213,7 @@ struct Walk<'a, 'c> {
     save_types: Vec<Ty>,
     jumped: Vec<bool>,
     line: u32,
+    addresses: Vec<ir::Loc>,
 }
 
 impl Walk<'_, '_> {
@@ -759,14 +762,44 @@ impl Walk<'_, '_> {
                 Some(Arg::Typed(Value::Read(p.clone()), p.ty))
             }
             Operand::Addr(a) => {
-                self.err(
-                    UNSUPPORTED,
-                    a.span,
-                    "direct addresses (%I, %Q, %M) are not supported yet",
-                );
-                None
+                let p = self.addr_place(a, false)?;
+                Some(Arg::Typed(Value::Read(p.clone()), p.ty))
             }
         }
+    }
+
+    fn addr_place(&mut self, a: &ast::DirectAddress, write: bool) -> Option<Place> {
+        if !self.final_pass {
+            // Resolution reports errors; report them once, on the final pass.
+            let saved = std::mem::take(&mut self.cx.diags);
+            let l = super::decls::resolve_addr(self.cx, a, None);
+            self.cx.diags = saved;
+            return l.map(|l| Place {
+                ty: Ty::Elem(l.elem),
+                root: Root::Addr(l),
+                path: Vec::new(),
+            });
+        }
+        let l = super::decls::resolve_addr(self.cx, a, None)?;
+        if write && l.area == ast::Area::Input {
+            self.err(
+                NOT_WRITABLE,
+                a.span,
+                format!(
+                    "`{}` is an input: the host writes it before each scan",
+                    l.text
+                ),
+            );
+            return None;
+        }
+        if !self.addresses.contains(&l) {
+            self.addresses.push(l.clone());
+        }
+        Some(Place {
+            ty: Ty::Elem(l.elem),
+            root: Root::Addr(l),
+            path: Vec::new(),
+        })
     }
 
     fn place_of(&mut self, o: &Operand, write: bool) -> Option<Place> {
@@ -776,21 +809,28 @@ impl Walk<'_, '_> {
                 self.err(NOT_WRITABLE, l.span, "expected a variable, found a literal");
                 None
             }
-            Operand::Addr(a) => {
-                self.err(
-                    UNSUPPORTED,
-                    a.span,
-                    "direct addresses (%I, %Q, %M) are not supported yet",
-                );
-                None
-            }
+            Operand::Addr(a) => self.addr_place(a, write),
         }
     }
 
     /// Resolve a variable reference; `write` checks that it may be stored to.
     fn place(&mut self, v: &VarRef, write: bool) -> Option<Place> {
         let (root, mut ty, constant) = if let Some((i, var)) = self.sig.var(&v.base.name) {
-            (Root::Var(i), var.ty.clone(), var.constant)
+            match &var.location {
+                Some(l) if write && l.area == ast::Area::Input => {
+                    self.err(
+                        NOT_WRITABLE,
+                        v.span,
+                        format!(
+                            "`{}` is located at the input `{}`: the host writes it",
+                            v.base, l.text
+                        ),
+                    );
+                    return None;
+                }
+                Some(l) => (Root::Addr(l.clone()), var.ty.clone(), var.constant),
+                None => (Root::Var(i), var.ty.clone(), var.constant),
+            }
         } else if self.sig.kind == PouKind::Function && v.base.is(&self.sig.name) {
             (Root::Ret, self.sig.ret.clone()?, false)
         } else if self.sig.kind == PouKind::Function && v.base.is("ENO") {

@@ -20,6 +20,8 @@ pub struct CheckedPou {
     pub ret: Option<Ty>,
     pub body: Vec<Stmt>,
     pub label_count: usize,
+    /// Direct addresses used in the body (for `ADDRESSES`).
+    pub addresses: Vec<Loc>,
     /// The CR locals the body uses (one per type).
     pub cr_types: Vec<Ty>,
     /// Types of the slots that hold the outer CR of deferred parentheses.
@@ -30,6 +32,8 @@ pub struct CheckedPou {
 pub struct Var {
     /// As declared.
     pub name: String,
+    /// `AT %...`: the variable is that place of the process image.
+    pub location: Option<Loc>,
     pub kind: VarKind,
     pub ty: Ty,
     pub init: Option<Init>,
@@ -93,6 +97,22 @@ pub enum Root {
     Ret,
     /// ENO of a FUNCTION.
     Eno,
+    /// A place of the process image (a direct address or a located variable).
+    Addr(Loc),
+}
+
+/// A resolved direct address.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Loc {
+    pub area: crate::ast::Area,
+    /// Byte offset in the area.
+    pub byte: usize,
+    /// Bit number of a bit address.
+    pub bit: Option<u8>,
+    /// The type stored there (its size matches the address).
+    pub elem: Elem,
+    /// As written (`%IX1.0`).
+    pub text: String,
 }
 
 #[derive(Clone, Debug, PartialEq)]
