@@ -271,6 +271,7 @@ impl Walk<'_, '_> {
                         warned_dead = true;
                         continue;
                     }
+                    self.push(Op::Nop);
                     cr = self.instr(i, cr, false);
                 }
             }

@@ -260,4 +260,7 @@ pub enum Op {
     Return {
         cond: Condition,
     },
+    /// Nothing to do (an instruction whose effect is only on the checker's
+    /// state, like loading a literal); keeps its line comment.
+    Nop,
 }
