@@ -15,7 +15,7 @@ use crate::sema::types::Ty;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
-pub use names::rust_ident;
+pub use names::{item_ident, local_ident, rust_ident};
 
 /// How to emit.
 #[derive(Clone, Copy, Debug, Default)]
@@ -38,7 +38,7 @@ pub(crate) fn rust_ty(t: &Ty) -> TokenStream {
             let id = format_ident!("{}", name);
             quote!(::il_std::#id)
         } else {
-            let id = rust_ident(name);
+            let id = item_ident(name);
             quote!(#id)
         }
     })
@@ -63,7 +63,7 @@ impl Pou<'_> {
 
 fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
     let p = Pou { pou, opts };
-    let name = rust_ident(&pou.name);
+    let name = item_ident(&pou.name);
     let body = p.body();
     let cr_locals = pou.cr_types.iter().map(|t| {
         let id = values::cr_ident(t);
@@ -84,7 +84,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
         !(p.in_self(*i) || param)
     });
     let temp_locals = temp_locals.map(|(_, v)| {
-        let id = rust_ident(&v.name);
+        let id = local_ident(&v.name);
         let ty = rust_ty(&v.ty);
         let init = values::init_value(&v.ty, v.init.as_ref());
         quote!(let mut #id: #ty = #init;)
@@ -114,7 +114,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 .iter()
                 .filter(|v| v.kind == VarKind::Input)
                 .map(|v| {
-                    let id = rust_ident(&v.name);
+                    let id = local_ident(&v.name);
                     let ty = rust_ty(&v.ty);
                     quote!(mut #id: #ty)
                 });
@@ -123,16 +123,26 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 .iter()
                 .filter(|v| v.kind == VarKind::Output)
                 .map(|v| {
-                    let id = rust_ident(&v.name);
+                    let id = local_ident(&v.name);
                     let ty = rust_ty(&v.ty);
                     quote!(#id: &mut #ty)
+                });
+            // Outputs start from their initial values on every call.
+            let out_inits = pou
+                .vars
+                .iter()
+                .filter(|v| v.kind == VarKind::Output)
+                .map(|v| {
+                    let id = local_ident(&v.name);
+                    let init = values::init_value(&v.ty, v.init.as_ref());
+                    quote!(*#id = #init;)
                 });
             quote! {
                 #[doc = #doc]
                 #allow
                 pub fn #name(__ctx: &mut ::il_std::Cycle, #(#params,)* #(#outs,)*) -> #ret_ty {
                     let mut __ret: #ret_ty = #ret_default;
-                    let mut __eno: bool = true;
+                    #(#out_inits)*
                     #locals
                     #body
                     __ret
@@ -158,6 +168,33 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 let init = values::init_value(&v.ty, v.init.as_ref());
                 quote!(#id: #init,)
             });
+            // R_EDGE/F_EDGE inputs: private memory, and the edge computed on
+            // entry (F_EDGE follows F_TRIG: Q := NOT CLK AND NOT M; M := NOT CLK).
+            let edges: Vec<_> = fields
+                .iter()
+                .filter_map(|v| v.edge.map(|e| (*v, e)))
+                .collect();
+            let mem_decls = edges.iter().map(|(v, _)| {
+                let m = format_ident!("__edge_memory_{}", v.name);
+                quote!(#m: bool,)
+            });
+            let mem_inits = edges.iter().map(|(v, _)| {
+                let m = format_ident!("__edge_memory_{}", v.name);
+                quote!(#m: false,)
+            });
+            let edge_lets = edges.iter().map(|(v, e)| {
+                let m = format_ident!("__edge_memory_{}", v.name);
+                let x = rust_ident(&v.name);
+                let l = format_ident!("__edge_{}", v.name);
+                match e {
+                    crate::ast::Edge::Rising => {
+                        quote!(let #l: bool = self.#x && !self.#m; self.#m = self.#x;)
+                    }
+                    crate::ast::Edge::Falling => {
+                        quote!(let #l: bool = !self.#x && !self.#m; self.#m = !self.#x;)
+                    }
+                }
+            });
             let addresses = addresses(pou);
             let method_doc = if pou.kind == PouKind::Program {
                 " Run one scan."
@@ -170,12 +207,13 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 #[allow(non_snake_case, non_camel_case_types, clippy::all)]
                 pub struct #name {
                     #(#decls)*
+                    #(#mem_decls)*
                 }
 
                 #[allow(clippy::all)]
                 impl ::core::default::Default for #name {
                     fn default() -> Self {
-                        Self { #(#inits)* }
+                        Self { #(#inits)* #(#mem_inits)* }
                     }
                 }
 
@@ -187,6 +225,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                     #[doc = #method_doc]
                     #allow
                     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
+                        #(#edge_lets)*
                         #locals
                         #body
                     }

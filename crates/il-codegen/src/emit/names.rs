@@ -69,6 +69,29 @@ pub fn rust_ident(name: &str) -> Ident {
     }
 }
 
+/// The Rust name of a local binding (a FUNCTION's parameters and locals, VAR_TEMP).
+/// Locals are not part of the host's API, so they get a prefix that keeps
+/// them apart from everything in the user's scope: a `let` cannot bind a name
+/// that is a constant or unit struct there (`None`, a user `const SPEED`).
+pub fn local_ident(name: &str) -> Ident {
+    Ident::new(&format!("__v_{name}"), Span::call_site())
+}
+
+/// The Rust name of a generated item (struct or fn). A POU named like a Rust
+/// primitive type (`i16`, `bool` ...) would hide that type from the generated
+/// code, so it gets a trailing `_` (which no IEC identifier has).
+pub fn item_ident(name: &str) -> Ident {
+    const PRIMITIVES: &[&str] = &[
+        "bool", "char", "str", "i8", "i16", "i32", "i64", "i128", "isize", "u8", "u16", "u32",
+        "u64", "u128", "usize", "f32", "f64",
+    ];
+    if PRIMITIVES.contains(&name) {
+        Ident::new(&format!("{name}_"), Span::call_site())
+    } else {
+        rust_ident(name)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::rust_ident;

@@ -1,6 +1,6 @@
 //! Values, places and expressions.
 
-use super::{Pou, rust_ident, rust_ty};
+use super::{Pou, item_ident, local_ident, rust_ident, rust_ty};
 use crate::ast::Area;
 use crate::ast::{PouKind, VarKind};
 use crate::sema::ir::{BinOp, Const, Expr, Init, Loc, PathElem, Place, Root, StdCall, Value};
@@ -106,12 +106,12 @@ pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
             let d = default_value(elem);
             let sizes: Vec<usize> = dims.iter().map(|(lo, hi)| (hi - lo + 1) as usize).collect();
             let idx: Vec<_> = (0..dims.len()).map(|k| format_ident!("__i{}", k)).collect();
-            // flat = ((i0 * n1) + i1) * n2 + i2 ...
-            let mut flat = quote!(0usize);
-            for (k, id) in idx.iter().enumerate() {
-                let n = sizes[k];
-                flat = quote!((#flat * #n + #id));
-            }
+            // Row-major flat index: i0 * (n1 * n2) + i1 * n2 + i2.
+            let terms = idx.iter().enumerate().map(|(k, id)| {
+                let stride: usize = sizes[k + 1..].iter().product();
+                quote!(#id * #stride)
+            });
+            let flat = quote!(#(#terms)+*);
             let mut body = quote!(match #flat { #(#arms)* _ => #d });
             for id in idx.iter().rev() {
                 body = quote!(::core::array::from_fn(|#id| #body));
@@ -167,17 +167,23 @@ impl Pou<'_> {
     fn root(&self, r: &Root) -> TokenStream {
         match r {
             Root::Ret => quote!(__ret),
-            Root::Eno => quote!(__eno),
             // Reads and writes of the process image go through `read`/`write`.
             Root::Addr(_) => quote!(__ctx.io),
             Root::Var(i) => {
                 let v = &self.pou.vars[*i];
-                let id = rust_ident(&v.name);
+                if v.edge.is_some() {
+                    // The edge seen in this call, computed on entry.
+                    let id = format_ident!("__edge_{}", v.name);
+                    return quote!(#id);
+                }
                 if self.in_self(*i) {
+                    let id = rust_ident(&v.name);
                     quote!(self.#id)
                 } else if self.pou.kind == PouKind::Function && v.kind == VarKind::Output {
+                    let id = local_ident(&v.name);
                     quote!((*#id))
                 } else {
+                    let id = local_ident(&v.name);
                     quote!(#id)
                 }
             }
@@ -360,32 +366,24 @@ impl Pou<'_> {
                 args,
                 outputs,
                 out_types,
+                en,
+                eno,
+                ret,
             } => {
-                let f = rust_ident(name);
-                let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
-                if out_types.is_empty() {
-                    return quote!(#f(__ctx, #(#args,)*));
-                }
-                // Every output needs a place, read by `=>` or not.
-                let ids: Vec<_> = (0..out_types.len())
-                    .map(|k| format_ident!("__o{}", k))
-                    .collect();
-                let lets = out_types.iter().zip(&ids).map(|(t, id)| {
-                    let ty = rust_ty(t);
-                    let d = default_value(t);
-                    quote!(let mut #id: #ty = #d;)
-                });
-                let stores = outputs.iter().map(|(k, place, neg)| {
-                    let id = &ids[*k];
-                    let v = if *neg { quote!(!#id) } else { quote!(#id) };
-                    self.write(place, v, line)
-                });
-                quote!({
-                    #(#lets)*
-                    let __r = #f(__ctx, #(#args,)* #(&mut #ids,)*);
-                    #(#stores)*
-                    __r
-                })
+                let call = self.user_call(name, args, outputs, out_types, line);
+                let Some(en) = en else { return call };
+                // EN = FALSE: the function does not run; its result is the
+                // default and ENO (if read with `=>`) is FALSE.
+                let en = self.value(en, line);
+                let d = default_value(ret);
+                let eno_false =
+                    outputs
+                        .iter()
+                        .filter(|(k, _, _)| Some(*k) == *eno)
+                        .map(|(_, place, neg)| {
+                            self.write(place, if *neg { quote!(true) } else { quote!(false) }, line)
+                        });
+                quote!(if #en { #call } else { #(#eno_false)* #d })
             }
             Expr::CallStd { call, args, .. } => {
                 let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
@@ -428,6 +426,42 @@ impl Pou<'_> {
                 }
             }
         }
+    }
+
+    /// A call of a user FUNCTION; every output gets a place, read by `=>` or not.
+    fn user_call(
+        &self,
+        name: &str,
+        args: &[Value],
+        outputs: &[(usize, Place, bool)],
+        out_types: &[Ty],
+        line: u32,
+    ) -> TokenStream {
+        let f = item_ident(name);
+        let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
+        if out_types.is_empty() {
+            return quote!(#f(__ctx, #(#args,)*));
+        }
+        // Every output needs a place, read by `=>` or not.
+        let ids: Vec<_> = (0..out_types.len())
+            .map(|k| format_ident!("__o{}", k))
+            .collect();
+        let lets = out_types.iter().zip(&ids).map(|(t, id)| {
+            let ty = rust_ty(t);
+            let d = default_value(t);
+            quote!(let mut #id: #ty = #d;)
+        });
+        let stores = outputs.iter().map(|(k, place, neg)| {
+            let id = &ids[*k];
+            let v = if *neg { quote!(!#id) } else { quote!(#id) };
+            self.write(place, v, line)
+        });
+        quote!({
+            #(#lets)*
+            let __r = #f(__ctx, #(#args,)* #(&mut #ids,)*);
+            #(#stores)*
+            __r
+        })
     }
 
     fn binary(&self, op: BinOp, ty: &Ty, l: TokenStream, r: TokenStream, line: u32) -> TokenStream {

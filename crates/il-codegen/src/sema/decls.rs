@@ -87,10 +87,11 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
             }
         }
     }
-    let fb_names: HashSet<String> = pous
+    // Upper-case key → the name as declared (the Rust struct's name).
+    let fb_names: HashMap<String, String> = pous
         .iter()
         .filter(|(_, p)| p.kind == PouKind::FunctionBlock)
-        .map(|(_, p)| p.name.key())
+        .map(|(_, p)| (p.name.key(), p.name.name.clone()))
         .collect();
     for (f, p) in &pous {
         if env.pous.contains_key(&p.name.key()) {
@@ -126,7 +127,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
     env
 }
 
-fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
+fn pou_sig(cx: &mut Cx, fb_names: &HashMap<String, String>, p: &ast::Pou) -> PouSig {
     check_ident(cx, &p.name);
     let mut sig = PouSig {
         kind: p.kind,
@@ -169,9 +170,11 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
             _ => {}
         }
         for decl in &block.decls {
-            if decl.edge.is_some() {
-                // R_EDGE/F_EDGE inputs: accepted, evaluated as plain BOOL by the caller's value.
-                // (The edge is the caller's concern in IEC; documented in the guide.)
+            if decl.edge.is_some()
+                && (p.kind == PouKind::Function || block.kind != ast::VarKind::Input)
+            {
+                cx.err(BAD_OPERATOR_TYPE, decl.span, "R_EDGE and F_EDGE apply to VAR_INPUTs of a FUNCTION_BLOCK or PROGRAM (a FUNCTION has no memory)");
+                continue;
             }
             let Some(ty) = resolve_type(cx, fb_names, &decl.ty) else {
                 // Already reported; uses of these names stay silent.
@@ -211,9 +214,8 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
             for name in &decl.names {
                 check_ident(cx, name);
                 let key = name.key();
-                let clash = (p.kind == PouKind::Function && key == p.name.key())
-                    || key == "ENO"
-                    || key == "EN";
+                let clash = p.kind == PouKind::Function
+                    && (key == p.name.key() || key == "ENO" || key == "EN");
                 if let Some(prev) = spans.get(&key) {
                     cx.err(
                         DUPLICATE_DECL,
@@ -236,6 +238,7 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
                 sig.vars.push(Var {
                     name: name.name.clone(),
                     location: location.clone(),
+                    edge: decl.edge,
                     kind: block.kind,
                     ty: ty.clone(),
                     init: init.clone(),
@@ -245,7 +248,46 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
             }
         }
     }
+    if p.kind == PouKind::Function && mentions(&p.body, "ENO") {
+        // ENO exists on every function; it is an output (TRUE on entry) of
+        // those whose body sets it.
+        sig.index.insert("ENO".into(), sig.vars.len());
+        sig.vars.push(Var {
+            name: "ENO".into(),
+            location: None,
+            edge: None,
+            kind: ast::VarKind::Output,
+            ty: Ty::BOOL,
+            init: Some(Init::Const(Const::Bool(true))),
+            constant: false,
+            line: cx.line(p.name.span),
+        });
+    }
     sig
+}
+
+/// Whether any operand of the body names `name`.
+fn mentions(body: &[ast::Stmt], name: &str) -> bool {
+    let op = |o: &Operand| matches!(o, Operand::Var(v) if v.base.is(name));
+    body.iter().any(|s| match s {
+        ast::Stmt::Instr(i) => match &i.kind {
+            ast::InstrKind::Load { operand, .. } | ast::InstrKind::Expr { operand, .. } => {
+                op(operand)
+            }
+            ast::InstrKind::Store { target, .. }
+            | ast::InstrKind::Set { target }
+            | ast::InstrKind::Reset { target } => op(target),
+            ast::InstrKind::Deferred { first, body, .. } => {
+                first.as_ref().is_some_and(op) || mentions(body, name)
+            }
+            ast::InstrKind::FnCall {
+                args: ast::CallArgs::NonFormal(l),
+                ..
+            } => l.iter().any(op),
+            _ => false,
+        },
+        ast::Stmt::Label(_) => false,
+    })
 }
 
 /// Resolve a direct address, checking it against the process image and,
@@ -359,7 +401,11 @@ fn check_ident(cx: &mut Cx, id: &ast::Ident) {
     }
 }
 
-pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &HashSet<String>, spec: &TypeSpec) -> Option<Ty> {
+pub(crate) fn resolve_type(
+    cx: &mut Cx,
+    fb_names: &HashMap<String, String>,
+    spec: &TypeSpec,
+) -> Option<Ty> {
     match spec {
         TypeSpec::Named(id) => {
             if let Some(e) = Elem::from_name(&id.name) {
@@ -384,8 +430,8 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &HashSet<String>, spec: &TypeS
             if let Some(fb) = stdfb::lookup(&key) {
                 return Some(Ty::Fb(fb.name.to_string()));
             }
-            if fb_names.contains(&key) {
-                return Some(Ty::Fb(key));
+            if let Some(declared) = fb_names.get(&key) {
+                return Some(Ty::Fb(declared.clone()));
             }
             let names = super::types::ALL_ELEMS.iter().map(|e| e.name()).chain([
                 "TON", "TOF", "TP", "CTU", "CTD", "CTUD", "SR", "RS", "R_TRIG", "F_TRIG",

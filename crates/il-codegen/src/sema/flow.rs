@@ -30,6 +30,9 @@ enum Cr {
 #[derive(Clone, Debug, PartialEq)]
 enum Why {
     Start,
+    /// An error was reported for the instruction that set the CR; uses
+    /// of it stay silent until the next load, so one mistake reports once.
+    Error,
     AfterCal(u32),
     /// Paths into a label disagree; the text names them.
     Mixed(String),
@@ -43,6 +46,8 @@ enum Class {
     LitStr(bool),
     Val(Ty),
     Undef(String),
+    /// After an error: absorbs the join silently.
+    Error,
 }
 
 /// A value the CR or an operand provides to an operation.
@@ -139,6 +144,9 @@ fn join(edges: &[(Span, Class, u32)]) -> Cr {
     let Some((_, first, _)) = edges.first() else {
         return Cr::Dead;
     };
+    if edges.iter().any(|(_, c, _)| *c == Class::Error) {
+        return Cr::Undef(Why::Error);
+    }
     let mut ty: Option<Ty> = None;
     let mut lit: Option<Class> = None;
     let mut bad = false;
@@ -182,6 +190,7 @@ fn join(edges: &[(Span, Class, u32)]) -> Cr {
                 Class::LitReal => "a real literal".into(),
                 Class::LitStr(_) => "a string literal".into(),
                 Class::Undef(why) => format!("undefined ({why})"),
+                Class::Error => "an error".into(),
             };
             format!("{what} from line {line}")
         })
@@ -284,6 +293,7 @@ impl Walk<'_, '_> {
         let class = match cr {
             Cr::Dead => return,
             Cr::Undef(Why::Start) => Class::Undef("no value loaded".into()),
+            Cr::Undef(Why::Error) => Class::Error,
             Cr::Undef(Why::AfterCal(line)) => Class::Undef(format!("after CAL on line {line}")),
             Cr::Undef(Why::Mixed(m)) => Class::Undef(m.clone()),
             Cr::Lit(LitClass::Int(_), _) => Class::LitInt,
@@ -436,10 +446,10 @@ impl Walk<'_, '_> {
                 operand,
             } => {
                 let Some(lhs) = self.use_cr(&cr, span) else {
-                    return Cr::Undef(Why::Start);
+                    return Cr::Undef(Why::Error);
                 };
                 let Some(rhs) = self.operand(operand) else {
-                    return Cr::Undef(Why::Start);
+                    return Cr::Undef(Why::Error);
                 };
                 self.binary(*op, *negate, lhs, rhs, i.op_span)
             }
@@ -451,7 +461,7 @@ impl Walk<'_, '_> {
                 close_span,
             } => {
                 let Some(lhs) = self.use_cr(&cr, span) else {
-                    return Cr::Undef(Why::Start);
+                    return Cr::Undef(Why::Error);
                 };
                 let lhs = match lhs {
                     Arg::Typed(v, t) => {
@@ -479,7 +489,7 @@ impl Walk<'_, '_> {
                     }
                 }
                 let Some(rhs) = self.use_cr(&inner, *close_span) else {
-                    return Cr::Undef(Why::Start);
+                    return Cr::Undef(Why::Error);
                 };
                 self.binary(*op, *negate, lhs, rhs, i.op_span)
             }
@@ -614,7 +624,7 @@ impl Walk<'_, '_> {
 
     fn load(&mut self, negate: bool, operand: &Operand, span: Span) -> Cr {
         let Some(arg) = self.operand(operand) else {
-            return Cr::Undef(Why::Start);
+            return Cr::Undef(Why::Error);
         };
         match arg {
             Arg::Lit(l, s) if !negate => Cr::Lit(l, s),
@@ -627,12 +637,12 @@ impl Walk<'_, '_> {
                         describe(&l)
                     ),
                 );
-                Cr::Undef(Why::Start)
+                Cr::Undef(Why::Error)
             }
             Arg::Typed(_, Ty::Fb(f)) => {
                 self.err(BAD_OPERATOR_TYPE, operand.span(), format!("cannot load a function block instance ({f}); load one of its outputs, e.g. `.Q`"));
                 let _ = span;
-                Cr::Undef(Why::Start)
+                Cr::Undef(Why::Error)
             }
             Arg::Typed(v, t) => {
                 if negate && !t.is_logic() {
@@ -657,6 +667,7 @@ impl Walk<'_, '_> {
     fn use_cr(&mut self, cr: &Cr, span: Span) -> Option<Arg> {
         match cr {
             Cr::Dead => None,
+            Cr::Undef(Why::Error) => None,
             Cr::Undef(Why::Start) => {
                 if let Some(d) = self.err(CR_UNDEFINED, span, "there is no current result here") {
                     d.label = "this uses the current result".into();
@@ -830,12 +841,21 @@ impl Walk<'_, '_> {
                     return None;
                 }
                 Some(l) => (Root::Addr(l.clone()), var.ty.clone(), var.constant),
+                None if write && var.edge.is_some() => {
+                    self.err(
+                        NOT_WRITABLE,
+                        v.span,
+                        format!(
+                            "`{}` is an edge input (R_EDGE/F_EDGE): it is read-only in the body",
+                            v.base
+                        ),
+                    );
+                    return None;
+                }
                 None => (Root::Var(i), var.ty.clone(), var.constant),
             }
         } else if self.sig.kind == PouKind::Function && v.base.is(&self.sig.name) {
             (Root::Ret, self.sig.ret.clone()?, false)
-        } else if self.sig.kind == PouKind::Function && v.base.is("ENO") {
-            (Root::Eno, Ty::BOOL, false)
         } else if self.sig.poisoned.contains(&v.base.key()) {
             return None; // its declaration was already reported
         } else {
@@ -1182,7 +1202,7 @@ impl Walk<'_, '_> {
         span: Span,
         formal_only: bool,
     ) -> Cr {
-        let bad = Cr::Undef(Why::Start);
+        let bad = Cr::Undef(Why::Error);
         if let Some(sig) = self
             .env
             .pou(&name.name)
@@ -1196,6 +1216,9 @@ impl Walk<'_, '_> {
             let fname = sig.name.clone();
             let mut values: Vec<Option<Value>> = vec![None; inputs.len()];
             let mut outputs = Vec::new();
+            let mut en: Option<Value> = None;
+            // `ENO => x` on a function that never sets ENO: x gets EN (or TRUE).
+            let mut eno_plain: Vec<(Place, bool)> = Vec::new();
             match args {
                 CallArgs::NonFormal(list) if !formal_only => {
                     let total = list.len() + 1;
@@ -1225,6 +1248,26 @@ impl Walk<'_, '_> {
                 CallArgs::Formal(list) => {
                     for p in list {
                         match &p.kind {
+                            ParamKind::Input(o) if p.name.is("EN") => {
+                                let Some(a) = self.operand(o) else { continue };
+                                en = self.fit(a, &Ty::BOOL, o.span());
+                            }
+                            ParamKind::Output { negate, target }
+                                if p.name.is("ENO") && sig.var("ENO").is_none() =>
+                            {
+                                let Some(place) = self.place_of(target, true) else {
+                                    continue;
+                                };
+                                if place.ty != Ty::BOOL {
+                                    self.err(
+                                        TYPE_MISMATCH,
+                                        target.span(),
+                                        format!("`ENO` is BOOL, the variable is {}", place.ty),
+                                    );
+                                    continue;
+                                }
+                                eno_plain.push((place, *negate));
+                            }
                             ParamKind::Input(o) => {
                                 let Some(k) = inputs.iter().position(|(_, n, _)| p.name.is(n))
                                 else {
@@ -1293,6 +1336,11 @@ impl Walk<'_, '_> {
                 .filter(|o| o.kind == ast::VarKind::Output)
                 .map(|o| o.ty.clone())
                 .collect();
+            let eno = sig
+                .vars
+                .iter()
+                .filter(|o| o.kind == ast::VarKind::Output)
+                .position(|o| o.name == "ENO");
             self.push(Op::SetCr {
                 ty: ret.clone(),
                 expr: Expr::CallUser {
@@ -1300,8 +1348,19 @@ impl Walk<'_, '_> {
                     args,
                     out_types,
                     outputs,
+                    en: en.clone(),
+                    eno,
+                    ret: ret.clone(),
                 },
             });
+            for (place, negate) in eno_plain {
+                let value = en.clone().unwrap_or(Value::Const(Const::Bool(true)));
+                self.push(Op::Store {
+                    place,
+                    value,
+                    negate,
+                });
+            }
             return Cr::Val(ret);
         }
         let key = name.key();
@@ -1384,7 +1443,7 @@ impl Walk<'_, '_> {
     }
 
     fn std_call(&mut self, key: &str, argv: Vec<(Arg, Span)>, span: Span) -> Cr {
-        let bad = Cr::Undef(Why::Start);
+        let bad = Cr::Undef(Why::Error);
         let shapes: Vec<stdfn::ArgShape> = argv
             .iter()
             .map(|(a, _)| match a {
@@ -1428,7 +1487,7 @@ impl Walk<'_, '_> {
 
     /// `lhs op rhs` where lhs is the CR (or a saved CR) and rhs the operand.
     fn binary(&mut self, op: ExprOp, negate: bool, lhs: Arg, rhs: Arg, span: Span) -> Cr {
-        let bad = Cr::Undef(Why::Start);
+        let bad = Cr::Undef(Why::Error);
         let bop = bin_op(op);
         // Both untyped literals: fold at compile time.
         if let (Arg::Lit(a, sa), Arg::Lit(b, _)) = (&lhs, &rhs) {

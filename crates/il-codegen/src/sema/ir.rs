@@ -34,6 +34,8 @@ pub struct Var {
     pub name: String,
     /// `AT %...`: the variable is that place of the process image.
     pub location: Option<Loc>,
+    /// R_EDGE / F_EDGE input: the body sees the edge, not the level.
+    pub edge: Option<crate::ast::Edge>,
     pub kind: VarKind,
     pub ty: Ty,
     pub init: Option<Init>,
@@ -95,8 +97,6 @@ pub enum Root {
     Var(usize),
     /// The FUNCTION's result variable (named like the function).
     Ret,
-    /// ENO of a FUNCTION.
-    Eno,
     /// A place of the process image (a direct address or a located variable).
     Addr(Loc),
 }
@@ -182,6 +182,11 @@ pub enum Expr {
     /// inputs; `out_types` are all its outputs, `outputs` the ones read with
     /// `=>` (index into `out_types`, target, complemented).
     CallUser {
+        /// EN := value: run only when TRUE.
+        en: Option<Value>,
+        /// Index of the implicit ENO among the outputs, if the function sets ENO.
+        eno: Option<usize>,
+        ret: Ty,
         name: String,
         args: Vec<Value>,
         out_types: Vec<Ty>,
