@@ -16,8 +16,17 @@ pub mod via_macro {
 /// The Annex F programs of IEC 61131-3, from `../shared/corpus`.
 #[cfg(il_corpus)]
 pub mod annex_f {
-    include!(concat!(env!("OUT_DIR"), "/annex_f/beremiz_matiec_cmd_monitor_il.rs"));
-    include!(concat!(env!("OUT_DIR"), "/annex_f/beremiz_matiec_stack_int_il.rs"));
-    include!(concat!(env!("OUT_DIR"), "/annex_f/beremiz_matiec_weigh_il.rs"));
+    include!(concat!(
+        env!("OUT_DIR"),
+        "/annex_f/beremiz_matiec_cmd_monitor_il.rs"
+    ));
+    include!(concat!(
+        env!("OUT_DIR"),
+        "/annex_f/beremiz_matiec_stack_int_il.rs"
+    ));
+    include!(concat!(
+        env!("OUT_DIR"),
+        "/annex_f/beremiz_matiec_weigh_il.rs"
+    ));
     include!(concat!(env!("OUT_DIR"), "/annex_f/fwd_rev_mon_fixed.rs"));
 }
