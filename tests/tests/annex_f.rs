@@ -183,7 +183,6 @@ mod stack_int {
     }
 
     #[test]
-    #[ignore = "compiler bug: R_EDGE inputs are treated as plain BOOL (no edge detection)"]
     fn push_is_r_edge_held_input_pushes_once() {
         // PUSH, POP : BOOL R_EDGE -- IEC 61131-3 2.5.2.2: the FB sees a
         // rising edge, so holding PUSH TRUE over three calls pushes once.
@@ -210,18 +209,23 @@ mod weigh {
     #[test]
     fn bcd_in_tare_subtracted_bcd_out() {
         let mut ctx = Cycle::new();
-        assert_eq!(WEIGH(&mut ctx, true, 0x1234, 34), 0x1200);
-        assert_eq!(WEIGH(&mut ctx, true, 0x0500, 1), 0x0499);
-        assert_eq!(WEIGH(&mut ctx, true, 0x9999, 0), 0x9999);
+        let mut eno = false;
+        assert_eq!(WEIGH(&mut ctx, true, 0x1234, 34, &mut eno), 0x1200);
+        assert!(eno, "implicit ENO: TRUE when the body does not clear it");
+        assert_eq!(WEIGH(&mut ctx, true, 0x0500, 1, &mut eno), 0x0499);
+        assert_eq!(WEIGH(&mut ctx, true, 0x9999, 0, &mut eno), 0x9999);
         assert_eq!(ctx.fault_count(), 0);
     }
 
     #[test]
     fn no_weigh_command_returns_default() {
-        // ENO path: `ST ENO / RET` leaves the result at its default 0. (ENO
-        // itself is not visible to the caller: see the report.)
+        // "EN input is used to indicate scale ready": without a weigh
+        // command, `ST ENO / RET` stores the CR (FALSE) in ENO and leaves the
+        // result at its default 0.
         let mut ctx = Cycle::new();
-        assert_eq!(WEIGH(&mut ctx, false, 0x1234, 34), 0);
+        let mut eno = true;
+        assert_eq!(WEIGH(&mut ctx, false, 0x1234, 34, &mut eno), 0);
+        assert!(!eno);
     }
 }
 

@@ -10,7 +10,6 @@ macro_rules! es_tests {
             use il_tests::$m::{FEDGEFB, StrRealCmp};
 
             #[test]
-            #[ignore = "compiler bug: F_EDGE inputs are treated as plain BOOL (no edge detection)"]
             fn f_edge_input_counts_falling_edges_only() {
                 // IEC 61131-3 2.5.2.2: `trig : BOOL F_EDGE` is TRUE inside the
                 // block only on a falling edge of the caller's value.

@@ -19,8 +19,12 @@ macro_rules! function_tests {
                 assert_eq!((rem, exact), (2, false));
                 assert_eq!(DivRem(&mut ctx, 15, 5, &mut rem, &mut exact), 3);
                 assert_eq!((rem, exact), (0, true));
-                assert_eq!(SafeDiv(&mut ctx, 9, 3), 3);
-                assert_eq!(SafeDiv(&mut ctx, 9, 0), -1);
+                // SafeDiv stores ENO, so ENO is an output (TRUE on entry).
+                let mut eno = false;
+                assert_eq!(SafeDiv(&mut ctx, 9, 3, &mut eno), 3);
+                assert!(eno);
+                assert_eq!(SafeDiv(&mut ctx, 9, 0, &mut eno), -1);
+                assert!(!eno);
                 assert_eq!(ctx.fault_count(), 0);
                 DivRem(&mut ctx, 1, 0, &mut rem, &mut exact);
                 let f = ctx.last_fault().copied().unwrap();

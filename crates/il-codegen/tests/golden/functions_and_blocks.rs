@@ -10,16 +10,15 @@
     unused_labels,
     clippy::all
 )]
-pub fn Scale(__ctx: &mut ::il_std::Cycle, mut r#raw: i16, mut span: i16) -> i16 {
+pub fn Scale(__ctx: &mut ::il_std::Cycle, mut __v_raw: i16, mut __v_span: i16) -> i16 {
     let mut __ret: i16 = 0i16;
-    let mut __eno: bool = true;
     let mut __cr_int: i16 = 0i16;
     let mut __save_0: i16 = 0i16;
     // 5: LD   raw
-    __cr_int = r#raw;
+    __cr_int = __v_raw;
     // 6: MUL( span
     __save_0 = __cr_int;
-    __cr_int = span;
+    __cr_int = __v_span;
     __cr_int = __cr_int.wrapping_add(1i16);
     __cr_int = __save_0.wrapping_mul(__cr_int);
     // 9: DIV  100
