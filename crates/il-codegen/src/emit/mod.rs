@@ -175,17 +175,17 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 .filter_map(|v| v.edge.map(|e| (*v, e)))
                 .collect();
             let mem_decls = edges.iter().map(|(v, _)| {
-                let m = format_ident!("__edge_memory_{}", v.name);
+                let m = rust_ident(&format!("__edge_memory_{}", v.name));
                 quote!(#m: bool,)
             });
             let mem_inits = edges.iter().map(|(v, _)| {
-                let m = format_ident!("__edge_memory_{}", v.name);
+                let m = rust_ident(&format!("__edge_memory_{}", v.name));
                 quote!(#m: false,)
             });
             let edge_lets = edges.iter().map(|(v, e)| {
-                let m = format_ident!("__edge_memory_{}", v.name);
+                let m = rust_ident(&format!("__edge_memory_{}", v.name));
                 let x = rust_ident(&v.name);
-                let l = format_ident!("__edge_{}", v.name);
+                let l = rust_ident(&format!("__edge_{}", v.name));
                 match e {
                     crate::ast::Edge::Rising => {
                         quote!(let #l: bool = self.#x && !self.#m; self.#m = self.#x;)

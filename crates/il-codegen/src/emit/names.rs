@@ -5,6 +5,11 @@ use proc_macro2::{Ident, Span};
 /// Rust keywords that cannot be raw identifiers get a trailing `_` (which no
 /// IEC identifier has); other keywords become raw identifiers (`r#loop`).
 pub fn rust_ident(name: &str) -> Ident {
+    // The parser only produces IEC identifiers, but error recovery may leave
+    // placeholders (e.g. an empty name): never panic on them.
+    if !is_ident(name) {
+        return Ident::new(&format!("__invalid_{}", name.len()), Span::call_site());
+    }
     const NOT_RAW: &[&str] = &["self", "Self", "super", "crate", "_"];
     const KEYWORDS: &[&str] = &[
         "as",
@@ -74,7 +79,20 @@ pub fn rust_ident(name: &str) -> Ident {
 /// them apart from everything in the user's scope: a `let` cannot bind a name
 /// that is a constant or unit struct there (`None`, a user `const SPEED`).
 pub fn local_ident(name: &str) -> Ident {
+    if !is_ident(name) {
+        return rust_ident(name);
+    }
     Ident::new(&format!("__v_{name}"), Span::call_site())
+}
+
+/// `[A-Za-z_][A-Za-z0-9_]*`, not `_` alone.
+fn is_ident(name: &str) -> bool {
+    let mut chars = name.chars();
+    chars
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && name != "_"
 }
 
 /// The Rust name of a generated item (struct or fn). A POU named like a Rust
@@ -94,7 +112,14 @@ pub fn item_ident(name: &str) -> Ident {
 
 #[cfg(test)]
 mod tests {
-    use super::rust_ident;
+    use super::{item_ident, local_ident, rust_ident};
+
+    #[test]
+    fn never_panics_on_placeholders() {
+        assert!(rust_ident("").to_string().starts_with("__invalid"));
+        assert!(local_ident("a b").to_string().starts_with("__invalid"));
+        assert!(item_ident("9x").to_string().starts_with("__invalid"));
+    }
 
     #[test]
     fn keywords_and_plain_names() {

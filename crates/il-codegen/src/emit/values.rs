@@ -173,7 +173,7 @@ impl Pou<'_> {
                 let v = &self.pou.vars[*i];
                 if v.edge.is_some() {
                     // The edge seen in this call, computed on entry.
-                    let id = format_ident!("__edge_{}", v.name);
+                    let id = rust_ident(&format!("__edge_{}", v.name));
                     return quote!(#id);
                 }
                 if self.in_self(*i) {

@@ -25,6 +25,8 @@ pub(crate) struct PouSig {
     pub file: usize,
     /// Variables whose declaration had an error (their uses are not reported).
     pub poisoned: HashSet<String>,
+    /// The POU's name where it is declared (a duplicate has another span).
+    pub span: Span,
 }
 
 impl PouSig {
@@ -88,10 +90,9 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
         }
     }
     // Upper-case key → the name as declared (the Rust struct's name).
-    let fb_names: HashMap<String, String> = pous
+    let fb_names: HashMap<String, (String, PouKind)> = pous
         .iter()
-        .filter(|(_, p)| p.kind == PouKind::FunctionBlock)
-        .map(|(_, p)| (p.name.key(), p.name.name.clone()))
+        .map(|(_, p)| (p.name.key(), (p.name.name.clone(), p.kind)))
         .collect();
     for (f, p) in &pous {
         if env.pous.contains_key(&p.name.key()) {
@@ -127,7 +128,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
     env
 }
 
-fn pou_sig(cx: &mut Cx, fb_names: &HashMap<String, String>, p: &ast::Pou) -> PouSig {
+fn pou_sig(cx: &mut Cx, fb_names: &HashMap<String, (String, PouKind)>, p: &ast::Pou) -> PouSig {
     check_ident(cx, &p.name);
     let mut sig = PouSig {
         kind: p.kind,
@@ -137,6 +138,7 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashMap<String, String>, p: &ast::Pou) -> Pou
         ret: None,
         file: 0,
         poisoned: HashSet::new(),
+        span: p.name.span,
     };
     if p.kind == PouKind::Function {
         sig.ret = p
@@ -154,6 +156,11 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashMap<String, String>, p: &ast::Pou) -> Pou
     }
     let mut spans: HashMap<String, Span> = HashMap::new();
     for block in &p.var_blocks {
+        // Every declared name is poisoned: uses of a name whose declaration
+        // is refused below stay silent (the lookup finds real variables first).
+        for decl in &block.decls {
+            sig.poisoned.extend(decl.names.iter().map(|n| n.key()));
+        }
         match (p.kind, block.kind) {
             (_, ast::VarKind::InOut) => {
                 cx.err(UNSUPPORTED, block.span, "VAR_IN_OUT is not supported yet");
@@ -403,7 +410,7 @@ fn check_ident(cx: &mut Cx, id: &ast::Ident) {
 
 pub(crate) fn resolve_type(
     cx: &mut Cx,
-    fb_names: &HashMap<String, String>,
+    fb_names: &HashMap<String, (String, PouKind)>,
     spec: &TypeSpec,
 ) -> Option<Ty> {
     match spec {
@@ -430,8 +437,22 @@ pub(crate) fn resolve_type(
             if let Some(fb) = stdfb::lookup(&key) {
                 return Some(Ty::Fb(fb.name.to_string()));
             }
-            if let Some(declared) = fb_names.get(&key) {
-                return Some(Ty::Fb(declared.clone()));
+            match fb_names.get(&key) {
+                Some((declared, PouKind::FunctionBlock)) => return Some(Ty::Fb(declared.clone())),
+                Some((declared, kind)) => {
+                    let why = if *kind == PouKind::Program {
+                        "programs are instances of a CONFIGURATION's resources, not variables of a POU"
+                    } else {
+                        "a FUNCTION is called, not instantiated"
+                    };
+                    cx.err(
+                        UNKNOWN_TYPE,
+                        id.span,
+                        format!("`{declared}` is a {}, not a type: {why}", kind.keyword()),
+                    );
+                    return None;
+                }
+                None => {}
             }
             let names = super::types::ALL_ELEMS.iter().map(|e| e.name()).chain([
                 "TON", "TOF", "TP", "CTU", "CTD", "CTUD", "SR", "RS", "R_TRIG", "F_TRIG",
@@ -622,6 +643,8 @@ pub(crate) enum LitClass {
     Real(f64, String),
     Str(String, bool),
     Unsupported(&'static str),
+    /// A typed literal whose value does not fit its prefix (`SINT#300`).
+    Invalid(String),
 }
 
 pub(crate) fn lit_class(lit: &Literal) -> LitClass {
@@ -648,9 +671,9 @@ pub(crate) fn lit_class(lit: &Literal) -> LitClass {
     match Elem::from_name(&prefix.name) {
         Some(e) => match coerce(&untyped, &Ty::Elem(e)) {
             Ok(c) => LitClass::Typed(c),
-            Err(_) => LitClass::Unsupported("the value does not fit the literal's type prefix"),
+            Err(m) => LitClass::Invalid(m),
         },
-        None => LitClass::Unsupported("unknown type prefix"),
+        None => LitClass::Invalid(format!("`{prefix}#` is not an elementary type")),
     }
 }
 
@@ -701,6 +724,7 @@ pub(crate) fn coerce(lit: &LitClass, ty: &Ty) -> Result<Const, String> {
             str_const(s, *wide, *len, ty)
         }
         (LitClass::Unsupported(msg), _) => Err((*msg).to_string()),
+        (LitClass::Invalid(msg), _) => Err(msg.clone()),
         _ => mismatch(),
     }
 }
@@ -728,6 +752,7 @@ pub(crate) fn describe(lit: &LitClass) -> String {
         LitClass::Real(_, t) => format!("the real literal {t}"),
         LitClass::Str(..) => "a string literal".to_string(),
         LitClass::Unsupported(m) => (*m).to_string(),
+        LitClass::Invalid(m) => m.clone(),
     }
 }
 

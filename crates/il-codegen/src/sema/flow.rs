@@ -261,11 +261,17 @@ impl Walk<'_, '_> {
                     let Some(&l) = self.labels.get(&id.key()) else {
                         continue;
                     };
-                    self.line = self.cx.line(id.span);
+                    // The fall-through edge comes from the line before the label.
                     if cr != Cr::Dead {
                         self.edge(l, &cr, id.span);
                     }
-                    cr = self.label_in[l].clone();
+                    self.line = self.cx.line(id.span);
+                    cr = match self.label_in[l].clone() {
+                        Cr::Undef(Why::Mixed(paths)) => {
+                            Cr::Undef(Why::Mixed(format!("{}\u{0}{paths}", id.name)))
+                        }
+                        other => other,
+                    };
                     self.push(Op::Label(l));
                     warned_dead = false;
                 }
@@ -295,7 +301,11 @@ impl Walk<'_, '_> {
             Cr::Undef(Why::Start) => Class::Undef("no value loaded".into()),
             Cr::Undef(Why::Error) => Class::Error,
             Cr::Undef(Why::AfterCal(line)) => Class::Undef(format!("after CAL on line {line}")),
-            Cr::Undef(Why::Mixed(m)) => Class::Undef(m.clone()),
+            Cr::Undef(Why::Mixed(m)) => Class::Undef(
+                m.split_once('\u{0}')
+                    .map_or(m.as_str(), |x| x.1)
+                    .to_string(),
+            ),
             Cr::Lit(LitClass::Int(_), _) => Class::LitInt,
             Cr::Lit(LitClass::Real(..), _) => Class::LitReal,
             Cr::Lit(LitClass::Str(_, w), _) => Class::LitStr(*w),
@@ -333,7 +343,8 @@ impl Walk<'_, '_> {
                 let Some(arg) = self.use_cr(&cr, span) else {
                     return cr;
                 };
-                let Some(value) = self.fit(arg, &place.ty, span) else {
+                let dest = format!("`{}`", self.cx.file.snippet(target.span()));
+                let Some(value) = self.fit_to(arg, &place.ty, span, &dest) else {
                     return cr;
                 };
                 if *negate && !place.ty.is_logic() {
@@ -687,12 +698,19 @@ impl Walk<'_, '_> {
                 }
                 None
             }
-            Cr::Undef(Why::Mixed(paths)) => {
-                let paths = paths.clone();
+            Cr::Undef(Why::Mixed(text)) => {
+                // "label\0paths" (the label's name is added where it is known).
+                let (label, paths) = text.split_once('\u{0}').unwrap_or(("above", text));
+                let label = if label == "above" {
+                    "the label above".to_string()
+                } else {
+                    format!("`{label}`")
+                };
+                let paths = paths.to_string();
                 if let Some(d) = self.err(
                     CR_DISAGREES,
                     span,
-                    "the current result's type differs on the paths into the label above",
+                    format!("the current result has different types on the paths into {label}"),
                 ) {
                     d.notes.push(format!("the paths bring: {paths}"));
                     d.help =
@@ -738,6 +756,29 @@ impl Walk<'_, '_> {
         }
     }
 
+    /// Make an argument a value of type `ty` for `dest` ("`x`", "input `PT` of t"):
+    /// like [`Self::fit`], with a message that names both sides.
+    fn fit_to(&mut self, arg: Arg, ty: &Ty, span: Span, dest: &str) -> Option<Value> {
+        if let Arg::Typed(v, t) = &arg {
+            if t != ty {
+                let src = if matches!(v, Value::Cr(_) | Value::Saved(..)) {
+                    "the current result"
+                } else {
+                    "the value"
+                };
+                if let Some(d) = self.err(
+                    TYPE_MISMATCH,
+                    span,
+                    format!("{dest} is {ty}, but {src} is {t}"),
+                ) {
+                    d.help = conversion_hint(t, ty);
+                }
+                return None;
+            }
+        }
+        self.fit(arg, ty, span)
+    }
+
     /// Make an argument a value of type `ty`.
     fn fit(&mut self, arg: Arg, ty: &Ty, span: Span) -> Option<Value> {
         match arg {
@@ -765,6 +806,10 @@ impl Walk<'_, '_> {
                 LitClass::Typed(c) => Some(Arg::Typed(Value::Const(c.clone()), c.ty())),
                 LitClass::Unsupported(m) => {
                     self.err(UNSUPPORTED, l.span, m);
+                    None
+                }
+                LitClass::Invalid(m) => {
+                    self.err(LITERAL_RANGE, l.span, m);
                     None
                 }
                 other => Some(Arg::Lit(other, l.span)),
@@ -1070,7 +1115,7 @@ impl Walk<'_, '_> {
         let Some(arg) = self.use_cr(&cr, span) else {
             return cr;
         };
-        let Some(value) = self.fit(arg, &ty, span) else {
+        let Some(value) = self.fit_to(arg, &ty, span, &format!("input `{name}` of {fb}")) else {
             return cr;
         };
         self.push(Op::CallFb {
@@ -1112,7 +1157,9 @@ impl Walk<'_, '_> {
                                 continue;
                             }
                             let Some(a) = self.operand(o) else { continue };
-                            if let Some(v) = self.fit(a, &ty, o.span()) {
+                            if let Some(v) =
+                                self.fit_to(a, &ty, o.span(), &format!("input `{name}` of {fb}"))
+                            {
                                 ins.push((name, v));
                             }
                         }
@@ -1177,7 +1224,9 @@ impl Walk<'_, '_> {
                 }
                 for (o, (name, ty)) in list.iter().zip(inputs) {
                     let Some(a) = self.operand(o) else { continue };
-                    if let Some(v) = self.fit(a, &ty, o.span()) {
+                    if let Some(v) =
+                        self.fit_to(a, &ty, o.span(), &format!("input `{name}` of {fb}"))
+                    {
                         ins.push((name, v));
                     }
                 }
@@ -1423,6 +1472,16 @@ impl Walk<'_, '_> {
             .map(|s| s.name.clone())
             .collect();
         cands.extend(stdfn::names().map(String::from));
+        // A mistyped IL operator (`LDD`) lands here too.
+        cands.extend(
+            [
+                "LD", "LDN", "ST", "STN", "S", "R", "AND", "ANDN", "OR", "ORN", "XOR", "XORN",
+                "NOT", "ADD", "SUB", "MUL", "DIV", "MOD", "GT", "GE", "EQ", "NE", "LE", "LT",
+                "JMP", "JMPC", "JMPCN", "CAL", "CALC", "CALCN", "RET", "RETC", "RETCN", "S1", "R1",
+                "CLK", "CU", "CD", "PV", "IN", "PT",
+            ]
+            .map(String::from),
+        );
         let hint = suggest(&name.name, cands.iter().map(String::as_str))
             .map(|s| format!("did you mean `{s}`?"));
         if let Some(d) = self.err(
