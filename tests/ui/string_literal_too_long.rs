@@ -1,4 +1,4 @@
-// Literal: a 15-character string stored to a STRING[5].
+// Literal: a 14-character string stored to a STRING[5].
 il_macros::il!(r#"
 FUNCTION_BLOCK Fb
 VAR
