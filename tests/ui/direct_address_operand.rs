@@ -1,11 +1,11 @@
-// Operands: a direct address %IX0.0 used in the body (check the message if it is not supported).
+// Operands: storing to a direct input address (%IX): inputs are written by the host.
 il_macros::il!(r#"
 FUNCTION_BLOCK Fb
 VAR
     q : BOOL;
 END_VAR
-    LD %IX0.0
-    ST q
+    LD q
+    ST %IX0.0
 END_FUNCTION_BLOCK
 "#);
 

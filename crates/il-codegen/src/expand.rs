@@ -125,7 +125,11 @@ fn stubs(file: &SourceFile) -> TokenStream {
     if has_errors(&diags) && unit.items.is_empty() {
         return TokenStream::new();
     }
-    let (mut program, _) = sema::check(file, &unit);
+    let (mut program, diags) = sema::check(file, &unit);
+    // A FUNCTION_BLOCK that contains itself cannot be a Rust struct at all.
+    if diags.iter().any(|d| d.code == sema::codes::RECURSION) {
+        return TokenStream::new();
+    }
     for p in &mut program.pous {
         p.body.clear();
         p.cr_types.clear();
