@@ -10,7 +10,7 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use il_codegen::ast::{CompilationUnit, Item};
+use il_codegen::ast::{CompilationUnit, Item, Span};
 use il_codegen::diag::{Diagnostic, SourceFile, render, render_short, to_json};
 use il_codegen::syntax::parse;
 
@@ -253,19 +253,45 @@ fn corpus() -> Vec<String> {
 fn exercise(name: &str, text: String) -> (CompilationUnit, Vec<Diagnostic>) {
     let file = SourceFile::new(name, text);
     let (unit, diags) = parse(&file);
-    // Rendering is the costly part: do it fully for the first diagnostics.
-    let shown = &diags[..diags.len().min(8)];
+    // Rendering costs ~25 µs a diagnostic in a debug build, more than
+    // parsing: render the first two fully, the JSON (which renders again) of
+    // the first only.
+    let shown = &diags[..diags.len().min(2)];
     let rendered = render(&file, shown, false);
     assert!(
-        shown.is_empty() || rendered.contains('['),
+        shown.is_empty() || rendered.contains("[IL"),
         "no code in {rendered:?}"
     );
     for d in shown {
-        let j = to_json(&file, d);
-        assert!(j.starts_with("{\"file\":") && j.ends_with('}') && !j.contains('\n'));
         let _ = render_short(&file, d);
     }
+    if let Some(d) = diags.first() {
+        let j = to_json(&file, d);
+        assert!(j.starts_with("{\"file\":") && j.ends_with('}') && !j.contains('\n'));
+    }
     (unit, diags)
+}
+
+/// A diagnostic at random, often invalid, spans (short ones: a span over the
+/// whole file costs the renderer a line per line), so that the renderers meet
+/// every odd text whatever the parser reports.
+fn probe_diag(rng: &mut Rng, text: &str) -> Diagnostic {
+    let n = text.len() as u32 + 4;
+    let mut span = || {
+        let lo = rng.next() as u32 % n;
+        let hi = if rng.chance(10) {
+            rng.next() as u32 % n
+        } else {
+            lo + rng.below(40) as u32
+        };
+        Span { lo, hi }
+    };
+    let (primary, other) = (span(), span());
+    Diagnostic::error("IL0000", primary, "probe")
+        .with_label("label")
+        .with_secondary(other, "other")
+        .with_note("note")
+        .with_help("help")
 }
 
 fn random_bytes(rng: &mut Rng) -> String {
@@ -377,7 +403,18 @@ fn no_input_makes_the_front_end_panic() {
         }];
         for (k, text) in inputs.into_iter().enumerate() {
             let shown = text.clone();
-            let result = std::panic::catch_unwind(|| exercise("fuzz.il", text));
+            // Every other input also renders a probe diagnostic.
+            let probe = (k + i) % 2 == 0;
+            let probe = probe.then(|| probe_diag(&mut rng, &text));
+            let result = std::panic::catch_unwind(|| {
+                if let Some(probe) = &probe {
+                    let file = SourceFile::new("probe.il", text.clone());
+                    let j = to_json(&file, probe); // renders too
+                    assert!(j.contains(r#""rendered":"error[IL0000]: probe"#), "{j}");
+                    let _ = render_short(&file, probe);
+                }
+                exercise("fuzz.il", text)
+            });
             match result {
                 Ok((_, diags)) => with_diags += usize::from(!diags.is_empty()),
                 Err(_) => panic!("panic on input #{i}/{k}:\n{shown:?}"),
