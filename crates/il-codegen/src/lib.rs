@@ -1,11 +1,20 @@
 //! IEC 61131-3 Instruction List → Rust.
 //!
-//! Stages: [`syntax`] (text → [`ast`]), `sema` (names, types of the current
-//! result, flow), `emit` (Rust tokens). Every stage collects [`diag::Diagnostic`]s.
+//! Stages: [`syntax`] (text → [`ast`]), [`sema`] (names, types of the current
+//! result, flow → checked IR), [`emit`] (IR → Rust tokens). Every stage
+//! collects [`diag::Diagnostic`]s. [`compile`] runs them for the front ends:
+//! the `il!` macro, the build-script [`Builder`] and the `ilc` command.
 
 pub mod ast;
+mod builder;
 pub mod check;
+pub mod compile;
 pub mod diag;
+pub mod emit;
+pub mod expand;
+pub mod sema;
 pub mod syntax;
 
+pub use builder::{Builder, Error};
 pub use check::check_source;
+pub use compile::{Compiled, compile, compile_to_file, format_file};

@@ -13,7 +13,7 @@ pub struct CodeInfo {
 
 /// Every code of every stage.
 pub fn all() -> impl Iterator<Item = &'static CodeInfo> {
-    crate::syntax::CODES.iter()
+    crate::syntax::CODES.iter().chain(crate::sema::CODES)
 }
 
 /// Look a code up (`IL0003`, case-insensitive).

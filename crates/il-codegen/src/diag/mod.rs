@@ -119,6 +119,23 @@ impl Diagnostic {
         self.help = Some(help.into());
         self
     }
+    /// In-place forms of the builders, for diagnostics already pushed.
+    pub fn add_secondary(&mut self, span: Span, label: impl Into<String>) -> &mut Self {
+        self.secondary.push((span, label.into()));
+        self
+    }
+    pub fn set_label(&mut self, label: impl Into<String>) -> &mut Self {
+        self.label = label.into();
+        self
+    }
+    pub fn set_help(&mut self, help: impl Into<String>) -> &mut Self {
+        self.help = Some(help.into());
+        self
+    }
+    pub fn add_note(&mut self, note: impl Into<String>) -> &mut Self {
+        self.notes.push(note.into());
+        self
+    }
     pub fn is_error(&self) -> bool {
         self.severity == Severity::Error
     }

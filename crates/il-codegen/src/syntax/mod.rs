@@ -1,15 +1,54 @@
 //! The IL front end: lexer, lalrpop grammar, and the mapping of parse errors to
 //! messages a PLC engineer can act on.
+//!
+//! `grammar.rs` is generated from `grammar.lalrpop` and checked in; the test
+//! `syntax_grammar_up_to_date` regenerates it (`IL_BLESS=1` to update).
 
-use crate::ast::CompilationUnit;
+use crate::ast::{CompilationUnit, Span};
 use crate::diag::{Diagnostic, SourceFile, codes::CodeInfo};
 
+mod build;
+pub mod errors;
+pub mod lexer;
+pub mod literal;
+
+#[allow(clippy::all, clippy::pedantic, unused, unused_parens, unused_qualifications, non_snake_case, dead_code)]
+#[rustfmt::skip]
+mod grammar;
+
+pub use errors::code;
+
 /// Diagnostic codes of the front end (IL0001..IL0099).
-pub static CODES: &[CodeInfo] = &[];
+pub static CODES: &[CodeInfo] = errors::CODES;
 
 /// Parse a whole file. Always returns a tree (possibly partial) and every
-/// syntax diagnostic of the file.
+/// syntax diagnostic of the file, sorted by position.
 pub fn parse(file: &SourceFile) -> (CompilationUnit, Vec<Diagnostic>) {
-    let _ = file;
-    (CompilationUnit::default(), Vec::new())
+    if file.text.len() > u32::MAX as usize {
+        let d = Diagnostic::error(
+            code::TOO_LARGE,
+            Span::default(),
+            "this source file is larger than 4 GiB",
+        )
+        .with_label("file too large")
+        .with_help("split the program into several files");
+        return (CompilationUnit::default(), vec![d]);
+    }
+    let (toks, mut diags) = lexer::lex(&file.text);
+    let mut ctx = build::Ctx::default();
+    let result = grammar::UnitParser::new().parse(&mut ctx, toks.iter().cloned());
+    let unit = match result {
+        Ok(u) => u,
+        Err(e) => {
+            diags.extend(errors::parse_error(file, &toks, &e));
+            CompilationUnit::default()
+        }
+    };
+    for e in &ctx.errors {
+        diags.extend(errors::parse_error(file, &toks, &e.error));
+    }
+    diags.extend(ctx.diags);
+    diags.sort_by_key(|d| (d.span.lo, d.span.hi));
+    diags.dedup_by(|a, b| a.span == b.span && a.code == b.code);
+    (unit, diags)
 }

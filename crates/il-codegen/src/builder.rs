@@ -1,0 +1,160 @@
+//! The build-script API, after prost-build:
+//!
+//! ```no_run
+//! // build.rs
+//! fn main() -> Result<(), il_codegen::Error> {
+//!     il_codegen::Builder::new().file("plc/motor.il").compile()?;
+//!     Ok(())
+//! }
+//! ```
+//! writes `$OUT_DIR/motor.rs`, which the crate includes with
+//! `include!(concat!(env!("OUT_DIR"), "/motor.rs"));`.
+
+use crate::compile::compile_to_file;
+use crate::diag::{SourceFile, render::render};
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+/// Compiles IL files to Rust files, for build scripts.
+#[derive(Clone, Debug, Default)]
+pub struct Builder {
+    files: Vec<PathBuf>,
+    out_dir: Option<PathBuf>,
+    cargo_directives: Option<bool>,
+}
+
+/// A failed build: every diagnostic of every file, rendered like rustc.
+#[derive(Debug)]
+pub struct Error {
+    rendered: String,
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.rendered)
+    }
+}
+
+impl std::error::Error for Error {}
+
+impl Builder {
+    pub fn new() -> Self {
+        Builder::default()
+    }
+
+    /// Add an IL source file (relative paths are relative to the crate root,
+    /// where cargo runs build scripts).
+    pub fn file(mut self, path: impl AsRef<Path>) -> Self {
+        self.files.push(path.as_ref().to_path_buf());
+        self
+    }
+
+    /// Add several files.
+    pub fn files<P: AsRef<Path>>(mut self, paths: impl IntoIterator<Item = P>) -> Self {
+        self.files.extend(paths.into_iter().map(|p| p.as_ref().to_path_buf()));
+        self
+    }
+
+    /// Where to write the `.rs` files (default: `$OUT_DIR`).
+    pub fn out_dir(mut self, dir: impl AsRef<Path>) -> Self {
+        self.out_dir = Some(dir.as_ref().to_path_buf());
+        self
+    }
+
+    /// Whether to print `cargo:rerun-if-changed` and `cargo:warning` lines
+    /// (default: when running inside a build script, i.e. `OUT_DIR` is set).
+    pub fn cargo_directives(mut self, on: bool) -> Self {
+        self.cargo_directives = Some(on);
+        self
+    }
+
+    /// Compile every file. Nothing is written unless every file compiles;
+    /// each output is written atomically and only when its content changed.
+    /// Returns the paths of the generated files.
+    pub fn compile(self) -> Result<Vec<PathBuf>, Error> {
+        let cargo = self.cargo_directives.unwrap_or_else(|| std::env::var_os("OUT_DIR").is_some());
+        let out_dir = match self.out_dir.clone().or_else(|| std::env::var_os("OUT_DIR").map(PathBuf::from)) {
+            Some(d) => d,
+            None => return Err(Error { rendered: "error: no output directory: OUT_DIR is not set (call Builder::out_dir outside build scripts)".into() }),
+        };
+        let mut outputs = Vec::new();
+        let mut failed = String::new();
+        for path in &self.files {
+            if cargo {
+                println!("cargo:rerun-if-changed={}", path.display());
+            }
+            let text = match std::fs::read_to_string(path) {
+                Ok(t) => t,
+                Err(e) => {
+                    failed.push_str(&format!("error: cannot read IL file `{}`: {e}\n", path.display()));
+                    continue;
+                }
+            };
+            let file = SourceFile::new(path.display().to_string(), text);
+            match compile_to_file(&file) {
+                Ok((code, warnings)) => {
+                    if cargo && !warnings.is_empty() {
+                        for line in render(&file, &warnings, false).lines() {
+                            println!("cargo:warning={line}");
+                        }
+                    }
+                    let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "il".into());
+                    outputs.push((out_dir.join(format!("{stem}.rs")), code));
+                }
+                Err(diags) => failed.push_str(&render(&file, &diags, false)),
+            }
+        }
+        if !failed.is_empty() {
+            return Err(Error { rendered: failed });
+        }
+        let mut written = Vec::new();
+        for (path, code) in outputs {
+            write_if_changed(&path, &code).map_err(|e| Error { rendered: format!("error: cannot write `{}`: {e}", path.display()) })?;
+            written.push(path);
+        }
+        Ok(written)
+    }
+}
+
+/// Write via a temporary file and rename, so a reader never sees half a file;
+/// skip the write when the content is unchanged, so cargo does not rebuild.
+pub(crate) fn write_if_changed(path: &Path, content: &str) -> std::io::Result<()> {
+    if std::fs::read(path).is_ok_and(|old| old == content.as_bytes()) {
+        return Ok(());
+    }
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir)?;
+    }
+    let tmp = path.with_extension(format!("rs.tmp{}", std::process::id()));
+    std::fs::write(&tmp, content)?;
+    std::fs::rename(&tmp, path).inspect_err(|_| {
+        let _ = std::fs::remove_file(&tmp);
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn writes_only_when_changed() {
+        let dir = std::env::temp_dir().join(format!("il-builder-{}", std::process::id()));
+        let p = dir.join("x.rs");
+        write_if_changed(&p, "a").unwrap();
+        let t1 = std::fs::metadata(&p).unwrap().modified().unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        write_if_changed(&p, "a").unwrap();
+        assert_eq!(std::fs::metadata(&p).unwrap().modified().unwrap(), t1);
+        write_if_changed(&p, "b").unwrap();
+        assert_eq!(std::fs::read_to_string(&p).unwrap(), "b");
+        let _ = std::fs::remove_dir_all(dir);
+    }
+
+    #[test]
+    fn missing_file_is_an_error_naming_it() {
+        let dir = std::env::temp_dir().join(format!("il-builder-miss-{}", std::process::id()));
+        let e = Builder::new().file("no/such/file.il").out_dir(&dir).cargo_directives(false).compile().unwrap_err();
+        assert!(e.to_string().contains("no/such/file.il"), "{e}");
+        assert!(!dir.join("file.rs").exists());
+    }
+}

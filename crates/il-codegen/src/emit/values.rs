@@ -1,0 +1,421 @@
+//! Values, places and expressions.
+
+use super::{Pou, rust_ident, rust_ty};
+use crate::ast::{PouKind, VarKind};
+use crate::sema::ir::{BinOp, Const, Expr, Init, PathElem, Place, Root, StdCall, Value};
+use crate::sema::types::{Elem, Ty};
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
+
+pub(crate) fn cr_ident(t: &Ty) -> proc_macro2::Ident {
+    format_ident!("__cr_{}", t.mangle())
+}
+
+/// A typed constant.
+pub(crate) fn constant(c: &Const) -> TokenStream {
+    match c {
+        Const::Bool(true) => quote!(true),
+        Const::Bool(false) => quote!(false),
+        Const::Int(v, e) => {
+            let v = *v;
+            let lit = match e {
+                Elem::SINT => Literal::i8_suffixed(v as i8),
+                Elem::INT => Literal::i16_suffixed(v as i16),
+                Elem::DINT => Literal::i32_suffixed(v as i32),
+                Elem::LINT => Literal::i64_suffixed(v as i64),
+                Elem::USINT | Elem::BYTE => Literal::u8_suffixed(v as u8),
+                Elem::UINT | Elem::WORD => Literal::u16_suffixed(v as u16),
+                Elem::UDINT | Elem::DWORD => Literal::u32_suffixed(v as u32),
+                _ => Literal::u64_suffixed(v as u64),
+            };
+            if v < 0 { quote!((#lit)) } else { quote!(#lit) }
+        }
+        Const::Real(v, e) => {
+            // The checker only lets finite values through.
+            let (lit, neg) = if *e == Elem::REAL {
+                let f = *v as f32;
+                (Literal::f32_suffixed(if f.is_finite() { f } else { 0.0 }), f < 0.0)
+            } else {
+                (Literal::f64_suffixed(if v.is_finite() { *v } else { 0.0 }), *v < 0.0)
+            };
+            if neg { quote!((#lit)) } else { quote!(#lit) }
+        }
+        Const::Time(v, e) => {
+            let ty = Elem::rust(*e);
+            let lit = Literal::i64_suffixed(*v);
+            quote!(#ty(#lit))
+        }
+        Const::Str { value, wide: false, len } => {
+            let n = *len as usize;
+            quote!(::il_std::STRING::<#n>::from_str_truncating(#value).0)
+        }
+        Const::Str { value, wide: true, len } => {
+            let n = *len as usize;
+            quote!(::il_std::WSTRING::<#n>::from_str_truncating(#value).0)
+        }
+    }
+}
+
+/// The default value of a type (IEC: 0, FALSE, T#0s, '').
+pub(crate) fn default_value(t: &Ty) -> TokenStream {
+    match t {
+        Ty::Array { dims, elem } => {
+            let mut v = default_value(elem);
+            for _ in dims {
+                v = quote!(::core::array::from_fn(|_| #v));
+            }
+            v
+        }
+        _ => quote!(::core::default::Default::default()),
+    }
+}
+
+/// The initial value of a variable.
+pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
+    match (init, t) {
+        (Some(Init::Const(c)), _) => constant(c),
+        (Some(Init::Array(items)), Ty::Array { dims, elem }) => {
+            // A `match` on the flat index, with runs of equal values merged,
+            // keeps `[1000(0)]` small.
+            let mut arms = Vec::new();
+            let mut i = 0;
+            while i < items.len() {
+                let mut j = i;
+                while j + 1 < items.len() && items[j + 1] == items[i] {
+                    j += 1;
+                }
+                let v = constant(&items[i]);
+                let (a, b) = (i, j);
+                arms.push(if a == b { quote!(#a => #v,) } else { quote!(#a..=#b => #v,) });
+                i = j + 1;
+            }
+            let d = default_value(elem);
+            let sizes: Vec<usize> = dims.iter().map(|(lo, hi)| (hi - lo + 1) as usize).collect();
+            let idx: Vec<_> = (0..dims.len()).map(|k| format_ident!("__i{}", k)).collect();
+            // flat = ((i0 * n1) + i1) * n2 + i2 ...
+            let mut flat = quote!(0usize);
+            for (k, id) in idx.iter().enumerate() {
+                let n = sizes[k];
+                flat = quote!((#flat * #n + #id));
+            }
+            let mut body = quote!(match #flat { #(#arms)* _ => #d });
+            for id in idx.iter().rev() {
+                body = quote!(::core::array::from_fn(|#id| #body));
+            }
+            body
+        }
+        (Some(Init::Fields(fields)), Ty::Fb(_)) => {
+            let ty = rust_ty(t);
+            let sets = fields.iter().map(|(n, c)| {
+                let id = format_ident!("{}", n);
+                let v = constant(c);
+                quote!(__fb.#id = #v;)
+            });
+            quote!({ let mut __fb = <#ty as ::core::default::Default>::default(); #(#sets)* __fb })
+        }
+        _ => default_value(t),
+    }
+}
+
+impl Pou<'_> {
+    pub(crate) fn fault(&self, kind: &str, line: u32) -> TokenStream {
+        let kind = format_ident!("{}", kind);
+        let pou = &self.pou.name;
+        quote!(__ctx.fault(::il_std::FaultKind::#kind, #pou, #line))
+    }
+
+    pub(crate) fn value(&self, v: &Value, line: u32) -> TokenStream {
+        match v {
+            Value::Cr(t) => {
+                let id = cr_ident(t);
+                quote!(#id)
+            }
+            Value::Const(c) => constant(c),
+            Value::Read(p) => self.read(p, line),
+            Value::Saved(i, _) => {
+                let id = format_ident!("__save_{}", i);
+                quote!(#id)
+            }
+        }
+    }
+
+    fn root(&self, r: &Root) -> TokenStream {
+        match r {
+            Root::Ret => quote!(__ret),
+            Root::Eno => quote!(__eno),
+            Root::Var(i) => {
+                let v = &self.pou.vars[*i];
+                let id = rust_ident(&v.name);
+                if self.in_self(*i) {
+                    quote!(self.#id)
+                } else if self.pou.kind == PouKind::Function && v.kind == VarKind::Output {
+                    quote!((*#id))
+                } else {
+                    quote!(#id)
+                }
+            }
+        }
+    }
+
+    fn has_index(p: &Place) -> bool {
+        p.path.iter().any(|e| matches!(e, PathElem::Index { .. }))
+    }
+
+    /// `let __ix_k = ...;` for every subscript, evaluated before any borrow.
+    fn subscripts(&self, p: &Place, line: u32) -> (TokenStream, Vec<proc_macro2::Ident>) {
+        let mut lets = TokenStream::new();
+        let mut ids = Vec::new();
+        for e in &p.path {
+            if let PathElem::Index { dims, subs } = e {
+                for (s, (lo, _)) in subs.iter().zip(dims) {
+                    let id = format_ident!("__ix{}", ids.len());
+                    let v = self.value(s, line);
+                    lets.extend(quote!(let #id: ::core::option::Option<usize> = usize::try_from((#v as i64).wrapping_sub(#lo)).ok();));
+                    ids.push(id);
+                }
+            }
+        }
+        (lets, ids)
+    }
+
+    /// An `Option<&T>` / `Option<&mut T>` chain down an indexed path.
+    fn chain(&self, p: &Place, ids: &[proc_macro2::Ident], mutable: bool) -> TokenStream {
+        let root = self.root(&p.root);
+        let mut chain = if mutable { quote!(::core::option::Option::Some(&mut #root)) } else { quote!(::core::option::Option::Some(&#root)) };
+        let mut k = 0;
+        for e in &p.path {
+            match e {
+                PathElem::Field(f) => {
+                    let f = member_ident(f);
+                    chain = if mutable { quote!(#chain.map(|__x| &mut __x.#f)) } else { quote!(#chain.map(|__x| &__x.#f)) };
+                }
+                PathElem::Index { subs, .. } => {
+                    for _ in subs {
+                        let id = &ids[k];
+                        k += 1;
+                        chain = if mutable {
+                            quote!(#chain.and_then(|__x| #id.and_then(|__i| __x.get_mut(__i))))
+                        } else {
+                            quote!(#chain.and_then(|__x| #id.and_then(|__i| __x.get(__i))))
+                        };
+                    }
+                }
+            }
+        }
+        chain
+    }
+
+    fn simple_path(&self, p: &Place) -> TokenStream {
+        let mut t = self.root(&p.root);
+        for e in &p.path {
+            if let PathElem::Field(f) = e {
+                let f = member_ident(f);
+                t = quote!(#t.#f);
+            }
+        }
+        t
+    }
+
+    pub(crate) fn read(&self, p: &Place, line: u32) -> TokenStream {
+        if !Self::has_index(p) {
+            return self.simple_path(p);
+        }
+        let (lets, ids) = self.subscripts(p, line);
+        let chain = self.chain(p, &ids, false);
+        let fault = self.fault("IndexOutOfRange", line);
+        let d = default_value(&p.ty);
+        quote!({
+            #lets
+            match #chain {
+                ::core::option::Option::Some(__v) => *__v,
+                ::core::option::Option::None => { #fault; #d }
+            }
+        })
+    }
+
+    /// Store `value` (already evaluated tokens) into a place.
+    pub(crate) fn write(&self, p: &Place, value: TokenStream, line: u32) -> TokenStream {
+        if !Self::has_index(p) {
+            let path = self.simple_path(p);
+            return quote!(#path = #value;);
+        }
+        let (lets, ids) = self.subscripts(p, line);
+        let chain = self.chain(p, &ids, true);
+        let fault = self.fault("IndexOutOfRange", line);
+        quote!({
+            let __v = #value;
+            #lets
+            match #chain {
+                ::core::option::Option::Some(__slot) => *__slot = __v,
+                ::core::option::Option::None => #fault,
+            }
+        })
+    }
+
+    /// Run `f` on the FB instance at `p` (`__fb` in the tokens of `f`).
+    pub(crate) fn with_fb(&self, p: &Place, body: TokenStream, line: u32) -> TokenStream {
+        if !Self::has_index(p) {
+            let path = self.simple_path(p);
+            return quote!({ let __fb = &mut #path; #body });
+        }
+        let (lets, ids) = self.subscripts(p, line);
+        let chain = self.chain(p, &ids, true);
+        let fault = self.fault("IndexOutOfRange", line);
+        quote!({
+            #lets
+            match #chain {
+                ::core::option::Option::Some(__fb) => { #body }
+                ::core::option::Option::None => #fault,
+            }
+        })
+    }
+
+    pub(crate) fn expr(&self, e: &Expr, line: u32) -> TokenStream {
+        match e {
+            Expr::Value(v) => self.value(v, line),
+            Expr::Not(v) => {
+                let v = self.value(v, line);
+                quote!(!#v)
+            }
+            Expr::Bin { op, ty, lhs, rhs, negate_rhs } => {
+                let l = self.value(lhs, line);
+                let mut r = self.value(rhs, line);
+                if *negate_rhs {
+                    r = quote!((!#r));
+                }
+                self.binary(*op, ty, l, r, line)
+            }
+            Expr::TimeScale { div, time, lhs, num, rhs } => {
+                let t = time.rust();
+                let l = self.value(lhs, line);
+                let r = self.value(rhs, line);
+                match (div, num.is_real()) {
+                    (false, false) => quote!(#t(#l.0.wrapping_mul(#r as i64))),
+                    (false, true) => quote!(#t(((#l.0 as f64) * (#r as f64)) as i64)),
+                    (true, true) => quote!(#t(((#l.0 as f64) / (#r as f64)) as i64)),
+                    (true, false) => {
+                        let fault = self.fault("DivisionByZero", line);
+                        quote!({
+                            let __d = #r as i64;
+                            if __d == 0 { #fault; #t(0) } else { #t(#l.0.wrapping_div(__d)) }
+                        })
+                    }
+                }
+            }
+            Expr::CallUser { name, args, outputs, out_types } => {
+                let f = rust_ident(name);
+                let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
+                if out_types.is_empty() {
+                    return quote!(#f(__ctx, #(#args,)*));
+                }
+                // Every output needs a place, read by `=>` or not.
+                let ids: Vec<_> = (0..out_types.len()).map(|k| format_ident!("__o{}", k)).collect();
+                let lets = out_types.iter().zip(&ids).map(|(t, id)| {
+                    let ty = rust_ty(t);
+                    let d = default_value(t);
+                    quote!(let mut #id: #ty = #d;)
+                });
+                let stores = outputs.iter().map(|(k, place, neg)| {
+                    let id = &ids[*k];
+                    let v = if *neg { quote!(!#id) } else { quote!(#id) };
+                    self.write(place, v, line)
+                });
+                quote!({
+                    #(#lets)*
+                    let __r = #f(__ctx, #(#args,)* #(&mut #ids,)*);
+                    #(#stores)*
+                    __r
+                })
+            }
+            Expr::CallStd { call, args, .. } => {
+                let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
+                match call {
+                    StdCall::Plain(n) => {
+                        let f = format_ident!("{}", n);
+                        quote!(::il_std::func::#f(#(#args),*))
+                    }
+                    StdCall::Fold(n) => {
+                        let f = format_ident!("{}", n);
+                        let mut it = args.into_iter();
+                        let mut acc = it.next().unwrap_or_default();
+                        for a in it {
+                            acc = quote!(::il_std::func::#f(#acc, #a));
+                        }
+                        acc
+                    }
+                    StdCall::Chain(n) => {
+                        let f = format_ident!("{}", n);
+                        let pairs = args.windows(2).map(|w| {
+                            let (a, b) = (&w[0], &w[1]);
+                            quote!(::il_std::func::#f(#a, #b))
+                        });
+                        quote!((true #(& #pairs)*))
+                    }
+                    StdCall::Mux => {
+                        let fault = self.fault("InvalidArgument", line);
+                        let k = &args[0];
+                        let ins = &args[1..];
+                        quote!({
+                            let (__v, __bad) = ::il_std::func::MUX(#k as i64, &[#(#ins),*]);
+                            if __bad { #fault; }
+                            __v
+                        })
+                    }
+                    StdCall::Convert { from, to } => {
+                        let f = format_ident!("{}_TO_{}", short(*from), short(*to));
+                        quote!(::il_std::func::#f(#(#args),*))
+                    }
+                }
+            }
+        }
+    }
+
+    fn binary(&self, op: BinOp, ty: &Ty, l: TokenStream, r: TokenStream, line: u32) -> TokenStream {
+        let e = ty.elem();
+        let int = e.is_some_and(|e| e.is_int() || e.is_bitstring());
+        let dur = e.filter(|e| e.is_duration()).map(Elem::rust);
+        match op {
+            BinOp::And => quote!((#l & #r)),
+            BinOp::Or => quote!((#l | #r)),
+            BinOp::Xor => quote!((#l ^ #r)),
+            BinOp::Gt => quote!((#l > #r)),
+            BinOp::Ge => quote!((#l >= #r)),
+            BinOp::Eq => quote!((#l == #r)),
+            BinOp::Ne => quote!((#l != #r)),
+            BinOp::Le => quote!((#l <= #r)),
+            BinOp::Lt => quote!((#l < #r)),
+            BinOp::Add | BinOp::Sub if dur.is_some() => {
+                let t = dur.unwrap_or_default();
+                if op == BinOp::Add { quote!(#t(#l.0.wrapping_add(#r.0))) } else { quote!(#t(#l.0.wrapping_sub(#r.0))) }
+            }
+            BinOp::Add if int => quote!(#l.wrapping_add(#r)),
+            BinOp::Sub if int => quote!(#l.wrapping_sub(#r)),
+            BinOp::Mul if int => quote!(#l.wrapping_mul(#r)),
+            BinOp::Div | BinOp::Mod if int => {
+                let fault = self.fault("DivisionByZero", line);
+                let f = if op == BinOp::Div { quote!(wrapping_div) } else { quote!(wrapping_rem) };
+                quote!({
+                    let __d = #r;
+                    if __d == 0 { #fault; 0 } else { #l.#f(__d) }
+                })
+            }
+            BinOp::Add => quote!((#l + #r)),
+            BinOp::Sub => quote!((#l - #r)),
+            BinOp::Mul => quote!((#l * #r)),
+            BinOp::Div => quote!((#l / #r)),
+            BinOp::Mod => quote!((#l % #r)),
+        }
+    }
+}
+
+fn member_ident(name: &str) -> proc_macro2::Ident {
+    rust_ident(name)
+}
+
+fn short(e: Elem) -> &'static str {
+    match e {
+        Elem::TOD => "TOD",
+        Elem::DT => "DT",
+        e => e.name(),
+    }
+}

@@ -1,0 +1,66 @@
+//! Diagnostic codes of the checker (IL0100..IL0199).
+
+use crate::diag::codes::CodeInfo;
+
+macro_rules! codes {
+    ($($id:ident = $code:literal, $title:literal, $expl:literal;)*) => {
+        $(pub const $id: &str = $code;)*
+        /// Every checker code with its explanation.
+        pub static CODES: &[CodeInfo] = &[$(CodeInfo { code: $code, title: $title, explanation: $expl },)*];
+    };
+}
+
+codes! {
+    UNKNOWN_NAME = "IL0101", "unknown variable",
+        "The operand names no variable of this POU.\n\n    LD  Strat   (* typo for Start *)\n\nDeclare it in a VAR block or fix the spelling; names are case-insensitive.";
+    UNKNOWN_LABEL = "IL0102", "unknown label",
+        "A jump names a label that does not exist in this POU.\n\n    JMPC  Done\n    ...\n    (* no line `Done:` *)";
+    DUPLICATE_LABEL = "IL0103", "label defined twice",
+        "Two lines carry the same label; a jump to it would be ambiguous.\n\n    L1: LD a\n    L1: LD b";
+    DUPLICATE_DECL = "IL0104", "name declared twice",
+        "Two variables, or two POUs, have the same (case-insensitive) name.\n\n    VAR x : INT; X : BOOL; END_VAR";
+    UNKNOWN_TYPE = "IL0105", "unknown type",
+        "A declaration names a type that is neither elementary, a standard function block, nor a FUNCTION_BLOCK of this file.\n\n    VAR t : TONN; END_VAR";
+    TYPE_MISMATCH = "IL0106", "operand type does not match the current result",
+        "IL operators need the current result and the operand to be of the same type (IEC 61131-3, Table 52, note 2).\n\n    LD  my_int\n    ADD my_real   (* INT + REAL: convert first with INT_TO_REAL *)";
+    BAD_OPERATOR_TYPE = "IL0107", "operator not defined for this type",
+        "The operator cannot work on this type: AND/OR/XOR/NOT need BOOL or a bit string, ADD..DIV numbers (or TIME), MOD integers.\n\n    LD  speed   (* INT *)\n    AND TRUE";
+    CR_UNDEFINED = "IL0108", "the current result is undefined here",
+        "The instruction uses the current result, but none is defined: at the start of a body, or after CAL of a function block (whose call leaves the CR undefined).\n\n    CAL timer\n    ST  done    (* load something first: LD timer.Q *)";
+    CR_DISAGREES = "IL0109", "the current result has different types on the paths into a label",
+        "A label is reached from several places with current results of different types; the CR is unusable after it until the next LD.\n\n    LD  flag      (* BOOL *)\n    JMPC L\n    LD  count     (* INT *)\n    L: ST x       (* BOOL or INT? *)";
+    COND_NOT_BOOL = "IL0110", "conditional instruction needs a BOOL current result",
+        "JMPC, CALC, RETC and their N forms test the current result, which must be BOOL.\n\n    LD   count\n    JMPC L      (* compare first: GT 0 *)";
+    NOT_WRITABLE = "IL0111", "cannot store here",
+        "The target of ST, S or R must be a writable variable: not a CONSTANT, not a literal, not an output of another function block.\n\n    VAR CONSTANT max : INT := 10; END_VAR\n    ST max";
+    UNKNOWN_MEMBER = "IL0112", "no such input or output",
+        "The function block has no input or output of that name.\n\n    LD FF.Q     (* an SR's output is Q1 *)";
+    NOT_AN_FB = "IL0113", "not a function block instance",
+        "CAL and the input operators (IN, PT, CU, ...) need an instance of a function block.\n\n    CAL  count   (* count is an INT *)";
+    UNKNOWN_FUNCTION = "IL0114", "unknown function",
+        "An unknown word in the operator field is taken as a function call, and no FUNCTION of that name exists (neither standard nor in this file). Vendor built-ins are not IEC 61131-3.\n\n    dbg 1";
+    ARG_COUNT = "IL0115", "wrong number of arguments",
+        "The call passes more or fewer arguments than the function takes. In IL the current result is the first argument.\n\n    LD x\n    LIMIT 0     (* LIMIT(MN, IN, MX): CR is MN... write LIMIT 0, 100 *)";
+    LITERAL_RANGE = "IL0116", "literal does not fit its type",
+        "The literal's value is outside the range of the type it gets from its use.\n\n    LD 300\n    ST my_sint   (* SINT: -128..127 *)";
+    RECURSION = "IL0117", "recursion",
+        "IEC 61131-3 forbids a POU from calling itself, directly or through others, and a FUNCTION_BLOCK from containing an instance of itself.";
+    IN_PARENS = "IL0118", "not allowed inside parentheses",
+        "Inside a deferred parenthesis only expression operators are allowed: no labels, jumps, CAL or RET.";
+    UNREACHABLE = "IL0119", "unreachable instruction",
+        "The instruction follows an unconditional JMP or RET and no label leads to it, so it never runs.";
+    UNUSED_LABEL = "IL0120", "unused label",
+        "No jump goes to this label.";
+    UNSUPPORTED = "IL0121", "not supported yet",
+        "The construct is valid IEC 61131-3 but this version of the compiler cannot translate it yet.";
+    CONST_DIV_ZERO = "IL0122", "division by zero in constants",
+        "Both operands are literals and the divisor is zero.";
+    BAD_INPUT_OP = "IL0124", "input operator does not fit the instance",
+        "Table 54 input operators set one input of a standard FB: S1/R for SR, S/R1 for RS, CLK for R_TRIG/F_TRIG, CU/R/PV for CTU, CD/LD/PV for CTD, CU/CD/R/LD/PV for CTUD, IN/PT for TP/TON/TOF.\n\n    PT C10    (* C10 is a CTU: it has no PT *)";
+    BAD_INDEX = "IL0125", "wrong array access",
+        "Subscripts must be integers, one per dimension, and only arrays can be subscripted; a constant subscript must be within the bounds.";
+    BAD_IDENT = "IL0126", "invalid identifier",
+        "IEC identifiers cannot contain two underscores in a row or end with an underscore (the generated code reserves such names).";
+    BAD_INIT = "IL0127", "invalid initial value",
+        "The initial value does not fit the declared type.";
+}

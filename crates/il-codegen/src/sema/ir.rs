@@ -1,0 +1,192 @@
+//! The checked program: every name resolved, every value typed. The emitter
+//! turns this into Rust without further checks, so anything it accepts here
+//! must compile.
+
+use super::types::{Elem, Ty};
+use crate::ast::{PouKind, VarKind};
+
+#[derive(Clone, Debug, Default)]
+pub struct Program {
+    pub pous: Vec<CheckedPou>,
+}
+
+#[derive(Clone, Debug)]
+pub struct CheckedPou {
+    pub kind: PouKind,
+    /// As declared (the Rust item keeps this spelling).
+    pub name: String,
+    pub vars: Vec<Var>,
+    /// FUNCTION result type.
+    pub ret: Option<Ty>,
+    pub body: Vec<Stmt>,
+    pub label_count: usize,
+    /// The CR locals the body uses (one per type).
+    pub cr_types: Vec<Ty>,
+    /// Types of the slots that hold the outer CR of deferred parentheses.
+    pub save_types: Vec<Ty>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Var {
+    /// As declared.
+    pub name: String,
+    pub kind: VarKind,
+    pub ty: Ty,
+    pub init: Option<Init>,
+    pub constant: bool,
+    /// Line of the declaration, for comments.
+    pub line: u32,
+}
+
+/// Initial values.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Init {
+    Const(Const),
+    /// Row-major elements of an array (already expanded to its full length).
+    Array(Vec<Const>),
+    /// Inputs of an FB instance: `t : TON := (PT := T#1s)`.
+    Fields(Vec<(String, Const)>),
+}
+
+/// A typed constant.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Const {
+    Bool(bool),
+    /// Integer or bit string of the given type, value in range.
+    Int(i128, Elem),
+    Real(f64, Elem),
+    /// TIME/LTIME (ns), DATE (days), TOD (ns), DT (ns).
+    Time(i64, Elem),
+    Str { value: String, wide: bool, len: u32 },
+}
+
+impl Const {
+    pub fn ty(&self) -> Ty {
+        match self {
+            Const::Bool(_) => Ty::BOOL,
+            Const::Int(_, e) | Const::Real(_, e) | Const::Time(_, e) => Ty::Elem(*e),
+            Const::Str { wide, len, .. } => Ty::Str { wide: *wide, len: *len },
+        }
+    }
+}
+
+/// A variable, or a part of one.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Place {
+    pub root: Root,
+    pub path: Vec<PathElem>,
+    pub ty: Ty,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Root {
+    /// Index into `CheckedPou::vars`.
+    Var(usize),
+    /// The FUNCTION's result variable (named like the function).
+    Ret,
+    /// ENO of a FUNCTION.
+    Eno,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum PathElem {
+    /// A member of an FB instance, as declared in the FB.
+    Field(String),
+    /// Subscripts of an array with these bounds.
+    Index { dims: Vec<(i64, i64)>, subs: Vec<Value> },
+}
+
+/// Something to read.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    /// The CR local of that type.
+    Cr(Ty),
+    Const(Const),
+    Read(Place),
+    /// A saved outer CR of a deferred parenthesis.
+    Saved(usize, Ty),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinOp {
+    And,
+    Or,
+    Xor,
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Mod,
+    Gt,
+    Ge,
+    Eq,
+    Ne,
+    Le,
+    Lt,
+}
+
+/// A computation whose result becomes the CR.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Expr {
+    Value(Value),
+    /// Logical/bitwise complement.
+    Not(Value),
+    /// `lhs op rhs`; `ty` is the operands' type (rhs is already complemented
+    /// for ANDN etc. via `negate_rhs`). Comparisons yield BOOL.
+    Bin { op: BinOp, ty: Ty, lhs: Value, rhs: Value, negate_rhs: bool },
+    /// TIME/LTIME scaled by a number: `MUL`/`DIV` with a numeric operand.
+    TimeScale { div: bool, time: Elem, lhs: Value, num: Elem, rhs: Value },
+    /// A call of a user FUNCTION: arguments in declaration order of its
+    /// inputs; `out_types` are all its outputs, `outputs` the ones read with
+    /// `=>` (index into `out_types`, target, complemented).
+    CallUser { name: String, args: Vec<Value>, out_types: Vec<Ty>, outputs: Vec<(usize, Place, bool)> },
+    /// A call of an il-std function.
+    CallStd { call: StdCall, args: Vec<Value>, arg_types: Vec<Ty>, ret: Ty },
+}
+
+/// How to call a standard function.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StdCall {
+    /// `::il_std::func::NAME(args...)`.
+    Plain(&'static str),
+    /// Folded over more than two arguments (`ADD a, b, c`).
+    Fold(&'static str),
+    /// Comparison chain: `GT(a,b) AND GT(b,c)`.
+    Chain(&'static str),
+    /// `MUX(K, IN0, ...)`.
+    Mux,
+    /// Elementary conversion `X_TO_Y` done inline.
+    Convert { from: Elem, to: Elem },
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Stmt {
+    pub op: Op,
+    /// IL source line (1-based), carried into a comment.
+    pub line: u32,
+}
+
+/// `Some((value, when))`: act when the BOOL value equals `when`.
+pub type Condition = Option<(Value, bool)>;
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Op {
+    /// `__cr_<ty> = expr`
+    SetCr { ty: Ty, expr: Expr },
+    /// `__save_n = value`
+    Save { slot: usize, value: Value },
+    /// `place = value` (complemented for STN).
+    Store { place: Place, value: Value, negate: bool },
+    /// S / R on a BOOL: `if cond { place = value }`.
+    SetIf { place: Place, value: bool, cond: Value },
+    /// Call an FB instance after setting inputs; then copy outputs.
+    CallFb {
+        inst: Place,
+        inputs: Vec<(String, Value)>,
+        outputs: Vec<(String, Place, bool)>,
+        cond: Condition,
+    },
+    Jump { label: usize, cond: Condition },
+    Label(usize),
+    Return { cond: Condition },
+}

@@ -1,0 +1,518 @@
+//! Grammar actions: building AST nodes, and the checks that give clearer
+//! messages after parsing than a syntax error would.
+
+use lalrpop_util::ErrorRecovery;
+
+use super::errors::code;
+use super::lexer::{LexError, Tok};
+use crate::ast::*;
+use crate::diag::Diagnostic;
+
+/// State shared with the grammar's actions.
+#[derive(Default)]
+pub struct Ctx {
+    pub errors: Vec<ErrorRecovery<usize, Tok, LexError>>,
+    pub diags: Vec<Diagnostic>,
+}
+
+pub fn sp(lo: usize, hi: usize) -> Span {
+    Span::new(lo, hi)
+}
+
+/// One element of a POU: declarations, instruction lines, KAS-IDE markers.
+pub enum Elem {
+    Vars(VarBlock),
+    Stmts(Vec<Stmt>),
+    BeginIl(Span),
+    EndIl(Span),
+}
+
+#[allow(clippy::large_enum_variant)] // short-lived, built once per element
+pub enum CfgElem {
+    Vars(VarBlock),
+    Resource(Resource),
+    Task(Task),
+    Program(ProgramInstance),
+    Error,
+}
+
+pub fn instr(kind: InstrKind, lo: usize, op_hi: usize, hi: usize) -> Instr {
+    Instr {
+        kind,
+        op_span: sp(lo, op_hi),
+        span: sp(lo, hi),
+    }
+}
+
+pub fn bit_access(ctx: &mut Ctx, l: Literal) -> Accessor {
+    match l.kind {
+        LitKind::Int(n) if (0..=63).contains(&n) && l.type_prefix.is_none() => {
+            Accessor::Bit(n as u32, l.span)
+        }
+        _ => {
+            ctx.diags.push(
+                Diagnostic::error(
+                    code::SYNTAX,
+                    l.span,
+                    "expected a field name or a bit number (0 to 63) after `.`",
+                )
+                .with_label("not a field or bit"),
+            );
+            Accessor::Bit(0, l.span)
+        }
+    }
+}
+
+pub fn repeat(ctx: &mut Ctx, n: Literal, i: Initializer) -> (Option<Literal>, Initializer) {
+    if !matches!(n.kind, LitKind::Int(k) if k >= 0) || n.type_prefix.is_some() {
+        ctx.diags.push(
+            Diagnostic::error(
+                code::DECL_SYNTAX,
+                n.span,
+                "a repeat count in an array initial value must be a plain integer, e.g. `3(0)`",
+            )
+            .with_label("not a repeat count"),
+        );
+    }
+    (Some(n), i)
+}
+
+pub fn var_block(
+    ctx: &mut Ctx,
+    kind: VarKind,
+    quals: Vec<(Tok, Span)>,
+    decls: Vec<Option<VarDecl>>,
+    _closed: bool,
+    span: Span,
+) -> VarBlock {
+    let mut constant = false;
+    let mut retain = Retain::Unspecified;
+    for (q, s) in quals {
+        let dup = match q {
+            Tok::Constant => std::mem::replace(&mut constant, true),
+            Tok::Retain | Tok::NonRetain => {
+                let r = if q == Tok::Retain {
+                    Retain::Retain
+                } else {
+                    Retain::NonRetain
+                };
+                std::mem::replace(&mut retain, r) != Retain::Unspecified
+            }
+            _ => false,
+        };
+        if dup {
+            ctx.diags.push(
+                Diagnostic::error(
+                    code::DECL_SYNTAX,
+                    s,
+                    "this qualifier is repeated or conflicts with an earlier one",
+                )
+                .with_label("repeated qualifier"),
+            );
+        }
+    }
+    VarBlock {
+        kind,
+        constant,
+        retain,
+        decls: decls.into_iter().flatten().collect(),
+        span,
+    }
+}
+
+/// Check a body: labels, jumps, CAL and RET inside parentheses.
+fn check_parens(ctx: &mut Ctx, body: &[Stmt], inside: bool) {
+    for s in body {
+        match s {
+            Stmt::Label(l) if inside => ctx.diags.push(
+                Diagnostic::error(
+                    code::IN_PARENS,
+                    l.span,
+                    format!("a label is not allowed inside parentheses (`{}:`)", l.name),
+                )
+                .with_label("label inside ( )")
+                .with_help("move the label before the operator that opens the parenthesis"),
+            ),
+            Stmt::Label(_) => {}
+            Stmt::Instr(i) => match &i.kind {
+                InstrKind::Deferred { body, .. } => check_parens(ctx, body, true),
+                InstrKind::Jump { .. } | InstrKind::Call { .. } | InstrKind::Return { .. }
+                    if inside =>
+                {
+                    let what = match i.kind {
+                        InstrKind::Jump { .. } => "a jump",
+                        InstrKind::Call { .. } => "CAL",
+                        _ => "RET",
+                    };
+                    ctx.diags.push(
+                        Diagnostic::error(code::IN_PARENS, i.op_span, format!("{what} is not allowed inside parentheses"))
+                            .with_label("inside ( )")
+                            .with_note("between `OP(` and `)` only loads, stores and operators that compute a value may appear"),
+                    );
+                }
+                _ => {}
+            },
+        }
+    }
+}
+
+struct Split {
+    var_blocks: Vec<VarBlock>,
+    body: Vec<Stmt>,
+    begin_il: bool,
+}
+
+fn split_elems(ctx: &mut Ctx, els: Vec<Elem>) -> Split {
+    let mut var_blocks = Vec::new();
+    let mut body: Vec<Stmt> = Vec::new();
+    let mut begin: Option<Span> = None;
+    let mut end: Option<Span> = None;
+    let mut reported_late_decl = false;
+    for e in els {
+        match e {
+            Elem::Vars(v) => {
+                if let (false, Some(first)) = (
+                    reported_late_decl,
+                    body.first().map(|s| match s {
+                        Stmt::Instr(i) => i.span,
+                        Stmt::Label(l) => l.span,
+                    }),
+                ) {
+                    reported_late_decl = true;
+                    let kw = v.kind.keyword();
+                    ctx.diags.push(
+                        Diagnostic::error(
+                            code::DECL_AFTER_CODE,
+                            sp(v.span.lo as usize, v.span.lo as usize + kw.len()),
+                            "declarations must come before the instructions",
+                        )
+                        .with_label(format!("{kw} block after instructions"))
+                        .with_secondary(first, "the instructions start here")
+                        .with_help("move all VAR ... END_VAR blocks to the start of the POU"),
+                    );
+                }
+                var_blocks.push(v);
+            }
+            Elem::Stmts(s) => {
+                if let (Some(e), Some(st)) = (end, s.first()) {
+                    let sspan = match st {
+                        Stmt::Instr(i) => i.span,
+                        Stmt::Label(l) => l.span,
+                    };
+                    ctx.diags.push(
+                        Diagnostic::error(code::BEGIN_IL, sspan, "instructions after END_IL")
+                            .with_secondary(e, "the body ended here")
+                            .with_label("outside BEGIN_IL ... END_IL"),
+                    );
+                    end = None;
+                }
+                body.extend(s)
+            }
+            Elem::BeginIl(s) => {
+                if begin.is_some() {
+                    ctx.diags.push(
+                        Diagnostic::error(code::BEGIN_IL, s, "a second BEGIN_IL")
+                            .with_label("repeated"),
+                    );
+                } else if !body.is_empty() {
+                    ctx.diags.push(
+                        Diagnostic::error(
+                            code::BEGIN_IL,
+                            s,
+                            "BEGIN_IL must come before the first instruction",
+                        )
+                        .with_label("too late"),
+                    );
+                }
+                begin = Some(s);
+            }
+            Elem::EndIl(s) => {
+                if begin.is_none() {
+                    ctx.diags.push(
+                        Diagnostic::error(code::BEGIN_IL, s, "END_IL without BEGIN_IL")
+                            .with_label("no BEGIN_IL before this"),
+                    );
+                }
+                end = Some(s);
+            }
+        }
+    }
+    if let (Some(b), None) = (begin, end)
+        && !ctx.diags.iter().any(|d| d.code == code::BEGIN_IL)
+    {
+        {
+            ctx.diags.push(
+                Diagnostic::error(code::BEGIN_IL, b, "missing END_IL")
+                    .with_label("this BEGIN_IL is never closed"),
+            );
+        }
+    }
+    check_parens(ctx, &body, false);
+    Split {
+        var_blocks,
+        body,
+        begin_il: begin.is_some(),
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+pub fn pou(
+    ctx: &mut Ctx,
+    kind: PouKind,
+    kw_span: Span,
+    name: Option<Ident>,
+    ret: Option<TypeSpec>,
+    els: Vec<Elem>,
+    end: Option<(PouKind, Span)>,
+    span: Span,
+) -> Pou {
+    let name = name.unwrap_or_else(|| Ident::new("", kw_span));
+    let Split {
+        var_blocks,
+        body,
+        begin_il,
+    } = split_elems(ctx, els);
+    if !name.name.is_empty() {
+        match (kind, &ret) {
+            (PouKind::Function, None) => ctx.diags.push(
+                Diagnostic::error(
+                    code::RESULT_TYPE,
+                    name.span,
+                    format!("FUNCTION `{name}` needs a result type"),
+                )
+                .with_label("no result type")
+                .with_help(format!(
+                    "write `FUNCTION {name} : INT` (or the type it returns)"
+                )),
+            ),
+            (PouKind::FunctionBlock | PouKind::Program, Some(t)) => ctx.diags.push(
+                Diagnostic::error(
+                    code::RESULT_TYPE,
+                    t.span(),
+                    format!("a {} has no result type", kind.keyword()),
+                )
+                .with_label("only a FUNCTION returns a value")
+                .with_help("declare outputs in a VAR_OUTPUT block instead"),
+            ),
+            _ => {}
+        }
+    }
+    let end_span = match end {
+        Some((k, s)) => {
+            if k != kind {
+                ctx.diags.push(
+                    Diagnostic::error(
+                        code::MISSING_END,
+                        s,
+                        format!(
+                            "END_{} does not close {} `{name}`",
+                            k.keyword(),
+                            kind.keyword()
+                        ),
+                    )
+                    .with_label(format!("expected END_{}", kind.keyword()))
+                    .with_secondary(kw_span, "opened here"),
+                );
+            }
+            s
+        }
+        None => {
+            let at = sp(span.hi as usize, span.hi as usize);
+            let msg = if name.name.is_empty() {
+                format!("missing END_{}", kind.keyword())
+            } else {
+                format!("missing END_{} for `{name}`", kind.keyword())
+            };
+            ctx.diags.push(
+                Diagnostic::error(code::MISSING_END, at, msg)
+                    .with_label(format!("END_{} expected here", kind.keyword()))
+                    .with_secondary(kw_span.to(name.span), "this POU is not closed"),
+            );
+            at
+        }
+    };
+    Pou {
+        kind,
+        name,
+        return_type: ret,
+        var_blocks,
+        body,
+        begin_il,
+        span,
+        end_span,
+    }
+}
+
+/// Instructions outside any POU: reported, then dropped.
+pub fn orphan(ctx: &mut Ctx, span: Span, els: Vec<Elem>) {
+    let first = els.iter().find_map(|e| match e {
+        Elem::Stmts(s) => s.first().map(|s| match s {
+            Stmt::Instr(i) => i.span,
+            Stmt::Label(l) => l.span,
+        }),
+        Elem::Vars(v) => Some(v.span),
+        Elem::BeginIl(s) | Elem::EndIl(s) => Some(*s),
+    });
+    let at = first.unwrap_or(sp(span.lo as usize, span.lo as usize));
+    ctx.diags.push(
+        Diagnostic::error(
+            code::ORPHAN,
+            at,
+            "IL instructions must be inside a PROGRAM, FUNCTION or FUNCTION_BLOCK",
+        )
+        .with_label("outside any POU")
+        .with_help("wrap them in `PROGRAM name` ... `END_PROGRAM`, with their VAR blocks first"),
+    );
+    let _ = split_elems(ctx, els);
+}
+
+pub fn configuration(name: Ident, els: Vec<CfgElem>, span: Span) -> Configuration {
+    let mut globals = Vec::new();
+    let mut resources = Vec::new();
+    let mut loose = Resource {
+        name: None,
+        on: None,
+        globals: Vec::new(),
+        tasks: Vec::new(),
+        programs: Vec::new(),
+        span,
+    };
+    for e in els {
+        match e {
+            CfgElem::Vars(v) => globals.push(v),
+            CfgElem::Resource(r) => resources.push(r),
+            CfgElem::Task(t) => loose.tasks.push(t),
+            CfgElem::Program(p) => loose.programs.push(p),
+            CfgElem::Error => {}
+        }
+    }
+    if !loose.tasks.is_empty() || !loose.programs.is_empty() || resources.is_empty() {
+        resources.insert(0, loose);
+    }
+    Configuration {
+        name,
+        globals,
+        resources,
+        span,
+    }
+}
+
+pub fn resource(
+    ctx: &mut Ctx,
+    name: Ident,
+    on: Option<Ident>,
+    els: Vec<CfgElem>,
+    span: Span,
+) -> CfgElem {
+    let mut r = Resource {
+        name: Some(name),
+        on,
+        globals: Vec::new(),
+        tasks: Vec::new(),
+        programs: Vec::new(),
+        span,
+    };
+    for e in els {
+        match e {
+            CfgElem::Vars(v) => r.globals.push(v),
+            CfgElem::Task(t) => r.tasks.push(t),
+            CfgElem::Program(p) => r.programs.push(p),
+            CfgElem::Resource(inner) => ctx.diags.push(
+                Diagnostic::error(
+                    code::CONFIG_SYNTAX,
+                    inner.span,
+                    "a RESOURCE cannot contain another RESOURCE",
+                )
+                .with_label("nested RESOURCE"),
+            ),
+            CfgElem::Error => {}
+        }
+    }
+    CfgElem::Resource(r)
+}
+
+pub fn task(ctx: &mut Ctx, name: Ident, params: Vec<(Ident, Operand)>, span: Span) -> Task {
+    let mut t = Task {
+        name,
+        single: None,
+        interval: None,
+        priority: None,
+        span,
+    };
+    for (n, v) in params {
+        let key = n.key();
+        let dup = match key.as_str() {
+            "SINGLE" => t.single.replace(v).is_some(),
+            "INTERVAL" => t.interval.replace(v).is_some(),
+            "PRIORITY" => match v {
+                Operand::Lit(l) if matches!(l.kind, LitKind::Int(_)) => {
+                    t.priority.replace(l).is_some()
+                }
+                other => {
+                    ctx.diags.push(
+                        Diagnostic::error(
+                            code::CONFIG_SYNTAX,
+                            other.span(),
+                            "PRIORITY must be an integer, e.g. `PRIORITY := 1`",
+                        )
+                        .with_label("not an integer"),
+                    );
+                    false
+                }
+            },
+            _ => {
+                ctx.diags.push(
+                    Diagnostic::error(
+                        code::CONFIG_SYNTAX,
+                        n.span,
+                        format!("`{n}` is not a TASK parameter: use SINGLE, INTERVAL or PRIORITY"),
+                    )
+                    .with_label("unknown parameter"),
+                );
+                false
+            }
+        };
+        if dup {
+            ctx.diags.push(
+                Diagnostic::error(code::CONFIG_SYNTAX, n.span, format!("`{n}` is given twice"))
+                    .with_label("repeated"),
+            );
+        }
+    }
+    t
+}
+
+#[allow(clippy::too_many_arguments)]
+pub fn program_instance(
+    ctx: &mut Ctx,
+    k: PouKind,
+    kw_span: Span,
+    retain: Option<Retain>,
+    name: Ident,
+    task: Option<Ident>,
+    program: Ident,
+    args: Option<Vec<ParamAssign>>,
+    span: Span,
+) -> ProgramInstance {
+    if k != PouKind::Program {
+        ctx.diags.push(
+            Diagnostic::error(
+                code::CONFIG_SYNTAX,
+                kw_span,
+                format!(
+                    "a configuration runs PROGRAM instances, not a {}",
+                    k.keyword()
+                ),
+            )
+            .with_label("expected PROGRAM"),
+        );
+    }
+    ProgramInstance {
+        name,
+        retain: retain.unwrap_or_default(),
+        task,
+        program,
+        args: args.unwrap_or_default(),
+        span,
+    }
+}

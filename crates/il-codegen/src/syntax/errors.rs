@@ -1,0 +1,537 @@
+//! Syntax error messages in a PLC engineer's words, and the index of the
+//! front end's diagnostic codes.
+
+use lalrpop_util::ParseError;
+
+use super::lexer::{LexError, Spanned, Tok};
+use crate::ast::Span;
+use crate::diag::codes::CodeInfo;
+use crate::diag::{Diagnostic, SourceFile};
+
+/// The front end's codes.
+pub mod code {
+    pub const BAD_CHAR: &str = "IL0001";
+    pub const UNTERMINATED_COMMENT: &str = "IL0002";
+    pub const MISSING_OPERAND: &str = "IL0003";
+    pub const NO_OPERAND: &str = "IL0004";
+    pub const SYNTAX: &str = "IL0005";
+    pub const MISSING_LABEL: &str = "IL0006";
+    pub const MISSING_CAL_TARGET: &str = "IL0007";
+    pub const SEMI_COMMENT: &str = "IL0008";
+    pub const ST_CODE: &str = "IL0009";
+    pub const SFC_CODE: &str = "IL0010";
+    pub const ORPHAN: &str = "IL0011";
+    pub const DECL_AFTER_CODE: &str = "IL0012";
+    pub const MISSING_END_VAR: &str = "IL0013";
+    pub const MISSING_END: &str = "IL0014";
+    pub const PAREN: &str = "IL0015";
+    pub const IN_PARENS: &str = "IL0016";
+    pub const TOO_DEEP: &str = "IL0017";
+    pub const BAD_NUMBER: &str = "IL0018";
+    pub const BAD_DURATION: &str = "IL0019";
+    pub const BAD_DATE: &str = "IL0020";
+    pub const BAD_STRING: &str = "IL0021";
+    pub const BAD_ADDRESS: &str = "IL0022";
+    pub const DECL_SYNTAX: &str = "IL0023";
+    pub const CONFIG_SYNTAX: &str = "IL0024";
+    pub const PRAGMA: &str = "IL0025";
+    pub const TOO_LARGE: &str = "IL0026";
+    pub const RESULT_TYPE: &str = "IL0027";
+    pub const BEGIN_IL: &str = "IL0028";
+    pub const UNEXPECTED_EOF: &str = "IL0029";
+    pub const EXTRA_TOKENS: &str = "IL0030";
+    pub const EXPECTED_INSTRUCTION: &str = "IL0031";
+}
+
+macro_rules! info {
+    ($code:expr, $title:expr, $expl:expr) => {
+        CodeInfo {
+            code: $code,
+            title: $title,
+            explanation: $expl,
+        }
+    };
+}
+
+pub static CODES: &[CodeInfo] = &[
+    info!(
+        code::BAD_CHAR,
+        "a character that has no meaning in IL",
+        "The text contains a character that IEC 61131-3 Instruction List does not use outside comments and strings.\n\n    LD x @ 1      (* `@` is not IL *)\n\nRemove it, or put it in a comment (* ... *)."
+    ),
+    info!(
+        code::UNTERMINATED_COMMENT,
+        "a comment that is never closed",
+        "A comment starts with `(*` and ends with `*)`. Comments do not nest.\n\n    (* start of a comment\n    LD x\n\nClose the comment with `*)`."
+    ),
+    info!(
+        code::MISSING_OPERAND,
+        "an operator without its operand",
+        "LD, ST, S, R, AND, ADD, GT ..., and the FB input operators (PV, IN ...) need an operand.\n\n    LD          (* load what? *)\n\nWrite `LD x`."
+    ),
+    info!(
+        code::NO_OPERAND,
+        "an operator that takes no operand was given one",
+        "NOT complements the current result and RET/RETC/RETCN return; they take no operand.\n\n    NOT x       (* wrong *)\n\nTo load the complement of `x` write `LDN x`; to complement the current result write `NOT` alone."
+    ),
+    info!(
+        code::SYNTAX,
+        "an instruction line that cannot be read",
+        "The line does not follow the form `label: OPERATOR operand` of an IL instruction.\n\n    LD x y      (* two operands *)\n\nWrite one instruction per line with one operand (or a comma list for a function)."
+    ),
+    info!(
+        code::MISSING_LABEL,
+        "a jump without a label",
+        "JMP, JMPC and JMPCN need the label to jump to.\n\n    JMPC        (* where to? *)\n\nWrite `JMPC done` and put `done:` before the target instruction."
+    ),
+    info!(
+        code::MISSING_CAL_TARGET,
+        "CAL without a function block instance",
+        "CAL, CALC and CALCN call a function block instance.\n\n    CAL (IN := x)\n\nWrite `CAL timer1(IN := x, PT := T#1s)`."
+    ),
+    info!(
+        code::SEMI_COMMENT,
+        "a `;` comment (not IEC)",
+        "Some tools accept `;` to start a comment; IEC 61131-3 does not.\n\n    LD x   ; load x\n\nWrite `LD x   (* load x *)`."
+    ),
+    info!(
+        code::ST_CODE,
+        "Structured Text code in an IL file",
+        "Only Instruction List is supported; the POU contains a Structured Text statement such as an assignment or IF.\n\n    c := a + b;\n\nIn IL write:\n\n    LD a\n    ADD b\n    ST c\n\nThe rest of the POU is skipped."
+    ),
+    info!(
+        code::SFC_CODE,
+        "Sequential Function Chart elements",
+        "STEP, TRANSITION and ACTION belong to SFC, which is not supported.\n\n    INITIAL_STEP start:\n    END_STEP\n\nWrite the sequence in IL with jumps and BOOL state variables. The rest of the POU is skipped."
+    ),
+    info!(
+        code::ORPHAN,
+        "instructions outside a PROGRAM, FUNCTION or FUNCTION_BLOCK",
+        "IL instructions belong inside a program organisation unit.\n\n    LD %IX0.0\n    ST %QX0.0\n\nWrap them:\n\n    PROGRAM main\n    LD %IX0.0\n    ST %QX0.0\n    END_PROGRAM"
+    ),
+    info!(
+        code::DECL_AFTER_CODE,
+        "declarations after the instructions",
+        "All VAR ... END_VAR blocks of a POU come before its first instruction.\n\n    LD a\n    VAR b : INT; END_VAR\n\nMove the VAR block up, before `LD a`."
+    ),
+    info!(
+        code::MISSING_END_VAR,
+        "a VAR block without END_VAR",
+        "Each VAR, VAR_INPUT, ... block ends with END_VAR.\n\n    VAR x : INT;\n    LD x\n\nAdd `END_VAR` after the last declaration."
+    ),
+    info!(
+        code::MISSING_END,
+        "a missing or wrong END_ keyword",
+        "FUNCTION ends with END_FUNCTION, FUNCTION_BLOCK with END_FUNCTION_BLOCK, PROGRAM with END_PROGRAM, TYPE with END_TYPE, CONFIGURATION with END_CONFIGURATION.\n\n    FUNCTION_BLOCK fb\n    LD x\n    END_FUNCTION\n\nWrite `END_FUNCTION_BLOCK`."
+    ),
+    info!(
+        code::PAREN,
+        "an unbalanced parenthesis",
+        "A deferred operation `AND(` is closed by a `)` line; an argument list `CAL fb(` is closed by `)`.\n\n    AND( x\n    OR y\n    ST z      (* the `)` is missing *)\n\nAdd the `)` line before `ST z`."
+    ),
+    info!(
+        code::IN_PARENS,
+        "a label, jump, CAL or RET inside parentheses",
+        "Between `OP(` and its `)` only instructions that compute a value may appear.\n\n    AND(\n    JMP l\n    )\n\nMove the jump, call, return or label outside the parentheses."
+    ),
+    info!(
+        code::TOO_DEEP,
+        "parentheses nested too deep",
+        "Deferred parentheses may nest 256 deep.\n\n    AND( AND( AND( ... (257 times)\n\nStore intermediate results in temporary variables."
+    ),
+    info!(
+        code::BAD_NUMBER,
+        "a malformed number or typed literal",
+        "Integers are written `123`, `1_000`, `16#FF`, `2#1010`, `8#17`; reals need a decimal point: `1.5`, `1.0E-3`.\n\n    LD -12e-5     (* no `.` *)\n\nWrite `LD -12.0e-5`. Typed literals: `INT#-5`, `BOOL#1`, `REAL#1.5`."
+    ),
+    info!(
+        code::BAD_DURATION,
+        "a malformed duration",
+        "Durations are `T#` or `TIME#` followed by numbers with units d, h, m, s, ms, us, ns; only the last may have a fraction.\n\n    LD T#25x\n\nWrite e.g. `T#25s` or `T#1h_30m`."
+    ),
+    info!(
+        code::BAD_DATE,
+        "a malformed date or time of day",
+        "`D#2024-01-31`, `TOD#14:30:00.5`, `DT#2024-01-31-14:30:00`: the month, day, hour, minute and second must exist.\n\n    LD D#2001-13-40\n\nThere is no month 13: write a valid date."
+    ),
+    info!(
+        code::BAD_STRING,
+        "a malformed string",
+        "Strings are `'...'` (STRING) or `\"...\"` (WSTRING) on one line, with `$` escapes: $$ $' $\" $L $N $P $R $T and $ plus hex digits.\n\n    LD 'abc\n\nClose the string: `LD 'abc'`."
+    ),
+    info!(
+        code::BAD_ADDRESS,
+        "a malformed direct address",
+        "Direct addresses are `%I`, `%Q` or `%M`, an optional size X B W D L and dotted numbers.\n\n    LD %MF0     (* F is not an IEC size *)\n\nWrite `%MD0` and declare the variable as REAL, or `%IX0.1` for a bit."
+    ),
+    info!(
+        code::DECL_SYNTAX,
+        "a declaration that cannot be read",
+        "Declarations have the form `a, b AT %IX0.0 : TYPE := initial;`.\n\n    VAR x : INT\n        y : BOOL; END_VAR\n\nEnd each declaration with `;`."
+    ),
+    info!(
+        code::CONFIG_SYNTAX,
+        "a CONFIGURATION element that cannot be read",
+        "A configuration holds VAR_GLOBAL blocks, RESOURCEs, TASKs and program instances.\n\n    TASK t (CYCLE := T#10ms);\n\nTASK parameters are SINGLE, INTERVAL and PRIORITY: `TASK t (INTERVAL := T#10ms, PRIORITY := 1);`."
+    ),
+    info!(
+        code::PRAGMA,
+        "a pragma `{ ... }`",
+        "Pragmas in braces are vendor extensions and are ignored.\n\n    {#include \"x.il\"}\n\nRemove the pragma."
+    ),
+    info!(
+        code::TOO_LARGE,
+        "a source file over 4 GiB",
+        "Source files are limited to 4 GiB. Split the program into several files."
+    ),
+    info!(
+        code::RESULT_TYPE,
+        "a missing or misplaced result type",
+        "A FUNCTION has a result type; a FUNCTION_BLOCK or PROGRAM has none.\n\n    FUNCTION f\n\nWrite `FUNCTION f : INT`."
+    ),
+    info!(
+        code::BEGIN_IL,
+        "BEGIN_IL / END_IL out of place",
+        "KAS-IDE wraps a body in BEGIN_IL ... END_IL: one BEGIN_IL before the first instruction, one END_IL after the last.\n\n    BEGIN_IL\n    LD x\n\nAdd `END_IL` after the last instruction."
+    ),
+    info!(
+        code::UNEXPECTED_EOF,
+        "the file ends in the middle of something",
+        "The file ends before a construct is complete.\n\n    TYPE t : STRUCT a : INT;\n\nComplete it (here with `END_STRUCT; END_TYPE`)."
+    ),
+    info!(
+        code::EXTRA_TOKENS,
+        "text after a complete instruction",
+        "IL has one instruction per line.\n\n    LD a ST b\n\nPut `ST b` on its own line."
+    ),
+    info!(
+        code::EXPECTED_INSTRUCTION,
+        "a line that does not start with an operator",
+        "An instruction line starts with an optional `label:` and an operator or function name.\n\n    5\n\nWrite e.g. `LD 5`."
+    ),
+];
+
+/// Human name of an expected terminal (lalrpop's name for it).
+fn friendly(t: &str) -> Option<String> {
+    let t = t.trim_matches('"');
+    Some(match t {
+        "Nl" => "end of line".into(),
+        "IdentTok" => "a name".into(),
+        "LabelTok" => "a label".into(),
+        "Lit" => "a literal".into(),
+        "Addr" => "a direct address".into(),
+        "Ld" => "LD".into(),
+        "St" => "ST".into(),
+        "ExprOpTok" => "an operator".into(),
+        "Jmp" => "JMP".into(),
+        "Cal" => "CAL".into(),
+        "Ret" => "RET".into(),
+        "FbIn" => "an FB input operator".into(),
+        "VarKw" => "VAR".into(),
+        "PouKw" => "PROGRAM".into(),
+        "EndPou" => "END_PROGRAM".into(),
+        "Orphan" | "EndOrphan" | "MissingEndVar" | "ErrorTok" => return None,
+        other => format!("`{other}`"),
+    })
+}
+
+fn expected_list(expected: &[String]) -> String {
+    let mut v: Vec<String> = expected.iter().filter_map(|e| friendly(e)).collect();
+    v.dedup();
+    if v.len() > 5 {
+        v.truncate(5);
+        v.push("...".into());
+    }
+    v.join(", ")
+}
+
+fn has(expected: &[String], t: &str) -> bool {
+    expected.iter().any(|e| e.trim_matches('"') == t)
+}
+
+fn operand_start(t: &Tok) -> bool {
+    matches!(t, Tok::Ident(_) | Tok::Lit(_) | Tok::Addr(_))
+}
+
+/// Map one lalrpop error to a diagnostic (None when the lexer already
+/// reported the cause).
+pub fn parse_error(
+    file: &SourceFile,
+    toks: &[Spanned],
+    err: &ParseError<usize, Tok, LexError>,
+) -> Option<Diagnostic> {
+    let snippet = |lo: usize, hi: usize| file.snippet(Span::new(lo, hi)).to_string();
+    match err {
+        ParseError::User { error } => match *error {},
+        ParseError::InvalidToken { location } => Some(Diagnostic::error(
+            code::BAD_CHAR,
+            Span::new(*location, *location + 1),
+            "this text has no meaning in Instruction List",
+        )),
+        ParseError::ExtraToken { token: (lo, _, hi) } => Some(
+            Diagnostic::error(
+                code::SYNTAX,
+                Span::new(*lo, *hi),
+                format!("unexpected `{}`", snippet(*lo, *hi)),
+            )
+            .with_label("not expected here"),
+        ),
+        ParseError::UnrecognizedEof { location, expected } => {
+            let at = Span::new(*location, *location);
+            for (kw, what) in [
+                ("END_VAR", "missing END_VAR"),
+                ("END_STRUCT", "missing END_STRUCT"),
+                ("END_TYPE", "missing END_TYPE"),
+                ("END_RESOURCE", "missing END_RESOURCE"),
+                ("END_CONFIGURATION", "missing END_CONFIGURATION"),
+            ] {
+                if has(expected, kw) {
+                    return Some(
+                        Diagnostic::error(code::MISSING_END, at, what)
+                            .with_label("the file ends here"),
+                    );
+                }
+            }
+            if has(expected, ")") {
+                return Some(
+                    Diagnostic::error(code::PAREN, at, "missing `)`")
+                        .with_label("the file ends here"),
+                );
+            }
+            Some(
+                Diagnostic::error(
+                    code::UNEXPECTED_EOF,
+                    at,
+                    "the file ends in the middle of a declaration",
+                )
+                .with_label(format!("expected {}", expected_list(expected))),
+            )
+        }
+        ParseError::UnrecognizedToken {
+            token: (lo, tok, hi),
+            expected,
+        } => {
+            if *tok == Tok::Error {
+                return None;
+            }
+            let (lo, hi) = (*lo, *hi);
+            let idx = toks.partition_point(|(l, _, _)| *l < lo);
+            // The token of the error is at or after idx; the one before is the previous token.
+            let idx = (idx..toks.len())
+                .find(|&i| toks[i].0 == lo && toks[i].1 == *tok)
+                .unwrap_or(idx);
+            let prev = idx.checked_sub(1).map(|i| &toks[i]);
+            let prev2 = idx.checked_sub(2).map(|i| &toks[i].1);
+            let span = Span::new(lo, hi);
+            let found = if *tok == Tok::Nl {
+                "the end of the line".to_string()
+            } else {
+                format!("`{}`", snippet(lo, hi))
+            };
+            if let Some((plo, ptok, phi)) = prev {
+                let op = snippet(*plo, *phi);
+                let pspan = Span::new(*plo, *phi);
+                let at_op = matches!(
+                    prev2,
+                    None | Some(
+                        Tok::Nl
+                            | Tok::Label(_)
+                            | Tok::Orphan
+                            | Tok::EndVar
+                            | Tok::EndIl
+                            | Tok::BeginIl
+                    )
+                );
+                match ptok {
+                    Tok::Ld(_)
+                    | Tok::St(_)
+                    | Tok::Set
+                    | Tok::Reset
+                    | Tok::Expr(_)
+                    | Tok::FbIn(_)
+                        if !operand_start(tok) && at_op =>
+                    {
+                        let d = Diagnostic::error(
+                            code::MISSING_OPERAND,
+                            pspan,
+                            format!("expected an operand after `{op}`"),
+                        )
+                        .with_label(if *tok == Tok::Nl {
+                            "operand missing".to_string()
+                        } else {
+                            format!("found {found}")
+                        });
+                        return Some(d);
+                    }
+                    Tok::Jmp(_) if !matches!(tok, Tok::Ident(_)) => {
+                        return Some(
+                            Diagnostic::error(
+                                code::MISSING_LABEL,
+                                pspan,
+                                format!("expected a label after `{op}`"),
+                            )
+                            .with_label(format!("found {found}")),
+                        );
+                    }
+                    Tok::Cal(_) if !matches!(tok, Tok::Ident(_)) => {
+                        return Some(
+                            Diagnostic::error(
+                                code::MISSING_CAL_TARGET,
+                                pspan,
+                                format!("expected a function block instance after `{op}`"),
+                            )
+                            .with_label(format!("found {found}")),
+                        );
+                    }
+                    Tok::Ret(_) if *tok != Tok::Nl => {
+                        return Some(
+                            Diagnostic::error(
+                                code::NO_OPERAND,
+                                span,
+                                format!("`{op}` takes no operand"),
+                            )
+                            .with_label("remove this")
+                            .with_secondary(pspan, "returns from the POU"),
+                        );
+                    }
+                    Tok::Not if at_op && operand_start(tok) => {
+                        return Some(
+                            Diagnostic::error(
+                                code::NO_OPERAND,
+                                span,
+                                format!(
+                                    "`{op}` takes no operand: it complements the current result"
+                                ),
+                            )
+                            .with_label("remove this")
+                            .with_help(format!(
+                                "to load the complement of `{}` write `LDN {}`",
+                                snippet(lo, hi),
+                                snippet(lo, hi)
+                            )),
+                        );
+                    }
+                    Tok::Nl | Tok::Label(_) | Tok::EndVar
+                        if !operand_start(tok) && has(expected, "Ld") =>
+                    {
+                        return Some(
+                            Diagnostic::error(
+                                code::EXPECTED_INSTRUCTION,
+                                span,
+                                format!("expected an instruction, found {found}"),
+                            )
+                            .with_label("not an IL operator"),
+                        );
+                    }
+                    _ => {}
+                }
+            }
+            if *tok == Tok::Nl && has(expected, ")") {
+                return Some(
+                    Diagnostic::error(code::PAREN, span, "missing `)` to close the argument list")
+                        .with_label("the line ends here")
+                        .with_help("an argument list may span lines but must end with `)`"),
+                );
+            }
+            if *tok == Tok::Comma && has(expected, "Nl") {
+                // `ADD cycle, 1`: an operator with an argument list (echidna dialect).
+                let line_op = toks[..idx]
+                    .iter()
+                    .rev()
+                    .take_while(|(_, t, _)| !matches!(t, Tok::Nl | Tok::Label(_)))
+                    .last();
+                if let Some((ol, ot, oh)) = line_op
+                    && !matches!(ot, Tok::Ident(_))
+                {
+                    let op = snippet(*ol, *oh);
+                    return Some(
+                        Diagnostic::error(code::EXTRA_TOKENS, span, format!("`{op}` takes one operand, not a list"))
+                            .with_label("second operand")
+                            .with_secondary(Span::new(*ol, *oh), "an IL operator")
+                            .with_note("the current result is the left-hand side: `LD a` then `ADD b` computes a + b")
+                            .with_help("load the first value with `LD`, then apply the operator to the second"),
+                    );
+                }
+            }
+            if has(expected, "Nl") && *tok != Tok::Nl {
+                return Some(
+                    Diagnostic::error(
+                        code::EXTRA_TOKENS,
+                        span,
+                        format!("unexpected {found} after the instruction"),
+                    )
+                    .with_label("one instruction per line")
+                    .with_help("put each instruction on its own line"),
+                );
+            }
+            if matches!(tok, Tok::Lit(_) | Tok::Addr(_))
+                && prev.is_some_and(|p| matches!(p.1, Tok::Nl))
+            {
+                return Some(
+                    Diagnostic::error(
+                        code::EXPECTED_INSTRUCTION,
+                        span,
+                        format!("expected an instruction, found {found}"),
+                    )
+                    .with_label("not an IL operator"),
+                );
+            }
+            if has(expected, ";") {
+                // A declaration: name it.
+                let start = toks[..idx]
+                    .iter()
+                    .rposition(|(_, t, _)| {
+                        matches!(
+                            t,
+                            Tok::Semi
+                                | Tok::Var(_)
+                                | Tok::Constant
+                                | Tok::Retain
+                                | Tok::NonRetain
+                                | Tok::Struct
+                                | Tok::Type
+                        )
+                    })
+                    .map_or(0, |i| i + 1);
+                let name = toks[start..idx]
+                    .iter()
+                    .find_map(|(l, t, h)| matches!(t, Tok::Ident(_)).then(|| snippet(*l, *h)));
+                let at = prev.map_or(span, |(l, _, h)| Span::new(*h, (*h).max(*l)));
+                let msg = match name {
+                    Some(n) => format!("expected `;` after the declaration of `{n}`"),
+                    None => "expected `;` at the end of the declaration".to_string(),
+                };
+                return Some(
+                    Diagnostic::error(code::DECL_SYNTAX, at, msg)
+                        .with_label("`;` missing here")
+                        .with_secondary(span, format!("found {found}")),
+                );
+            }
+            if has(expected, "END_VAR") && !has(expected, "IdentTok") {
+                return Some(
+                    Diagnostic::error(code::MISSING_END_VAR, span, "missing END_VAR")
+                        .with_label(format!("found {found}")),
+                );
+            }
+            let in_decl = has(expected, ":")
+                || has(expected, ":=")
+                || has(expected, "END_VAR")
+                || has(expected, "OF")
+                || has(expected, "..");
+            let code_ = if in_decl {
+                code::DECL_SYNTAX
+            } else if has(expected, "END_CONFIGURATION")
+                || has(expected, "END_RESOURCE")
+                || has(expected, "TASK")
+            {
+                code::CONFIG_SYNTAX
+            } else {
+                code::SYNTAX
+            };
+            Some(
+                Diagnostic::error(code_, span, format!("unexpected {found}"))
+                    .with_label(format!("expected {}", expected_list(expected))),
+            )
+        }
+    }
+}

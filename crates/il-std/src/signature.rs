@@ -1,0 +1,549 @@
+//! The signature table of the standard functions: the data the compiler's type checker and
+//! code emitter share to check and compile calls such as `LD x / LIMIT 0, 100` or
+//! `LD a / MAX b, c, d`.
+//!
+//! Every entry names a real function in [`func`](crate::func) (a test checks this), with the
+//! IEC parameter names (`IN`, `IN1`, `IN2`, `MN`, `MX`, `K`, `G`, `N`, `L`, `P`). The
+//! `*_checked` companions of [`func`](crate::func) are not IEC functions and are not listed.
+
+use crate::func::conv_list::conversions;
+
+/// A generic type class of IEC 61131-3 (`ANY_NUM` ...).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Class {
+    /// `ANY_NUM`: integers and reals.
+    AnyNum,
+    /// `ANY_INT`: signed and unsigned integers.
+    AnyInt,
+    /// `ANY_REAL`: `REAL`, `LREAL`.
+    AnyReal,
+    /// `ANY_BIT`: `BOOL` and the bit strings.
+    AnyBit,
+    /// The bit strings `BYTE WORD DWORD LWORD` (shifts and rotations).
+    AnyBitString,
+    /// `ANY_NUM` plus `TIME`/`LTIME`: what `ADD` and `SUB` accept.
+    AnyMagnitude,
+    /// `ANY_ELEMENTARY`: every elementary type.
+    AnyElementary,
+    /// `ANY_STRING`: `STRING`, `WSTRING`.
+    AnyString,
+    /// `ANY_DATE`: `DATE`, `TIME_OF_DAY`, `DATE_AND_TIME`.
+    AnyDate,
+    /// `ANY`: any type (here: any elementary type).
+    Any,
+    /// `BOOL` only.
+    Bool,
+}
+
+/// The elementary types of IEC 61131-3.
+#[allow(missing_docs)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Elem {
+    BOOL,
+    SINT,
+    INT,
+    DINT,
+    LINT,
+    USINT,
+    UINT,
+    UDINT,
+    ULINT,
+    BYTE,
+    WORD,
+    DWORD,
+    LWORD,
+    REAL,
+    LREAL,
+    TIME,
+    LTIME,
+    DATE,
+    TOD,
+    DT,
+    STRING,
+    WSTRING,
+}
+
+impl Elem {
+    /// Every elementary type.
+    pub const ALL: [Elem; 22] = [
+        Elem::BOOL,
+        Elem::SINT,
+        Elem::INT,
+        Elem::DINT,
+        Elem::LINT,
+        Elem::USINT,
+        Elem::UINT,
+        Elem::UDINT,
+        Elem::ULINT,
+        Elem::BYTE,
+        Elem::WORD,
+        Elem::DWORD,
+        Elem::LWORD,
+        Elem::REAL,
+        Elem::LREAL,
+        Elem::TIME,
+        Elem::LTIME,
+        Elem::DATE,
+        Elem::TOD,
+        Elem::DT,
+        Elem::STRING,
+        Elem::WSTRING,
+    ];
+
+    /// The IEC name (short forms `TOD`, `DT`), which is also the Rust type name in this crate.
+    pub fn name(self) -> &'static str {
+        match self {
+            Elem::BOOL => "BOOL",
+            Elem::SINT => "SINT",
+            Elem::INT => "INT",
+            Elem::DINT => "DINT",
+            Elem::LINT => "LINT",
+            Elem::USINT => "USINT",
+            Elem::UINT => "UINT",
+            Elem::UDINT => "UDINT",
+            Elem::ULINT => "ULINT",
+            Elem::BYTE => "BYTE",
+            Elem::WORD => "WORD",
+            Elem::DWORD => "DWORD",
+            Elem::LWORD => "LWORD",
+            Elem::REAL => "REAL",
+            Elem::LREAL => "LREAL",
+            Elem::TIME => "TIME",
+            Elem::LTIME => "LTIME",
+            Elem::DATE => "DATE",
+            Elem::TOD => "TOD",
+            Elem::DT => "DT",
+            Elem::STRING => "STRING",
+            Elem::WSTRING => "WSTRING",
+        }
+    }
+
+    /// The type named `name` (case-insensitive; also `TIME_OF_DAY` and `DATE_AND_TIME`).
+    pub fn from_name(name: &str) -> Option<Elem> {
+        if name.eq_ignore_ascii_case("TIME_OF_DAY") {
+            return Some(Elem::TOD);
+        }
+        if name.eq_ignore_ascii_case("DATE_AND_TIME") {
+            return Some(Elem::DT);
+        }
+        Elem::ALL
+            .into_iter()
+            .find(|e| e.name().eq_ignore_ascii_case(name))
+    }
+
+    /// Whether the type belongs to the class.
+    pub fn class_member(self, class: Class) -> bool {
+        use Elem::*;
+        let int = matches!(
+            self,
+            SINT | INT | DINT | LINT | USINT | UINT | UDINT | ULINT
+        );
+        let real = matches!(self, REAL | LREAL);
+        let bits = matches!(self, BYTE | WORD | DWORD | LWORD);
+        match class {
+            Class::AnyNum => int || real,
+            Class::AnyInt => int,
+            Class::AnyReal => real,
+            Class::AnyBit => bits || self == BOOL,
+            Class::AnyBitString => bits,
+            Class::AnyMagnitude => int || real || matches!(self, TIME | LTIME),
+            Class::AnyElementary | Class::Any => true,
+            Class::AnyString => matches!(self, STRING | WSTRING),
+            Class::AnyDate => matches!(self, DATE | TOD | DT),
+            Class::Bool => self == BOOL,
+        }
+    }
+
+    /// Width in bits (`BOOL` is 1; time and date types 64; strings `None`).
+    pub fn bits(self) -> Option<u32> {
+        use Elem::*;
+        Some(match self {
+            BOOL => 1,
+            SINT | USINT | BYTE => 8,
+            INT | UINT | WORD => 16,
+            DINT | UDINT | DWORD | REAL => 32,
+            LINT | ULINT | LWORD | LREAL | TIME | LTIME | DATE | TOD | DT => 64,
+            STRING | WSTRING => return None,
+        })
+    }
+
+    /// The value range of an integer or bit-string type (`BOOL` is `0..=1`), for range-checking
+    /// literals; `None` for other types.
+    pub fn min_max_i128(self) -> Option<(i128, i128)> {
+        use Elem::*;
+        Some(match self {
+            BOOL => (0, 1),
+            SINT => (i8::MIN.into(), i8::MAX.into()),
+            INT => (i16::MIN.into(), i16::MAX.into()),
+            DINT => (i32::MIN.into(), i32::MAX.into()),
+            LINT => (i64::MIN.into(), i64::MAX.into()),
+            USINT | BYTE => (0, u8::MAX.into()),
+            UINT | WORD => (0, u16::MAX.into()),
+            UDINT | DWORD => (0, u32::MAX.into()),
+            ULINT | LWORD => (0, u64::MAX.into()),
+            _ => return None,
+        })
+    }
+}
+
+/// The type of a parameter or of a result.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ParamTy {
+    /// Exactly this type.
+    Concrete(Elem),
+    /// The function's generic type `T`, a member of the class: all `T` parameters and a `T`
+    /// result of one call have the same type (strings may differ in length).
+    T(Class),
+    /// Any member of the class, independent of `T` and of other `Other` parameters
+    /// (e.g. `SHL`'s `N`, `EXPT`'s `IN2`).
+    Other(Class),
+}
+
+/// How a function takes more inputs than its listed parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Ext {
+    /// Exactly the listed parameters.
+    Fixed,
+    /// Extensible by folding: `ADD(a,b,c) = ADD(ADD(a,b),c)`.
+    Fold,
+    /// Extensible comparison chain: `GT(a,b,c) = GT(a,b) AND GT(b,c)`.
+    Chain,
+    /// `MUX(K, IN0, IN1, ... INn)`: the Rust function takes `K` and a slice of the inputs.
+    Mux,
+}
+
+/// One parameter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Param {
+    /// IEC formal name (`IN`, `IN1`, `MN` ...).
+    pub name: &'static str,
+    /// Its type.
+    pub ty: ParamTy,
+}
+
+/// The signature of one standard function.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Signature {
+    /// IEC name, which is also the Rust name in [`func`](crate::func).
+    pub name: &'static str,
+    /// Parameters in positional order (for `Fold`/`Chain`, the first two; for `Mux`, `K` and
+    /// `IN0`, `IN1`).
+    pub params: &'static [Param],
+    /// Result type.
+    pub ret: ParamTy,
+    /// Extensibility.
+    pub ext: Ext,
+    /// One line saying what the function does.
+    pub doc: &'static str,
+}
+
+macro_rules! pty {
+    (C $e:ident) => {
+        ParamTy::Concrete(Elem::$e)
+    };
+    (T $c:ident) => {
+        ParamTy::T(Class::$c)
+    };
+    (O $c:ident) => {
+        ParamTy::Other(Class::$c)
+    };
+}
+
+macro_rules! build_table {
+    ([ $( $name:ident $ext:ident ( $( $p:ident : $pk:ident $pc:ident ),* ) -> $rk:ident $rc:ident , $doc:literal ; )* ]
+     $( $cname:ident : $src:ident => $dst:ident, $kind:ident ; )*) => {
+        /// Every standard function of [`func`](crate::func): the hand-written overloaded ones
+        /// first, then the type conversions.
+        pub static SIGNATURES: &[Signature] = &[
+            $( Signature {
+                name: stringify!($name),
+                params: &[ $( Param { name: stringify!($p), ty: pty!($pk $pc) } ),* ],
+                ret: pty!($rk $rc),
+                ext: Ext::$ext,
+                doc: $doc,
+            }, )*
+            $( Signature {
+                name: stringify!($cname),
+                params: &[Param { name: "IN", ty: ParamTy::Concrete(Elem::$src) }],
+                ret: ParamTy::Concrete(Elem::$dst),
+                ext: Ext::Fixed,
+                doc: concat!("Converts ", stringify!($src), " to ", stringify!($dst), "."),
+            }, )*
+        ];
+
+        /// Compile-time proof that every entry names a real function of `func`.
+        #[cfg(test)]
+        #[allow(unused_imports)]
+        mod exists {
+            use crate::func::{ $( $name, )* $( $cname, )* };
+        }
+    };
+}
+
+conversions!(build_table;
+    ADD Fold (IN1: T AnyMagnitude, IN2: T AnyMagnitude) -> T AnyMagnitude, "Addition (integers and TIME wrap).";
+    SUB Fixed (IN1: T AnyMagnitude, IN2: T AnyMagnitude) -> T AnyMagnitude, "Subtraction (integers and TIME wrap).";
+    MUL Fold (IN1: T AnyNum, IN2: T AnyNum) -> T AnyNum, "Multiplication (integers wrap).";
+    DIV Fixed (IN1: T AnyNum, IN2: T AnyNum) -> T AnyNum, "Division (integers truncate toward zero; by zero gives 0 and a fault).";
+    MOD Fixed (IN1: T AnyInt, IN2: T AnyInt) -> T AnyInt, "Remainder with the dividend's sign (by zero gives 0 and a fault).";
+    MOVE Fixed (IN: T Any) -> T Any, "Assignment: returns IN.";
+    ABS Fixed (IN: T AnyNum) -> T AnyNum, "Absolute value.";
+    SQRT Fixed (IN: T AnyReal) -> T AnyReal, "Square root.";
+    LN Fixed (IN: T AnyReal) -> T AnyReal, "Natural logarithm.";
+    LOG Fixed (IN: T AnyReal) -> T AnyReal, "Base-10 logarithm.";
+    EXP Fixed (IN: T AnyReal) -> T AnyReal, "Natural exponential.";
+    SIN Fixed (IN: T AnyReal) -> T AnyReal, "Sine (radians).";
+    COS Fixed (IN: T AnyReal) -> T AnyReal, "Cosine (radians).";
+    TAN Fixed (IN: T AnyReal) -> T AnyReal, "Tangent (radians).";
+    ASIN Fixed (IN: T AnyReal) -> T AnyReal, "Principal arc sine.";
+    ACOS Fixed (IN: T AnyReal) -> T AnyReal, "Principal arc cosine.";
+    ATAN Fixed (IN: T AnyReal) -> T AnyReal, "Principal arc tangent.";
+    EXPT Fixed (IN1: T AnyReal, IN2: O AnyNum) -> T AnyReal, "Exponentiation IN1 ** IN2.";
+    TRUNC Fixed (IN: O AnyReal) -> C DINT, "Truncation toward zero to DINT.";
+    SHL Fixed (IN: T AnyBitString, N: O AnyInt) -> T AnyBitString, "Shift left by N bits, zero-filled.";
+    SHR Fixed (IN: T AnyBitString, N: O AnyInt) -> T AnyBitString, "Shift right by N bits, zero-filled.";
+    ROL Fixed (IN: T AnyBitString, N: O AnyInt) -> T AnyBitString, "Rotate left by N bits.";
+    ROR Fixed (IN: T AnyBitString, N: O AnyInt) -> T AnyBitString, "Rotate right by N bits.";
+    AND Fold (IN1: T AnyBit, IN2: T AnyBit) -> T AnyBit, "Bitwise/Boolean AND.";
+    OR Fold (IN1: T AnyBit, IN2: T AnyBit) -> T AnyBit, "Bitwise/Boolean OR.";
+    XOR Fold (IN1: T AnyBit, IN2: T AnyBit) -> T AnyBit, "Bitwise/Boolean exclusive OR.";
+    NOT Fixed (IN: T AnyBit) -> T AnyBit, "Bitwise/Boolean complement.";
+    SEL Fixed (G: C BOOL, IN0: T Any, IN1: T Any) -> T Any, "Binary selection: IN0 if G is FALSE, else IN1.";
+    MAX Fold (IN1: T AnyElementary, IN2: T AnyElementary) -> T AnyElementary, "Maximum.";
+    MIN Fold (IN1: T AnyElementary, IN2: T AnyElementary) -> T AnyElementary, "Minimum.";
+    LIMIT Fixed (MN: T AnyElementary, IN: T AnyElementary, MX: T AnyElementary) -> T AnyElementary, "IN limited to [MN, MX].";
+    MUX Mux (K: O AnyInt, IN0: T Any, IN1: T Any) -> T Any, "Multiplexer: selects input K (IN0 if out of range, with a fault).";
+    GT Chain (IN1: T AnyElementary, IN2: T AnyElementary) -> C BOOL, "Greater than (decreasing sequence).";
+    GE Chain (IN1: T AnyElementary, IN2: T AnyElementary) -> C BOOL, "Greater or equal (monotonic sequence).";
+    EQ Chain (IN1: T AnyElementary, IN2: T AnyElementary) -> C BOOL, "Equality.";
+    LE Chain (IN1: T AnyElementary, IN2: T AnyElementary) -> C BOOL, "Less or equal (monotonic sequence).";
+    LT Chain (IN1: T AnyElementary, IN2: T AnyElementary) -> C BOOL, "Less than (increasing sequence).";
+    NE Fixed (IN1: T AnyElementary, IN2: T AnyElementary) -> C BOOL, "Inequality.";
+    LEN Fixed (IN: O AnyString) -> C INT, "Length of a string.";
+    LEFT Fixed (IN: T AnyString, L: O AnyInt) -> T AnyString, "Leftmost L characters.";
+    RIGHT Fixed (IN: T AnyString, L: O AnyInt) -> T AnyString, "Rightmost L characters.";
+    MID Fixed (IN: T AnyString, L: O AnyInt, P: O AnyInt) -> T AnyString, "L characters from position P.";
+    CONCAT Fold (IN1: T AnyString, IN2: T AnyString) -> T AnyString, "Concatenation (capacity of IN1).";
+    INSERT Fixed (IN1: T AnyString, IN2: T AnyString, P: O AnyInt) -> T AnyString, "IN2 inserted after position P of IN1.";
+    DELETE Fixed (IN: T AnyString, L: O AnyInt, P: O AnyInt) -> T AnyString, "Deletes L characters from position P.";
+    REPLACE Fixed (IN1: T AnyString, IN2: T AnyString, L: O AnyInt, P: O AnyInt) -> T AnyString, "Replaces L characters of IN1 from position P by IN2.";
+    FIND Fixed (IN1: T AnyString, IN2: T AnyString) -> C INT, "Position of IN2 in IN1 (0 if absent).";
+    ADD_TIME Fixed (IN1: C TIME, IN2: C TIME) -> C TIME, "TIME + TIME.";
+    SUB_TIME Fixed (IN1: C TIME, IN2: C TIME) -> C TIME, "TIME - TIME.";
+    MUL_TIME Fixed (IN1: C TIME, IN2: O AnyNum) -> C TIME, "TIME * number.";
+    DIV_TIME Fixed (IN1: C TIME, IN2: O AnyNum) -> C TIME, "TIME / number (integer 0 gives T#0s and a fault).";
+    ADD_TOD_TIME Fixed (IN1: C TOD, IN2: C TIME) -> C TOD, "Time of day + TIME (modulo 24 h).";
+    SUB_TOD_TIME Fixed (IN1: C TOD, IN2: C TIME) -> C TOD, "Time of day - TIME (modulo 24 h).";
+    ADD_DT_TIME Fixed (IN1: C DT, IN2: C TIME) -> C DT, "Date and time + TIME.";
+    SUB_DT_TIME Fixed (IN1: C DT, IN2: C TIME) -> C DT, "Date and time - TIME.";
+    SUB_DATE_DATE Fixed (IN1: C DATE, IN2: C DATE) -> C TIME, "Duration between two dates.";
+    SUB_TOD_TOD Fixed (IN1: C TOD, IN2: C TOD) -> C TIME, "Duration between two times of day.";
+    SUB_DT_DT Fixed (IN1: C DT, IN2: C DT) -> C TIME, "Duration between two dates and times.";
+    CONCAT_DATE_TOD Fixed (IN1: C DATE, IN2: C TOD) -> C DT, "Date and time from a date and a time of day.";
+);
+
+/// The signature of the function `name` (case-insensitive; the long type names
+/// `TIME_OF_DAY` and `DATE_AND_TIME` inside a name are accepted for `TOD` and `DT`, e.g.
+/// `DATE_AND_TIME_TO_TIME_OF_DAY`).
+pub fn lookup(name: &str) -> Option<&'static Signature> {
+    if let Some(s) = SIGNATURES
+        .iter()
+        .find(|s| s.name.eq_ignore_ascii_case(name))
+    {
+        return Some(s);
+    }
+    // Normalise long type names into a small stack buffer, then retry.
+    let mut buf = [0u8; 64];
+    let mut n = 0;
+    let mut rest = name.as_bytes();
+    while let Some((&c, tail)) = rest.split_first() {
+        let (rep, skip): (&[u8], usize) = if starts_with_ci(rest, b"DATE_AND_TIME") {
+            (b"DT", 13)
+        } else if starts_with_ci(rest, b"TIME_OF_DAY") {
+            (b"TOD", 11)
+        } else {
+            (core::slice::from_ref(&c), 1)
+        };
+        for &b in rep {
+            *buf.get_mut(n)? = b;
+            n += 1;
+        }
+        rest = if skip == 1 { tail } else { rest.get(skip..)? };
+    }
+    let norm = core::str::from_utf8(buf.get(..n)?).ok()?;
+    SIGNATURES
+        .iter()
+        .find(|s| s.name.eq_ignore_ascii_case(norm))
+}
+
+fn starts_with_ci(s: &[u8], p: &[u8]) -> bool {
+    s.get(..p.len()).is_some_and(|h| h.eq_ignore_ascii_case(p))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lookup_works() {
+        assert_eq!(lookup("limit").map(|s| s.params.len()), Some(3));
+        let l = lookup("LIMIT").unwrap();
+        assert_eq!(
+            l.params
+                .iter()
+                .map(|p| p.name)
+                .collect::<std::vec::Vec<_>>(),
+            ["MN", "IN", "MX"]
+        );
+        assert_eq!(lookup("max").unwrap().ext, Ext::Fold);
+        assert_eq!(lookup("GT").unwrap().ext, Ext::Chain);
+        assert_eq!(lookup("MUX").unwrap().ext, Ext::Mux);
+        assert_eq!(
+            lookup("int_to_real").unwrap().ret,
+            ParamTy::Concrete(Elem::REAL)
+        );
+        assert_eq!(
+            lookup("DATE_AND_TIME_TO_TIME_OF_DAY").unwrap().name,
+            "DT_TO_TOD"
+        );
+        assert_eq!(lookup("date_and_time_to_date").unwrap().name, "DT_TO_DATE");
+        assert_eq!(
+            lookup("TIME_OF_DAY_TO_STRING").unwrap().name,
+            "TOD_TO_STRING"
+        );
+        assert!(lookup("NO_SUCH").is_none());
+        assert!(lookup("").is_none());
+        assert!(lookup(&"X".repeat(200)).is_none());
+    }
+
+    #[test]
+    fn table_is_consistent() {
+        let mut names: std::vec::Vec<&str> = SIGNATURES.iter().map(|s| s.name).collect();
+        names.sort_unstable();
+        let n = names.len();
+        names.dedup();
+        assert_eq!(names.len(), n, "duplicate names");
+        assert!(n > 350);
+        for s in SIGNATURES {
+            assert!(!s.params.is_empty(), "{}", s.name);
+            assert!(!s.doc.is_empty());
+            // A T result needs a T parameter to take its type from.
+            if let ParamTy::T(c) = s.ret {
+                assert!(s.params.iter().any(|p| p.ty == ParamTy::T(c)), "{}", s.name);
+            }
+            match s.ext {
+                Ext::Fold | Ext::Chain => assert_eq!(s.params.len(), 2, "{}", s.name),
+                Ext::Mux => assert_eq!(s.params.first().map(|p| p.name), Some("K")),
+                Ext::Fixed => {}
+            }
+        }
+        for name in [
+            "ADD",
+            "SUB",
+            "MUL",
+            "DIV",
+            "MOD",
+            "MOVE",
+            "ABS",
+            "SQRT",
+            "LN",
+            "LOG",
+            "EXP",
+            "SIN",
+            "COS",
+            "TAN",
+            "ASIN",
+            "ACOS",
+            "ATAN",
+            "EXPT",
+            "TRUNC",
+            "SHL",
+            "SHR",
+            "ROL",
+            "ROR",
+            "AND",
+            "OR",
+            "XOR",
+            "NOT",
+            "SEL",
+            "MAX",
+            "MIN",
+            "LIMIT",
+            "MUX",
+            "GT",
+            "GE",
+            "EQ",
+            "LE",
+            "LT",
+            "NE",
+            "LEN",
+            "LEFT",
+            "RIGHT",
+            "MID",
+            "CONCAT",
+            "INSERT",
+            "DELETE",
+            "REPLACE",
+            "FIND",
+            "ADD_TIME",
+            "SUB_TIME",
+            "MUL_TIME",
+            "DIV_TIME",
+            "ADD_TOD_TIME",
+            "ADD_DT_TIME",
+            "SUB_DATE_DATE",
+            "SUB_TOD_TOD",
+            "SUB_DT_DT",
+            "CONCAT_DATE_TOD",
+            "DT_TO_TOD",
+            "DT_TO_DATE",
+            "BCD_TO_INT",
+            "INT_TO_BCD",
+            "REAL_TO_INT",
+            "TIME_TO_DINT",
+            "STRING_TO_INT",
+            "INT_TO_STRING",
+            "BOOL_TO_INT",
+            "WORD_TO_BOOL",
+        ] {
+            assert!(lookup(name).is_some(), "{name} missing");
+        }
+        // Every ordered pair of distinct numeric/bit types has a conversion.
+        let num = &Elem::ALL[..15];
+        for &a in num {
+            for &b in num {
+                if a != b {
+                    let name = std::format!("{}_TO_{}", a.name(), b.name());
+                    let s = lookup(&name).unwrap_or_else(|| panic!("{name}"));
+                    assert_eq!(s.params[0].ty, ParamTy::Concrete(a));
+                    assert_eq!(s.ret, ParamTy::Concrete(b));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn elem() {
+        for e in Elem::ALL {
+            assert_eq!(Elem::from_name(e.name()), Some(e));
+            assert!(e.class_member(Class::Any));
+        }
+        assert_eq!(Elem::from_name("time_of_day"), Some(Elem::TOD));
+        assert_eq!(Elem::from_name("Date_And_Time"), Some(Elem::DT));
+        assert_eq!(Elem::from_name("int"), Some(Elem::INT));
+        assert_eq!(Elem::from_name("FOO"), None);
+        assert!(Elem::INT.class_member(Class::AnyNum));
+        assert!(!Elem::INT.class_member(Class::AnyBit));
+        assert!(Elem::BOOL.class_member(Class::AnyBit));
+        assert!(!Elem::BOOL.class_member(Class::AnyBitString));
+        assert!(Elem::TIME.class_member(Class::AnyMagnitude));
+        assert!(!Elem::TIME.class_member(Class::AnyNum));
+        assert!(Elem::TOD.class_member(Class::AnyDate));
+        assert!(Elem::WSTRING.class_member(Class::AnyString));
+        assert_eq!(Elem::INT.min_max_i128(), Some((-32768, 32767)));
+        assert_eq!(Elem::LWORD.min_max_i128(), Some((0, u64::MAX as i128)));
+        assert_eq!(Elem::REAL.min_max_i128(), None);
+        assert_eq!(Elem::WORD.bits(), Some(16));
+        assert_eq!(Elem::STRING.bits(), None);
+    }
+}
