@@ -171,7 +171,6 @@ fn color_follows_the_flag() {
 }
 
 #[test]
-#[ignore = "needs parser"]
 fn errors_are_rendered_and_exit_1() {
     let f = temp_file("broken.il", BROKEN.as_bytes());
     let o = ilc(&["check", &f]);
@@ -187,7 +186,6 @@ fn errors_are_rendered_and_exit_1() {
 }
 
 #[test]
-#[ignore = "needs parser"]
 fn json_is_one_object_per_line() {
     let f = temp_file("broken2.il", BROKEN.as_bytes());
     let g = temp_file("valid3.il", VALID.as_bytes());

@@ -304,7 +304,6 @@ fn stmt_count(unit: &CompilationUnit) -> usize {
 }
 
 #[test]
-#[ignore = "needs parser"]
 fn cost_is_linear_in_the_input() {
     // Not a timed test: the sizes of what comes out must scale exactly.
     for prog in VALID {
