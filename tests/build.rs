@@ -1,1 +1,57 @@
-fn main() {}
+//! Compiles the IL test programs through the build-script front end.
+//! `plc/*.il` are ours; the Annex F programs are read from `../shared/corpus`
+//! when it is present (they are GPL test inputs and are never copied into
+//! the repository), which enables `cfg(il_corpus)`.
+
+use std::path::{Path, PathBuf};
+
+fn main() {
+    println!("cargo::rustc-check-cfg=cfg(il_corpus)");
+    let mut files: Vec<PathBuf> = std::fs::read_dir("plc")
+        .expect("tests/plc exists")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|e| e == "il"))
+        .collect();
+    files.sort();
+    println!("cargo:rerun-if-changed=plc");
+    let generated = il_codegen::Builder::new()
+        .files(&files)
+        .compile()
+        .unwrap_or_else(|e| panic!("\n{e}"));
+    // One index per front end, so both run the same programs.
+    let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));
+    let mut by_build = String::new();
+    let mut by_macro = String::new();
+    for (src, rs) in files.iter().zip(&generated) {
+        by_build.push_str(&format!("include!({:?});\n", rs.display().to_string()));
+        by_macro.push_str(&format!(
+            "il_macros::il!(file = {:?});\n",
+            src.display().to_string()
+        ));
+    }
+    std::fs::write(out.join("generated_index.rs"), by_build).expect("write index");
+    std::fs::write(out.join("macro_index.rs"), by_macro).expect("write index");
+
+    let corpus = Path::new("../../shared/corpus");
+    let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));
+    if corpus.join("beremiz_matiec_cmd_monitor_il.txt").exists() {
+        println!("cargo:rustc-cfg=il_corpus");
+        // FWD_REV_MON reads FWD_REV_FF.Q, but an SR's output is Q1 (the
+        // checker refuses it; see tests/annex_f.rs). Compile a corrected copy.
+        let fwd = std::fs::read_to_string(corpus.join("beremiz_matiec_fwd_rev_mon_il.txt"))
+            .expect("read");
+        let fixed = out.join("fwd_rev_mon_fixed.il");
+        std::fs::write(&fixed, fwd.replace("FWD_REV_FF.Q\t", "FWD_REV_FF.Q1\t")).expect("write");
+        let dir = out.join("annex_f");
+        il_codegen::Builder::new()
+            .file(corpus.join("beremiz_matiec_cmd_monitor_il.txt"))
+            .file(corpus.join("beremiz_matiec_stack_int_il.txt"))
+            .file(corpus.join("beremiz_matiec_weigh_il.txt"))
+            .file(&fixed)
+            .out_dir(&dir)
+            .compile()
+            .unwrap_or_else(|e| panic!("\n{e}"));
+    } else {
+        println!("cargo:warning=../shared/corpus not found: Annex F tests are skipped");
+    }
+}

@@ -1,1 +1,32 @@
-//! Integration tests live in tests/tests; this crate also compiles IL through build.rs.
+//! Generated code under test. Everything here is produced by il-codegen;
+//! `deny(warnings)` proves that it compiles without warnings in a user's crate.
+#![deny(warnings)]
+#![forbid(unsafe_code)]
+
+/// Our IL test programs (`tests/plc/*.il`) through build.rs.
+pub mod via_build {
+    include!(concat!(env!("OUT_DIR"), "/generated_index.rs"));
+}
+
+/// The same programs through `il!(file = ...)`.
+pub mod via_macro {
+    include!(concat!(env!("OUT_DIR"), "/macro_index.rs"));
+}
+
+/// The Annex F programs of IEC 61131-3, from `../shared/corpus`.
+#[cfg(il_corpus)]
+pub mod annex_f {
+    include!(concat!(
+        env!("OUT_DIR"),
+        "/annex_f/beremiz_matiec_cmd_monitor_il.rs"
+    ));
+    include!(concat!(
+        env!("OUT_DIR"),
+        "/annex_f/beremiz_matiec_stack_int_il.rs"
+    ));
+    include!(concat!(
+        env!("OUT_DIR"),
+        "/annex_f/beremiz_matiec_weigh_il.rs"
+    ));
+    include!(concat!(env!("OUT_DIR"), "/annex_f/fwd_rev_mon_fixed.rs"));
+}

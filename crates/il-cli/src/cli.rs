@@ -2,7 +2,7 @@
 
 use clap::{Arg, ArgAction, Command, builder::PossibleValuesParser};
 
-const ABOUT: &str = "Check IEC 61131-3 Instruction List (IL) sources";
+const ABOUT: &str = "Check IEC 61131-3 Instruction List (IL) sources and compile them to Rust";
 
 const LONG_ABOUT: &str = "\
 ilc checks IEC 61131-3 Instruction List (IL) sources and reports every problem
@@ -11,6 +11,8 @@ it finds, with the line and column and a suggestion where it has one.";
 const EXAMPLES: &str = "\
 Examples:
   ilc check motor.il                     Check one file; silent when it is fine
+  ilc emit motor.il                      Print the Rust code generated from motor.il
+  ilc emit -o src/plc *.il               Write one .rs file per IL file
   ilc check src/*.il                     Check several files (all are checked)
   ilc check --message-format json a.il   One JSON object per diagnostic on stdout
   ilc check --color always a.il | less -R
@@ -32,6 +34,15 @@ JSON output: one object per line on stdout, with the fields file, line, column,
 end_line, end_column (1-based; columns count characters), severity, code,
 message, label, secondary, notes, help (string or null) and rendered (the
 human-readable text). Nothing else is written to stdout.";
+
+const EMIT_EXAMPLES: &str = "\
+Examples:
+  ilc emit motor.il                      Print the Rust code for motor.il
+  ilc emit -o src/plc motor.il lib.il    Write src/plc/motor.rs and src/plc/lib.rs
+
+The files are checked together (a FUNCTION_BLOCK of one can be used in another).
+Nothing is written unless every file compiles; a file whose content did not
+change is not rewritten. The generated code needs the il-std crate.";
 
 /// The whole command line.
 pub fn command() -> Command {
@@ -75,6 +86,34 @@ pub fn command() -> Command {
                             "Colour the human output: `auto` colours only when stderr is a \
                              terminal and NO_COLOR is not set",
                         )
+                        .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
+                        .default_value("auto"),
+                ),
+        )
+        .subcommand(
+            Command::new("emit")
+                .about("Compile IL files to Rust (to stdout, or files with -o)")
+                .after_long_help(EMIT_EXAMPLES)
+                .arg(
+                    Arg::new("files")
+                        .value_name("FILE")
+                        .help("IL source files, compiled together as one program")
+                        .required(true)
+                        .num_args(1..)
+                        .action(ArgAction::Append),
+                )
+                .arg(
+                    Arg::new("out-dir")
+                        .short('o')
+                        .long("out-dir")
+                        .value_name("DIR")
+                        .help("Write DIR/<name>.rs for each FILE instead of printing"),
+                )
+                .arg(
+                    Arg::new("color")
+                        .long("color")
+                        .value_name("WHEN")
+                        .help("Colour the diagnostics")
                         .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
                         .default_value("auto"),
                 ),

@@ -2,6 +2,7 @@
 
 mod check;
 mod cli;
+mod emit;
 
 use std::io;
 use std::process::ExitCode;
@@ -34,6 +35,29 @@ fn main() -> ExitCode {
                 ExitCode::from(1)
             } else {
                 ExitCode::SUCCESS
+            }
+        }
+        Some(("emit", m)) => {
+            let files: Vec<String> = m
+                .get_many::<String>("files")
+                .into_iter()
+                .flatten()
+                .cloned()
+                .collect();
+            let dir = m.get_one::<String>("out-dir").map(std::path::PathBuf::from);
+            let color =
+                check::use_color(m.get_one::<String>("color").map_or("auto", String::as_str));
+            let ok = emit::run(
+                &files,
+                dir.as_deref(),
+                color,
+                &mut io::stdout().lock(),
+                &mut io::stderr().lock(),
+            );
+            if ok {
+                ExitCode::SUCCESS
+            } else {
+                ExitCode::from(1)
             }
         }
         Some(("explain", m)) => {

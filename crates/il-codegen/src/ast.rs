@@ -13,11 +13,17 @@ pub struct Span {
 impl Span {
     pub fn new(lo: usize, hi: usize) -> Self {
         // Sources over 4 GiB are refused before parsing, so these never truncate.
-        Span { lo: lo as u32, hi: hi as u32 }
+        Span {
+            lo: lo as u32,
+            hi: hi as u32,
+        }
     }
     /// The smallest span covering both.
     pub fn to(self, other: Span) -> Span {
-        Span { lo: self.lo.min(other.lo), hi: self.hi.max(other.hi) }
+        Span {
+            lo: self.lo.min(other.lo),
+            hi: self.hi.max(other.hi),
+        }
     }
     pub fn range(self) -> std::ops::Range<usize> {
         self.lo as usize..self.hi as usize
@@ -34,7 +40,10 @@ pub struct Ident {
 
 impl Ident {
     pub fn new(name: impl Into<String>, span: Span) -> Self {
-        Ident { name: name.into(), span }
+        Ident {
+            name: name.into(),
+            span,
+        }
     }
     /// The case-folded lookup key.
     pub fn key(&self) -> String {
@@ -166,11 +175,23 @@ pub enum TypeSpec {
     /// An elementary type, a user type or a function block type, by name.
     Named(Ident),
     /// `STRING`, `STRING[20]`, `WSTRING(10)`.
-    String { wide: bool, len: Option<ConstExpr>, span: Span },
+    String {
+        wide: bool,
+        len: Option<ConstExpr>,
+        span: Span,
+    },
     /// `ARRAY [0..9, 1..3] OF INT`
-    Array { dims: Vec<Subrange>, elem: Box<TypeSpec>, span: Span },
+    Array {
+        dims: Vec<Subrange>,
+        elem: Box<TypeSpec>,
+        span: Span,
+    },
     /// `INT (0..100)`
-    Subrange { base: Ident, range: Subrange, span: Span },
+    Subrange {
+        base: Ident,
+        range: Subrange,
+        span: Span,
+    },
     /// `(Red, Green := 5, Blue)` (only in TYPE declarations)
     Enum { values: Vec<EnumValue>, span: Span },
     /// `STRUCT a : INT; b : BOOL := TRUE; END_STRUCT` (only in TYPE declarations)
@@ -226,9 +247,15 @@ pub enum Initializer {
     /// A literal, an enumeration value or a constant's name.
     Simple(Operand),
     /// `[1, 2, 3(0)]` — each element with its repeat count.
-    Array { elems: Vec<(Option<Literal>, Initializer)>, span: Span },
+    Array {
+        elems: Vec<(Option<Literal>, Initializer)>,
+        span: Span,
+    },
     /// `(a := 1, b := TRUE)` for structures, and for FB instances' inputs.
-    Struct { fields: Vec<(Ident, Initializer)>, span: Span },
+    Struct {
+        fields: Vec<(Ident, Initializer)>,
+        span: Span,
+    },
 }
 
 impl Initializer {
@@ -363,10 +390,16 @@ impl ExprOp {
         matches!(self, ExprOp::And | ExprOp::Or | ExprOp::Xor)
     }
     pub fn is_arith(self) -> bool {
-        matches!(self, ExprOp::Add | ExprOp::Sub | ExprOp::Mul | ExprOp::Div | ExprOp::Mod)
+        matches!(
+            self,
+            ExprOp::Add | ExprOp::Sub | ExprOp::Mul | ExprOp::Div | ExprOp::Mod
+        )
     }
     pub fn is_compare(self) -> bool {
-        matches!(self, ExprOp::Gt | ExprOp::Ge | ExprOp::Eq | ExprOp::Ne | ExprOp::Le | ExprOp::Lt)
+        matches!(
+            self,
+            ExprOp::Gt | ExprOp::Ge | ExprOp::Eq | ExprOp::Ne | ExprOp::Le | ExprOp::Lt
+        )
     }
 }
 
@@ -414,7 +447,11 @@ pub enum InstrKind {
     /// `NOT` — complements the CR.
     Not,
     /// `AND x`, `ANDN x`, `& x`, `&N x`, `ADD x`, `GT x` ...
-    Expr { op: ExprOp, negate: bool, operand: Operand },
+    Expr {
+        op: ExprOp,
+        negate: bool,
+        operand: Operand,
+    },
     /// `AND( x` / `AND(` newline ... `)`: `first` is the operand of the short
     /// form (the inner CR's first load); `body` holds the inner instructions.
     Deferred {
@@ -429,7 +466,11 @@ pub enum InstrKind {
     Jump { cond: Cond, label: Ident },
     /// `CAL fb`, `CAL fb(...)`, `CALC`, `CALCN`; also `CAL LIMIT(...)` of a
     /// function with a formal list (3rd edition).
-    Call { cond: Cond, target: Operand, args: Option<CallArgs> },
+    Call {
+        cond: Cond,
+        target: Operand,
+        args: Option<CallArgs>,
+    },
     /// `RET`, `RETC`, `RETCN`
     Return { cond: Cond },
     /// A function as operator: `LIMIT 0, 100` (CR is the first argument),
@@ -541,10 +582,16 @@ pub enum LitKind {
     Int(i128),
     /// The value and its source text (REAL is parsed from the text as f32 to
     /// avoid double rounding).
-    Real { value: f64, text: String },
+    Real {
+        value: f64,
+        text: String,
+    },
     Bool(bool),
     /// `T#` / `TIME#` in nanoseconds; `long` for `LT#` / `LTIME#`.
-    Time { nanos: i64, long: bool },
+    Time {
+        nanos: i64,
+        long: bool,
+    },
     /// `D#`: days since 1970-01-01.
     Date(i64),
     /// `TOD#`: nanoseconds since midnight.
@@ -552,7 +599,13 @@ pub enum LitKind {
     /// `DT#`: nanoseconds since 1970-01-01T00:00:00.
     Dt(i64),
     /// `'...'` (wide = false) or `"..."` (wide = true), escapes resolved.
-    String { value: String, wide: bool },
+    String {
+        value: String,
+        wide: bool,
+    },
     /// `Color#Red`
-    Enum { ty: Ident, value: Ident },
+    Enum {
+        ty: Ident,
+        value: Ident,
+    },
 }

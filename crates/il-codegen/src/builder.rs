@@ -10,7 +10,7 @@
 //! writes `$OUT_DIR/motor.rs`, which the crate includes with
 //! `include!(concat!(env!("OUT_DIR"), "/motor.rs"));`.
 
-use crate::compile::compile_to_file;
+use crate::compile::compile_all_to_files;
 use crate::diag::{SourceFile, render::render};
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -51,7 +51,8 @@ impl Builder {
 
     /// Add several files.
     pub fn files<P: AsRef<Path>>(mut self, paths: impl IntoIterator<Item = P>) -> Self {
-        self.files.extend(paths.into_iter().map(|p| p.as_ref().to_path_buf()));
+        self.files
+            .extend(paths.into_iter().map(|p| p.as_ref().to_path_buf()));
         self
     }
 
@@ -72,44 +73,61 @@ impl Builder {
     /// each output is written atomically and only when its content changed.
     /// Returns the paths of the generated files.
     pub fn compile(self) -> Result<Vec<PathBuf>, Error> {
-        let cargo = self.cargo_directives.unwrap_or_else(|| std::env::var_os("OUT_DIR").is_some());
+        let cargo = self
+            .cargo_directives
+            .unwrap_or_else(|| std::env::var_os("OUT_DIR").is_some());
         let out_dir = match self.out_dir.clone().or_else(|| std::env::var_os("OUT_DIR").map(PathBuf::from)) {
             Some(d) => d,
             None => return Err(Error { rendered: "error: no output directory: OUT_DIR is not set (call Builder::out_dir outside build scripts)".into() }),
         };
-        let mut outputs = Vec::new();
+        let mut sources = Vec::new();
         let mut failed = String::new();
         for path in &self.files {
             if cargo {
                 println!("cargo:rerun-if-changed={}", path.display());
             }
-            let text = match std::fs::read_to_string(path) {
-                Ok(t) => t,
-                Err(e) => {
-                    failed.push_str(&format!("error: cannot read IL file `{}`: {e}\n", path.display()));
-                    continue;
-                }
-            };
-            let file = SourceFile::new(path.display().to_string(), text);
-            match compile_to_file(&file) {
-                Ok((code, warnings)) => {
-                    if cargo && !warnings.is_empty() {
-                        for line in render(&file, &warnings, false).lines() {
-                            println!("cargo:warning={line}");
-                        }
-                    }
-                    let stem = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "il".into());
-                    outputs.push((out_dir.join(format!("{stem}.rs")), code));
-                }
-                Err(diags) => failed.push_str(&render(&file, &diags, false)),
+            match std::fs::read_to_string(path) {
+                Ok(t) => sources.push(SourceFile::new(path.display().to_string(), t)),
+                Err(e) => failed.push_str(&format!(
+                    "error: cannot read IL file `{}`: {e}\n",
+                    path.display()
+                )),
             }
         }
         if !failed.is_empty() {
             return Err(Error { rendered: failed });
         }
+        // All files form one program: a FUNCTION_BLOCK of one is usable in another.
+        let outputs = match compile_all_to_files(&sources) {
+            Ok(o) => o,
+            Err(per_file) => {
+                let rendered = per_file
+                    .iter()
+                    .map(|(i, d)| render(&sources[*i], d, false))
+                    .collect::<String>();
+                return Err(Error { rendered });
+            }
+        };
+        let mut planned = Vec::new();
+        for ((code, warnings), (path, file)) in
+            outputs.into_iter().zip(self.files.iter().zip(&sources))
+        {
+            if cargo && !warnings.is_empty() {
+                for line in render(file, &warnings, false).lines() {
+                    println!("cargo:warning={line}");
+                }
+            }
+            let stem = path
+                .file_stem()
+                .map(|s| s.to_string_lossy().into_owned())
+                .unwrap_or_else(|| "il".into());
+            planned.push((out_dir.join(format!("{stem}.rs")), code));
+        }
         let mut written = Vec::new();
-        for (path, code) in outputs {
-            write_if_changed(&path, &code).map_err(|e| Error { rendered: format!("error: cannot write `{}`: {e}", path.display()) })?;
+        for (path, code) in planned {
+            write_if_changed(&path, &code).map_err(|e| Error {
+                rendered: format!("error: cannot write `{}`: {e}", path.display()),
+            })?;
             written.push(path);
         }
         Ok(written)
@@ -118,7 +136,7 @@ impl Builder {
 
 /// Write via a temporary file and rename, so a reader never sees half a file;
 /// skip the write when the content is unchanged, so cargo does not rebuild.
-pub(crate) fn write_if_changed(path: &Path, content: &str) -> std::io::Result<()> {
+pub fn write_if_changed(path: &Path, content: &str) -> std::io::Result<()> {
     if std::fs::read(path).is_ok_and(|old| old == content.as_bytes()) {
         return Ok(());
     }
@@ -153,7 +171,12 @@ mod tests {
     #[test]
     fn missing_file_is_an_error_naming_it() {
         let dir = std::env::temp_dir().join(format!("il-builder-miss-{}", std::process::id()));
-        let e = Builder::new().file("no/such/file.il").out_dir(&dir).cargo_directives(false).compile().unwrap_err();
+        let e = Builder::new()
+            .file("no/such/file.il")
+            .out_dir(&dir)
+            .cargo_directives(false)
+            .compile()
+            .unwrap_err();
         assert!(e.to_string().contains("no/such/file.il"), "{e}");
         assert!(!dir.join("file.rs").exists());
     }

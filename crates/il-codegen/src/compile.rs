@@ -31,7 +31,57 @@ pub fn compile(file: &SourceFile, opts: emit::Options) -> Result<Compiled, Vec<D
         return Err(diags);
     }
     let tokens = emit::program(&program, opts);
-    Ok(Compiled { tokens, warnings: diags, pous: program.pous.iter().map(|p| p.name.clone()).collect() })
+    Ok(Compiled {
+        tokens,
+        warnings: diags,
+        pous: program.pous.iter().map(|p| p.name.clone()).collect(),
+    })
+}
+
+/// Compile several files as one program (POUs of one may use those of
+/// another). On success, one formatted `.rs` text and the warnings per file;
+/// otherwise the diagnostics of every file (index, diagnostics).
+#[allow(clippy::type_complexity)]
+pub fn compile_all_to_files(
+    files: &[SourceFile],
+) -> Result<Vec<(String, Vec<Diagnostic>)>, Vec<(usize, Vec<Diagnostic>)>> {
+    let mut units = Vec::new();
+    let mut all: Vec<Vec<Diagnostic>> = Vec::new();
+    for f in files {
+        let (unit, diags) = syntax::parse(f);
+        units.push(unit);
+        all.push(diags);
+    }
+    if !all.iter().any(|d| has_errors(d)) {
+        let pairs: Vec<_> = files.iter().zip(&units).collect();
+        let (programs, more) = sema::check_all(&pairs);
+        for (d, m) in all.iter_mut().zip(more) {
+            d.extend(m);
+        }
+        if !all.iter().any(|d| has_errors(d)) {
+            return Ok(files
+                .iter()
+                .zip(programs)
+                .zip(all)
+                .map(|((f, p), mut w)| {
+                    sort(&mut w);
+                    (
+                        format_file(f, &emit::program(&p, emit::Options { line_markers: true })),
+                        w,
+                    )
+                })
+                .collect());
+        }
+    }
+    Err(all
+        .into_iter()
+        .enumerate()
+        .filter(|(_, d)| !d.is_empty())
+        .map(|(i, mut d)| {
+            sort(&mut d);
+            (i, d)
+        })
+        .collect())
 }
 
 fn sort(diags: &mut [Diagnostic]) {
@@ -75,5 +125,7 @@ pub fn format_file(file: &SourceFile, tokens: &TokenStream) -> String {
 
 /// A line comment cannot be escaped from, but keep control characters out.
 fn sanitize_comment(s: &str) -> String {
-    s.chars().map(|c| if c.is_control() { ' ' } else { c }).collect()
+    s.chars()
+        .map(|c| if c.is_control() { ' ' } else { c })
+        .collect()
 }

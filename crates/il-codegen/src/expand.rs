@@ -25,7 +25,10 @@ fn parse_input(tokens: TokenStream) -> syn::Result<Input> {
             }
             let kw: syn::Ident = ps.parse()?;
             if kw != "file" {
-                return Err(syn::Error::new(kw.span(), "expected a string of IL (`il!(r#\"...\"#)`) or `file = \"path.il\"`"));
+                return Err(syn::Error::new(
+                    kw.span(),
+                    "expected a string of IL (`il!(r#\"...\"#)`) or `file = \"path.il\"`",
+                ));
             }
             let _: syn::Token![=] = ps.parse()?;
             let lit: syn::LitStr = ps.parse()?;
@@ -42,16 +45,28 @@ fn parse_input(tokens: TokenStream) -> syn::Result<Input> {
 pub fn expand(tokens: TokenStream) -> TokenStream {
     let (file, lit_span, track) = match parse_input(tokens) {
         Err(e) => return e.to_compile_error(),
-        Ok(Input::Inline(lit)) => (SourceFile::new("il! input", lit.value()), lit.span(), quote!()),
+        Ok(Input::Inline(lit)) => (
+            SourceFile::new("il! input", lit.value()),
+            lit.span(),
+            quote!(),
+        ),
         Ok(Input::File(lit)) => {
             let rel = lit.value();
-            let base = std::env::var_os("CARGO_MANIFEST_DIR").map(std::path::PathBuf::from).unwrap_or_default();
+            let base = std::env::var_os("CARGO_MANIFEST_DIR")
+                .map(std::path::PathBuf::from)
+                .unwrap_or_default();
             let path = base.join(&rel);
             match std::fs::read_to_string(&path) {
                 Ok(text) => {
                     let abs = path.display().to_string();
                     // include_bytes! makes cargo rebuild when the file changes.
-                    (SourceFile::new(rel, text), lit.span(), quote!(const _: &[u8] = include_bytes!(#abs);))
+                    (
+                        SourceFile::new(rel, text),
+                        lit.span(),
+                        quote!(
+                            const _: &[u8] = include_bytes!(#abs);
+                        ),
+                    )
                 }
                 Err(e) => {
                     let msg = format!("cannot read IL file `{}`: {e}", path.display());

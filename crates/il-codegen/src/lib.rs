@@ -15,6 +15,6 @@ pub mod expand;
 pub mod sema;
 pub mod syntax;
 
-pub use builder::{Builder, Error};
+pub use builder::{Builder, Error, write_if_changed};
 pub use check::check_source;
-pub use compile::{Compiled, compile, compile_to_file, format_file};
+pub use compile::{Compiled, compile, compile_all_to_files, compile_to_file, format_file};

@@ -25,8 +25,14 @@ enum Mode {
 
 fn label_lifetime(l: usize) -> TokenStream {
     let mut t = TokenStream::new();
-    t.extend([proc_macro2::TokenTree::Punct(Punct::new('\'', Spacing::Joint))]);
-    t.extend([proc_macro2::TokenTree::Ident(Ident::new(&format!("__l{l}"), Span::call_site()))]);
+    t.extend([proc_macro2::TokenTree::Punct(Punct::new(
+        '\'',
+        Spacing::Joint,
+    ))]);
+    t.extend([proc_macro2::TokenTree::Ident(Ident::new(
+        &format!("__l{l}"),
+        Span::call_site(),
+    ))]);
     t
 }
 
@@ -34,7 +40,11 @@ impl Pou<'_> {
     pub(crate) fn body(&self) -> TokenStream {
         let mut stmts: &[Stmt] = &self.pou.body;
         // A RET at the very end is where the body ends anyway.
-        if let Some(Stmt { op: Op::Return { cond: None }, .. }) = stmts.last() {
+        if let Some(Stmt {
+            op: Op::Return { cond: None },
+            ..
+        }) = stmts.last()
+        {
             stmts = &stmts[..stmts.len() - 1];
         }
         let label_pos: Vec<Option<usize>> = {
@@ -47,7 +57,13 @@ impl Pou<'_> {
             v
         };
         let has_labels = label_pos.iter().any(Option::is_some);
-        let targets = stmts.iter().filter_map(|s| if let Op::Jump { label, .. } = s.op { Some(label) } else { None });
+        let targets = stmts.iter().filter_map(|s| {
+            if let Op::Jump { label, .. } = s.op {
+                Some(label)
+            } else {
+                None
+            }
+        });
         let forward_only = stmts.iter().enumerate().all(|(i, s)| match s.op {
             Op::Jump { label, .. } => label_pos[label].is_some_and(|p| p > i),
             _ => true,
@@ -81,7 +97,13 @@ impl Pou<'_> {
                 };
                 let mut segments = stmts.split(|s| matches!(s.op, Op::Label(_)));
                 let mut acc = self.seq(segments.next().unwrap_or_default(), &mode);
-                let labels = stmts.iter().filter_map(|s| if let Op::Label(l) = s.op { Some(l) } else { None });
+                let labels = stmts.iter().filter_map(|s| {
+                    if let Op::Label(l) = s.op {
+                        Some(l)
+                    } else {
+                        None
+                    }
+                });
                 for (l, seg) in labels.zip(segments) {
                     let seg = self.seq(seg, &mode);
                     acc = if jumped[l] {
@@ -94,11 +116,18 @@ impl Pou<'_> {
                 acc
             }
             Mode::Dispatch { .. } => {
-                let segments: Vec<&[Stmt]> = stmts.split(|s| matches!(s.op, Op::Label(_))).collect();
+                let segments: Vec<&[Stmt]> =
+                    stmts.split(|s| matches!(s.op, Op::Label(_))).collect();
                 let last = segments.len() - 1;
                 let arms = segments.iter().enumerate().map(|(k, seg)| {
                     let code = self.seq(seg, &mode);
-                    let ends = matches!(seg.last(), Some(Stmt { op: Op::Jump { cond: None, .. } | Op::Return { cond: None }, .. }));
+                    let ends = matches!(
+                        seg.last(),
+                        Some(Stmt {
+                            op: Op::Jump { cond: None, .. } | Op::Return { cond: None },
+                            ..
+                        })
+                    );
                     let next = k + 1;
                     let tail = if ends {
                         quote!()
@@ -127,7 +156,7 @@ impl Pou<'_> {
         let mut last_line = 0;
         for s in stmts {
             if self.opts.line_markers && s.line != last_line && s.line != 0 {
-                let n = s.line;
+                let n = proc_macro2::Literal::u32_unsuffixed(s.line);
                 out.extend(quote!(__il_line!(#n);));
                 last_line = s.line;
             }
@@ -136,7 +165,12 @@ impl Pou<'_> {
         out
     }
 
-    fn cond(&self, c: &Option<(crate::sema::ir::Value, bool)>, line: u32, body: TokenStream) -> TokenStream {
+    fn cond(
+        &self,
+        c: &Option<(crate::sema::ir::Value, bool)>,
+        line: u32,
+        body: TokenStream,
+    ) -> TokenStream {
         match c {
             None => body,
             Some((v, true)) => {
@@ -163,19 +197,34 @@ impl Pou<'_> {
                 let v = self.value(value, line);
                 quote!(#id = #v;)
             }
-            Op::Store { place, value, negate } => {
+            Op::Store {
+                place,
+                value,
+                negate,
+            } => {
                 let v = self.value(value, line);
                 let v = if *negate { quote!(!#v) } else { v };
                 self.write(place, v, line)
             }
             Op::SetIf { place, value, cond } => {
                 let c = self.value(cond, line);
-                let w = self.write(place, if *value { quote!(true) } else { quote!(false) }, line);
+                let w = self.write(
+                    place,
+                    if *value { quote!(true) } else { quote!(false) },
+                    line,
+                );
                 quote!(if #c { #w })
             }
-            Op::CallFb { inst, inputs, outputs, cond } => {
+            Op::CallFb {
+                inst,
+                inputs,
+                outputs,
+                cond,
+            } => {
                 // Inputs are evaluated before the instance is borrowed.
-                let ids: Vec<_> = (0..inputs.len()).map(|k| format_ident!("__in{}", k)).collect();
+                let ids: Vec<_> = (0..inputs.len())
+                    .map(|k| format_ident!("__in{}", k))
+                    .collect();
                 let lets = inputs.iter().zip(&ids).map(|((_, v), id)| {
                     let v = self.value(v, line);
                     quote!(let #id = #v;)
@@ -208,7 +257,11 @@ impl Pou<'_> {
                 self.cond(cond, line, go)
             }
             Op::Return { cond } => {
-                let r = if self.pou.kind == PouKind::Function { quote!(return __ret;) } else { quote!(return;) };
+                let r = if self.pou.kind == PouKind::Function {
+                    quote!(return __ret;)
+                } else {
+                    quote!(return;)
+                };
                 self.cond(cond, line, r)
             }
         }

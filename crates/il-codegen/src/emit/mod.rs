@@ -77,7 +77,9 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
         quote!(let mut #id: #ty = #d;)
     });
     let temp_locals = pou.vars.iter().enumerate().filter(|(i, v)| {
-        !p.in_self(*i) && !(pou.kind == PouKind::Function && matches!(v.kind, VarKind::Input | VarKind::Output))
+        !p.in_self(*i)
+            && !(pou.kind == PouKind::Function
+                && matches!(v.kind, VarKind::Input | VarKind::Output))
     });
     let temp_locals = temp_locals.map(|(_, v)| {
         let id = rust_ident(&v.name);
@@ -86,23 +88,43 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
         quote!(let mut #id: #ty = #init;)
     });
     let locals = quote!(#(#cr_locals)* #(#save_locals)* #(#temp_locals)*);
-    let doc = format!(" IEC 61131-3 {} `{}`, generated from Instruction List.", pou.kind.keyword(), pou.name);
+    let doc = format!(
+        " IEC 61131-3 {} `{}`, generated from Instruction List.",
+        pou.kind.keyword(),
+        pou.name
+    );
     let allow = quote!(#[allow(non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, clippy::all)]);
 
     match pou.kind {
         PouKind::Function => {
-            let ret_ty = pou.ret.as_ref().map(rust_ty).unwrap_or_else(|| quote!(bool));
-            let ret_default = pou.ret.as_ref().map(values::default_value).unwrap_or_else(|| quote!(false));
-            let params = pou.vars.iter().filter(|v| v.kind == VarKind::Input).map(|v| {
-                let id = rust_ident(&v.name);
-                let ty = rust_ty(&v.ty);
-                quote!(mut #id: #ty)
-            });
-            let outs = pou.vars.iter().filter(|v| v.kind == VarKind::Output).map(|v| {
-                let id = rust_ident(&v.name);
-                let ty = rust_ty(&v.ty);
-                quote!(#id: &mut #ty)
-            });
+            let ret_ty = pou
+                .ret
+                .as_ref()
+                .map(rust_ty)
+                .unwrap_or_else(|| quote!(bool));
+            let ret_default = pou
+                .ret
+                .as_ref()
+                .map(values::default_value)
+                .unwrap_or_else(|| quote!(false));
+            let params = pou
+                .vars
+                .iter()
+                .filter(|v| v.kind == VarKind::Input)
+                .map(|v| {
+                    let id = rust_ident(&v.name);
+                    let ty = rust_ty(&v.ty);
+                    quote!(mut #id: #ty)
+                });
+            let outs = pou
+                .vars
+                .iter()
+                .filter(|v| v.kind == VarKind::Output)
+                .map(|v| {
+                    let id = rust_ident(&v.name);
+                    let ty = rust_ty(&v.ty);
+                    quote!(#id: &mut #ty)
+                });
             quote! {
                 #[doc = #doc]
                 #allow
@@ -116,7 +138,13 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
             }
         }
         PouKind::FunctionBlock | PouKind::Program => {
-            let fields: Vec<_> = pou.vars.iter().enumerate().filter(|(i, _)| p.in_self(*i)).map(|(_, v)| v).collect();
+            let fields: Vec<_> = pou
+                .vars
+                .iter()
+                .enumerate()
+                .filter(|(i, _)| p.in_self(*i))
+                .map(|(_, v)| v)
+                .collect();
             let decls = fields.iter().map(|v| {
                 let id = rust_ident(&v.name);
                 let ty = rust_ty(&v.ty);
@@ -128,7 +156,11 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 let init = values::init_value(&v.ty, v.init.as_ref());
                 quote!(#id: #init,)
             });
-            let method_doc = if pou.kind == PouKind::Program { " Run one scan." } else { " Call the block once." };
+            let method_doc = if pou.kind == PouKind::Program {
+                " Run one scan."
+            } else {
+                " Call the block once."
+            };
             quote! {
                 #[doc = #doc]
                 #[derive(Clone, Debug, PartialEq)]

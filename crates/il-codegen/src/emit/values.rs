@@ -28,28 +28,36 @@ pub(crate) fn constant(c: &Const) -> TokenStream {
                 Elem::UDINT | Elem::DWORD => Literal::u32_suffixed(v as u32),
                 _ => Literal::u64_suffixed(v as u64),
             };
-            if v < 0 { quote!((#lit)) } else { quote!(#lit) }
+            quote!(#lit)
         }
         Const::Real(v, e) => {
             // The checker only lets finite values through.
-            let (lit, neg) = if *e == Elem::REAL {
+            let lit = if *e == Elem::REAL {
                 let f = *v as f32;
-                (Literal::f32_suffixed(if f.is_finite() { f } else { 0.0 }), f < 0.0)
+                Literal::f32_suffixed(if f.is_finite() { f } else { 0.0 })
             } else {
-                (Literal::f64_suffixed(if v.is_finite() { *v } else { 0.0 }), *v < 0.0)
+                Literal::f64_suffixed(if v.is_finite() { *v } else { 0.0 })
             };
-            if neg { quote!((#lit)) } else { quote!(#lit) }
+            quote!(#lit)
         }
         Const::Time(v, e) => {
             let ty = Elem::rust(*e);
             let lit = Literal::i64_suffixed(*v);
             quote!(#ty(#lit))
         }
-        Const::Str { value, wide: false, len } => {
+        Const::Str {
+            value,
+            wide: false,
+            len,
+        } => {
             let n = *len as usize;
             quote!(::il_std::STRING::<#n>::from_str_truncating(#value).0)
         }
-        Const::Str { value, wide: true, len } => {
+        Const::Str {
+            value,
+            wide: true,
+            len,
+        } => {
             let n = *len as usize;
             quote!(::il_std::WSTRING::<#n>::from_str_truncating(#value).0)
         }
@@ -66,7 +74,8 @@ pub(crate) fn default_value(t: &Ty) -> TokenStream {
             }
             v
         }
-        _ => quote!(::core::default::Default::default()),
+        Ty::Elem(_) | Ty::Str { .. } => constant(&crate::sema::default_const(t)),
+        Ty::Fb(_) => quote!(::core::default::Default::default()),
     }
 }
 
@@ -86,7 +95,11 @@ pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
                 }
                 let v = constant(&items[i]);
                 let (a, b) = (i, j);
-                arms.push(if a == b { quote!(#a => #v,) } else { quote!(#a..=#b => #v,) });
+                arms.push(if a == b {
+                    quote!(#a => #v,)
+                } else {
+                    quote!(#a..=#b => #v,)
+                });
                 i = j + 1;
             }
             let d = default_value(elem);
@@ -122,6 +135,17 @@ impl Pou<'_> {
         let kind = format_ident!("{}", kind);
         let pou = &self.pou.name;
         quote!(__ctx.fault(::il_std::FaultKind::#kind, #pou, #line))
+    }
+
+    /// A value in method-receiver position (`x.wrapping_add(..)`): a
+    /// negative literal needs parentheses there, nothing else does.
+    pub(crate) fn receiver(&self, v: &Value, line: u32) -> TokenStream {
+        let t = self.value(v, line);
+        match v {
+            Value::Const(Const::Int(n, _)) if *n < 0 => quote!((#t)),
+            Value::Const(Const::Real(f, _)) if *f < 0.0 => quote!((#t)),
+            _ => t,
+        }
     }
 
     pub(crate) fn value(&self, v: &Value, line: u32) -> TokenStream {
@@ -181,13 +205,21 @@ impl Pou<'_> {
     /// An `Option<&T>` / `Option<&mut T>` chain down an indexed path.
     fn chain(&self, p: &Place, ids: &[proc_macro2::Ident], mutable: bool) -> TokenStream {
         let root = self.root(&p.root);
-        let mut chain = if mutable { quote!(::core::option::Option::Some(&mut #root)) } else { quote!(::core::option::Option::Some(&#root)) };
+        let mut chain = if mutable {
+            quote!(::core::option::Option::Some(&mut #root))
+        } else {
+            quote!(::core::option::Option::Some(&#root))
+        };
         let mut k = 0;
         for e in &p.path {
             match e {
                 PathElem::Field(f) => {
                     let f = member_ident(f);
-                    chain = if mutable { quote!(#chain.map(|__x| &mut __x.#f)) } else { quote!(#chain.map(|__x| &__x.#f)) };
+                    chain = if mutable {
+                        quote!(#chain.map(|__x| &mut __x.#f))
+                    } else {
+                        quote!(#chain.map(|__x| &__x.#f))
+                    };
                 }
                 PathElem::Index { subs, .. } => {
                     for _ in subs {
@@ -277,18 +309,30 @@ impl Pou<'_> {
                 let v = self.value(v, line);
                 quote!(!#v)
             }
-            Expr::Bin { op, ty, lhs, rhs, negate_rhs } => {
-                let l = self.value(lhs, line);
+            Expr::Bin {
+                op,
+                ty,
+                lhs,
+                rhs,
+                negate_rhs,
+            } => {
+                let l = self.receiver(lhs, line);
                 let mut r = self.value(rhs, line);
                 if *negate_rhs {
-                    r = quote!((!#r));
+                    r = quote!(!#r);
                 }
                 self.binary(*op, ty, l, r, line)
             }
-            Expr::TimeScale { div, time, lhs, num, rhs } => {
+            Expr::TimeScale {
+                div,
+                time,
+                lhs,
+                num,
+                rhs,
+            } => {
                 let t = time.rust();
-                let l = self.value(lhs, line);
-                let r = self.value(rhs, line);
+                let l = self.receiver(lhs, line);
+                let r = self.receiver(rhs, line);
                 match (div, num.is_real()) {
                     (false, false) => quote!(#t(#l.0.wrapping_mul(#r as i64))),
                     (false, true) => quote!(#t(((#l.0 as f64) * (#r as f64)) as i64)),
@@ -302,14 +346,21 @@ impl Pou<'_> {
                     }
                 }
             }
-            Expr::CallUser { name, args, outputs, out_types } => {
+            Expr::CallUser {
+                name,
+                args,
+                outputs,
+                out_types,
+            } => {
                 let f = rust_ident(name);
                 let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
                 if out_types.is_empty() {
                     return quote!(#f(__ctx, #(#args,)*));
                 }
                 // Every output needs a place, read by `=>` or not.
-                let ids: Vec<_> = (0..out_types.len()).map(|k| format_ident!("__o{}", k)).collect();
+                let ids: Vec<_> = (0..out_types.len())
+                    .map(|k| format_ident!("__o{}", k))
+                    .collect();
                 let lets = out_types.iter().zip(&ids).map(|(t, id)| {
                     let ty = rust_ty(t);
                     let d = default_value(t);
@@ -349,7 +400,7 @@ impl Pou<'_> {
                             let (a, b) = (&w[0], &w[1]);
                             quote!(::il_std::func::#f(#a, #b))
                         });
-                        quote!((true #(& #pairs)*))
+                        quote!(#(#pairs)&*)
                     }
                     StdCall::Mux => {
                         let fault = self.fault("InvalidArgument", line);
@@ -375,35 +426,43 @@ impl Pou<'_> {
         let int = e.is_some_and(|e| e.is_int() || e.is_bitstring());
         let dur = e.filter(|e| e.is_duration()).map(Elem::rust);
         match op {
-            BinOp::And => quote!((#l & #r)),
-            BinOp::Or => quote!((#l | #r)),
-            BinOp::Xor => quote!((#l ^ #r)),
-            BinOp::Gt => quote!((#l > #r)),
-            BinOp::Ge => quote!((#l >= #r)),
-            BinOp::Eq => quote!((#l == #r)),
-            BinOp::Ne => quote!((#l != #r)),
-            BinOp::Le => quote!((#l <= #r)),
-            BinOp::Lt => quote!((#l < #r)),
+            BinOp::And => quote!(#l & #r),
+            BinOp::Or => quote!(#l | #r),
+            BinOp::Xor => quote!(#l ^ #r),
+            BinOp::Gt => quote!(#l > #r),
+            BinOp::Ge => quote!(#l >= #r),
+            BinOp::Eq => quote!(#l == #r),
+            BinOp::Ne => quote!(#l != #r),
+            BinOp::Le => quote!(#l <= #r),
+            BinOp::Lt => quote!(#l < #r),
             BinOp::Add | BinOp::Sub if dur.is_some() => {
                 let t = dur.unwrap_or_default();
-                if op == BinOp::Add { quote!(#t(#l.0.wrapping_add(#r.0))) } else { quote!(#t(#l.0.wrapping_sub(#r.0))) }
+                if op == BinOp::Add {
+                    quote!(#t(#l.0.wrapping_add(#r.0)))
+                } else {
+                    quote!(#t(#l.0.wrapping_sub(#r.0)))
+                }
             }
             BinOp::Add if int => quote!(#l.wrapping_add(#r)),
             BinOp::Sub if int => quote!(#l.wrapping_sub(#r)),
             BinOp::Mul if int => quote!(#l.wrapping_mul(#r)),
             BinOp::Div | BinOp::Mod if int => {
                 let fault = self.fault("DivisionByZero", line);
-                let f = if op == BinOp::Div { quote!(wrapping_div) } else { quote!(wrapping_rem) };
+                let f = if op == BinOp::Div {
+                    quote!(wrapping_div)
+                } else {
+                    quote!(wrapping_rem)
+                };
                 quote!({
                     let __d = #r;
                     if __d == 0 { #fault; 0 } else { #l.#f(__d) }
                 })
             }
-            BinOp::Add => quote!((#l + #r)),
-            BinOp::Sub => quote!((#l - #r)),
-            BinOp::Mul => quote!((#l * #r)),
-            BinOp::Div => quote!((#l / #r)),
-            BinOp::Mod => quote!((#l % #r)),
+            BinOp::Add => quote!(#l + #r),
+            BinOp::Sub => quote!(#l - #r),
+            BinOp::Mul => quote!(#l * #r),
+            BinOp::Div => quote!(#l / #r),
+            BinOp::Mod => quote!(#l % #r),
         }
     }
 }

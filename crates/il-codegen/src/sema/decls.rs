@@ -4,7 +4,9 @@ use super::codes::*;
 use super::ir::{Const, Init, Var};
 use super::types::{DEFAULT_STRING_LEN, Elem, Ty};
 use super::{Cx, stdfb, suggest};
-use crate::ast::{self, ConstExpr, Initializer, LitKind, Literal, Operand, PouKind, Span, TypeSpec};
+use crate::ast::{
+    self, ConstExpr, Initializer, LitKind, Literal, Operand, PouKind, Span, TypeSpec,
+};
 use std::collections::{HashMap, HashSet};
 
 /// The interfaces of every POU of the unit, by upper-case name.
@@ -19,6 +21,10 @@ pub(crate) struct PouSig {
     /// Upper-case name → index into `vars`.
     pub index: HashMap<String, usize>,
     pub ret: Option<Ty>,
+    /// Index of the source file that declares it.
+    pub file: usize,
+    /// Variables whose declaration had an error (their uses are not reported).
+    pub poisoned: HashSet<String>,
 }
 
 impl PouSig {
@@ -28,7 +34,10 @@ impl PouSig {
     }
     /// Inputs in declaration order (what a non-formal call fills).
     pub fn inputs(&self) -> impl Iterator<Item = (usize, &Var)> {
-        self.vars.iter().enumerate().filter(|(_, v)| v.kind == ast::VarKind::Input)
+        self.vars
+            .iter()
+            .enumerate()
+            .filter(|(_, v)| v.kind == ast::VarKind::Input)
     }
 }
 
@@ -38,46 +47,80 @@ impl Env {
     }
 }
 
-pub(crate) fn collect(cx: &mut Cx, unit: &ast::CompilationUnit) -> Env {
-    let mut env = Env { pous: HashMap::new() };
-    let mut seen: HashMap<String, Span> = HashMap::new();
-    let pous: Vec<&ast::Pou> = unit
-        .items
+pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
+    let mut env = Env {
+        pous: HashMap::new(),
+    };
+    let mut seen: HashMap<String, (usize, Span)> = HashMap::new();
+    let pous: Vec<(usize, &ast::Pou)> = units
         .iter()
-        .filter_map(|i| match i {
-            ast::Item::Pou(p) => Some(p),
-            _ => None,
+        .enumerate()
+        .flat_map(|(f, u)| {
+            u.items.iter().filter_map(move |i| match i {
+                ast::Item::Pou(p) => Some((f, p)),
+                _ => None,
+            })
         })
         .collect();
-    for p in &pous {
+    for (f, p) in &pous {
         let key = p.name.key();
-        if let Some(prev) = seen.insert(key.clone(), p.name.span) {
-            cx.err(DUPLICATE_DECL, p.name.span, format!("`{}` is declared twice", p.name))
-                .add_secondary(prev, "first declared here");
-        } else if stdfb::lookup(&key).is_some() || super::stdfn::is_std(&key) {
-            cx.err(DUPLICATE_DECL, p.name.span, format!("`{}` is the name of a standard block or function", p.name));
+        if let Some((pf, prev)) = seen.get(&key).copied() {
+            let other = cxs[pf].file.name.clone();
+            let d = cxs[*f].err(
+                DUPLICATE_DECL,
+                p.name.span,
+                format!("`{}` is declared twice", p.name),
+            );
+            if pf == *f {
+                d.add_secondary(prev, "first declared here");
+            } else {
+                d.add_note(format!("first declared in {other}"));
+            }
+        } else {
+            seen.insert(key.clone(), (*f, p.name.span));
+            if stdfb::lookup(&key).is_some() || super::stdfn::is_std(&key) {
+                cxs[*f].err(
+                    DUPLICATE_DECL,
+                    p.name.span,
+                    format!("`{}` is the name of a standard block or function", p.name),
+                );
+            }
         }
     }
-    let fb_names: HashSet<String> =
-        pous.iter().filter(|p| p.kind == PouKind::FunctionBlock).map(|p| p.name.key()).collect();
-    for p in &pous {
+    let fb_names: HashSet<String> = pous
+        .iter()
+        .filter(|(_, p)| p.kind == PouKind::FunctionBlock)
+        .map(|(_, p)| p.name.key())
+        .collect();
+    for (f, p) in &pous {
         if env.pous.contains_key(&p.name.key()) {
             continue;
         }
-        let sig = pou_sig(cx, &fb_names, p);
+        let mut sig = pou_sig(&mut cxs[*f], &fb_names, p);
+        sig.file = *f;
         env.pous.insert(p.name.key(), sig);
     }
-    for item in &unit.items {
-        match item {
-            ast::Item::Types(decls) => {
-                if let Some(d) = decls.first() {
-                    cx.err(UNSUPPORTED, d.span, "user-defined types (TYPE ... END_TYPE) are not supported yet");
+    for (f, unit) in units.iter().enumerate() {
+        for item in &unit.items {
+            match item {
+                ast::Item::Types(decls) => {
+                    if let Some(d) = decls.first() {
+                        cxs[f].err(
+                            UNSUPPORTED,
+                            d.span,
+                            "user-defined types (TYPE ... END_TYPE) are not supported yet",
+                        );
+                    }
                 }
+                ast::Item::Configuration(c) => {
+                    cxs[f].err(
+                        UNSUPPORTED,
+                        c.name.span,
+                        "CONFIGURATION is not supported yet",
+                    );
+                }
+                ast::Item::Pou(_) => {}
             }
-            ast::Item::Configuration(c) => {
-                cx.err(UNSUPPORTED, c.name.span, "CONFIGURATION is not supported yet");
-            }
-            ast::Item::Pou(_) => {}
         }
     }
     env
@@ -85,11 +128,26 @@ pub(crate) fn collect(cx: &mut Cx, unit: &ast::CompilationUnit) -> Env {
 
 fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
     check_ident(cx, &p.name);
-    let mut sig = PouSig { kind: p.kind, name: p.name.name.clone(), vars: Vec::new(), index: HashMap::new(), ret: None };
+    let mut sig = PouSig {
+        kind: p.kind,
+        name: p.name.name.clone(),
+        vars: Vec::new(),
+        index: HashMap::new(),
+        ret: None,
+        file: 0,
+        poisoned: HashSet::new(),
+    };
     if p.kind == PouKind::Function {
-        sig.ret = p.return_type.as_ref().and_then(|t| resolve_type(cx, fb_names, t));
+        sig.ret = p
+            .return_type
+            .as_ref()
+            .and_then(|t| resolve_type(cx, fb_names, t));
         if let Some(Ty::Fb(_)) = sig.ret {
-            cx.err(BAD_OPERATOR_TYPE, p.name.span, "a FUNCTION cannot return a function block");
+            cx.err(
+                BAD_OPERATOR_TYPE,
+                p.name.span,
+                "a FUNCTION cannot return a function block",
+            );
             sig.ret = None;
         }
     }
@@ -101,36 +159,62 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
                 continue;
             }
             (_, ast::VarKind::External) | (_, ast::VarKind::Global) => {
-                cx.err(UNSUPPORTED, block.span, format!("{} is not supported yet", block.kind.keyword()));
+                cx.err(
+                    UNSUPPORTED,
+                    block.span,
+                    format!("{} is not supported yet", block.kind.keyword()),
+                );
                 continue;
             }
             _ => {}
         }
         for decl in &block.decls {
             if let Some(loc) = &decl.location {
-                cx.err(UNSUPPORTED, loc.span, "located variables (AT %...) are not supported yet");
+                cx.err(
+                    UNSUPPORTED,
+                    loc.span,
+                    "located variables (AT %...) are not supported yet",
+                );
             }
             if decl.edge.is_some() {
                 // R_EDGE/F_EDGE inputs: accepted, evaluated as plain BOOL by the caller's value.
                 // (The edge is the caller's concern in IEC; documented in the guide.)
             }
-            let Some(ty) = resolve_type(cx, fb_names, &decl.ty) else { continue };
+            let Some(ty) = resolve_type(cx, fb_names, &decl.ty) else {
+                // Already reported; uses of these names stay silent.
+                sig.poisoned.extend(decl.names.iter().map(|n| n.key()));
+                continue;
+            };
             if p.kind == PouKind::Function && matches!(ty, Ty::Fb(_)) {
-                cx.err(BAD_OPERATOR_TYPE, decl.ty.span(), "a FUNCTION cannot hold function block instances (it has no memory)");
+                cx.err(
+                    BAD_OPERATOR_TYPE,
+                    decl.ty.span(),
+                    "a FUNCTION cannot hold function block instances (it has no memory)",
+                );
                 continue;
             }
             let init = decl.init.as_ref().and_then(|i| init_value(cx, i, &ty));
             for name in &decl.names {
                 check_ident(cx, name);
                 let key = name.key();
-                let clash = (p.kind == PouKind::Function && key == p.name.key()) || key == "ENO" || key == "EN";
+                let clash = (p.kind == PouKind::Function && key == p.name.key())
+                    || key == "ENO"
+                    || key == "EN";
                 if let Some(prev) = spans.get(&key) {
-                    cx.err(DUPLICATE_DECL, name.span, format!("`{name}` is declared twice"))
-                        .add_secondary(*prev, "first declared here");
+                    cx.err(
+                        DUPLICATE_DECL,
+                        name.span,
+                        format!("`{name}` is declared twice"),
+                    )
+                    .add_secondary(*prev, "first declared here");
                     continue;
                 }
                 if clash {
-                    cx.err(DUPLICATE_DECL, name.span, format!("`{name}` is reserved in a FUNCTION (its result, EN or ENO)"));
+                    cx.err(
+                        DUPLICATE_DECL,
+                        name.span,
+                        format!("`{name}` is reserved in a FUNCTION (its result, EN or ENO)"),
+                    );
                     continue;
                 }
                 spans.insert(key.clone(), name.span);
@@ -153,7 +237,11 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
 /// code relies on that to keep its own names apart.
 fn check_ident(cx: &mut Cx, id: &ast::Ident) {
     if id.name.contains("__") || id.name.ends_with('_') && id.name.len() > 1 {
-        cx.err(BAD_IDENT, id.span, format!("`{id}` is not an IEC identifier (no `__`, no trailing `_`)"));
+        cx.err(
+            BAD_IDENT,
+            id.span,
+            format!("`{id}` is not an IEC identifier (no `__`, no trailing `_`)"),
+        );
     }
 }
 
@@ -165,8 +253,18 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &HashSet<String>, spec: &TypeS
             }
             let key = id.key();
             match key.as_str() {
-                "STRING" => return Some(Ty::Str { wide: false, len: DEFAULT_STRING_LEN }),
-                "WSTRING" => return Some(Ty::Str { wide: true, len: DEFAULT_STRING_LEN }),
+                "STRING" => {
+                    return Some(Ty::Str {
+                        wide: false,
+                        len: DEFAULT_STRING_LEN,
+                    });
+                }
+                "WSTRING" => {
+                    return Some(Ty::Str {
+                        wide: true,
+                        len: DEFAULT_STRING_LEN,
+                    });
+                }
                 _ => {}
             }
             if let Some(fb) = stdfb::lookup(&key) {
@@ -175,8 +273,12 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &HashSet<String>, spec: &TypeS
             if fb_names.contains(&key) {
                 return Some(Ty::Fb(key));
             }
-            let names = super::types::ALL_ELEMS.iter().map(|e| e.name()).chain(["TON", "TOF", "TP", "CTU", "CTD", "CTUD", "SR", "RS", "R_TRIG", "F_TRIG"]);
-            let d = cx.err(UNKNOWN_TYPE, id.span, format!("unknown type `{id}`")).set_label("not an elementary type or function block");
+            let names = super::types::ALL_ELEMS.iter().map(|e| e.name()).chain([
+                "TON", "TOF", "TP", "CTU", "CTD", "CTUD", "SR", "RS", "R_TRIG", "F_TRIG",
+            ]);
+            let d = cx
+                .err(UNKNOWN_TYPE, id.span, format!("unknown type `{id}`"))
+                .set_label("not an elementary type or function block");
             if let Some(s) = suggest(&id.name, names) {
                 d.help = Some(format!("did you mean `{s}`?"));
             }
@@ -185,9 +287,16 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &HashSet<String>, spec: &TypeS
         TypeSpec::String { wide, len, span } => {
             let len = match len {
                 None => DEFAULT_STRING_LEN,
-                Some(ConstExpr::Lit(Literal { kind: LitKind::Int(n), .. })) if (1..=65535).contains(n) => *n as u32,
+                Some(ConstExpr::Lit(Literal {
+                    kind: LitKind::Int(n),
+                    ..
+                })) if (1..=65535).contains(n) => *n as u32,
                 Some(other) => {
-                    cx.err(BAD_INIT, other.span(), "a string length must be an integer literal from 1 to 65535");
+                    cx.err(
+                        BAD_INIT,
+                        other.span(),
+                        "a string length must be an integer literal from 1 to 65535",
+                    );
                     let _ = span;
                     return None;
                 }
@@ -199,22 +308,41 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &HashSet<String>, spec: &TypeS
             let mut out = Vec::new();
             let mut total: i128 = 1;
             for d in dims {
-                let (Some(lo), Some(hi)) = (const_int(cx, &d.lo), const_int(cx, &d.hi)) else { return None };
+                let (Some(lo), Some(hi)) = (const_int(cx, &d.lo), const_int(cx, &d.hi)) else {
+                    return None;
+                };
                 if hi < lo {
-                    cx.err(BAD_INDEX, d.span, format!("array bounds {lo}..{hi} are empty"));
+                    cx.err(
+                        BAD_INDEX,
+                        d.span,
+                        format!("array bounds {lo}..{hi} are empty"),
+                    );
                     return None;
                 }
                 total = total.saturating_mul((hi - lo + 1) as i128);
                 out.push((lo, hi));
             }
             if total > 1 << 24 {
-                cx.err(BAD_INDEX, spec.span(), "array too large (over 16 million elements)");
+                cx.err(
+                    BAD_INDEX,
+                    spec.span(),
+                    "array too large (over 16 million elements)",
+                );
                 return None;
             }
-            Some(Ty::Array { dims: out, elem: Box::new(elem) })
+            Some(Ty::Array {
+                dims: out,
+                elem: Box::new(elem),
+            })
         }
-        TypeSpec::Subrange { span, .. } | TypeSpec::Enum { span, .. } | TypeSpec::Struct { span, .. } => {
-            cx.err(UNSUPPORTED, *span, "subrange, enumeration and structure types are not supported yet");
+        TypeSpec::Subrange { span, .. }
+        | TypeSpec::Enum { span, .. }
+        | TypeSpec::Struct { span, .. } => {
+            cx.err(
+                UNSUPPORTED,
+                *span,
+                "subrange, enumeration and structure types are not supported yet",
+            );
             None
         }
     }
@@ -222,9 +350,16 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &HashSet<String>, spec: &TypeS
 
 fn const_int(cx: &mut Cx, c: &ConstExpr) -> Option<i64> {
     match c {
-        ConstExpr::Lit(Literal { kind: LitKind::Int(n), .. }) if i64::try_from(*n).is_ok() => Some(*n as i64),
+        ConstExpr::Lit(Literal {
+            kind: LitKind::Int(n),
+            ..
+        }) if i64::try_from(*n).is_ok() => Some(*n as i64),
         other => {
-            cx.err(UNSUPPORTED, other.span(), "array bounds must be integer literals");
+            cx.err(
+                UNSUPPORTED,
+                other.span(),
+                "array bounds must be integer literals",
+            );
             None
         }
     }
@@ -232,22 +367,31 @@ fn const_int(cx: &mut Cx, c: &ConstExpr) -> Option<i64> {
 
 fn init_value(cx: &mut Cx, init: &Initializer, ty: &Ty) -> Option<Init> {
     match (init, ty) {
-        (Initializer::Simple(Operand::Lit(lit)), Ty::Elem(_) | Ty::Str { .. }) => match coerce(&lit_class(lit), ty) {
-            Ok(c) => Some(Init::Const(c)),
-            Err(msg) => {
-                cx.err(BAD_INIT, lit.span, msg);
-                None
+        (Initializer::Simple(Operand::Lit(lit)), Ty::Elem(_) | Ty::Str { .. }) => {
+            match coerce(&lit_class(lit), ty) {
+                Ok(c) => Some(Init::Const(c)),
+                Err(msg) => {
+                    cx.err(BAD_INIT, lit.span, msg);
+                    None
+                }
             }
-        },
+        }
         (Initializer::Array { elems, span }, Ty::Array { dims, elem }) => {
             let total: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
             let mut out = Vec::new();
             for (count, e) in elems {
                 let n = match count {
                     None => 1,
-                    Some(Literal { kind: LitKind::Int(n), .. }) if (0..=total as i128).contains(n) => *n as i64,
+                    Some(Literal {
+                        kind: LitKind::Int(n),
+                        ..
+                    }) if (0..=total as i128).contains(n) => *n as i64,
                     Some(l) => {
-                        cx.err(BAD_INIT, l.span, "a repeat count must be a small non-negative integer");
+                        cx.err(
+                            BAD_INIT,
+                            l.span,
+                            "a repeat count must be a small non-negative integer",
+                        );
                         return None;
                     }
                 };
@@ -262,20 +406,35 @@ fn init_value(cx: &mut Cx, init: &Initializer, ty: &Ty) -> Option<Init> {
                 }
             }
             if out.len() as i64 > total {
-                cx.err(BAD_INIT, *span, format!("{} initial values for an array of {total} elements", out.len()));
+                cx.err(
+                    BAD_INIT,
+                    *span,
+                    format!(
+                        "{} initial values for an array of {total} elements",
+                        out.len()
+                    ),
+                );
                 return None;
             }
             Some(Init::Array(out))
         }
         (Initializer::Struct { fields, .. }, Ty::Fb(fb)) => {
             let Some(std) = stdfb::lookup(fb) else {
-                cx.err(UNSUPPORTED, init.span(), "initial values of user FB instances are not supported yet");
+                cx.err(
+                    UNSUPPORTED,
+                    init.span(),
+                    "initial values of user FB instances are not supported yet",
+                );
                 return None;
             };
             let mut out = Vec::new();
             for (name, v) in fields {
                 let Some((iec, e)) = std.inputs.iter().find(|(n, _)| name.is(n)) else {
-                    cx.err(UNKNOWN_MEMBER, name.span, format!("{fb} has no input `{name}`"));
+                    cx.err(
+                        UNKNOWN_MEMBER,
+                        name.span,
+                        format!("{fb} has no input `{name}`"),
+                    );
                     continue;
                 };
                 if let Some(Init::Const(c)) = init_value(cx, v, &Ty::Elem(*e)) {
@@ -285,7 +444,11 @@ fn init_value(cx: &mut Cx, init: &Initializer, ty: &Ty) -> Option<Init> {
             Some(Init::Fields(out))
         }
         _ => {
-            cx.err(BAD_INIT, init.span(), format!("this initial value does not fit type {ty}"));
+            cx.err(
+                BAD_INIT,
+                init.span(),
+                format!("this initial value does not fit type {ty}"),
+            );
             None
         }
     }
@@ -306,14 +469,19 @@ pub(crate) fn lit_class(lit: &Literal) -> LitClass {
         LitKind::Int(v) => LitClass::Int(*v),
         LitKind::Real { value, text } => LitClass::Real(*value, text.clone()),
         LitKind::Bool(b) => LitClass::Typed(Const::Bool(*b)),
-        LitKind::Time { nanos, long } => LitClass::Typed(Const::Time(*nanos, if *long { Elem::LTIME } else { Elem::TIME })),
+        LitKind::Time { nanos, long } => LitClass::Typed(Const::Time(
+            *nanos,
+            if *long { Elem::LTIME } else { Elem::TIME },
+        )),
         LitKind::Date(d) => LitClass::Typed(Const::Time(*d, Elem::DATE)),
         LitKind::Tod(t) => LitClass::Typed(Const::Time(*t, Elem::TOD)),
         LitKind::Dt(t) => LitClass::Typed(Const::Time(*t, Elem::DT)),
         LitKind::String { value, wide } => LitClass::Str(value.clone(), *wide),
         LitKind::Enum { .. } => LitClass::Unsupported("enumeration literals are not supported yet"),
     };
-    let Some(prefix) = &lit.type_prefix else { return untyped };
+    let Some(prefix) = &lit.type_prefix else {
+        return untyped;
+    };
     if prefix.is("STRING") || prefix.is("WSTRING") {
         return untyped;
     }
@@ -328,10 +496,17 @@ pub(crate) fn lit_class(lit: &Literal) -> LitClass {
 
 /// Give a literal a type, or say why it does not fit.
 pub(crate) fn coerce(lit: &LitClass, ty: &Ty) -> Result<Const, String> {
-    let mismatch = || Err(format!("expected a value of type {ty}, found {}", describe(lit)));
+    let mismatch = || {
+        Err(format!(
+            "expected a value of type {ty}, found {}",
+            describe(lit)
+        ))
+    };
     match (lit, ty) {
         (LitClass::Typed(c), _) if c.ty() == *ty => Ok(c.clone()),
-        (LitClass::Typed(Const::Str { value, wide, .. }), Ty::Str { wide: w, len }) if wide == w => {
+        (LitClass::Typed(Const::Str { value, wide, .. }), Ty::Str { wide: w, len })
+            if wide == w =>
+        {
             str_const(value, *wide, *len, ty)
         }
         (LitClass::Int(v), Ty::Elem(Elem::BOOL)) => match v {
@@ -348,21 +523,42 @@ pub(crate) fn coerce(lit: &LitClass, ty: &Ty) -> Result<Const, String> {
         }
         (LitClass::Int(v), Ty::Elem(e)) if e.is_real() => Ok(Const::Real(*v as f64, *e)),
         (LitClass::Real(v, text), Ty::Elem(e @ (Elem::REAL | Elem::LREAL))) => {
-            let v = if *e == Elem::REAL { text.replace('_', "").parse::<f32>().map(f64::from).unwrap_or(*v) } else { *v };
-            if v.is_finite() { Ok(Const::Real(v, *e)) } else { Err(format!("{text} is out of range for {}", e.name())) }
+            let v = if *e == Elem::REAL {
+                text.replace('_', "")
+                    .parse::<f32>()
+                    .map(f64::from)
+                    .unwrap_or(*v)
+            } else {
+                *v
+            };
+            if v.is_finite() {
+                Ok(Const::Real(v, *e))
+            } else {
+                Err(format!("{text} is out of range for {}", e.name()))
+            }
         }
-        (LitClass::Str(s, wide), Ty::Str { wide: w, len }) if wide == w => str_const(s, *wide, *len, ty),
+        (LitClass::Str(s, wide), Ty::Str { wide: w, len }) if wide == w => {
+            str_const(s, *wide, *len, ty)
+        }
         (LitClass::Unsupported(msg), _) => Err((*msg).to_string()),
         _ => mismatch(),
     }
 }
 
 fn str_const(s: &str, wide: bool, len: u32, ty: &Ty) -> Result<Const, String> {
-    let n = if wide { s.encode_utf16().count() } else { s.len() };
+    let n = if wide {
+        s.encode_utf16().count()
+    } else {
+        s.len()
+    };
     if n > len as usize {
         return Err(format!("the string has {n} characters; {ty} holds {len}"));
     }
-    Ok(Const::Str { value: s.to_string(), wide, len })
+    Ok(Const::Str {
+        value: s.to_string(),
+        wide,
+        len,
+    })
 }
 
 pub(crate) fn describe(lit: &LitClass) -> String {
@@ -376,36 +572,50 @@ pub(crate) fn describe(lit: &LitClass) -> String {
 }
 
 /// Refuse calls that lead back to the caller, and FBs that contain themselves.
-pub(crate) fn check_recursion(cx: &mut Cx, env: &Env, unit: &ast::CompilationUnit) {
-    // Edges: POU → POUs it calls (functions) or instantiates (FB types).
-    let mut edges: HashMap<String, Vec<(String, Span)>> = HashMap::new();
-    for item in &unit.items {
-        let ast::Item::Pou(p) = item else { continue };
-        let me = p.name.key();
-        let out = edges.entry(me.clone()).or_default();
-        if let Some(sig) = env.pou(&me) {
-            for v in &sig.vars {
-                if let Ty::Fb(t) = &v.ty {
-                    if env.pou(t).is_some() {
-                        out.push((t.clone(), p.name.span));
+pub(crate) fn check_recursion(cxs: &mut [Cx], env: &Env, units: &[&ast::CompilationUnit]) {
+    // Edges: POU → POUs it calls (functions) or instantiates (FB types), with
+    // the file and span of the reference.
+    let mut edges: HashMap<String, Vec<(String, usize, Span)>> = HashMap::new();
+    for (f, unit) in units.iter().enumerate() {
+        for item in &unit.items {
+            let ast::Item::Pou(p) = item else { continue };
+            let me = p.name.key();
+            let out = edges.entry(me.clone()).or_default();
+            if let Some(sig) = env.pou(&me) {
+                for v in &sig.vars {
+                    if let Ty::Fb(t) = &v.ty {
+                        if env.pou(t).is_some() {
+                            out.push((t.clone(), f, p.name.span));
+                        }
                     }
                 }
             }
+            let mut calls = Vec::new();
+            collect_calls(&p.body, env, &mut calls);
+            out.extend(calls.into_iter().map(|(k, s)| (k, f, s)));
         }
-        collect_calls(&p.body, env, out);
     }
     let mut reported = HashSet::new();
-    for start in edges.keys() {
+    let mut starts: Vec<&String> = edges.keys().collect();
+    starts.sort();
+    for start in starts {
         // Depth-first search for a path back to `start`.
         let mut stack = vec![(start.clone(), vec![start.clone()])];
         let mut visited = HashSet::new();
         while let Some((node, path)) = stack.pop() {
-            for (next, span) in edges.get(&node).into_iter().flatten() {
+            for (next, f, span) in edges.get(&node).into_iter().flatten() {
                 if next == start {
                     if reported.insert(start.clone()) {
-                        let mut names: Vec<String> = path.iter().map(|k| env.pou(k).map_or(k.clone(), |s| s.name.clone())).collect();
+                        let mut names: Vec<String> = path
+                            .iter()
+                            .map(|k| env.pou(k).map_or(k.clone(), |s| s.name.clone()))
+                            .collect();
                         names.push(env.pou(start).map_or(start.clone(), |s| s.name.clone()));
-                        cx.err(RECURSION, *span, format!("recursion is not allowed: {}", names.join(" → ")));
+                        cxs[*f].err(
+                            RECURSION,
+                            *span,
+                            format!("recursion is not allowed: {}", names.join(" → ")),
+                        );
                     }
                 } else if visited.insert(next.clone()) {
                     let mut p = path.clone();
@@ -421,9 +631,17 @@ fn collect_calls(body: &[ast::Stmt], env: &Env, out: &mut Vec<(String, Span)>) {
     for s in body {
         let ast::Stmt::Instr(i) = s else { continue };
         match &i.kind {
-            ast::InstrKind::FnCall { name, .. } if env.pou(&name.name).is_some() => out.push((name.key(), name.span)),
-            ast::InstrKind::Call { target: Operand::Var(v), .. } if v.path.is_empty() => {
-                if env.pou(&v.base.name).is_some_and(|s| s.kind == PouKind::Function) {
+            ast::InstrKind::FnCall { name, .. } if env.pou(&name.name).is_some() => {
+                out.push((name.key(), name.span))
+            }
+            ast::InstrKind::Call {
+                target: Operand::Var(v),
+                ..
+            } if v.path.is_empty() => {
+                if env
+                    .pou(&v.base.name)
+                    .is_some_and(|s| s.kind == PouKind::Function)
+                {
                     out.push((v.base.key(), v.base.span));
                 }
             }

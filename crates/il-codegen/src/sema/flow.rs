@@ -10,7 +10,10 @@ use super::decls::{Env, LitClass, PouSig, coerce, describe, lit_class};
 use super::ir::{self, BinOp, CheckedPou, Const, Expr, Op, PathElem, Place, Root, Value};
 use super::types::{Elem, Ty};
 use super::{Cx, stdfb, stdfn, suggest};
-use crate::ast::{self, Accessor, CallArgs, Cond, ExprOp, FbInputOp, InstrKind, Operand, ParamKind, PouKind, Span, VarRef};
+use crate::ast::{
+    self, Accessor, CallArgs, Cond, ExprOp, FbInputOp, InstrKind, Operand, ParamKind, PouKind,
+    Span, VarRef,
+};
 use std::collections::HashMap;
 
 /// The CR at a point of the body.
@@ -59,8 +62,12 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
     for s in &pou.body {
         if let ast::Stmt::Label(id) = s {
             if let Some(&prev) = labels.get(&id.key()) {
-                cx.err(DUPLICATE_LABEL, id.span, format!("label `{id}` is defined twice"))
-                    .add_secondary(label_spans[prev], "first defined here");
+                cx.err(
+                    DUPLICATE_LABEL,
+                    id.span,
+                    format!("label `{id}` is defined twice"),
+                )
+                .add_secondary(label_spans[prev], "first defined here");
             } else {
                 labels.insert(id.key(), label_spans.len());
                 label_spans.push(id.span);
@@ -100,8 +107,17 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
     for (i, used) in w.jumped.iter().enumerate() {
         if !used {
             let span = label_spans[i];
-            let name = w.cx.file.snippet(span).trim_end_matches(':').trim().to_string();
-            w.cx.warn(UNUSED_LABEL, span, format!("label `{name}` is never jumped to"));
+            let name =
+                w.cx.file
+                    .snippet(span)
+                    .trim_end_matches(':')
+                    .trim()
+                    .to_string();
+            w.cx.warn(
+                UNUSED_LABEL,
+                span,
+                format!("label `{name}` is never jumped to"),
+            );
         }
     }
     Some(CheckedPou {
@@ -118,7 +134,9 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
 
 /// The CR after a label, from the CR on every edge into it.
 fn join(edges: &[(Span, Class, u32)]) -> Cr {
-    let Some((_, first, _)) = edges.first() else { return Cr::Dead };
+    let Some((_, first, _)) = edges.first() else {
+        return Cr::Dead;
+    };
     let mut ty: Option<Ty> = None;
     let mut lit: Option<Class> = None;
     let mut bad = false;
@@ -143,7 +161,12 @@ fn join(edges: &[(Span, Class, u32)]) -> Cr {
             (Some(t), Some(l)) if lit_fits(&l, &t) => return Cr::Val(t),
             (None, Some(Class::LitInt)) => return Cr::Val(Ty::Elem(Elem::DINT)),
             (None, Some(Class::LitReal)) => return Cr::Val(Ty::Elem(Elem::LREAL)),
-            (None, Some(Class::LitStr(w))) => return Cr::Val(Ty::Str { wide: w, len: super::types::DEFAULT_STRING_LEN }),
+            (None, Some(Class::LitStr(w))) => {
+                return Cr::Val(Ty::Str {
+                    wide: w,
+                    len: super::types::DEFAULT_STRING_LEN,
+                });
+            }
             _ => {}
         }
     }
@@ -191,8 +214,17 @@ struct Walk<'a, 'c> {
 }
 
 impl Walk<'_, '_> {
-    fn err(&mut self, code: &'static str, span: Span, msg: impl Into<String>) -> Option<&mut crate::diag::Diagnostic> {
-        if self.final_pass { Some(self.cx.err(code, span, msg)) } else { None }
+    fn err(
+        &mut self,
+        code: &'static str,
+        span: Span,
+        msg: impl Into<String>,
+    ) -> Option<&mut crate::diag::Diagnostic> {
+        if self.final_pass {
+            Some(self.cx.err(code, span, msg))
+        } else {
+            None
+        }
     }
 
     fn push(&mut self, op: Op) {
@@ -201,7 +233,10 @@ impl Walk<'_, '_> {
                 self.cr_types.push(ty.clone());
             }
         }
-        self.out.push(ir::Stmt { op, line: self.line });
+        self.out.push(ir::Stmt {
+            op,
+            line: self.line,
+        });
     }
 
     fn walk(&mut self, body: &[ast::Stmt]) {
@@ -211,7 +246,9 @@ impl Walk<'_, '_> {
         for stmt in body {
             match stmt {
                 ast::Stmt::Label(id) => {
-                    let Some(&l) = self.labels.get(&id.key()) else { continue };
+                    let Some(&l) = self.labels.get(&id.key()) else {
+                        continue;
+                    };
                     self.line = self.cx.line(id.span);
                     if cr != Cr::Dead {
                         self.edge(l, &cr, id.span);
@@ -224,7 +261,8 @@ impl Walk<'_, '_> {
                     self.line = self.cx.line(i.span);
                     if cr == Cr::Dead {
                         if !warned_dead && self.final_pass {
-                            self.cx.warn(UNREACHABLE, i.span, "this instruction can never run")
+                            self.cx
+                                .warn(UNREACHABLE, i.span, "this instruction can never run")
                                 .set_label("no label leads here after the JMP or RET above");
                         }
                         warned_dead = true;
@@ -253,7 +291,10 @@ impl Walk<'_, '_> {
         self.edges[l].push((span, class, self.line));
         if let (Cr::Lit(lit, lspan), Cr::Val(t)) = (cr, &self.label_in[l].clone()) {
             match coerce(lit, t) {
-                Ok(c) => self.push(Op::SetCr { ty: t.clone(), expr: Expr::Value(Value::Const(c)) }),
+                Ok(c) => self.push(Op::SetCr {
+                    ty: t.clone(),
+                    expr: Expr::Value(Value::Const(c)),
+                }),
                 Err(m) => {
                     let lspan = *lspan;
                     self.err(LITERAL_RANGE, lspan, m);
@@ -274,60 +315,142 @@ impl Walk<'_, '_> {
                 self.load(*negate, operand, span)
             }
             InstrKind::Store { negate, target } => {
-                let Some(place) = self.place_of(target, true) else { return cr };
-                let Some(arg) = self.use_cr(&cr, span) else { return cr };
-                let Some(value) = self.fit(arg, &place.ty, span) else { return cr };
+                let Some(place) = self.place_of(target, true) else {
+                    return cr;
+                };
+                let Some(arg) = self.use_cr(&cr, span) else {
+                    return cr;
+                };
+                let Some(value) = self.fit(arg, &place.ty, span) else {
+                    return cr;
+                };
                 if *negate && !place.ty.is_logic() {
-                    self.err(BAD_OPERATOR_TYPE, i.op_span, format!("STN needs BOOL or a bit string, not {}", place.ty));
+                    self.err(
+                        BAD_OPERATOR_TYPE,
+                        i.op_span,
+                        format!("STN needs BOOL or a bit string, not {}", place.ty),
+                    );
                     return cr;
                 }
-                self.push(Op::Store { place, value, negate: *negate });
+                self.push(Op::Store {
+                    place,
+                    value,
+                    negate: *negate,
+                });
                 cr
             }
             InstrKind::Set { target } | InstrKind::Reset { target } => {
                 let set = matches!(i.kind, InstrKind::Set { .. });
-                let fbs: &[&str] = if set { &["RS"] } else { &["SR", "CTU", "CTUD", "CTU_DINT", "CTU_LINT", "CTU_UDINT", "CTU_ULINT", "CTUD_DINT", "CTUD_LINT", "CTUD_UDINT", "CTUD_ULINT"] };
+                let fbs: &[&str] = if set {
+                    &["RS"]
+                } else {
+                    &[
+                        "SR",
+                        "CTU",
+                        "CTUD",
+                        "CTU_DINT",
+                        "CTU_LINT",
+                        "CTU_UDINT",
+                        "CTU_ULINT",
+                        "CTUD_DINT",
+                        "CTUD_LINT",
+                        "CTUD_UDINT",
+                        "CTUD_ULINT",
+                    ]
+                };
                 if let Some(inst) = self.fb_operand(target, fbs) {
                     return self.fb_input(inst, if set { "S" } else { "R" }, cr, span);
                 }
                 if let Some(inst) = self.fb_operand(target, &[]) {
                     let which = if set { "S" } else { "R" };
-                    self.err(BAD_INPUT_OP, target.span(), format!("`{which}` is not an input operator of {} (an instance of {})", self.cx.file.snippet(target.span()), fb_name(&inst.ty)));
+                    self.err(
+                        BAD_INPUT_OP,
+                        target.span(),
+                        format!(
+                            "`{which}` is not an input operator of {} (an instance of {})",
+                            self.cx.file.snippet(target.span()),
+                            fb_name(&inst.ty)
+                        ),
+                    );
                     return cr;
                 }
-                let Some(place) = self.place_of(target, true) else { return cr };
+                let Some(place) = self.place_of(target, true) else {
+                    return cr;
+                };
                 if !place.ty.is_bool() {
-                    self.err(BAD_OPERATOR_TYPE, target.span(), format!("S and R set or reset a BOOL; this is {}", place.ty));
+                    self.err(
+                        BAD_OPERATOR_TYPE,
+                        target.span(),
+                        format!("S and R set or reset a BOOL; this is {}", place.ty),
+                    );
                     return cr;
                 }
-                let Some(cond) = self.cond_value(&cr, span) else { return cr };
-                self.push(Op::SetIf { place, value: set, cond });
+                let Some(cond) = self.cond_value(&cr, span) else {
+                    return cr;
+                };
+                self.push(Op::SetIf {
+                    place,
+                    value: set,
+                    cond,
+                });
                 Cr::Val(Ty::BOOL)
             }
             InstrKind::Not => {
-                let Some(arg) = self.use_cr(&cr, span) else { return cr };
+                let Some(arg) = self.use_cr(&cr, span) else {
+                    return cr;
+                };
                 match arg {
                     Arg::Typed(v, t) if t.is_logic() => {
-                        self.push(Op::SetCr { ty: t.clone(), expr: Expr::Not(v) });
+                        self.push(Op::SetCr {
+                            ty: t.clone(),
+                            expr: Expr::Not(v),
+                        });
                         Cr::Val(t)
                     }
                     Arg::Typed(_, t) => {
-                        self.err(BAD_OPERATOR_TYPE, i.op_span, format!("NOT needs a BOOL or bit-string current result; it is {t}"));
+                        self.err(
+                            BAD_OPERATOR_TYPE,
+                            i.op_span,
+                            format!("NOT needs a BOOL or bit-string current result; it is {t}"),
+                        );
                         Cr::Val(t)
                     }
                     Arg::Lit(l, _) => {
-                        self.err(BAD_OPERATOR_TYPE, i.op_span, format!("NOT of {}: give the literal a type (BOOL#1, WORD#16#FF)", describe(&l)));
+                        self.err(
+                            BAD_OPERATOR_TYPE,
+                            i.op_span,
+                            format!(
+                                "NOT of {}: give the literal a type (BOOL#1, WORD#16#FF)",
+                                describe(&l)
+                            ),
+                        );
                         cr
                     }
                 }
             }
-            InstrKind::Expr { op, negate, operand } => {
-                let Some(lhs) = self.use_cr(&cr, span) else { return Cr::Undef(Why::Start) };
-                let Some(rhs) = self.operand(operand) else { return Cr::Undef(Why::Start) };
+            InstrKind::Expr {
+                op,
+                negate,
+                operand,
+            } => {
+                let Some(lhs) = self.use_cr(&cr, span) else {
+                    return Cr::Undef(Why::Start);
+                };
+                let Some(rhs) = self.operand(operand) else {
+                    return Cr::Undef(Why::Start);
+                };
                 self.binary(*op, *negate, lhs, rhs, i.op_span)
             }
-            InstrKind::Deferred { op, negate, first, body, close_span } => {
-                let Some(lhs) = self.use_cr(&cr, span) else { return Cr::Undef(Why::Start) };
+            InstrKind::Deferred {
+                op,
+                negate,
+                first,
+                body,
+                close_span,
+            } => {
+                let Some(lhs) = self.use_cr(&cr, span) else {
+                    return Cr::Undef(Why::Start);
+                };
                 let lhs = match lhs {
                     Arg::Typed(v, t) => {
                         let slot = self.save_types.len();
@@ -344,12 +467,18 @@ impl Walk<'_, '_> {
                 for s in body {
                     match s {
                         ast::Stmt::Label(id) => {
-                            self.err(IN_PARENS, id.span, "a label is not allowed inside parentheses");
+                            self.err(
+                                IN_PARENS,
+                                id.span,
+                                "a label is not allowed inside parentheses",
+                            );
                         }
                         ast::Stmt::Instr(ii) => inner = self.instr(ii, inner, true),
                     }
                 }
-                let Some(rhs) = self.use_cr(&inner, *close_span) else { return Cr::Undef(Why::Start) };
+                let Some(rhs) = self.use_cr(&inner, *close_span) else {
+                    return Cr::Undef(Why::Start);
+                };
                 self.binary(*op, *negate, lhs, rhs, i.op_span)
             }
             InstrKind::Jump { cond, label } => {
@@ -359,8 +488,13 @@ impl Walk<'_, '_> {
                 }
                 let Some(&l) = self.labels.get(&label.key()) else {
                     let names: Vec<String> = self.labels.keys().cloned().collect();
-                    let hint = suggest(&label.name, names.iter().map(String::as_str)).map(|s| format!("did you mean `{s}`?"));
-                    if let Some(d) = self.err(UNKNOWN_LABEL, label.span, format!("no label `{label}` in {}", self.sig.name)) {
+                    let hint = suggest(&label.name, names.iter().map(String::as_str))
+                        .map(|s| format!("did you mean `{s}`?"));
+                    if let Some(d) = self.err(
+                        UNKNOWN_LABEL,
+                        label.span,
+                        format!("no label `{label}` in {}", self.sig.name),
+                    ) {
                         d.help = hint;
                     }
                     return if *cond == Cond::Always { Cr::Dead } else { cr };
@@ -369,14 +503,22 @@ impl Walk<'_, '_> {
                 match cond {
                     Cond::Always => {
                         self.edge(l, &cr, span);
-                        self.push(Op::Jump { label: l, cond: None });
+                        self.push(Op::Jump {
+                            label: l,
+                            cond: None,
+                        });
                         Cr::Dead
                     }
                     c => {
-                        let Some(v) = self.cond_value(&cr, span) else { return cr };
+                        let Some(v) = self.cond_value(&cr, span) else {
+                            return cr;
+                        };
                         let after = Cr::Val(Ty::BOOL);
                         self.edge(l, &after, span);
-                        self.push(Op::Jump { label: l, cond: Some((v, *c == Cond::IfTrue)) });
+                        self.push(Op::Jump {
+                            label: l,
+                            cond: Some((v, *c == Cond::IfTrue)),
+                        });
                         after
                     }
                 }
@@ -392,8 +534,12 @@ impl Walk<'_, '_> {
                         Cr::Dead
                     }
                     c => {
-                        let Some(v) = self.cond_value(&cr, span) else { return cr };
-                        self.push(Op::Return { cond: Some((v, *c == Cond::IfTrue)) });
+                        let Some(v) = self.cond_value(&cr, span) else {
+                            return cr;
+                        };
+                        self.push(Op::Return {
+                            cond: Some((v, *c == Cond::IfTrue)),
+                        });
                         Cr::Val(Ty::BOOL)
                     }
                 }
@@ -405,18 +551,35 @@ impl Walk<'_, '_> {
                 }
                 // CAL of a FUNCTION with a formal list (3rd edition, STACK_INT).
                 if let Operand::Var(v) = target {
-                    if v.path.is_empty() && self.sig.var(&v.base.name).is_none() && self.is_function(&v.base.name) {
+                    if v.path.is_empty()
+                        && self.sig.var(&v.base.name).is_none()
+                        && self.is_function(&v.base.name)
+                    {
                         if *cond != Cond::Always {
-                            self.err(UNSUPPORTED, i.op_span, "CALC/CALCN of a FUNCTION is not supported; use JMPCN around it");
+                            self.err(
+                                UNSUPPORTED,
+                                i.op_span,
+                                "CALC/CALCN of a FUNCTION is not supported; use JMPCN around it",
+                            );
                             return cr;
                         }
                         let args = args.clone().unwrap_or(CallArgs::Formal(Vec::new()));
                         return self.fn_call(&v.base, &args, cr, span, true);
                     }
                 }
-                let Some(inst) = self.place_of(target, false) else { return Cr::Undef(Why::AfterCal(self.line)) };
+                let Some(inst) = self.place_of(target, false) else {
+                    return Cr::Undef(Why::AfterCal(self.line));
+                };
                 let Ty::Fb(fb) = inst.ty.clone() else {
-                    self.err(NOT_AN_FB, target.span(), format!("CAL needs a function block instance; `{}` is {}", self.cx.file.snippet(target.span()), inst.ty));
+                    self.err(
+                        NOT_AN_FB,
+                        target.span(),
+                        format!(
+                            "CAL needs a function block instance; `{}` is {}",
+                            self.cx.file.snippet(target.span()),
+                            inst.ty
+                        ),
+                    );
                     return Cr::Undef(Why::AfterCal(self.line));
                 };
                 let cond_v = match cond {
@@ -430,23 +593,39 @@ impl Walk<'_, '_> {
                     None => (Vec::new(), Vec::new()),
                     Some(a) => self.fb_args(&fb, a, target.span()),
                 };
-                self.push(Op::CallFb { inst, inputs, outputs, cond: cond_v });
+                self.push(Op::CallFb {
+                    inst,
+                    inputs,
+                    outputs,
+                    cond: cond_v,
+                });
                 Cr::Undef(Why::AfterCal(self.line))
             }
             InstrKind::FnCall { name, args } => self.fn_call(name, args, cr, span, false),
             InstrKind::FbInput { op, instance } => {
-                let Some(inst) = self.place_of(instance, false) else { return cr };
+                let Some(inst) = self.place_of(instance, false) else {
+                    return cr;
+                };
                 self.fb_input(inst, op_input_name(*op), cr, span)
             }
         }
     }
 
     fn load(&mut self, negate: bool, operand: &Operand, span: Span) -> Cr {
-        let Some(arg) = self.operand(operand) else { return Cr::Undef(Why::Start) };
+        let Some(arg) = self.operand(operand) else {
+            return Cr::Undef(Why::Start);
+        };
         match arg {
             Arg::Lit(l, s) if !negate => Cr::Lit(l, s),
             Arg::Lit(l, s) => {
-                self.err(BAD_OPERATOR_TYPE, s, format!("LDN of {}: give the literal a type (BOOL#1, WORD#16#FF)", describe(&l)));
+                self.err(
+                    BAD_OPERATOR_TYPE,
+                    s,
+                    format!(
+                        "LDN of {}: give the literal a type (BOOL#1, WORD#16#FF)",
+                        describe(&l)
+                    ),
+                );
                 Cr::Undef(Why::Start)
             }
             Arg::Typed(_, Ty::Fb(f)) => {
@@ -456,11 +635,18 @@ impl Walk<'_, '_> {
             }
             Arg::Typed(v, t) => {
                 if negate && !t.is_logic() {
-                    self.err(BAD_OPERATOR_TYPE, operand.span(), format!("LDN needs BOOL or a bit string; this is {t}"));
+                    self.err(
+                        BAD_OPERATOR_TYPE,
+                        operand.span(),
+                        format!("LDN needs BOOL or a bit string; this is {t}"),
+                    );
                     return Cr::Val(t);
                 }
                 let expr = if negate { Expr::Not(v) } else { Expr::Value(v) };
-                self.push(Op::SetCr { ty: t.clone(), expr });
+                self.push(Op::SetCr {
+                    ty: t.clone(),
+                    expr,
+                });
                 Cr::Val(t)
             }
         }
@@ -479,16 +665,26 @@ impl Walk<'_, '_> {
             }
             Cr::Undef(Why::AfterCal(line)) => {
                 let line = *line;
-                if let Some(d) = self.err(CR_UNDEFINED, span, format!("the current result is undefined after the CAL on line {line}")) {
-                    d.help = Some("load a value first, e.g. an output of the block: `LD inst.Q`".into());
+                if let Some(d) = self.err(
+                    CR_UNDEFINED,
+                    span,
+                    format!("the current result is undefined after the CAL on line {line}"),
+                ) {
+                    d.help =
+                        Some("load a value first, e.g. an output of the block: `LD inst.Q`".into());
                 }
                 None
             }
             Cr::Undef(Why::Mixed(paths)) => {
                 let paths = paths.clone();
-                if let Some(d) = self.err(CR_DISAGREES, span, "the current result's type differs on the paths into the label above") {
+                if let Some(d) = self.err(
+                    CR_DISAGREES,
+                    span,
+                    "the current result's type differs on the paths into the label above",
+                ) {
                     d.notes.push(format!("the paths bring: {paths}"));
-                    d.help = Some("load a value after the label before using the current result".into());
+                    d.help =
+                        Some("load a value after the label before using the current result".into());
                 }
                 None
             }
@@ -502,7 +698,13 @@ impl Walk<'_, '_> {
         match self.use_cr(cr, span)? {
             Arg::Typed(v, t) if t.is_bool() => Some(v),
             Arg::Typed(_, t) => {
-                if let Some(d) = self.err(COND_NOT_BOOL, span, format!("this instruction tests the current result, which must be BOOL; it is {t}")) {
+                if let Some(d) = self.err(
+                    COND_NOT_BOOL,
+                    span,
+                    format!(
+                        "this instruction tests the current result, which must be BOOL; it is {t}"
+                    ),
+                ) {
                     d.help = Some("compare first, e.g. `GT 0` or `EQ x`".into());
                 }
                 None
@@ -510,7 +712,10 @@ impl Walk<'_, '_> {
             Arg::Lit(l, s) => match coerce(&l, &Ty::BOOL) {
                 Ok(c) => {
                     // The CR is BOOL from here on, so it must live in its local.
-                    self.push(Op::SetCr { ty: Ty::BOOL, expr: Expr::Value(Value::Const(c)) });
+                    self.push(Op::SetCr {
+                        ty: Ty::BOOL,
+                        expr: Expr::Value(Value::Const(c)),
+                    });
                     Some(Value::Cr(Ty::BOOL))
                 }
                 Err(m) => {
@@ -526,7 +731,8 @@ impl Walk<'_, '_> {
         match arg {
             Arg::Typed(v, t) if t == *ty => Some(v),
             Arg::Typed(_, t) => {
-                if let Some(d) = self.err(TYPE_MISMATCH, span, format!("expected {ty}, found {t}")) {
+                if let Some(d) = self.err(TYPE_MISMATCH, span, format!("expected {ty}, found {t}"))
+                {
                     d.help = conversion_hint(&t, ty);
                 }
                 None
@@ -556,7 +762,11 @@ impl Walk<'_, '_> {
                 Some(Arg::Typed(Value::Read(p.clone()), p.ty))
             }
             Operand::Addr(a) => {
-                self.err(UNSUPPORTED, a.span, "direct addresses (%I, %Q, %M) are not supported yet");
+                self.err(
+                    UNSUPPORTED,
+                    a.span,
+                    "direct addresses (%I, %Q, %M) are not supported yet",
+                );
                 None
             }
         }
@@ -570,7 +780,11 @@ impl Walk<'_, '_> {
                 None
             }
             Operand::Addr(a) => {
-                self.err(UNSUPPORTED, a.span, "direct addresses (%I, %Q, %M) are not supported yet");
+                self.err(
+                    UNSUPPORTED,
+                    a.span,
+                    "direct addresses (%I, %Q, %M) are not supported yet",
+                );
                 None
             }
         }
@@ -584,10 +798,16 @@ impl Walk<'_, '_> {
             (Root::Ret, self.sig.ret.clone()?, false)
         } else if self.sig.kind == PouKind::Function && v.base.is("ENO") {
             (Root::Eno, Ty::BOOL, false)
+        } else if self.sig.poisoned.contains(&v.base.key()) {
+            return None; // its declaration was already reported
         } else {
             let names: Vec<&str> = self.sig.vars.iter().map(|v| v.name.as_str()).collect();
             let hint = suggest(&v.base.name, names).map(|s| format!("did you mean `{s}`?"));
-            let what = if self.is_function(&v.base.name) { format!("`{}` is a function, not a variable", v.base) } else { format!("unknown variable `{}`", v.base) };
+            let what = if self.is_function(&v.base.name) {
+                format!("`{}` is a function, not a variable", v.base)
+            } else {
+                format!("unknown variable `{}`", v.base)
+            };
             let pou_name = self.sig.name.clone();
             if let Some(d) = self.err(UNKNOWN_NAME, v.base.span, what) {
                 d.label = format!("not declared in {pou_name}");
@@ -604,13 +824,21 @@ impl Walk<'_, '_> {
             match acc {
                 Accessor::Field(f) => {
                     let Ty::Fb(fb) = &ty else {
-                        self.err(UNKNOWN_MEMBER, f.span, format!("`{}` is {ty}, which has no members", v.base));
+                        self.err(
+                            UNKNOWN_MEMBER,
+                            f.span,
+                            format!("`{}` is {ty}, which has no members", v.base),
+                        );
                         return None;
                     };
                     let fb = fb.clone();
                     let (name, mty, is_input) = self.member(&fb, &f.name, f.span)?;
                     if write && !is_input {
-                        self.err(NOT_WRITABLE, f.span, format!("`{name}` is an output of {fb}; only the block sets it"));
+                        self.err(
+                            NOT_WRITABLE,
+                            f.span,
+                            format!("`{name}` is an output of {fb}; only the block sets it"),
+                        );
                         return None;
                     }
                     path.push(PathElem::Field(name));
@@ -618,31 +846,57 @@ impl Walk<'_, '_> {
                 }
                 Accessor::Index(subs, span) => {
                     let Ty::Array { dims, elem } = &ty else {
-                        self.err(BAD_INDEX, *span, format!("`{}` is {ty}, not an array", v.base));
+                        self.err(
+                            BAD_INDEX,
+                            *span,
+                            format!("`{}` is {ty}, not an array", v.base),
+                        );
                         return None;
                     };
                     if subs.len() != dims.len() {
-                        self.err(BAD_INDEX, *span, format!("{} subscripts for an array of {} dimensions", subs.len(), dims.len()));
+                        self.err(
+                            BAD_INDEX,
+                            *span,
+                            format!(
+                                "{} subscripts for an array of {} dimensions",
+                                subs.len(),
+                                dims.len()
+                            ),
+                        );
                         return None;
                     }
                     let (dims, elem) = (dims.clone(), (**elem).clone());
                     let mut vals = Vec::new();
                     for (s, (lo, hi)) in subs.iter().zip(&dims) {
                         match self.operand(s)? {
-                            Arg::Typed(val, t) if t.elem().is_some_and(Elem::is_int) => vals.push(val),
+                            Arg::Typed(val, t) if t.elem().is_some_and(Elem::is_int) => {
+                                vals.push(val)
+                            }
                             Arg::Typed(_, t) => {
-                                self.err(BAD_INDEX, s.span(), format!("a subscript must be an integer, not {t}"));
+                                self.err(
+                                    BAD_INDEX,
+                                    s.span(),
+                                    format!("a subscript must be an integer, not {t}"),
+                                );
                                 return None;
                             }
                             Arg::Lit(LitClass::Int(n), sp) => {
                                 if n < *lo as i128 || n > *hi as i128 {
-                                    self.err(BAD_INDEX, sp, format!("subscript {n} is outside the bounds {lo}..{hi}"));
+                                    self.err(
+                                        BAD_INDEX,
+                                        sp,
+                                        format!("subscript {n} is outside the bounds {lo}..{hi}"),
+                                    );
                                     return None;
                                 }
                                 vals.push(Value::Const(Const::Int(n, Elem::LINT)));
                             }
                             Arg::Lit(l, sp) => {
-                                self.err(BAD_INDEX, sp, format!("a subscript must be an integer, not {}", describe(&l)));
+                                self.err(
+                                    BAD_INDEX,
+                                    sp,
+                                    format!("a subscript must be an integer, not {}", describe(&l)),
+                                );
                                 return None;
                             }
                         }
@@ -651,13 +905,21 @@ impl Walk<'_, '_> {
                     ty = elem;
                 }
                 Accessor::Bit(_, span) => {
-                    self.err(UNSUPPORTED, *span, "bit access (`x.3`) is not supported yet");
+                    self.err(
+                        UNSUPPORTED,
+                        *span,
+                        "bit access (`x.3`) is not supported yet",
+                    );
                     return None;
                 }
             }
         }
         if write && matches!(ty, Ty::Fb(_)) {
-            self.err(NOT_WRITABLE, v.span, "cannot store to a function block instance");
+            self.err(
+                NOT_WRITABLE,
+                v.span,
+                "cannot store to a function block instance",
+            );
             return None;
         }
         Some(Place { root, path, ty })
@@ -667,8 +929,16 @@ impl Walk<'_, '_> {
     fn member(&mut self, fb: &str, name: &str, span: Span) -> Option<(String, Ty, bool)> {
         let mut all: Vec<(String, Ty, bool)> = Vec::new();
         if let Some(s) = stdfb::lookup(fb) {
-            all.extend(s.inputs.iter().map(|(n, e)| (n.to_string(), Ty::Elem(*e), true)));
-            all.extend(s.outputs.iter().map(|(n, e)| (n.to_string(), Ty::Elem(*e), false)));
+            all.extend(
+                s.inputs
+                    .iter()
+                    .map(|(n, e)| (n.to_string(), Ty::Elem(*e), true)),
+            );
+            all.extend(
+                s.outputs
+                    .iter()
+                    .map(|(n, e)| (n.to_string(), Ty::Elem(*e), false)),
+            );
         } else if let Some(sig) = self.env.pou(fb) {
             for v in &sig.vars {
                 match v.kind {
@@ -681,9 +951,14 @@ impl Walk<'_, '_> {
         if let Some(m) = all.iter().find(|(n, _, _)| n.eq_ignore_ascii_case(name)) {
             return Some(m.clone());
         }
-        let hint = suggest(name, all.iter().map(|(n, _, _)| n.as_str())).map(|s| format!("did you mean `{s}`?"));
+        let hint = suggest(name, all.iter().map(|(n, _, _)| n.as_str()))
+            .map(|s| format!("did you mean `{s}`?"));
         let list: Vec<&str> = all.iter().map(|(n, _, _)| n.as_str()).collect();
-        if let Some(d) = self.err(UNKNOWN_MEMBER, span, format!("{fb} has no input or output `{name}`")) {
+        if let Some(d) = self.err(
+            UNKNOWN_MEMBER,
+            span,
+            format!("{fb} has no input or output `{name}`"),
+        ) {
             d.notes.push(format!("{fb} has: {}", list.join(", ")));
             d.help = hint;
         }
@@ -696,7 +971,9 @@ impl Walk<'_, '_> {
         let Operand::Var(v) = o else { return None };
         let (_, var) = self.sig.var(&v.base.name)?;
         let Ty::Fb(t) = &var.ty else { return None };
-        if v.path.is_empty() && (types.is_empty() || types.iter().any(|x| x.eq_ignore_ascii_case(t))) {
+        if v.path.is_empty()
+            && (types.is_empty() || types.iter().any(|x| x.eq_ignore_ascii_case(t)))
+        {
             let saved = self.final_pass;
             let p = self.place(v, false);
             self.final_pass = saved;
@@ -708,7 +985,14 @@ impl Walk<'_, '_> {
     /// Table 54: set one input from the CR and call the instance.
     fn fb_input(&mut self, inst: Place, input: &str, cr: Cr, span: Span) -> Cr {
         let Ty::Fb(fb) = inst.ty.clone() else {
-            self.err(NOT_AN_FB, span, format!("`{input}` as an operator needs a function block instance; this is {}", inst.ty));
+            self.err(
+                NOT_AN_FB,
+                span,
+                format!(
+                    "`{input}` as an operator needs a function block instance; this is {}",
+                    inst.ty
+                ),
+            );
             return cr;
         };
         let mut all: Vec<(String, Ty)> = Vec::new();
@@ -718,28 +1002,55 @@ impl Walk<'_, '_> {
             all.extend(sig.inputs().map(|(_, v)| (v.name.clone(), v.ty.clone())));
         }
         let Some((name, ty)) = all.into_iter().find(|(n, _)| n.eq_ignore_ascii_case(input)) else {
-            self.err(BAD_INPUT_OP, span, format!("`{input}` is not an input of {fb}"));
+            self.err(
+                BAD_INPUT_OP,
+                span,
+                format!("`{input}` is not an input of {fb}"),
+            );
             return cr;
         };
-        let Some(arg) = self.use_cr(&cr, span) else { return cr };
-        let Some(value) = self.fit(arg, &ty, span) else { return cr };
-        self.push(Op::CallFb { inst, inputs: vec![(name, value)], outputs: Vec::new(), cond: None });
+        let Some(arg) = self.use_cr(&cr, span) else {
+            return cr;
+        };
+        let Some(value) = self.fit(arg, &ty, span) else {
+            return cr;
+        };
+        self.push(Op::CallFb {
+            inst,
+            inputs: vec![(name, value)],
+            outputs: Vec::new(),
+            cond: None,
+        });
         cr
     }
 
     /// The argument list of a CAL of an FB.
     #[allow(clippy::type_complexity)]
-    fn fb_args(&mut self, fb: &str, args: &CallArgs, span: Span) -> (Vec<(String, Value)>, Vec<(String, Place, bool)>) {
+    fn fb_args(
+        &mut self,
+        fb: &str,
+        args: &CallArgs,
+        span: Span,
+    ) -> (Vec<(String, Value)>, Vec<(String, Place, bool)>) {
         let mut ins = Vec::new();
         let mut outs = Vec::new();
         match args {
             CallArgs::Formal(list) => {
                 for p in list {
-                    let Some((name, ty, is_input)) = self.member(fb, &p.name.name, p.name.span) else { continue };
+                    let Some((name, ty, is_input)) = self.member(fb, &p.name.name, p.name.span)
+                    else {
+                        continue;
+                    };
                     match &p.kind {
                         ParamKind::Input(o) => {
                             if !is_input {
-                                self.err(NOT_WRITABLE, p.name.span, format!("`{name}` is an output of {fb}: use `{name} => variable`"));
+                                self.err(
+                                    NOT_WRITABLE,
+                                    p.name.span,
+                                    format!(
+                                        "`{name}` is an output of {fb}: use `{name} => variable`"
+                                    ),
+                                );
                                 continue;
                             }
                             let Some(a) = self.operand(o) else { continue };
@@ -749,16 +1060,32 @@ impl Walk<'_, '_> {
                         }
                         ParamKind::Output { negate, target } => {
                             if is_input {
-                                self.err(NOT_WRITABLE, p.name.span, format!("`{name}` is an input of {fb}: use `{name} := value`"));
+                                self.err(
+                                    NOT_WRITABLE,
+                                    p.name.span,
+                                    format!("`{name}` is an input of {fb}: use `{name} := value`"),
+                                );
                                 continue;
                             }
-                            let Some(place) = self.place_of(target, true) else { continue };
+                            let Some(place) = self.place_of(target, true) else {
+                                continue;
+                            };
                             if place.ty != ty {
-                                self.err(TYPE_MISMATCH, target.span(), format!("`{name}` is {ty}, the variable is {}", place.ty));
+                                self.err(
+                                    TYPE_MISMATCH,
+                                    target.span(),
+                                    format!("`{name}` is {ty}, the variable is {}", place.ty),
+                                );
                                 continue;
                             }
                             if *negate && !ty.is_logic() {
-                                self.err(BAD_OPERATOR_TYPE, p.span, format!("NOT needs a BOOL or bit-string output; `{name}` is {ty}"));
+                                self.err(
+                                    BAD_OPERATOR_TYPE,
+                                    p.span,
+                                    format!(
+                                        "NOT needs a BOOL or bit-string output; `{name}` is {ty}"
+                                    ),
+                                );
                                 continue;
                             }
                             outs.push((name, place, *negate));
@@ -768,14 +1095,27 @@ impl Walk<'_, '_> {
             }
             CallArgs::NonFormal(list) => {
                 let inputs: Vec<(String, Ty)> = if let Some(s) = stdfb::lookup(fb) {
-                    s.inputs.iter().map(|(n, e)| (n.to_string(), Ty::Elem(*e))).collect()
+                    s.inputs
+                        .iter()
+                        .map(|(n, e)| (n.to_string(), Ty::Elem(*e)))
+                        .collect()
                 } else if let Some(sig) = self.env.pou(fb) {
-                    sig.inputs().map(|(_, v)| (v.name.clone(), v.ty.clone())).collect()
+                    sig.inputs()
+                        .map(|(_, v)| (v.name.clone(), v.ty.clone()))
+                        .collect()
                 } else {
                     Vec::new()
                 };
                 if list.len() > inputs.len() {
-                    self.err(ARG_COUNT, span, format!("{fb} has {} inputs; {} values given", inputs.len(), list.len()));
+                    self.err(
+                        ARG_COUNT,
+                        span,
+                        format!(
+                            "{fb} has {} inputs; {} values given",
+                            inputs.len(),
+                            list.len()
+                        ),
+                    );
                 }
                 for (o, (name, ty)) in list.iter().zip(inputs) {
                     let Some(a) = self.operand(o) else { continue };
@@ -789,14 +1129,31 @@ impl Walk<'_, '_> {
     }
 
     fn is_function(&self, name: &str) -> bool {
-        self.env.pou(name).is_some_and(|s| s.kind == PouKind::Function) || stdfn::is_std(&name.to_ascii_uppercase())
+        self.env
+            .pou(name)
+            .is_some_and(|s| s.kind == PouKind::Function)
+            || stdfn::is_std(&name.to_ascii_uppercase())
     }
 
     /// A function call; `formal_only` for `CAL F(...)` (the CR is not an argument).
-    fn fn_call(&mut self, name: &ast::Ident, args: &CallArgs, cr: Cr, span: Span, formal_only: bool) -> Cr {
+    fn fn_call(
+        &mut self,
+        name: &ast::Ident,
+        args: &CallArgs,
+        cr: Cr,
+        span: Span,
+        formal_only: bool,
+    ) -> Cr {
         let bad = Cr::Undef(Why::Start);
-        if let Some(sig) = self.env.pou(&name.name).filter(|s| s.kind == PouKind::Function) {
-            let inputs: Vec<(usize, String, Ty)> = sig.inputs().map(|(i, v)| (i, v.name.clone(), v.ty.clone())).collect();
+        if let Some(sig) = self
+            .env
+            .pou(&name.name)
+            .filter(|s| s.kind == PouKind::Function)
+        {
+            let inputs: Vec<(usize, String, Ty)> = sig
+                .inputs()
+                .map(|(i, v)| (i, v.name.clone(), v.ty.clone()))
+                .collect();
             let ret = sig.ret.clone();
             let fname = sig.name.clone();
             let mut values: Vec<Option<Value>> = vec![None; inputs.len()];
@@ -810,7 +1167,9 @@ impl Walk<'_, '_> {
                         }
                         return bad;
                     }
-                    let Some(first) = self.use_cr(&cr, span) else { return bad };
+                    let Some(first) = self.use_cr(&cr, span) else {
+                        return bad;
+                    };
                     values[0] = self.fit(first, &inputs[0].2, span);
                     for (k, o) in list.iter().enumerate() {
                         let Some(a) = self.operand(o) else { return bad };
@@ -818,32 +1177,62 @@ impl Walk<'_, '_> {
                     }
                 }
                 CallArgs::NonFormal(_) => {
-                    self.err(ARG_COUNT, span, "CAL of a function needs a formal list: `CAL F(IN := x)`");
+                    self.err(
+                        ARG_COUNT,
+                        span,
+                        "CAL of a function needs a formal list: `CAL F(IN := x)`",
+                    );
                     return bad;
                 }
                 CallArgs::Formal(list) => {
                     for p in list {
                         match &p.kind {
                             ParamKind::Input(o) => {
-                                let Some(k) = inputs.iter().position(|(_, n, _)| p.name.is(n)) else {
-                                    self.err(UNKNOWN_MEMBER, p.name.span, format!("{fname} has no input `{}`", p.name));
+                                let Some(k) = inputs.iter().position(|(_, n, _)| p.name.is(n))
+                                else {
+                                    self.err(
+                                        UNKNOWN_MEMBER,
+                                        p.name.span,
+                                        format!("{fname} has no input `{}`", p.name),
+                                    );
                                     continue;
                                 };
                                 let Some(a) = self.operand(o) else { continue };
                                 values[k] = self.fit(a, &inputs[k].2, o.span());
                             }
                             ParamKind::Output { negate, target } => {
-                                let Some((_, v)) = sig.var(&p.name.name).filter(|(_, v)| v.kind == ast::VarKind::Output) else {
-                                    self.err(UNKNOWN_MEMBER, p.name.span, format!("{fname} has no output `{}`", p.name));
+                                let Some((_, v)) = sig
+                                    .var(&p.name.name)
+                                    .filter(|(_, v)| v.kind == ast::VarKind::Output)
+                                else {
+                                    self.err(
+                                        UNKNOWN_MEMBER,
+                                        p.name.span,
+                                        format!("{fname} has no output `{}`", p.name),
+                                    );
                                     continue;
                                 };
                                 let ty = v.ty.clone();
-                                let Some(place) = self.place_of(target, true) else { continue };
+                                let Some(place) = self.place_of(target, true) else {
+                                    continue;
+                                };
                                 if place.ty != ty {
-                                    self.err(TYPE_MISMATCH, target.span(), format!("`{}` is {ty}, the variable is {}", p.name, place.ty));
+                                    self.err(
+                                        TYPE_MISMATCH,
+                                        target.span(),
+                                        format!(
+                                            "`{}` is {ty}, the variable is {}",
+                                            p.name, place.ty
+                                        ),
+                                    );
                                     continue;
                                 }
-                                let k = sig.vars.iter().filter(|o| o.kind == ast::VarKind::Output).position(|o| o.name == v.name).unwrap_or(0);
+                                let k = sig
+                                    .vars
+                                    .iter()
+                                    .filter(|o| o.kind == ast::VarKind::Output)
+                                    .position(|o| o.name == v.name)
+                                    .unwrap_or(0);
                                 outputs.push((k, place, *negate));
                             }
                         }
@@ -860,8 +1249,21 @@ impl Walk<'_, '_> {
                 return bad;
             }
             let args = values.into_iter().flatten().collect();
-            let out_types = sig.vars.iter().filter(|o| o.kind == ast::VarKind::Output).map(|o| o.ty.clone()).collect();
-            self.push(Op::SetCr { ty: ret.clone(), expr: Expr::CallUser { name: fname, args, out_types, outputs } });
+            let out_types = sig
+                .vars
+                .iter()
+                .filter(|o| o.kind == ast::VarKind::Output)
+                .map(|o| o.ty.clone())
+                .collect();
+            self.push(Op::SetCr {
+                ty: ret.clone(),
+                expr: Expr::CallUser {
+                    name: fname,
+                    args,
+                    out_types,
+                    outputs,
+                },
+            });
             return Cr::Val(ret);
         }
         let key = name.key();
@@ -869,7 +1271,9 @@ impl Walk<'_, '_> {
             let mut argv: Vec<(Arg, Span)> = Vec::new();
             match args {
                 CallArgs::NonFormal(list) if !formal_only => {
-                    let Some(first) = self.use_cr(&cr, span) else { return bad };
+                    let Some(first) = self.use_cr(&cr, span) else {
+                        return bad;
+                    };
                     argv.push((first, span));
                     for o in list {
                         let Some(a) = self.operand(o) else { return bad };
@@ -877,7 +1281,11 @@ impl Walk<'_, '_> {
                     }
                 }
                 CallArgs::NonFormal(_) => {
-                    self.err(ARG_COUNT, span, "CAL of a function needs a formal list: `CAL F(IN := x)`");
+                    self.err(
+                        ARG_COUNT,
+                        span,
+                        "CAL of a function needs a formal list: `CAL F(IN := x)`",
+                    );
                     return bad;
                 }
                 CallArgs::Formal(list) => {
@@ -889,7 +1297,11 @@ impl Walk<'_, '_> {
                                 named.push((p.name.clone(), a, o.span()));
                             }
                             ParamKind::Output { .. } => {
-                                self.err(UNSUPPORTED, p.span, "standard functions have no outputs to read with `=>`");
+                                self.err(
+                                    UNSUPPORTED,
+                                    p.span,
+                                    "standard functions have no outputs to read with `=>`",
+                                );
                                 return bad;
                             }
                         }
@@ -906,12 +1318,25 @@ impl Walk<'_, '_> {
             return self.std_call(&key, argv, name.span);
         }
         let is_var = self.sig.var(&name.name).is_some();
-        let mut cands: Vec<String> = self.env.pous.values().filter(|s| s.kind == PouKind::Function).map(|s| s.name.clone()).collect();
+        let mut cands: Vec<String> = self
+            .env
+            .pous
+            .values()
+            .filter(|s| s.kind == PouKind::Function)
+            .map(|s| s.name.clone())
+            .collect();
         cands.extend(stdfn::names().map(String::from));
-        let hint = suggest(&name.name, cands.iter().map(String::as_str)).map(|s| format!("did you mean `{s}`?"));
-        if let Some(d) = self.err(UNKNOWN_FUNCTION, name.span, format!("unknown operator or function `{name}`")) {
+        let hint = suggest(&name.name, cands.iter().map(String::as_str))
+            .map(|s| format!("did you mean `{s}`?"));
+        if let Some(d) = self.err(
+            UNKNOWN_FUNCTION,
+            name.span,
+            format!("unknown operator or function `{name}`"),
+        ) {
             if is_var {
-                d.help = Some(format!("`{name}` is a variable: write `LD {name}` or `ST {name}`"));
+                d.help = Some(format!(
+                    "`{name}` is a variable: write `LD {name}` or `ST {name}`"
+                ));
             } else {
                 d.help = hint;
                 d.notes.push("a word in the operator field that is not an IL operator must name a FUNCTION; vendor built-ins are not IEC 61131-3".into());
@@ -933,10 +1358,20 @@ impl Walk<'_, '_> {
             Ok(res) => {
                 let mut values = Vec::new();
                 for ((a, s), t) in argv.into_iter().zip(&res.params) {
-                    let Some(v) = self.fit(a, t, s) else { return bad };
+                    let Some(v) = self.fit(a, t, s) else {
+                        return bad;
+                    };
                     values.push(v);
                 }
-                self.push(Op::SetCr { ty: res.ret.clone(), expr: Expr::CallStd { call: res.call, args: values, arg_types: res.params, ret: res.ret.clone() } });
+                self.push(Op::SetCr {
+                    ty: res.ret.clone(),
+                    expr: Expr::CallStd {
+                        call: res.call,
+                        args: values,
+                        arg_types: res.params,
+                        ret: res.ret.clone(),
+                    },
+                });
                 Cr::Val(res.ret)
             }
             Err(e) => {
@@ -944,7 +1379,8 @@ impl Walk<'_, '_> {
                 if let Some(d) = self.err(code, span, e.message) {
                     d.notes.push(format!("signature: {}", e.signature));
                     if e.count {
-                        d.notes.push("in IL the current result is the first argument".into());
+                        d.notes
+                            .push("in IL the current result is the first argument".into());
                     }
                 }
                 bad
@@ -961,11 +1397,22 @@ impl Walk<'_, '_> {
             return match fold(bop, negate, a, b) {
                 Ok(Folded::Lit(l)) => Cr::Lit(l, sa.to(span)),
                 Ok(Folded::Bool(v)) => {
-                    self.push(Op::SetCr { ty: Ty::BOOL, expr: Expr::Value(Value::Const(Const::Bool(v))) });
+                    self.push(Op::SetCr {
+                        ty: Ty::BOOL,
+                        expr: Expr::Value(Value::Const(Const::Bool(v))),
+                    });
                     Cr::Val(Ty::BOOL)
                 }
                 Err(m) => {
-                    self.err(if m.contains("zero") { CONST_DIV_ZERO } else { BAD_OPERATOR_TYPE }, span, m);
+                    self.err(
+                        if m.contains("zero") {
+                            CONST_DIV_ZERO
+                        } else {
+                            BAD_OPERATOR_TYPE
+                        },
+                        span,
+                        m,
+                    );
                     bad
                 }
             };
@@ -976,16 +1423,30 @@ impl Walk<'_, '_> {
                 if te.is_duration() {
                     let (rv, ne) = match r {
                         Arg::Typed(v, Ty::Elem(n)) if n.is_num() => (v.clone(), *n),
-                        Arg::Lit(LitClass::Int(n), _) if i64::try_from(*n).is_ok() => (Value::Const(Const::Int(*n, Elem::LINT)), Elem::LINT),
-                        Arg::Lit(LitClass::Real(f, _), _) => (Value::Const(Const::Real(*f, Elem::LREAL)), Elem::LREAL),
+                        Arg::Lit(LitClass::Int(n), _) if i64::try_from(*n).is_ok() => {
+                            (Value::Const(Const::Int(*n, Elem::LINT)), Elem::LINT)
+                        }
+                        Arg::Lit(LitClass::Real(f, _), _) => {
+                            (Value::Const(Const::Real(*f, Elem::LREAL)), Elem::LREAL)
+                        }
                         _ => {
-                            self.err(TYPE_MISMATCH, span, format!("{} of {} needs a number", op.name(), te.name()));
+                            self.err(
+                                TYPE_MISMATCH,
+                                span,
+                                format!("{} of {} needs a number", op.name(), te.name()),
+                            );
                             return bad;
                         }
                     };
                     self.push(Op::SetCr {
                         ty: Ty::Elem(*te),
-                        expr: Expr::TimeScale { div: bop == BinOp::Div, time: *te, lhs: lv.clone(), num: ne, rhs: rv },
+                        expr: Expr::TimeScale {
+                            div: bop == BinOp::Div,
+                            time: *te,
+                            lhs: lv.clone(),
+                            num: ne,
+                            rhs: rv,
+                        },
                     });
                     return Cr::Val(Ty::Elem(*te));
                 }
@@ -1021,15 +1482,32 @@ impl Walk<'_, '_> {
             self.err(BAD_OPERATOR_TYPE, span, m);
             return bad;
         }
-        let res = if op.is_compare() { Ty::BOOL } else { ty.clone() };
-        self.push(Op::SetCr { ty: res.clone(), expr: Expr::Bin { op: bop, ty, lhs: lv, rhs: rv, negate_rhs: negate } });
+        let res = if op.is_compare() {
+            Ty::BOOL
+        } else {
+            ty.clone()
+        };
+        self.push(Op::SetCr {
+            ty: res.clone(),
+            expr: Expr::Bin {
+                op: bop,
+                ty,
+                lhs: lv,
+                rhs: rv,
+                negate_rhs: negate,
+            },
+        });
         Cr::Val(res)
     }
 }
 
 /// Both-literal operations were handled before; this keeps the match total.
 fn unreachable_fold() -> (Ty, Value, Value) {
-    (Ty::BOOL, Value::Const(Const::Bool(false)), Value::Const(Const::Bool(false)))
+    (
+        Ty::BOOL,
+        Value::Const(Const::Bool(false)),
+        Value::Const(Const::Bool(false)),
+    )
 }
 
 fn fb_name(t: &Ty) -> String {
@@ -1046,7 +1524,11 @@ pub(crate) fn default_const(t: &Ty) -> Const {
         Ty::Elem(e) if e.int_range().is_some() => Const::Int(0, *e),
         Ty::Elem(e) if e.is_real() => Const::Real(0.0, *e),
         Ty::Elem(e) => Const::Time(0, *e),
-        Ty::Str { wide, len } => Const::Str { value: String::new(), wide: *wide, len: *len },
+        Ty::Str { wide, len } => Const::Str {
+            value: String::new(),
+            wide: *wide,
+            len: *len,
+        },
         _ => Const::Bool(false),
     }
 }
@@ -1136,12 +1618,15 @@ fn fold(op: BinOp, negate: bool, a: &LitClass, b: &LitClass) -> Result<Folded, S
                 BinOp::Add => x.checked_add(y),
                 BinOp::Sub => x.checked_sub(y),
                 BinOp::Mul => x.checked_mul(y),
-                BinOp::Div | BinOp::Mod if y == 0 => return Err("division by zero in a constant expression".into()),
+                BinOp::Div | BinOp::Mod if y == 0 => {
+                    return Err("division by zero in a constant expression".into());
+                }
                 BinOp::Div => x.checked_div(y),
                 BinOp::Mod => x.checked_rem(y),
                 _ => return Ok(Folded::Bool(cmp(x.cmp(&y)))),
             };
-            r.map(|v| Folded::Lit(Int(v))).ok_or_else(|| "constant expression overflows".into())
+            r.map(|v| Folded::Lit(Int(v)))
+                .ok_or_else(|| "constant expression overflows".into())
         }
         (Int(_) | Real(..), Int(_) | Real(..)) => {
             let f = |l: &LitClass| match l {
@@ -1155,7 +1640,9 @@ fn fold(op: BinOp, negate: bool, a: &LitClass, b: &LitClass) -> Result<Folded, S
                 BinOp::Sub => x - y,
                 BinOp::Mul => x * y,
                 BinOp::Div => x / y,
-                BinOp::And | BinOp::Or | BinOp::Xor | BinOp::Mod => return Err("this operator needs integers".into()),
+                BinOp::And | BinOp::Or | BinOp::Xor | BinOp::Mod => {
+                    return Err("this operator needs integers".into());
+                }
                 _ => return Ok(Folded::Bool(x.partial_cmp(&y).is_some_and(cmp))),
             };
             Ok(Folded::Lit(Real(r, format!("{r:?}"))))
@@ -1166,7 +1653,9 @@ fn fold(op: BinOp, negate: bool, a: &LitClass, b: &LitClass) -> Result<Folded, S
 
 /// "use INT_TO_REAL" when a conversion function exists.
 fn conversion_hint(from: &Ty, to: &Ty) -> Option<String> {
-    let (Ty::Elem(a), Ty::Elem(b)) = (from, to) else { return None };
+    let (Ty::Elem(a), Ty::Elem(b)) = (from, to) else {
+        return None;
+    };
     let name = format!("{}_TO_{}", short(*a), short(*b));
     stdfn::is_std(&name).then(|| format!("convert with `{name}`"))
 }

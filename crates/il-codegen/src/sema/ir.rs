@@ -57,7 +57,11 @@ pub enum Const {
     Real(f64, Elem),
     /// TIME/LTIME (ns), DATE (days), TOD (ns), DT (ns).
     Time(i64, Elem),
-    Str { value: String, wide: bool, len: u32 },
+    Str {
+        value: String,
+        wide: bool,
+        len: u32,
+    },
 }
 
 impl Const {
@@ -65,7 +69,10 @@ impl Const {
         match self {
             Const::Bool(_) => Ty::BOOL,
             Const::Int(_, e) | Const::Real(_, e) | Const::Time(_, e) => Ty::Elem(*e),
-            Const::Str { wide, len, .. } => Ty::Str { wide: *wide, len: *len },
+            Const::Str { wide, len, .. } => Ty::Str {
+                wide: *wide,
+                len: *len,
+            },
         }
     }
 }
@@ -93,7 +100,10 @@ pub enum PathElem {
     /// A member of an FB instance, as declared in the FB.
     Field(String),
     /// Subscripts of an array with these bounds.
-    Index { dims: Vec<(i64, i64)>, subs: Vec<Value> },
+    Index {
+        dims: Vec<(i64, i64)>,
+        subs: Vec<Value>,
+    },
 }
 
 /// Something to read.
@@ -133,15 +143,37 @@ pub enum Expr {
     Not(Value),
     /// `lhs op rhs`; `ty` is the operands' type (rhs is already complemented
     /// for ANDN etc. via `negate_rhs`). Comparisons yield BOOL.
-    Bin { op: BinOp, ty: Ty, lhs: Value, rhs: Value, negate_rhs: bool },
+    Bin {
+        op: BinOp,
+        ty: Ty,
+        lhs: Value,
+        rhs: Value,
+        negate_rhs: bool,
+    },
     /// TIME/LTIME scaled by a number: `MUL`/`DIV` with a numeric operand.
-    TimeScale { div: bool, time: Elem, lhs: Value, num: Elem, rhs: Value },
+    TimeScale {
+        div: bool,
+        time: Elem,
+        lhs: Value,
+        num: Elem,
+        rhs: Value,
+    },
     /// A call of a user FUNCTION: arguments in declaration order of its
     /// inputs; `out_types` are all its outputs, `outputs` the ones read with
     /// `=>` (index into `out_types`, target, complemented).
-    CallUser { name: String, args: Vec<Value>, out_types: Vec<Ty>, outputs: Vec<(usize, Place, bool)> },
+    CallUser {
+        name: String,
+        args: Vec<Value>,
+        out_types: Vec<Ty>,
+        outputs: Vec<(usize, Place, bool)>,
+    },
     /// A call of an il-std function.
-    CallStd { call: StdCall, args: Vec<Value>, arg_types: Vec<Ty>, ret: Ty },
+    CallStd {
+        call: StdCall,
+        args: Vec<Value>,
+        arg_types: Vec<Ty>,
+        ret: Ty,
+    },
 }
 
 /// How to call a standard function.
@@ -172,13 +204,27 @@ pub type Condition = Option<(Value, bool)>;
 #[derive(Clone, Debug, PartialEq)]
 pub enum Op {
     /// `__cr_<ty> = expr`
-    SetCr { ty: Ty, expr: Expr },
+    SetCr {
+        ty: Ty,
+        expr: Expr,
+    },
     /// `__save_n = value`
-    Save { slot: usize, value: Value },
+    Save {
+        slot: usize,
+        value: Value,
+    },
     /// `place = value` (complemented for STN).
-    Store { place: Place, value: Value, negate: bool },
+    Store {
+        place: Place,
+        value: Value,
+        negate: bool,
+    },
     /// S / R on a BOOL: `if cond { place = value }`.
-    SetIf { place: Place, value: bool, cond: Value },
+    SetIf {
+        place: Place,
+        value: bool,
+        cond: Value,
+    },
     /// Call an FB instance after setting inputs; then copy outputs.
     CallFb {
         inst: Place,
@@ -186,7 +232,12 @@ pub enum Op {
         outputs: Vec<(String, Place, bool)>,
         cond: Condition,
     },
-    Jump { label: usize, cond: Condition },
+    Jump {
+        label: usize,
+        cond: Condition,
+    },
     Label(usize),
-    Return { cond: Condition },
+    Return {
+        cond: Condition,
+    },
 }

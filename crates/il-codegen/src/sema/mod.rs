@@ -6,7 +6,6 @@ mod decls;
 mod flow;
 pub mod ir;
 mod stdfb;
-mod sig_mock;
 mod stdfn;
 pub mod types;
 
@@ -18,19 +17,44 @@ pub use codes::CODES;
 /// checked) and the diagnostics; the program may be emitted only when no
 /// diagnostic is an error.
 pub fn check(file: &SourceFile, unit: &ast::CompilationUnit) -> (ir::Program, Vec<Diagnostic>) {
-    let mut cx = Cx { file, diags: Vec::new() };
-    let env = decls::collect(&mut cx, unit);
-    let mut program = ir::Program::default();
-    for pou in unit.items.iter().filter_map(|i| match i {
-        ast::Item::Pou(p) => Some(p),
-        _ => None,
-    }) {
-        if let Some(checked) = flow::check_pou(&mut cx, &env, pou) {
-            program.pous.push(checked);
+    let (mut programs, mut diags) = check_all(&[(file, unit)]);
+    (
+        programs.pop().unwrap_or_default(),
+        diags.pop().unwrap_or_default(),
+    )
+}
+
+/// Check several files as one program (a FUNCTION_BLOCK of one file used in
+/// another). Returns one program and one diagnostic list per file.
+pub fn check_all(
+    units: &[(&SourceFile, &ast::CompilationUnit)],
+) -> (Vec<ir::Program>, Vec<Vec<Diagnostic>>) {
+    let mut cxs: Vec<Cx> = units
+        .iter()
+        .map(|(file, _)| Cx {
+            file,
+            diags: Vec::new(),
+        })
+        .collect();
+    let asts: Vec<&ast::CompilationUnit> = units.iter().map(|(_, u)| *u).collect();
+    let env = decls::collect(&mut cxs, &asts);
+    let mut programs = Vec::new();
+    for (f, unit) in asts.iter().enumerate() {
+        let mut program = ir::Program::default();
+        for pou in unit.items.iter().filter_map(|i| match i {
+            ast::Item::Pou(p) => Some(p),
+            _ => None,
+        }) {
+            if env.pou(&pou.name.name).is_some_and(|s| s.file == f) {
+                if let Some(checked) = flow::check_pou(&mut cxs[f], &env, pou) {
+                    program.pous.push(checked);
+                }
+            }
         }
+        programs.push(program);
     }
-    decls::check_recursion(&mut cx, &env, unit);
-    (program, cx.diags)
+    decls::check_recursion(&mut cxs, &env, &asts);
+    (programs, cxs.into_iter().map(|c| c.diags).collect())
 }
 
 /// What every pass shares: the file (for line numbers) and the diagnostics.
@@ -43,18 +67,31 @@ impl Cx<'_> {
     pub fn line(&self, span: Span) -> u32 {
         self.file.line_col(span.lo).0 as u32
     }
-    pub fn err(&mut self, code: &'static str, span: Span, msg: impl Into<String>) -> &mut Diagnostic {
+    pub fn err(
+        &mut self,
+        code: &'static str,
+        span: Span,
+        msg: impl Into<String>,
+    ) -> &mut Diagnostic {
         self.diags.push(Diagnostic::error(code, span, msg));
         self.diags.last_mut().expect("just pushed")
     }
-    pub fn warn(&mut self, code: &'static str, span: Span, msg: impl Into<String>) -> &mut Diagnostic {
+    pub fn warn(
+        &mut self,
+        code: &'static str,
+        span: Span,
+        msg: impl Into<String>,
+    ) -> &mut Diagnostic {
         self.diags.push(Diagnostic::warning(code, span, msg));
         self.diags.last_mut().expect("just pushed")
     }
 }
 
 /// Case-insensitive "did you mean": the closest of `candidates` to `name`.
-pub(crate) fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+pub(crate) fn suggest<'a>(
+    name: &str,
+    candidates: impl IntoIterator<Item = &'a str>,
+) -> Option<&'a str> {
     let up = name.to_ascii_uppercase();
     let mut best: Option<(usize, &str)> = None;
     for c in candidates {
@@ -85,3 +122,5 @@ fn edit_distance(a: &str, b: &str) -> usize {
 pub(crate) fn is_std_fb(name: &str) -> bool {
     stdfb::lookup(name).is_some()
 }
+
+pub(crate) use flow::default_const;

@@ -32,17 +32,52 @@ static COUNTERS: &[StdFb] = counters! {
 };
 
 static OTHERS: &[StdFb] = &[
-    StdFb { name: "SR", inputs: &[("S1", BOOL), ("R", BOOL)], outputs: &[("Q1", BOOL)] },
-    StdFb { name: "RS", inputs: &[("S", BOOL), ("R1", BOOL)], outputs: &[("Q1", BOOL)] },
-    StdFb { name: "R_TRIG", inputs: &[("CLK", BOOL)], outputs: &[("Q", BOOL)] },
-    StdFb { name: "F_TRIG", inputs: &[("CLK", BOOL)], outputs: &[("Q", BOOL)] },
-    StdFb { name: "TP", inputs: &[("IN", BOOL), ("PT", TIME)], outputs: &[("Q", BOOL), ("ET", TIME)] },
-    StdFb { name: "TON", inputs: &[("IN", BOOL), ("PT", TIME)], outputs: &[("Q", BOOL), ("ET", TIME)] },
-    StdFb { name: "TOF", inputs: &[("IN", BOOL), ("PT", TIME)], outputs: &[("Q", BOOL), ("ET", TIME)] },
-    StdFb { name: "RTC", inputs: &[("IN", BOOL), ("PDT", DT)], outputs: &[("Q", BOOL), ("CDT", DT)] },
+    StdFb {
+        name: "SR",
+        inputs: &[("S1", BOOL), ("R", BOOL)],
+        outputs: &[("Q1", BOOL)],
+    },
+    StdFb {
+        name: "RS",
+        inputs: &[("S", BOOL), ("R1", BOOL)],
+        outputs: &[("Q1", BOOL)],
+    },
+    StdFb {
+        name: "R_TRIG",
+        inputs: &[("CLK", BOOL)],
+        outputs: &[("Q", BOOL)],
+    },
+    StdFb {
+        name: "F_TRIG",
+        inputs: &[("CLK", BOOL)],
+        outputs: &[("Q", BOOL)],
+    },
+    StdFb {
+        name: "TP",
+        inputs: &[("IN", BOOL), ("PT", TIME)],
+        outputs: &[("Q", BOOL), ("ET", TIME)],
+    },
+    StdFb {
+        name: "TON",
+        inputs: &[("IN", BOOL), ("PT", TIME)],
+        outputs: &[("Q", BOOL), ("ET", TIME)],
+    },
+    StdFb {
+        name: "TOF",
+        inputs: &[("IN", BOOL), ("PT", TIME)],
+        outputs: &[("Q", BOOL), ("ET", TIME)],
+    },
+    StdFb {
+        name: "RTC",
+        inputs: &[("IN", BOOL), ("PDT", DT)],
+        outputs: &[("Q", BOOL), ("CDT", DT)],
+    },
 ];
 
 /// Look a standard FB up by name (case-insensitive).
 pub fn lookup(name: &str) -> Option<&'static StdFb> {
-    COUNTERS.iter().chain(OTHERS).find(|f| f.name.eq_ignore_ascii_case(name))
+    COUNTERS
+        .iter()
+        .chain(OTHERS)
+        .find(|f| f.name.eq_ignore_ascii_case(name))
 }

@@ -6,7 +6,7 @@ use super::decls::LitClass;
 use super::ir::StdCall;
 use super::types::{DEFAULT_STRING_LEN, Elem, Ty};
 use crate::ast::{Ident, Span};
-use super::sig_mock::{self as sig, Class, Ext, ParamTy, Signature};
+use il_std::signature::{self as sig, Class, Ext, ParamTy, Signature};
 
 pub(crate) fn is_std(key: &str) -> bool {
     sig::lookup(key).is_some()
@@ -39,8 +39,14 @@ pub(crate) struct ResolveError {
 
 fn to_ty(e: sig::Elem) -> Ty {
     match e {
-        sig::Elem::STRING => Ty::Str { wide: false, len: DEFAULT_STRING_LEN },
-        sig::Elem::WSTRING => Ty::Str { wide: true, len: DEFAULT_STRING_LEN },
+        sig::Elem::STRING => Ty::Str {
+            wide: false,
+            len: DEFAULT_STRING_LEN,
+        },
+        sig::Elem::WSTRING => Ty::Str {
+            wide: true,
+            len: DEFAULT_STRING_LEN,
+        },
         e => Elem::from_name(e.name()).map(Ty::Elem).unwrap_or(Ty::BOOL),
     }
 }
@@ -49,7 +55,11 @@ fn in_class(t: &Ty, c: Class) -> bool {
     match t {
         Ty::Elem(e) => sig::Elem::from_name(e.name()).is_some_and(|s| s.class_member(c)),
         Ty::Str { wide, .. } => {
-            let s = if *wide { sig::Elem::WSTRING } else { sig::Elem::STRING };
+            let s = if *wide {
+                sig::Elem::WSTRING
+            } else {
+                sig::Elem::STRING
+            };
             s.class_member(c)
         }
         _ => false,
@@ -62,8 +72,16 @@ pub(crate) fn describe(s: &Signature) -> String {
         ParamTy::Concrete(e) => e.name().to_string(),
         ParamTy::T(c) | ParamTy::Other(c) => format!("{c:?}"),
     };
-    let params: Vec<String> = s.params.iter().map(|p| format!("{} : {}", p.name, ty(&p.ty))).collect();
-    let more = if matches!(s.ext, Ext::Fixed) { "" } else { ", ..." };
+    let params: Vec<String> = s
+        .params
+        .iter()
+        .map(|p| format!("{} : {}", p.name, ty(&p.ty)))
+        .collect();
+    let more = if matches!(s.ext, Ext::Fixed) {
+        ""
+    } else {
+        ", ..."
+    };
     format!("{}({}{more}) : {}", s.name, params.join(", "), ty(&s.ret))
 }
 
@@ -78,18 +96,31 @@ fn param_of(s: &Signature, i: usize) -> Option<&ParamTy> {
 fn lit_default(l: &LitClass, c: Option<Class>) -> Option<Ty> {
     let pick = |t: Ty| (c.is_none_or(|c| in_class(&t, c))).then_some(t);
     match l {
-        LitClass::Int(_) => pick(Ty::Elem(Elem::DINT)).or_else(|| pick(Ty::Elem(Elem::LREAL))).or_else(|| pick(Ty::Elem(Elem::DWORD))),
+        LitClass::Int(_) => pick(Ty::Elem(Elem::DINT))
+            .or_else(|| pick(Ty::Elem(Elem::LREAL)))
+            .or_else(|| pick(Ty::Elem(Elem::DWORD))),
         LitClass::Real(..) => pick(Ty::Elem(Elem::LREAL)),
-        LitClass::Str(_, w) => pick(Ty::Str { wide: *w, len: DEFAULT_STRING_LEN }),
+        LitClass::Str(_, w) => pick(Ty::Str {
+            wide: *w,
+            len: DEFAULT_STRING_LEN,
+        }),
         LitClass::Typed(c2) => pick(c2.ty()),
         LitClass::Unsupported(_) => None,
     }
 }
 
 pub(crate) fn resolve(key: &str, args: &[ArgShape]) -> Result<Resolved, ResolveError> {
-    let s = sig::lookup(key).ok_or_else(|| ResolveError { count: false, message: format!("unknown function {key}"), signature: String::new() })?;
+    let s = sig::lookup(key).ok_or_else(|| ResolveError {
+        count: false,
+        message: format!("unknown function {key}"),
+        signature: String::new(),
+    })?;
     let signature = describe(s);
-    let err = |count: bool, message: String| ResolveError { count, message, signature: signature.clone() };
+    let err = |count: bool, message: String| ResolveError {
+        count,
+        message,
+        signature: signature.clone(),
+    };
     let n = args.len();
     let arity_ok = match s.ext {
         Ext::Fixed => n == s.params.len(),
@@ -101,33 +132,49 @@ pub(crate) fn resolve(key: &str, args: &[ArgShape]) -> Result<Resolved, ResolveE
             Ext::Fixed => format!("{}", s.params.len()),
             _ => "at least 2".to_string(),
         };
-        return Err(err(true, format!("{} takes {want} arguments; this call gives {n}", s.name)));
+        return Err(err(
+            true,
+            format!("{} takes {want} arguments; this call gives {n}", s.name),
+        ));
     }
     // Bind the generic T from the typed arguments.
     let mut t: Option<Ty> = None;
     let mut t_class = None;
     for (i, a) in args.iter().enumerate() {
-        let Some(ParamTy::T(c)) = param_of(s, i) else { continue };
+        let Some(ParamTy::T(c)) = param_of(s, i) else {
+            continue;
+        };
         t_class = Some(*c);
         if let ArgShape::Ty(ty) = a {
             match &t {
                 None => t = Some(ty.clone()),
                 Some(u) if u == ty => {}
-                Some(u) => return Err(err(false, format!("{} needs arguments of one type; found {u} and {ty}", s.name))),
+                Some(u) => {
+                    return Err(err(
+                        false,
+                        format!("{} needs arguments of one type; found {u} and {ty}", s.name),
+                    ));
+                }
             }
         }
     }
     if t.is_none() {
         if let Some(c) = t_class {
-            t = args.iter().enumerate().find_map(|(i, a)| match (param_of(s, i), a) {
-                (Some(ParamTy::T(_)), ArgShape::Lit(l)) => lit_default(l, Some(c)),
-                _ => None,
-            });
+            t = args
+                .iter()
+                .enumerate()
+                .find_map(|(i, a)| match (param_of(s, i), a) {
+                    (Some(ParamTy::T(_)), ArgShape::Lit(l)) => lit_default(l, Some(c)),
+                    _ => None,
+                });
         }
     }
     if let (Some(t), Some(c)) = (&t, t_class) {
         if !in_class(t, c) {
-            return Err(err(false, format!("{} is not defined for {t} (needs {c:?})", s.name)));
+            return Err(err(
+                false,
+                format!("{} is not defined for {t} (needs {c:?})", s.name),
+            ));
         }
     }
     let mut params = Vec::new();
@@ -136,27 +183,53 @@ pub(crate) fn resolve(key: &str, args: &[ArgShape]) -> Result<Resolved, ResolveE
         let ty = match p {
             ParamTy::Concrete(e) => match (e, a) {
                 // Any string length fits a STRING parameter.
-                (sig::Elem::STRING | sig::Elem::WSTRING, ArgShape::Ty(ty @ Ty::Str { .. })) if in_class(ty, Class::AnyString) => ty.clone(),
+                (sig::Elem::STRING | sig::Elem::WSTRING, ArgShape::Ty(ty @ Ty::Str { .. }))
+                    if in_class(ty, Class::AnyString) =>
+                {
+                    ty.clone()
+                }
                 _ => to_ty(*e),
             },
-            ParamTy::T(_) => t.clone().ok_or_else(|| err(false, "cannot tell the argument type".into()))?,
+            ParamTy::T(_) => t
+                .clone()
+                .ok_or_else(|| err(false, "cannot tell the argument type".into()))?,
             ParamTy::Other(c) => match a {
                 ArgShape::Ty(ty) if in_class(ty, *c) => ty.clone(),
-                ArgShape::Ty(ty) => return Err(err(false, format!("argument {} of {} must be {c:?}, not {ty}", i + 1, s.name))),
-                ArgShape::Lit(l) => lit_default(l, Some(*c)).ok_or_else(|| err(false, format!("argument {} of {} must be {c:?}", i + 1, s.name)))?,
+                ArgShape::Ty(ty) => {
+                    return Err(err(
+                        false,
+                        format!("argument {} of {} must be {c:?}, not {ty}", i + 1, s.name),
+                    ));
+                }
+                ArgShape::Lit(l) => lit_default(l, Some(*c)).ok_or_else(|| {
+                    err(
+                        false,
+                        format!("argument {} of {} must be {c:?}", i + 1, s.name),
+                    )
+                })?,
             },
         };
         if let ArgShape::Ty(have) = a {
             if *have != ty {
-                return Err(err(false, format!("argument {} of {} must be {ty}, not {have}", i + 1, s.name)));
+                return Err(err(
+                    false,
+                    format!("argument {} of {} must be {ty}, not {have}", i + 1, s.name),
+                ));
             }
         }
         params.push(ty);
     }
     let ret = match &s.ret {
         ParamTy::Concrete(e) => to_ty(*e),
-        ParamTy::T(_) => t.clone().ok_or_else(|| err(false, "cannot tell the result type".into()))?,
-        ParamTy::Other(_) => return Err(err(false, format!("{} has a result type that cannot be inferred", s.name))),
+        ParamTy::T(_) => t
+            .clone()
+            .ok_or_else(|| err(false, "cannot tell the result type".into()))?,
+        ParamTy::Other(_) => {
+            return Err(err(
+                false,
+                format!("{} has a result type that cannot be inferred", s.name),
+            ));
+        }
     };
     let call = match s.ext {
         Ext::Fixed => StdCall::Plain(s.name),
@@ -170,8 +243,13 @@ pub(crate) fn resolve(key: &str, args: &[ArgShape]) -> Result<Resolved, ResolveE
 /// Order the arguments of a formal call (`LIMIT(MN := 0, IN := x, MX := 9)`)
 /// by the signature's parameter names.
 #[allow(clippy::type_complexity)]
-pub(crate) fn order_formal<A>(key: &str, named: Vec<(Ident, A, Span)>) -> Result<Vec<(A, Span)>, (Option<Span>, String)> {
-    let Some(s) = sig::lookup(key) else { return Err((None, format!("unknown function {key}"))) };
+pub(crate) fn order_formal<A>(
+    key: &str,
+    named: Vec<(Ident, A, Span)>,
+) -> Result<Vec<(A, Span)>, (Option<Span>, String)> {
+    let Some(s) = sig::lookup(key) else {
+        return Err((None, format!("unknown function {key}")));
+    };
     let mut slots: Vec<Option<(A, Span)>> = Vec::new();
     let extensible = !matches!(s.ext, Ext::Fixed);
     for (name, a, sp) in named {
@@ -179,18 +257,31 @@ pub(crate) fn order_formal<A>(key: &str, named: Vec<(Ident, A, Span)>) -> Result
             // IN1, IN2, ... beyond the listed ones for extensible functions.
             let up = name.key();
             let n: usize = up.strip_prefix("IN")?.parse().ok()?;
-            let first = s.params.iter().position(|p| p.name.eq_ignore_ascii_case("IN1"))?;
+            let first = s
+                .params
+                .iter()
+                .position(|p| p.name.eq_ignore_ascii_case("IN1"))?;
             (extensible && n >= 1).then_some(first + n - 1)
         });
         let Some(pos) = pos else {
             let names: Vec<&str> = s.params.iter().map(|p| p.name).collect();
-            return Err((Some(name.span), format!("{} has no parameter `{name}` (it has {})", s.name, names.join(", "))));
+            return Err((
+                Some(name.span),
+                format!(
+                    "{} has no parameter `{name}` (it has {})",
+                    s.name,
+                    names.join(", ")
+                ),
+            ));
         };
         if slots.len() <= pos {
             slots.resize_with(pos + 1, || None);
         }
         if slots[pos].is_some() {
-            return Err((Some(name.span), format!("parameter `{name}` is given twice")));
+            return Err((
+                Some(name.span),
+                format!("parameter `{name}` is given twice"),
+            ));
         }
         slots[pos] = Some((a, sp));
     }
@@ -199,11 +290,23 @@ pub(crate) fn order_formal<A>(key: &str, named: Vec<(Ident, A, Span)>) -> Result
     for (i, s2) in slots.into_iter().enumerate() {
         match s2 {
             Some(x) => out.push(x),
-            None => return Err((None, format!("{} needs parameter `{}`", s.name, s.params.get(i).map_or("?", |p| p.name)))),
+            None => {
+                return Err((
+                    None,
+                    format!(
+                        "{} needs parameter `{}`",
+                        s.name,
+                        s.params.get(i).map_or("?", |p| p.name)
+                    ),
+                ));
+            }
         }
     }
     if !extensible && given < s.params.len() {
-        return Err((None, format!("{} needs parameter `{}`", s.name, s.params[given].name)));
+        return Err((
+            None,
+            format!("{} needs parameter `{}`", s.name, s.params[given].name),
+        ));
     }
     Ok(out)
 }

@@ -73,7 +73,10 @@ impl Elem {
     }
 
     pub fn is_int(self) -> bool {
-        matches!(self, SINT | INT | DINT | LINT | USINT | UINT | UDINT | ULINT)
+        matches!(
+            self,
+            SINT | INT | DINT | LINT | USINT | UINT | UDINT | ULINT
+        )
     }
     pub fn is_signed_int(self) -> bool {
         matches!(self, SINT | INT | DINT | LINT)
@@ -165,9 +168,15 @@ impl Elem {
 pub enum Ty {
     Elem(Elem),
     /// STRING[len] / WSTRING[len]
-    Str { wide: bool, len: u32 },
+    Str {
+        wide: bool,
+        len: u32,
+    },
     /// ARRAY[lo..hi, ...] OF elem
-    Array { dims: Vec<(i64, i64)>, elem: Box<Ty> },
+    Array {
+        dims: Vec<(i64, i64)>,
+        elem: Box<Ty>,
+    },
     /// An instance of a standard or user function block (upper-case name).
     Fb(String),
 }
@@ -241,7 +250,11 @@ impl fmt::Display for Ty {
             Ty::Elem(e) => f.write_str(e.name()),
             Ty::Str { wide, len } => {
                 let kw = if *wide { "WSTRING" } else { "STRING" };
-                if *len == DEFAULT_STRING_LEN { f.write_str(kw) } else { write!(f, "{kw}[{len}]") }
+                if *len == DEFAULT_STRING_LEN {
+                    f.write_str(kw)
+                } else {
+                    write!(f, "{kw}[{len}]")
+                }
             }
             Ty::Array { dims, elem } => {
                 f.write_str("ARRAY[")?;

@@ -267,6 +267,8 @@ pub fn pou(
     span: Span,
 ) -> Pou {
     let name = name.unwrap_or_else(|| Ident::new("", kw_span));
+    // A result type the lexer had to make up (`FUNCTION f :` and nothing).
+    let ret = ret.filter(|t| !matches!(t, TypeSpec::Named(n) if n.name.is_empty()));
     let Split {
         var_blocks,
         body,

@@ -229,7 +229,7 @@ fn friendly(t: &str) -> Option<String> {
         "FbIn" => "an FB input operator".into(),
         "VarKw" => "VAR".into(),
         "PouKw" => "PROGRAM".into(),
-        "EndPou" => "END_PROGRAM".into(),
+        "EndPou" => "an END_ keyword".into(),
         "Orphan" | "EndOrphan" | "MissingEndVar" | "ErrorTok" => return None,
         other => format!("`{other}`"),
     })
@@ -251,6 +251,23 @@ fn has(expected: &[String], t: &str) -> bool {
 
 fn operand_start(t: &Tok) -> bool {
     matches!(t, Tok::Ident(_) | Tok::Lit(_) | Tok::Addr(_))
+}
+
+/// Index of the first token (labels excluded) of the line that holds `toks[idx]`.
+fn line_first(file: &SourceFile, toks: &[Spanned], idx: usize) -> usize {
+    let mut i = idx;
+    while i > 0 {
+        let (_, t, h) = &toks[i - 1];
+        if matches!(t, Tok::Nl | Tok::Label(_)) {
+            break;
+        }
+        let cur = toks[i].0;
+        if file.text.get(*h..cur).is_none_or(|gap| gap.contains('\n')) {
+            break;
+        }
+        i -= 1;
+    }
+    i
 }
 
 /// Map one lalrpop error to a diagnostic (None when the lexer already
@@ -311,7 +328,8 @@ pub fn parse_error(
             token: (lo, tok, hi),
             expected,
         } => {
-            if *tok == Tok::Error {
+            // Error tokens and zero-width repairs were reported by the lexer.
+            if *tok == Tok::Error || (*lo == *hi && *tok != Tok::Nl) {
                 return None;
             }
             let (lo, hi) = (*lo, *hi);
@@ -321,27 +339,26 @@ pub fn parse_error(
                 .find(|&i| toks[i].0 == lo && toks[i].1 == *tok)
                 .unwrap_or(idx);
             let prev = idx.checked_sub(1).map(|i| &toks[i]);
-            let prev2 = idx.checked_sub(2).map(|i| &toks[i].1);
             let span = Span::new(lo, hi);
             let found = if *tok == Tok::Nl {
                 "the end of the line".to_string()
             } else {
                 format!("`{}`", snippet(lo, hi))
             };
+            if *tok != Tok::Nl && has(expected, "Ld") && line_first(file, toks, idx) == idx {
+                return Some(
+                    Diagnostic::error(
+                        code::EXPECTED_INSTRUCTION,
+                        span,
+                        format!("expected an instruction, found {found}"),
+                    )
+                    .with_label("not an IL operator"),
+                );
+            }
             if let Some((plo, ptok, phi)) = prev {
                 let op = snippet(*plo, *phi);
                 let pspan = Span::new(*plo, *phi);
-                let at_op = matches!(
-                    prev2,
-                    None | Some(
-                        Tok::Nl
-                            | Tok::Label(_)
-                            | Tok::Orphan
-                            | Tok::EndVar
-                            | Tok::EndIl
-                            | Tok::BeginIl
-                    )
-                );
+                let at_op = line_first(file, toks, idx - 1) == idx - 1;
                 match ptok {
                     Tok::Ld(_)
                     | Tok::St(_)
@@ -411,20 +428,26 @@ pub fn parse_error(
                             )),
                         );
                     }
-                    Tok::Nl | Tok::Label(_) | Tok::EndVar
-                        if !operand_start(tok) && has(expected, "Ld") =>
-                    {
-                        return Some(
-                            Diagnostic::error(
-                                code::EXPECTED_INSTRUCTION,
-                                span,
-                                format!("expected an instruction, found {found}"),
-                            )
-                            .with_label("not an IL operator"),
-                        );
-                    }
                     _ => {}
                 }
+            }
+            if has(expected, "Lit")
+                && has(expected, "Addr")
+                && has(expected, "IdentTok")
+                && !operand_start(tok)
+            {
+                let after = prev.map_or(String::new(), |(l, _, h)| {
+                    format!(" after `{}`", snippet(*l, *h))
+                });
+                return Some(
+                    Diagnostic::error(
+                        code::MISSING_OPERAND,
+                        span,
+                        format!("expected an operand{after}"),
+                    )
+                    .with_label(format!("found {found}"))
+                    .with_help("an operand is a variable, a literal or a direct address"),
+                );
             }
             if *tok == Tok::Nl && has(expected, ")") {
                 return Some(
@@ -435,11 +458,7 @@ pub fn parse_error(
             }
             if *tok == Tok::Comma && has(expected, "Nl") {
                 // `ADD cycle, 1`: an operator with an argument list (echidna dialect).
-                let line_op = toks[..idx]
-                    .iter()
-                    .rev()
-                    .take_while(|(_, t, _)| !matches!(t, Tok::Nl | Tok::Label(_)))
-                    .last();
+                let line_op = toks.get(line_first(file, toks, idx));
                 if let Some((ol, ot, oh)) = line_op
                     && !matches!(ot, Tok::Ident(_))
                 {
@@ -476,6 +495,30 @@ pub fn parse_error(
                     .with_label("not an IL operator"),
                 );
             }
+            if has(expected, "ARRAY") && has(expected, "STRUCT") {
+                let after = prev.map_or(String::new(), |(l, _, h)| {
+                    format!(" after `{}`", snippet(*l, *h))
+                });
+                return Some(
+                    Diagnostic::error(code::DECL_SYNTAX, span, format!("expected a type{after}"))
+                        .with_label(format!("found {found}"))
+                        .with_help("write a type such as `INT`, `BOOL`, `ARRAY [0..9] OF INT` or a type name"),
+                );
+            }
+            if has(expected, "AT") && has(expected, ":") {
+                let after = prev.map_or(String::new(), |(l, _, h)| {
+                    format!(" after `{}`", snippet(*l, *h))
+                });
+                return Some(
+                    Diagnostic::error(
+                        code::DECL_SYNTAX,
+                        span,
+                        format!("expected `:` and a type{after}"),
+                    )
+                    .with_label(format!("found {found}"))
+                    .with_help("declarations have the form `name : TYPE;`"),
+                );
+            }
             if has(expected, ";") {
                 // A declaration: name it.
                 let start = toks[..idx]
@@ -490,6 +533,12 @@ pub fn parse_error(
                                 | Tok::NonRetain
                                 | Tok::Struct
                                 | Tok::Type
+                                | Tok::Pou(_)
+                                | Tok::Task
+                                | Tok::Configuration
+                                | Tok::Resource
+                                | Tok::EndVar
+                                | Tok::EndResource
                         )
                     })
                     .map_or(0, |i| i + 1);
@@ -528,10 +577,50 @@ pub fn parse_error(
             } else {
                 code::SYNTAX
             };
+            let mut wanted: Vec<String> = expected.iter().filter_map(|e| friendly(e)).collect();
+            wanted.dedup();
+            let after = prev.map_or(String::new(), |(l, _, h)| {
+                format!(" after `{}`", snippet(*l, *h))
+            });
+            let msg = match wanted.len() {
+                1 => format!("expected {}{after}, found {found}", wanted[0]),
+                2..=4 => {
+                    let last = wanted.pop().unwrap_or_default();
+                    format!(
+                        "expected {} or {last}{after}, found {found}",
+                        wanted.join(", ")
+                    )
+                }
+                _ if *tok == Tok::Nl => format!("the line ends too early{after}"),
+                _ => format!("unexpected {found}"),
+            };
             Some(
-                Diagnostic::error(code_, span, format!("unexpected {found}"))
+                Diagnostic::error(code_, span, msg)
                     .with_label(format!("expected {}", expected_list(expected))),
             )
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn codes_are_unique_documented_and_in_range() {
+        let mut seen = std::collections::HashSet::new();
+        for c in CODES {
+            assert!(seen.insert(c.code), "duplicate {}", c.code);
+            let n: u32 = c
+                .code
+                .strip_prefix("IL")
+                .and_then(|n| n.parse().ok())
+                .expect(c.code);
+            assert!((1..=99).contains(&n), "{}", c.code);
+            assert_eq!(c.code.len(), 6);
+            assert!(!c.title.is_empty() && !c.title.contains('\n'));
+            assert!(c.explanation.len() > 40, "{}", c.code);
+        }
+        assert_eq!(CODES.len(), 31);
     }
 }

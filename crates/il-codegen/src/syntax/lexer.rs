@@ -136,6 +136,10 @@ pub struct Lexer<'a> {
     defer_stack: Vec<usize>,
     excess: usize,
     in_resource: bool,
+    /// Declarations: open `(`, `[` and STRUCT; ARRAY keywords in this declaration.
+    nest: usize,
+    arrays: usize,
+    nest_reported: bool,
     out: Vec<Spanned>,
     diags: Vec<Diagnostic>,
 }
@@ -328,6 +332,9 @@ pub fn lex(src: &str) -> (Vec<Spanned>, Vec<Diagnostic>) {
         defer_stack: Vec::new(),
         excess: 0,
         in_resource: false,
+        nest: 0,
+        arrays: 0,
+        nest_reported: false,
         out: Vec::new(),
         diags: Vec::new(),
     };
@@ -490,6 +497,8 @@ impl<'a> Lexer<'a> {
                     self.arg_depth = 0;
                 }
                 if self.arg_depth == 0 {
+                    self.nest = 0;
+                    self.nest_reported = false;
                     if self.dirty {
                         self.out.push((at, Tok::Nl, at + 1));
                         self.dirty = false;
@@ -497,7 +506,8 @@ impl<'a> Lexer<'a> {
                     self.op_field = true;
                 }
             }
-            Mode::Header if self.header_toks > 0 => {
+            Mode::Header => {
+                self.header_incomplete(at);
                 self.mode = Mode::Body;
                 self.op_field = true;
                 self.dirty = false;
@@ -594,7 +604,7 @@ impl<'a> Lexer<'a> {
 
     /// Close deferred parentheses left open at the end of a body.
     fn close_deferred(&mut self, at: usize) {
-        if let Some(&first) = self.defer_stack.last() {
+        if let Some(&first) = self.defer_stack.first() {
             let n = self.defer_stack.len();
             self.diag(
                 code::PAREN,
@@ -636,6 +646,9 @@ impl<'a> Lexer<'a> {
             return self.operand_token();
         }
         let start = self.pos;
+        if self.excess > 0 {
+            return self.skip_excess_line();
+        }
         match self.peek(0) {
             b')' => {
                 self.pos += 1;
@@ -678,6 +691,35 @@ impl<'a> Lexer<'a> {
                 self.operand_token();
             }
         }
+    }
+
+    /// Inside parentheses nested too deep (already reported): skip whole
+    /// lines, only counting the parentheses they open and close, so that the
+    /// parser sees neither them nor a cascade of errors.
+    fn skip_excess_line(&mut self) {
+        let start = self.pos;
+        let end = self.src[start..]
+            .find('\n')
+            .map_or(self.b.len(), |i| start + i);
+        let line = &self.src[start..end];
+        let word_len = line
+            .bytes()
+            .take_while(|&c| is_ident(c) || c == b'&')
+            .count();
+        let word = line[..word_len].to_ascii_uppercase();
+        let opens = (word.starts_with('&') || matches!(operator(&word), Some(Tok::Expr(_))))
+            && line[word_len..].trim_start().starts_with('(')
+            && !line[word_len..].trim_start().starts_with("(*");
+        if line.starts_with(')') {
+            self.excess -= 1;
+        } else if opens {
+            self.excess += 1;
+        } else if end_pou_kind(&word).is_some() {
+            // The body ends: close_deferred will report and repair.
+            self.excess = 0;
+            return self.op_word();
+        }
+        self.pos = end;
     }
 
     fn op_word(&mut self) {
@@ -833,6 +875,18 @@ impl<'a> Lexer<'a> {
                 let (s, e) = self.read_word();
                 let up = self.src[s..e].to_ascii_uppercase();
                 self.pos = start;
+                if up.starts_with("END_") && (decl_keyword(&up).is_some() || up == "END_IL") {
+                    self.pos = e;
+                    let opener = up.trim_start_matches("END_").to_string();
+                    self.diag(
+                        code::MISSING_END,
+                        s,
+                        e,
+                        format!("`{}` without a matching `{opener}`", &self.src[s..e]),
+                        "nothing to close",
+                    );
+                    return;
+                }
                 if pou_kind(&up).is_none() && up != "TYPE" && up != "CONFIGURATION" {
                     return self.start_orphan();
                 }
@@ -891,6 +945,7 @@ impl<'a> Lexer<'a> {
                 self.in_resource = false;
             }
             (Mode::Header, Tok::Var(_)) => {
+                self.header_incomplete(s);
                 self.mode = Mode::Var;
                 self.var_ret = Mode::Body;
             }
@@ -931,6 +986,20 @@ impl<'a> Lexer<'a> {
                 self.mode = Mode::Top;
                 return;
             }
+            (Mode::Config, Tok::EndConfiguration | Tok::Resource) if self.in_resource => {
+                self.diag(
+                    code::MISSING_END,
+                    s,
+                    e,
+                    "missing END_RESOURCE before this",
+                    "the resource should end before this",
+                );
+                self.out.push((s, Tok::EndResource, s));
+                self.in_resource = kw == Tok::Resource;
+                if kw == Tok::EndConfiguration {
+                    self.mode = Mode::Top;
+                }
+            }
             (Mode::Config, Tok::EndConfiguration) => self.mode = Mode::Top,
             (Mode::Config, Tok::Resource) => self.in_resource = true,
             (Mode::Config, Tok::EndResource) => self.in_resource = false,
@@ -956,7 +1025,78 @@ impl<'a> Lexer<'a> {
             }
             _ => {}
         }
+        match kw {
+            Tok::Struct | Tok::Array => {
+                if !self.nest_ok(s, e) {
+                    return;
+                }
+                if kw == Tok::Struct {
+                    self.nest += 1;
+                } else {
+                    self.arrays += 1;
+                }
+            }
+            Tok::EndStruct => self.nest = self.nest.saturating_sub(1),
+            Tok::EndVar | Tok::EndType | Tok::EndConfiguration => {
+                self.nest = 0;
+                self.arrays = 0;
+                self.nest_reported = false;
+            }
+            _ => {}
+        }
         self.push(s, kw, e);
+    }
+
+    /// Declarations nest at most MAX_DEFER_DEPTH deep; beyond, the token is
+    /// replaced by an error token (deep trees overflow the stack when dropped).
+    fn nest_ok(&mut self, lo: usize, hi: usize) -> bool {
+        if self.nest + self.arrays < MAX_DEFER_DEPTH {
+            return true;
+        }
+        if !self.nest_reported {
+            self.nest_reported = true;
+            self.diag(
+                code::TOO_DEEP,
+                lo,
+                hi,
+                format!("this declaration is nested more than {MAX_DEFER_DEPTH} deep"),
+                "too deep",
+            );
+        }
+        // Skip the rest of the declaration: one error token, so that the
+        // parser's recovery does not walk a deep stack once per token.
+        let stop = if self.mode == Mode::Body { '\n' } else { ';' };
+        let end = self.src[hi..].find(stop).map_or(self.b.len(), |i| hi + i);
+        self.pos = end;
+        self.nest = 0;
+        self.arrays = 0;
+        self.push(lo, Tok::Error, end.max(hi));
+        false
+    }
+
+    /// A POU header ends (line break or VAR): synthesize a missing name or
+    /// result type so that the rest of the POU still parses.
+    fn header_incomplete(&mut self, at: usize) {
+        match self.out.last() {
+            Some((lo, Tok::Pou(k), hi)) => {
+                let (lo, hi, k) = (*lo, *hi, *k);
+                self.diag(
+                    code::SYNTAX,
+                    lo,
+                    hi,
+                    format!(
+                        "expected the name of the {} after `{}`",
+                        k.keyword(),
+                        &self.src[lo..hi]
+                    ),
+                    "name missing",
+                );
+                self.out.push((at, Tok::Ident(String::new()), at));
+            }
+            Some((_, Tok::Colon, _)) => self.out.push((at, Tok::Ident(String::new()), at)),
+            _ => {}
+        }
+        self.header_toks += 1;
     }
 
     fn start_orphan(&mut self) {
@@ -1033,10 +1173,11 @@ impl<'a> Lexer<'a> {
                         self.defer_stack.push(start);
                         self.push(start, Tok::LParen, start + 1);
                     }
-                } else {
-                    if body {
-                        self.arg_depth += 1;
-                    }
+                } else if body {
+                    self.arg_depth += 1;
+                    self.push(start, Tok::LParen, start + 1);
+                } else if self.nest_ok(start, start + 1) {
+                    self.nest += 1;
                     self.push(start, Tok::LParen, start + 1);
                 }
             }
@@ -1044,11 +1185,35 @@ impl<'a> Lexer<'a> {
                 self.pos += 1;
                 if body && self.arg_depth > 0 {
                     self.arg_depth -= 1;
+                } else if !body {
+                    self.nest = self.nest.saturating_sub(1);
                 }
                 self.push(start, Tok::RParen, start + 1);
             }
-            b'[' => self.punct(start, 1, Tok::LBracket),
-            b']' => self.punct(start, 1, Tok::RBracket),
+            b'[' if !body => {
+                if self.nest_ok(start, start + 1) {
+                    self.nest += 1;
+                    self.punct(start, 1, Tok::LBracket);
+                }
+            }
+            b']' if !body => {
+                self.nest = self.nest.saturating_sub(1);
+                self.punct(start, 1, Tok::RBracket);
+            }
+            b';' if !body => {
+                self.arrays = 0;
+                self.punct(start, 1, Tok::Semi);
+            }
+            b'[' => {
+                if self.nest_ok(start, start + 1) {
+                    self.nest += 1;
+                    self.punct(start, 1, Tok::LBracket);
+                }
+            }
+            b']' => {
+                self.nest = self.nest.saturating_sub(1);
+                self.punct(start, 1, Tok::RBracket);
+            }
             b',' => self.punct(start, 1, Tok::Comma),
             b';' => self.punct(start, 1, Tok::Semi),
             b':' if self.peek(1) == b'=' => self.punct(start, 2, Tok::Assign),
@@ -1476,6 +1641,12 @@ impl<'a> Lexer<'a> {
             ));
         }
         self.pos = i;
+        if partial && self.mode == Mode::Body {
+            error.get_or_insert((
+                "a partly specified address (`%I*`) may only appear in a declaration".into(),
+                Some("give the full address, e.g. `%IX0.0`, or use the declared variable".into()),
+            ));
+        }
         if let Some((m, help)) = error {
             let d = self.diag(code::BAD_ADDRESS, start, i, m, "invalid address");
             d.help = help;

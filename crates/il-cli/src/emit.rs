@@ -1,0 +1,61 @@
+//! `ilc emit`: compile IL files to Rust, to stdout or into a directory.
+
+use il_codegen::diag::render::render;
+use std::io::Write;
+use std::path::Path;
+
+/// Compile `files` as one program. Diagnostics go to `err`; the Rust code to
+/// `out`, or to `<dir>/<stem>.rs` per input (written only when every file
+/// compiles, each atomically and only when changed). Returns success.
+pub fn run(
+    files: &[String],
+    dir: Option<&Path>,
+    color: bool,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> bool {
+    let mut sources = Vec::new();
+    let mut ok = true;
+    for f in files {
+        match crate::check::read_source(f) {
+            Ok(src) => sources.push(src),
+            Err(e) => {
+                let _ = writeln!(err, "{}", crate::check::error_line(color, &e));
+                ok = false;
+            }
+        }
+    }
+    if !ok {
+        return false;
+    }
+    let compiled = match il_codegen::compile_all_to_files(&sources) {
+        Ok(c) => c,
+        Err(per_file) => {
+            for (i, d) in per_file {
+                let _ = write!(err, "{}", render(&sources[i], &d, color));
+            }
+            return false;
+        }
+    };
+    for ((code, warnings), src) in compiled.iter().zip(&sources) {
+        if !warnings.is_empty() {
+            let _ = write!(err, "{}", render(src, warnings, color));
+        }
+        match dir {
+            None => {
+                let _ = out.write_all(code.as_bytes());
+            }
+            Some(d) => {
+                let stem = Path::new(&src.name)
+                    .file_stem()
+                    .map_or_else(|| "stdin".into(), |s| s.to_string_lossy().into_owned());
+                let path = d.join(format!("{stem}.rs"));
+                if let Err(e) = il_codegen::write_if_changed(&path, code) {
+                    let _ = writeln!(err, "error: cannot write `{}`: {e}", path.display());
+                    return false;
+                }
+            }
+        }
+    }
+    true
+}
