@@ -74,11 +74,7 @@ const EXPECTED: &[Entry] = &[
     ),
     // `CAL LIMIT(MN:=1,IN:=N,MX:=128)`: CAL of a function, one-line formal list.
     ok("beremiz_matiec_stack_int_il.txt", Accept),
-    gap(
-        "beremiz_matiec_weigh_il.txt",
-        Accept,
-        "BCD_TO_INT / INT_TO_BCD are standard functions, but the checker's function table does not have them yet (IL0114)",
-    ),
+    ok("beremiz_matiec_weigh_il.txt", Accept),
     // Tier 2: parser stress files that also hold Structured Text (and SFC).
     ok(
         "beremiz_matiec_basic_code.test",
