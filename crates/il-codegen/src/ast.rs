@@ -67,6 +67,8 @@ pub struct CompilationUnit {
     pub items: Vec<Item>,
 }
 
+// A file holds a handful of items; boxing the large POU would buy nothing.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum Item {
     Pou(Pou),

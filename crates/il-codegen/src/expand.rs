@@ -5,7 +5,7 @@
 //! the crate being compiled; the file is tracked so edits rebuild).
 
 use crate::compile::compile;
-use crate::diag::{SourceFile, has_errors, render::render_short};
+use crate::diag::{SourceFile, has_errors, render::render_short_in};
 use crate::{emit, sema, syntax};
 use proc_macro2::{Span, TokenStream};
 use quote::{quote, quote_spanned};
@@ -14,6 +14,8 @@ enum Input {
     Inline(syn::LitStr),
     File(syn::LitStr),
 }
+
+const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or a file relative to the crate, `il!(file = \"plc/motor.il\")`";
 
 fn parse_input(tokens: TokenStream) -> syn::Result<Input> {
     syn::parse::Parser::parse2(
@@ -25,10 +27,7 @@ fn parse_input(tokens: TokenStream) -> syn::Result<Input> {
             }
             let kw: syn::Ident = ps.parse()?;
             if kw != "file" {
-                return Err(syn::Error::new(
-                    kw.span(),
-                    "expected a string of IL (`il!(r#\"...\"#)`) or `file = \"path.il\"`",
-                ));
+                return Err(syn::Error::new(kw.span(), USAGE));
             }
             let _: syn::Token![=] = ps.parse()?;
             let lit: syn::LitStr = ps.parse()?;
@@ -43,13 +42,41 @@ fn parse_input(tokens: TokenStream) -> syn::Result<Input> {
 /// diagnostic, with the IL line, column and snippet) plus stubs of the POUs
 /// so that one mistake does not cascade into errors in the user's code.
 pub fn expand(tokens: TokenStream) -> TokenStream {
+    // A bug in the compiler must still reach the user as a message that says
+    // what happened, not as "proc macro panicked" with nothing else.
+    let span = Span::call_site();
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| expand_inner(tokens))) {
+        Ok(t) => t,
+        Err(e) => {
+            let what = e
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| e.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            let msg = format!(
+                "internal error in the IL compiler (please report it with the IL source): {what}"
+            );
+            quote_spanned!(span=> ::core::compile_error!(#msg);)
+        }
+    }
+}
+
+fn expand_inner(tokens: TokenStream) -> TokenStream {
+    let mut first_line = None;
     let (file, lit_span, track) = match parse_input(tokens) {
-        Err(e) => return e.to_compile_error(),
-        Ok(Input::Inline(lit)) => (
-            SourceFile::new("il! input", lit.value()),
-            lit.span(),
-            quote!(),
-        ),
+        // syn's own messages ("expected identifier") say nothing about il!.
+        Err(e) => return syn::Error::new(e.span(), USAGE).to_compile_error(),
+        Ok(Input::Inline(lit)) => {
+            // The IL's line 1 is the rest of the line where the string starts
+            // (0 when the compiler does not report locations).
+            let line = lit.span().start().line;
+            first_line = (line > 0).then_some(line);
+            (
+                SourceFile::new("il! input", lit.value()),
+                lit.span(),
+                quote!(),
+            )
+        }
         Ok(Input::File(lit)) => {
             let rel = lit.value();
             let base = std::env::var_os("CARGO_MANIFEST_DIR")
@@ -82,7 +109,7 @@ pub fn expand(tokens: TokenStream) -> TokenStream {
         }
         Err(diags) => {
             let errors = diags.iter().filter(|d| d.is_error()).map(|d| {
-                let msg = render_short(&file, d);
+                let msg = render_short_in(&file, d, first_line);
                 quote_spanned!(lit_span=> ::core::compile_error!(#msg);)
             });
             let stubs = stubs(&file);

@@ -91,6 +91,10 @@ pub struct Cycle {
     /// Faults currently stored (≤ FAULT_RING_LEN).
     stored: usize,
     total: u64,
+    /// The process image (`%I`, `%Q`, `%M`): the host writes inputs before a
+    /// scan and reads outputs after it; generated code reads and writes it
+    /// for direct addresses and located (`AT`) variables.
+    pub io: crate::ProcessImage,
 }
 
 impl Cycle {

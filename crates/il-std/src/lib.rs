@@ -46,6 +46,7 @@ pub mod conv;
 mod cycle;
 pub mod fb;
 pub mod func;
+mod image;
 pub mod literal;
 pub mod math;
 pub mod num;
@@ -62,6 +63,7 @@ pub use fb::{
     CTUD, CTUD_DINT, CTUD_LINT, CTUD_UDINT, CTUD_ULINT, F_TRIG, FunctionBlock, R_TRIG, RS, RTC, SR,
     TOF, TON, TP,
 };
+pub use image::{Area, INPUT_BYTES, Located, MEMORY_BYTES, OUTPUT_BYTES, ProcessImage};
 pub use string::{DEFAULT_STRING_LEN, STRING, WSTRING};
 pub use time::{DATE, DATE_AND_TIME, DT, LTIME, TIME, TIME_OF_DAY, TOD};
 pub use types::*;

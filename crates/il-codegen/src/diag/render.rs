@@ -160,6 +160,12 @@ fn render_one(renderer: &Renderer, file: &SourceFile, d: &Diagnostic) -> String 
 ///    = help: write `LD x` ...
 /// ```
 pub fn render_short(file: &SourceFile, d: &Diagnostic) -> String {
+    render_short_in(file, d, None)
+}
+
+/// [`render_short`] for IL inside a Rust file: `first_line` is the Rust line
+/// on which the IL's line 1 starts, so the message can name both.
+pub fn render_short_in(file: &SourceFile, d: &Diagnostic, first_line: Option<usize>) -> String {
     let text = file.text.as_str();
     let (lo_shown, hi) = display_span(text, d.span);
     let (line, col) = file.line_col(lo_shown as u32);
@@ -167,10 +173,14 @@ pub fn render_short(file: &SourceFile, d: &Diagnostic) -> String {
     if d.severity == Severity::Warning {
         out.push_str("warning ");
     }
-    out.push_str(&format!(
-        "{}: {} (at line {line}, column {col})\n",
-        d.code, d.message
-    ));
+    let at = match first_line {
+        Some(first) => format!(
+            "at IL line {line}, column {col}; line {} of this file",
+            first + line - 1
+        ),
+        None => format!("at line {line}, column {col}"),
+    };
+    out.push_str(&format!("{}: {} ({at})\n", d.code, d.message));
 
     let src_line = file.line_text(line);
     let num = line.to_string();
@@ -197,6 +207,10 @@ pub fn render_short(file: &SourceFile, d: &Diagnostic) -> String {
         out.push_str(&d.label);
     }
     out.push('\n');
+    for (span, label) in &d.secondary {
+        let (l, c) = file.line_col(span.lo);
+        out.push_str(&format!("{pad} = note: {label} (line {l}, column {c})\n"));
+    }
     for note in &d.notes {
         out.push_str(&format!("{pad} = note: {note}\n"));
     }

@@ -242,12 +242,12 @@ impl Pou<'_> {
                 });
                 self.cond(cond, line, quote!({ #(#lets)* #call #(#outs)* }))
             }
-            Op::Label(_) => quote!(),
+            Op::Label(_) | Op::Nop => quote!(),
             Op::Jump { label, cond } => {
                 let go = match mode {
                     Mode::Dispatch { block_of_label } => {
                         let b = block_of_label[*label];
-                        quote!({ __pc = #b; continue '__dispatch; })
+                        quote!(__pc = #b; continue '__dispatch;)
                     }
                     _ => {
                         let lt = label_lifetime(*label);

@@ -15,7 +15,7 @@ use crate::sema::types::Ty;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
-pub use names::rust_ident;
+pub use names::{item_ident, local_ident, rust_ident};
 
 /// How to emit.
 #[derive(Clone, Copy, Debug, Default)]
@@ -38,7 +38,7 @@ pub(crate) fn rust_ty(t: &Ty) -> TokenStream {
             let id = format_ident!("{}", name);
             quote!(::il_std::#id)
         } else {
-            let id = rust_ident(name);
+            let id = item_ident(name);
             quote!(#id)
         }
     })
@@ -56,13 +56,14 @@ struct Pou<'a> {
 impl Pou<'_> {
     /// Whether variable `i` lives in `self` (FB/PROGRAM memory) or is a local.
     fn in_self(&self, i: usize) -> bool {
-        self.pou.kind != PouKind::Function && self.pou.vars[i].kind != VarKind::Temp
+        let v = &self.pou.vars[i];
+        self.pou.kind != PouKind::Function && v.kind != VarKind::Temp && v.location.is_none()
     }
 }
 
 fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
     let p = Pou { pou, opts };
-    let name = rust_ident(&pou.name);
+    let name = item_ident(&pou.name);
     let body = p.body();
     let cr_locals = pou.cr_types.iter().map(|t| {
         let id = values::cr_ident(t);
@@ -77,12 +78,13 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
         quote!(let mut #id: #ty = #d;)
     });
     let temp_locals = pou.vars.iter().enumerate().filter(|(i, v)| {
-        !p.in_self(*i)
-            && !(pou.kind == PouKind::Function
-                && matches!(v.kind, VarKind::Input | VarKind::Output))
+        // FUNCTION inputs and outputs are parameters, FB memory is in `self`.
+        let param =
+            pou.kind == PouKind::Function && matches!(v.kind, VarKind::Input | VarKind::Output);
+        !(p.in_self(*i) || param)
     });
     let temp_locals = temp_locals.map(|(_, v)| {
-        let id = rust_ident(&v.name);
+        let id = local_ident(&v.name);
         let ty = rust_ty(&v.ty);
         let init = values::init_value(&v.ty, v.init.as_ref());
         quote!(let mut #id: #ty = #init;)
@@ -112,7 +114,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 .iter()
                 .filter(|v| v.kind == VarKind::Input)
                 .map(|v| {
-                    let id = rust_ident(&v.name);
+                    let id = local_ident(&v.name);
                     let ty = rust_ty(&v.ty);
                     quote!(mut #id: #ty)
                 });
@@ -121,16 +123,26 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 .iter()
                 .filter(|v| v.kind == VarKind::Output)
                 .map(|v| {
-                    let id = rust_ident(&v.name);
+                    let id = local_ident(&v.name);
                     let ty = rust_ty(&v.ty);
                     quote!(#id: &mut #ty)
+                });
+            // Outputs start from their initial values on every call.
+            let out_inits = pou
+                .vars
+                .iter()
+                .filter(|v| v.kind == VarKind::Output)
+                .map(|v| {
+                    let id = local_ident(&v.name);
+                    let init = values::init_value(&v.ty, v.init.as_ref());
+                    quote!(*#id = #init;)
                 });
             quote! {
                 #[doc = #doc]
                 #allow
                 pub fn #name(__ctx: &mut ::il_std::Cycle, #(#params,)* #(#outs,)*) -> #ret_ty {
                     let mut __ret: #ret_ty = #ret_default;
-                    let mut __eno: bool = true;
+                    #(#out_inits)*
                     #locals
                     #body
                     __ret
@@ -156,6 +168,34 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 let init = values::init_value(&v.ty, v.init.as_ref());
                 quote!(#id: #init,)
             });
+            // R_EDGE/F_EDGE inputs: private memory, and the edge computed on
+            // entry (F_EDGE follows F_TRIG: Q := NOT CLK AND NOT M; M := NOT CLK).
+            let edges: Vec<_> = fields
+                .iter()
+                .filter_map(|v| v.edge.map(|e| (*v, e)))
+                .collect();
+            let mem_decls = edges.iter().map(|(v, _)| {
+                let m = rust_ident(&format!("__edge_memory_{}", v.name));
+                quote!(#m: bool,)
+            });
+            let mem_inits = edges.iter().map(|(v, _)| {
+                let m = rust_ident(&format!("__edge_memory_{}", v.name));
+                quote!(#m: false,)
+            });
+            let edge_lets = edges.iter().map(|(v, e)| {
+                let m = rust_ident(&format!("__edge_memory_{}", v.name));
+                let x = rust_ident(&v.name);
+                let l = rust_ident(&format!("__edge_{}", v.name));
+                match e {
+                    crate::ast::Edge::Rising => {
+                        quote!(let #l: bool = self.#x && !self.#m; self.#m = self.#x;)
+                    }
+                    crate::ast::Edge::Falling => {
+                        quote!(let #l: bool = !self.#x && !self.#m; self.#m = !self.#x;)
+                    }
+                }
+            });
+            let addresses = addresses(pou);
             let method_doc = if pou.kind == PouKind::Program {
                 " Run one scan."
             } else {
@@ -164,21 +204,28 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
             quote! {
                 #[doc = #doc]
                 #[derive(Clone, Debug, PartialEq)]
-                #[allow(non_snake_case, non_camel_case_types)]
+                #[allow(non_snake_case, non_camel_case_types, clippy::all)]
                 pub struct #name {
                     #(#decls)*
+                    #(#mem_decls)*
                 }
 
+                #[allow(clippy::all)]
                 impl ::core::default::Default for #name {
                     fn default() -> Self {
-                        Self { #(#inits)* }
+                        Self { #(#inits)* #(#mem_inits)* }
                     }
                 }
 
                 impl #name {
+                    /// The located variables and direct addresses this POU
+                    /// reads or writes in `Cycle::io`, for binding I/O.
+                    pub const ADDRESSES: &'static [::il_std::Located] = &[#(#addresses),*];
+
                     #[doc = #method_doc]
                     #allow
                     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
+                        #(#edge_lets)*
                         #locals
                         #body
                     }
@@ -192,4 +239,28 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
             }
         }
     }
+}
+
+fn addresses(pou: &CheckedPou) -> Vec<TokenStream> {
+    let located = pou
+        .vars
+        .iter()
+        .filter_map(|v| v.location.as_ref().map(|l| (v.name.as_str(), l)));
+    let direct = pou.addresses.iter().map(|l| (l.text.as_str(), l));
+    located
+        .chain(direct)
+        .map(|(name, l)| {
+            let area = match l.area {
+                crate::ast::Area::Input => quote!(::il_std::Area::Input),
+                crate::ast::Area::Output => quote!(::il_std::Area::Output),
+                crate::ast::Area::Memory => quote!(::il_std::Area::Memory),
+            };
+            let (text, byte, ty) = (&l.text, l.byte, l.elem.name());
+            let bit = match l.bit {
+                Some(b) => quote!(::core::option::Option::Some(#b)),
+                None => quote!(::core::option::Option::None),
+            };
+            quote!(::il_std::Located { name: #name, address: #text, area: #area, byte: #byte, bit: #bit, ty: #ty })
+        })
+        .collect()
 }

@@ -5,6 +5,11 @@ use proc_macro2::{Ident, Span};
 /// Rust keywords that cannot be raw identifiers get a trailing `_` (which no
 /// IEC identifier has); other keywords become raw identifiers (`r#loop`).
 pub fn rust_ident(name: &str) -> Ident {
+    // The parser only produces IEC identifiers, but error recovery may leave
+    // placeholders (e.g. an empty name): never panic on them.
+    if !is_ident(name) {
+        return Ident::new(&format!("__invalid_{}", name.len()), Span::call_site());
+    }
     const NOT_RAW: &[&str] = &["self", "Self", "super", "crate", "_"];
     const KEYWORDS: &[&str] = &[
         "as",
@@ -69,9 +74,52 @@ pub fn rust_ident(name: &str) -> Ident {
     }
 }
 
+/// The Rust name of a local binding (a FUNCTION's parameters and locals, VAR_TEMP).
+/// Locals are not part of the host's API, so they get a prefix that keeps
+/// them apart from everything in the user's scope: a `let` cannot bind a name
+/// that is a constant or unit struct there (`None`, a user `const SPEED`).
+pub fn local_ident(name: &str) -> Ident {
+    if !is_ident(name) {
+        return rust_ident(name);
+    }
+    Ident::new(&format!("__v_{name}"), Span::call_site())
+}
+
+/// `[A-Za-z_][A-Za-z0-9_]*`, not `_` alone.
+fn is_ident(name: &str) -> bool {
+    let mut chars = name.chars();
+    chars
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && name != "_"
+}
+
+/// The Rust name of a generated item (struct or fn). A POU named like a Rust
+/// primitive type (`i16`, `bool` ...) would hide that type from the generated
+/// code, so it gets a trailing `_` (which no IEC identifier has).
+pub fn item_ident(name: &str) -> Ident {
+    const PRIMITIVES: &[&str] = &[
+        "bool", "char", "str", "i8", "i16", "i32", "i64", "i128", "isize", "u8", "u16", "u32",
+        "u64", "u128", "usize", "f32", "f64",
+    ];
+    if PRIMITIVES.contains(&name) {
+        Ident::new(&format!("{name}_"), Span::call_site())
+    } else {
+        rust_ident(name)
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::rust_ident;
+    use super::{item_ident, local_ident, rust_ident};
+
+    #[test]
+    fn never_panics_on_placeholders() {
+        assert!(rust_ident("").to_string().starts_with("__invalid"));
+        assert!(local_ident("a b").to_string().starts_with("__invalid"));
+        assert!(item_ident("9x").to_string().starts_with("__invalid"));
+    }
 
     #[test]
     fn keywords_and_plain_names() {

@@ -1,8 +1,9 @@
 //! Values, places and expressions.
 
-use super::{Pou, rust_ident, rust_ty};
+use super::{Pou, item_ident, local_ident, rust_ident, rust_ty};
+use crate::ast::Area;
 use crate::ast::{PouKind, VarKind};
-use crate::sema::ir::{BinOp, Const, Expr, Init, PathElem, Place, Root, StdCall, Value};
+use crate::sema::ir::{BinOp, Const, Expr, Init, Loc, PathElem, Place, Root, StdCall, Value};
 use crate::sema::types::{Elem, Ty};
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
@@ -105,12 +106,12 @@ pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
             let d = default_value(elem);
             let sizes: Vec<usize> = dims.iter().map(|(lo, hi)| (hi - lo + 1) as usize).collect();
             let idx: Vec<_> = (0..dims.len()).map(|k| format_ident!("__i{}", k)).collect();
-            // flat = ((i0 * n1) + i1) * n2 + i2 ...
-            let mut flat = quote!(0usize);
-            for (k, id) in idx.iter().enumerate() {
-                let n = sizes[k];
-                flat = quote!((#flat * #n + #id));
-            }
+            // Row-major flat index: i0 * (n1 * n2) + i1 * n2 + i2.
+            let terms = idx.iter().enumerate().map(|(k, id)| {
+                let stride: usize = sizes[k + 1..].iter().product();
+                quote!(#id * #stride)
+            });
+            let flat = quote!(#(#terms)+*);
             let mut body = quote!(match #flat { #(#arms)* _ => #d });
             for id in idx.iter().rev() {
                 body = quote!(::core::array::from_fn(|#id| #body));
@@ -166,15 +167,23 @@ impl Pou<'_> {
     fn root(&self, r: &Root) -> TokenStream {
         match r {
             Root::Ret => quote!(__ret),
-            Root::Eno => quote!(__eno),
+            // Reads and writes of the process image go through `read`/`write`.
+            Root::Addr(_) => quote!(__ctx.io),
             Root::Var(i) => {
                 let v = &self.pou.vars[*i];
-                let id = rust_ident(&v.name);
+                if v.edge.is_some() {
+                    // The edge seen in this call, computed on entry.
+                    let id = rust_ident(&format!("__edge_{}", v.name));
+                    return quote!(#id);
+                }
                 if self.in_self(*i) {
+                    let id = rust_ident(&v.name);
                     quote!(self.#id)
                 } else if self.pou.kind == PouKind::Function && v.kind == VarKind::Output {
+                    let id = local_ident(&v.name);
                     quote!((*#id))
                 } else {
+                    let id = local_ident(&v.name);
                     quote!(#id)
                 }
             }
@@ -249,6 +258,9 @@ impl Pou<'_> {
     }
 
     pub(crate) fn read(&self, p: &Place, line: u32) -> TokenStream {
+        if let Root::Addr(l) = &p.root {
+            return io_read(l);
+        }
         if !Self::has_index(p) {
             return self.simple_path(p);
         }
@@ -267,6 +279,9 @@ impl Pou<'_> {
 
     /// Store `value` (already evaluated tokens) into a place.
     pub(crate) fn write(&self, p: &Place, value: TokenStream, line: u32) -> TokenStream {
+        if let Root::Addr(l) = &p.root {
+            return io_write(l, value);
+        }
         if !Self::has_index(p) {
             let path = self.simple_path(p);
             return quote!(#path = #value;);
@@ -351,32 +366,24 @@ impl Pou<'_> {
                 args,
                 outputs,
                 out_types,
+                en,
+                eno,
+                ret,
             } => {
-                let f = rust_ident(name);
-                let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
-                if out_types.is_empty() {
-                    return quote!(#f(__ctx, #(#args,)*));
-                }
-                // Every output needs a place, read by `=>` or not.
-                let ids: Vec<_> = (0..out_types.len())
-                    .map(|k| format_ident!("__o{}", k))
-                    .collect();
-                let lets = out_types.iter().zip(&ids).map(|(t, id)| {
-                    let ty = rust_ty(t);
-                    let d = default_value(t);
-                    quote!(let mut #id: #ty = #d;)
-                });
-                let stores = outputs.iter().map(|(k, place, neg)| {
-                    let id = &ids[*k];
-                    let v = if *neg { quote!(!#id) } else { quote!(#id) };
-                    self.write(place, v, line)
-                });
-                quote!({
-                    #(#lets)*
-                    let __r = #f(__ctx, #(#args,)* #(&mut #ids,)*);
-                    #(#stores)*
-                    __r
-                })
+                let call = self.user_call(name, args, outputs, out_types, line);
+                let Some(en) = en else { return call };
+                // EN = FALSE: the function does not run; its result is the
+                // default and ENO (if read with `=>`) is FALSE.
+                let en = self.value(en, line);
+                let d = default_value(ret);
+                let eno_false =
+                    outputs
+                        .iter()
+                        .filter(|(k, _, _)| Some(*k) == *eno)
+                        .map(|(_, place, neg)| {
+                            self.write(place, if *neg { quote!(true) } else { quote!(false) }, line)
+                        });
+                quote!(if #en { #call } else { #(#eno_false)* #d })
             }
             Expr::CallStd { call, args, .. } => {
                 let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
@@ -419,6 +426,42 @@ impl Pou<'_> {
                 }
             }
         }
+    }
+
+    /// A call of a user FUNCTION; every output gets a place, read by `=>` or not.
+    fn user_call(
+        &self,
+        name: &str,
+        args: &[Value],
+        outputs: &[(usize, Place, bool)],
+        out_types: &[Ty],
+        line: u32,
+    ) -> TokenStream {
+        let f = item_ident(name);
+        let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
+        if out_types.is_empty() {
+            return quote!(#f(__ctx, #(#args,)*));
+        }
+        // Every output needs a place, read by `=>` or not.
+        let ids: Vec<_> = (0..out_types.len())
+            .map(|k| format_ident!("__o{}", k))
+            .collect();
+        let lets = out_types.iter().zip(&ids).map(|(t, id)| {
+            let ty = rust_ty(t);
+            let d = default_value(t);
+            quote!(let mut #id: #ty = #d;)
+        });
+        let stores = outputs.iter().map(|(k, place, neg)| {
+            let id = &ids[*k];
+            let v = if *neg { quote!(!#id) } else { quote!(#id) };
+            self.write(place, v, line)
+        });
+        quote!({
+            #(#lets)*
+            let __r = #f(__ctx, #(#args,)* #(&mut #ids,)*);
+            #(#stores)*
+            __r
+        })
     }
 
     fn binary(&self, op: BinOp, ty: &Ty, l: TokenStream, r: TokenStream, line: u32) -> TokenStream {
@@ -465,6 +508,54 @@ impl Pou<'_> {
             BinOp::Mod => quote!(#l % #r),
         }
     }
+}
+
+fn area(l: &Loc) -> TokenStream {
+    match l.area {
+        Area::Input => quote!(::il_std::Area::Input),
+        Area::Output => quote!(::il_std::Area::Output),
+        Area::Memory => quote!(::il_std::Area::Memory),
+    }
+}
+
+/// Read a located value from the process image.
+fn io_read(l: &Loc) -> TokenStream {
+    let a = area(l);
+    let b = l.byte;
+    if let Some(bit) = l.bit {
+        return quote!(__ctx.io.bit(#a, #b, #bit));
+    }
+    match l.elem {
+        Elem::BYTE | Elem::USINT => quote!(__ctx.io.byte(#a, #b)),
+        Elem::SINT => quote!(__ctx.io.byte(#a, #b).cast_signed()),
+        Elem::WORD | Elem::UINT => quote!(__ctx.io.word(#a, #b)),
+        Elem::INT => quote!(__ctx.io.word(#a, #b).cast_signed()),
+        Elem::DWORD | Elem::UDINT => quote!(__ctx.io.dword(#a, #b)),
+        Elem::DINT => quote!(__ctx.io.dword(#a, #b).cast_signed()),
+        Elem::REAL => quote!(f32::from_bits(__ctx.io.dword(#a, #b))),
+        Elem::LWORD | Elem::ULINT => quote!(__ctx.io.lword(#a, #b)),
+        Elem::LINT => quote!(__ctx.io.lword(#a, #b).cast_signed()),
+        _ => quote!(f64::from_bits(__ctx.io.lword(#a, #b))),
+    }
+}
+
+/// Store a value (tokens of its Rust type) into the process image.
+fn io_write(l: &Loc, v: TokenStream) -> TokenStream {
+    let a = area(l);
+    let b = l.byte;
+    if let Some(bit) = l.bit {
+        return quote!({ let __v: bool = #v; __ctx.io.set_bit(#a, #b, #bit, __v); });
+    }
+    let ty = l.elem.rust();
+    let (set, conv) = match l.elem {
+        Elem::BYTE | Elem::USINT | Elem::SINT => (quote!(set_byte), quote!(__v as u8)),
+        Elem::WORD | Elem::UINT | Elem::INT => (quote!(set_word), quote!(__v as u16)),
+        Elem::DWORD | Elem::UDINT | Elem::DINT => (quote!(set_dword), quote!(__v as u32)),
+        Elem::REAL => (quote!(set_dword), quote!(__v.to_bits())),
+        Elem::LREAL => (quote!(set_lword), quote!(__v.to_bits())),
+        _ => (quote!(set_lword), quote!(__v as u64)),
+    };
+    quote!({ let __v: #ty = #v; __ctx.io.#set(#a, #b, #conv); })
 }
 
 fn member_ident(name: &str) -> proc_macro2::Ident {

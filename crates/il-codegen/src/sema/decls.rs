@@ -1,7 +1,7 @@
 //! Declarations: POU interfaces, variable types, initial values, literals.
 
 use super::codes::*;
-use super::ir::{Const, Init, Var};
+use super::ir::{Const, Init, Loc, Var};
 use super::types::{DEFAULT_STRING_LEN, Elem, Ty};
 use super::{Cx, stdfb, suggest};
 use crate::ast::{
@@ -25,6 +25,8 @@ pub(crate) struct PouSig {
     pub file: usize,
     /// Variables whose declaration had an error (their uses are not reported).
     pub poisoned: HashSet<String>,
+    /// The POU's name where it is declared (a duplicate has another span).
+    pub span: Span,
 }
 
 impl PouSig {
@@ -87,10 +89,10 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
             }
         }
     }
-    let fb_names: HashSet<String> = pous
+    // Upper-case key → the name as declared (the Rust struct's name).
+    let fb_names: HashMap<String, (String, PouKind)> = pous
         .iter()
-        .filter(|(_, p)| p.kind == PouKind::FunctionBlock)
-        .map(|(_, p)| p.name.key())
+        .map(|(_, p)| (p.name.key(), (p.name.name.clone(), p.kind)))
         .collect();
     for (f, p) in &pous {
         if env.pous.contains_key(&p.name.key()) {
@@ -126,7 +128,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
     env
 }
 
-fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
+fn pou_sig(cx: &mut Cx, fb_names: &HashMap<String, (String, PouKind)>, p: &ast::Pou) -> PouSig {
     check_ident(cx, &p.name);
     let mut sig = PouSig {
         kind: p.kind,
@@ -136,6 +138,7 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
         ret: None,
         file: 0,
         poisoned: HashSet::new(),
+        span: p.name.span,
     };
     if p.kind == PouKind::Function {
         sig.ret = p
@@ -153,6 +156,11 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
     }
     let mut spans: HashMap<String, Span> = HashMap::new();
     for block in &p.var_blocks {
+        // Every declared name is poisoned: uses of a name whose declaration
+        // is refused below stay silent (the lookup finds real variables first).
+        for decl in &block.decls {
+            sig.poisoned.extend(decl.names.iter().map(|n| n.key()));
+        }
         match (p.kind, block.kind) {
             (_, ast::VarKind::InOut) => {
                 cx.err(UNSUPPORTED, block.span, "VAR_IN_OUT is not supported yet");
@@ -169,16 +177,11 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
             _ => {}
         }
         for decl in &block.decls {
-            if let Some(loc) = &decl.location {
-                cx.err(
-                    UNSUPPORTED,
-                    loc.span,
-                    "located variables (AT %...) are not supported yet",
-                );
-            }
-            if decl.edge.is_some() {
-                // R_EDGE/F_EDGE inputs: accepted, evaluated as plain BOOL by the caller's value.
-                // (The edge is the caller's concern in IEC; documented in the guide.)
+            if decl.edge.is_some()
+                && (p.kind == PouKind::Function || block.kind != ast::VarKind::Input)
+            {
+                cx.err(BAD_OPERATOR_TYPE, decl.span, "R_EDGE and F_EDGE apply to VAR_INPUTs of a FUNCTION_BLOCK or PROGRAM (a FUNCTION has no memory)");
+                continue;
             }
             let Some(ty) = resolve_type(cx, fb_names, &decl.ty) else {
                 // Already reported; uses of these names stay silent.
@@ -193,13 +196,33 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
                 );
                 continue;
             }
+            let location = match &decl.location {
+                None => None,
+                Some(_) if p.kind == PouKind::Function => {
+                    cx.err(
+                        BAD_ADDRESS,
+                        decl.span,
+                        "a FUNCTION cannot have located variables (AT %...)",
+                    );
+                    continue;
+                }
+                Some(a) => match resolve_addr(cx, a, Some(&ty)) {
+                    Some(l) => Some(l),
+                    None => {
+                        sig.poisoned.extend(decl.names.iter().map(|n| n.key()));
+                        continue;
+                    }
+                },
+            };
+            if location.is_some() && decl.init.is_some() {
+                cx.warn(BAD_INIT, decl.span, "the initial value of a located variable is not applied: the host owns the process image");
+            }
             let init = decl.init.as_ref().and_then(|i| init_value(cx, i, &ty));
             for name in &decl.names {
                 check_ident(cx, name);
                 let key = name.key();
-                let clash = (p.kind == PouKind::Function && key == p.name.key())
-                    || key == "ENO"
-                    || key == "EN";
+                let clash = p.kind == PouKind::Function
+                    && (key == p.name.key() || key == "ENO" || key == "EN");
                 if let Some(prev) = spans.get(&key) {
                     cx.err(
                         DUPLICATE_DECL,
@@ -221,6 +244,8 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
                 sig.index.insert(key, sig.vars.len());
                 sig.vars.push(Var {
                     name: name.name.clone(),
+                    location: location.clone(),
+                    edge: decl.edge,
                     kind: block.kind,
                     ty: ty.clone(),
                     init: init.clone(),
@@ -230,7 +255,145 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashSet<String>, p: &ast::Pou) -> PouSig {
             }
         }
     }
+    if p.kind == PouKind::Function && mentions(&p.body, "ENO") {
+        // ENO exists on every function; it is an output (TRUE on entry) of
+        // those whose body sets it.
+        sig.index.insert("ENO".into(), sig.vars.len());
+        sig.vars.push(Var {
+            name: "ENO".into(),
+            location: None,
+            edge: None,
+            kind: ast::VarKind::Output,
+            ty: Ty::BOOL,
+            init: Some(Init::Const(Const::Bool(true))),
+            constant: false,
+            line: cx.line(p.name.span),
+        });
+    }
     sig
+}
+
+/// Whether any operand of the body names `name`.
+fn mentions(body: &[ast::Stmt], name: &str) -> bool {
+    let op = |o: &Operand| matches!(o, Operand::Var(v) if v.base.is(name));
+    body.iter().any(|s| match s {
+        ast::Stmt::Instr(i) => match &i.kind {
+            ast::InstrKind::Load { operand, .. } | ast::InstrKind::Expr { operand, .. } => {
+                op(operand)
+            }
+            ast::InstrKind::Store { target, .. }
+            | ast::InstrKind::Set { target }
+            | ast::InstrKind::Reset { target } => op(target),
+            ast::InstrKind::Deferred { first, body, .. } => {
+                first.as_ref().is_some_and(op) || mentions(body, name)
+            }
+            ast::InstrKind::FnCall {
+                args: ast::CallArgs::NonFormal(l),
+                ..
+            } => l.iter().any(op),
+            _ => false,
+        },
+        ast::Stmt::Label(_) => false,
+    })
+}
+
+/// Resolve a direct address, checking it against the process image and,
+/// for a located variable, against its declared type.
+pub(crate) fn resolve_addr(
+    cx: &mut Cx,
+    a: &ast::DirectAddress,
+    declared: Option<&Ty>,
+) -> Option<Loc> {
+    use ast::{AddrSize, Area};
+    let text = cx.file.snippet(a.span).to_string();
+    if a.partial {
+        cx.err(
+            UNSUPPORTED,
+            a.span,
+            "partly specified addresses (%I*, %Q*) are not supported yet",
+        );
+        return None;
+    }
+    let (width, default) = match a.size {
+        AddrSize::Default | AddrSize::X => (0, Elem::BOOL),
+        AddrSize::B => (1, Elem::BYTE),
+        AddrSize::W => (2, Elem::WORD),
+        AddrSize::D => (4, Elem::DWORD),
+        AddrSize::L => (8, Elem::LWORD),
+    };
+    let (byte, bit) = match (width, a.path.as_slice()) {
+        (0, [n]) => ((*n / 8) as usize, Some((*n % 8) as u8)),
+        (0, [b, n]) if *n < 8 => (*b as usize, Some(*n as u8)),
+        (0, [_, n]) => {
+            cx.err(
+                BAD_ADDRESS,
+                a.span,
+                format!("bit {n} does not exist: a byte has bits 0 to 7"),
+            );
+            return None;
+        }
+        (w, [n]) => ((*n as usize).saturating_mul(w), None),
+        _ => {
+            cx.err(BAD_ADDRESS, a.span, format!("`{text}`: only `%IXbyte.bit`, `%IXbit` and `%IBn`/`%IWn`/`%IDn`/`%ILn` addresses are supported"));
+            return None;
+        }
+    };
+    let (cap, area_name) = match a.area {
+        Area::Input => (il_std::INPUT_BYTES, "inputs"),
+        Area::Output => (il_std::OUTPUT_BYTES, "outputs"),
+        Area::Memory => (il_std::MEMORY_BYTES, "memory"),
+    };
+    if byte.saturating_add(width.max(1)) > cap {
+        cx.err(
+            BAD_ADDRESS,
+            a.span,
+            format!("`{text}` is outside the process image ({cap} bytes of {area_name})"),
+        );
+        return None;
+    }
+    let elem = match declared {
+        None => default,
+        Some(Ty::Elem(e)) => {
+            let fits = match width {
+                0 => *e == Elem::BOOL,
+                1 => matches!(e, Elem::BYTE | Elem::SINT | Elem::USINT),
+                2 => matches!(e, Elem::WORD | Elem::INT | Elem::UINT),
+                4 => matches!(e, Elem::DWORD | Elem::DINT | Elem::UDINT | Elem::REAL),
+                _ => matches!(e, Elem::LWORD | Elem::LINT | Elem::ULINT | Elem::LREAL),
+            };
+            if !fits {
+                let what = match width {
+                    0 => "a bit (BOOL)",
+                    1 => "a byte (BYTE, SINT, USINT)",
+                    2 => "a word (WORD, INT, UINT)",
+                    4 => "a double word (DWORD, DINT, UDINT, REAL)",
+                    _ => "a long word (LWORD, LINT, ULINT, LREAL)",
+                };
+                cx.err(
+                    BAD_ADDRESS,
+                    a.span,
+                    format!("`{text}` is {what}; it cannot hold {}", e.name()),
+                );
+                return None;
+            }
+            *e
+        }
+        Some(t) => {
+            cx.err(
+                BAD_ADDRESS,
+                a.span,
+                format!("a {t} cannot be located at a direct address"),
+            );
+            return None;
+        }
+    };
+    Some(Loc {
+        area: a.area,
+        byte,
+        bit,
+        elem,
+        text,
+    })
 }
 
 /// Names with `__` or a trailing `_` are not IEC identifiers, and the generated
@@ -245,7 +408,11 @@ fn check_ident(cx: &mut Cx, id: &ast::Ident) {
     }
 }
 
-pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &HashSet<String>, spec: &TypeSpec) -> Option<Ty> {
+pub(crate) fn resolve_type(
+    cx: &mut Cx,
+    fb_names: &HashMap<String, (String, PouKind)>,
+    spec: &TypeSpec,
+) -> Option<Ty> {
     match spec {
         TypeSpec::Named(id) => {
             if let Some(e) = Elem::from_name(&id.name) {
@@ -270,8 +437,22 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &HashSet<String>, spec: &TypeS
             if let Some(fb) = stdfb::lookup(&key) {
                 return Some(Ty::Fb(fb.name.to_string()));
             }
-            if fb_names.contains(&key) {
-                return Some(Ty::Fb(key));
+            match fb_names.get(&key) {
+                Some((declared, PouKind::FunctionBlock)) => return Some(Ty::Fb(declared.clone())),
+                Some((declared, kind)) => {
+                    let why = if *kind == PouKind::Program {
+                        "programs are instances of a CONFIGURATION's resources, not variables of a POU"
+                    } else {
+                        "a FUNCTION is called, not instantiated"
+                    };
+                    cx.err(
+                        UNKNOWN_TYPE,
+                        id.span,
+                        format!("`{declared}` is a {}, not a type: {why}", kind.keyword()),
+                    );
+                    return None;
+                }
+                None => {}
             }
             let names = super::types::ALL_ELEMS.iter().map(|e| e.name()).chain([
                 "TON", "TOF", "TP", "CTU", "CTD", "CTUD", "SR", "RS", "R_TRIG", "F_TRIG",
@@ -462,6 +643,8 @@ pub(crate) enum LitClass {
     Real(f64, String),
     Str(String, bool),
     Unsupported(&'static str),
+    /// A typed literal whose value does not fit its prefix (`SINT#300`).
+    Invalid(String),
 }
 
 pub(crate) fn lit_class(lit: &Literal) -> LitClass {
@@ -488,9 +671,9 @@ pub(crate) fn lit_class(lit: &Literal) -> LitClass {
     match Elem::from_name(&prefix.name) {
         Some(e) => match coerce(&untyped, &Ty::Elem(e)) {
             Ok(c) => LitClass::Typed(c),
-            Err(_) => LitClass::Unsupported("the value does not fit the literal's type prefix"),
+            Err(m) => LitClass::Invalid(m),
         },
-        None => LitClass::Unsupported("unknown type prefix"),
+        None => LitClass::Invalid(format!("`{prefix}#` is not an elementary type")),
     }
 }
 
@@ -541,6 +724,7 @@ pub(crate) fn coerce(lit: &LitClass, ty: &Ty) -> Result<Const, String> {
             str_const(s, *wide, *len, ty)
         }
         (LitClass::Unsupported(msg), _) => Err((*msg).to_string()),
+        (LitClass::Invalid(msg), _) => Err(msg.clone()),
         _ => mismatch(),
     }
 }
@@ -568,6 +752,7 @@ pub(crate) fn describe(lit: &LitClass) -> String {
         LitClass::Real(_, t) => format!("the real literal {t}"),
         LitClass::Str(..) => "a string literal".to_string(),
         LitClass::Unsupported(m) => (*m).to_string(),
+        LitClass::Invalid(m) => m.clone(),
     }
 }
 
@@ -583,10 +768,10 @@ pub(crate) fn check_recursion(cxs: &mut [Cx], env: &Env, units: &[&ast::Compilat
             let out = edges.entry(me.clone()).or_default();
             if let Some(sig) = env.pou(&me) {
                 for v in &sig.vars {
-                    if let Ty::Fb(t) = &v.ty {
-                        if env.pou(t).is_some() {
-                            out.push((t.clone(), f, p.name.span));
-                        }
+                    if let Ty::Fb(t) = &v.ty
+                        && env.pou(t).is_some()
+                    {
+                        out.push((t.clone(), f, p.name.span));
                     }
                 }
             }
@@ -637,13 +822,12 @@ fn collect_calls(body: &[ast::Stmt], env: &Env, out: &mut Vec<(String, Span)>) {
             ast::InstrKind::Call {
                 target: Operand::Var(v),
                 ..
-            } if v.path.is_empty() => {
-                if env
+            } if v.path.is_empty()
+                && env
                     .pou(&v.base.name)
-                    .is_some_and(|s| s.kind == PouKind::Function)
-                {
-                    out.push((v.base.key(), v.base.span));
-                }
+                    .is_some_and(|s| s.kind == PouKind::Function) =>
+            {
+                out.push((v.base.key(), v.base.span));
             }
             ast::InstrKind::Deferred { body, .. } => collect_calls(body, env, out),
             _ => {}

@@ -30,6 +30,9 @@ enum Cr {
 #[derive(Clone, Debug, PartialEq)]
 enum Why {
     Start,
+    /// An error was reported for the instruction that set the CR; uses
+    /// of it stay silent until the next load, so one mistake reports once.
+    Error,
     AfterCal(u32),
     /// Paths into a label disagree; the text names them.
     Mixed(String),
@@ -43,6 +46,8 @@ enum Class {
     LitStr(bool),
     Val(Ty),
     Undef(String),
+    /// After an error: absorbs the join silently.
+    Error,
 }
 
 /// A value the CR or an operand provides to an operation.
@@ -88,6 +93,7 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
         save_types: Vec::new(),
         jumped: vec![false; n],
         line: 0,
+        addresses: Vec::new(),
     };
     // Fixpoint: the lattice per label is short (dead → literal → type → mixed),
     // so a few rounds settle it; the cap only guards against oscillation bugs.
@@ -127,6 +133,7 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
         ret: sig.ret.clone(),
         body: w.out,
         label_count: n,
+        addresses: w.addresses,
         cr_types: w.cr_types,
         save_types: w.save_types,
     })
@@ -137,6 +144,9 @@ fn join(edges: &[(Span, Class, u32)]) -> Cr {
     let Some((_, first, _)) = edges.first() else {
         return Cr::Dead;
     };
+    if edges.iter().any(|(_, c, _)| *c == Class::Error) {
+        return Cr::Undef(Why::Error);
+    }
     let mut ty: Option<Ty> = None;
     let mut lit: Option<Class> = None;
     let mut bad = false;
@@ -180,6 +190,7 @@ fn join(edges: &[(Span, Class, u32)]) -> Cr {
                 Class::LitReal => "a real literal".into(),
                 Class::LitStr(_) => "a string literal".into(),
                 Class::Undef(why) => format!("undefined ({why})"),
+                Class::Error => "an error".into(),
             };
             format!("{what} from line {line}")
         })
@@ -211,6 +222,7 @@ struct Walk<'a, 'c> {
     save_types: Vec<Ty>,
     jumped: Vec<bool>,
     line: u32,
+    addresses: Vec<ir::Loc>,
 }
 
 impl Walk<'_, '_> {
@@ -228,10 +240,10 @@ impl Walk<'_, '_> {
     }
 
     fn push(&mut self, op: Op) {
-        if let Op::SetCr { ty, .. } = &op {
-            if !self.cr_types.contains(ty) {
-                self.cr_types.push(ty.clone());
-            }
+        if let Op::SetCr { ty, .. } = &op
+            && !self.cr_types.contains(ty)
+        {
+            self.cr_types.push(ty.clone());
         }
         self.out.push(ir::Stmt {
             op,
@@ -249,11 +261,17 @@ impl Walk<'_, '_> {
                     let Some(&l) = self.labels.get(&id.key()) else {
                         continue;
                     };
-                    self.line = self.cx.line(id.span);
+                    // The fall-through edge comes from the line before the label.
                     if cr != Cr::Dead {
                         self.edge(l, &cr, id.span);
                     }
-                    cr = self.label_in[l].clone();
+                    self.line = self.cx.line(id.span);
+                    cr = match self.label_in[l].clone() {
+                        Cr::Undef(Why::Mixed(paths)) => {
+                            Cr::Undef(Why::Mixed(format!("{}\u{0}{paths}", id.name)))
+                        }
+                        other => other,
+                    };
                     self.push(Op::Label(l));
                     warned_dead = false;
                 }
@@ -268,6 +286,7 @@ impl Walk<'_, '_> {
                         warned_dead = true;
                         continue;
                     }
+                    self.push(Op::Nop);
                     cr = self.instr(i, cr, false);
                 }
             }
@@ -280,8 +299,13 @@ impl Walk<'_, '_> {
         let class = match cr {
             Cr::Dead => return,
             Cr::Undef(Why::Start) => Class::Undef("no value loaded".into()),
+            Cr::Undef(Why::Error) => Class::Error,
             Cr::Undef(Why::AfterCal(line)) => Class::Undef(format!("after CAL on line {line}")),
-            Cr::Undef(Why::Mixed(m)) => Class::Undef(m.clone()),
+            Cr::Undef(Why::Mixed(m)) => Class::Undef(
+                m.split_once('\u{0}')
+                    .map_or(m.as_str(), |x| x.1)
+                    .to_string(),
+            ),
             Cr::Lit(LitClass::Int(_), _) => Class::LitInt,
             Cr::Lit(LitClass::Real(..), _) => Class::LitReal,
             Cr::Lit(LitClass::Str(_, w), _) => Class::LitStr(*w),
@@ -307,10 +331,8 @@ impl Walk<'_, '_> {
         let span = i.span;
         match &i.kind {
             InstrKind::Load { negate, operand } => {
-                if !negate {
-                    if let Some(inst) = self.fb_operand(operand, &["CTD", "CTUD"]) {
-                        return self.fb_input(inst, "LD", cr, span);
-                    }
+                if !negate && let Some(inst) = self.fb_operand(operand, &["CTD", "CTUD"]) {
+                    return self.fb_input(inst, "LD", cr, span);
                 }
                 self.load(*negate, operand, span)
             }
@@ -321,7 +343,8 @@ impl Walk<'_, '_> {
                 let Some(arg) = self.use_cr(&cr, span) else {
                     return cr;
                 };
-                let Some(value) = self.fit(arg, &place.ty, span) else {
+                let dest = format!("`{}`", self.cx.file.snippet(target.span()));
+                let Some(value) = self.fit_to(arg, &place.ty, span, &dest) else {
                     return cr;
                 };
                 if *negate && !place.ty.is_logic() {
@@ -434,10 +457,10 @@ impl Walk<'_, '_> {
                 operand,
             } => {
                 let Some(lhs) = self.use_cr(&cr, span) else {
-                    return Cr::Undef(Why::Start);
+                    return Cr::Undef(Why::Error);
                 };
                 let Some(rhs) = self.operand(operand) else {
-                    return Cr::Undef(Why::Start);
+                    return Cr::Undef(Why::Error);
                 };
                 self.binary(*op, *negate, lhs, rhs, i.op_span)
             }
@@ -449,7 +472,7 @@ impl Walk<'_, '_> {
                 close_span,
             } => {
                 let Some(lhs) = self.use_cr(&cr, span) else {
-                    return Cr::Undef(Why::Start);
+                    return Cr::Undef(Why::Error);
                 };
                 let lhs = match lhs {
                     Arg::Typed(v, t) => {
@@ -477,7 +500,7 @@ impl Walk<'_, '_> {
                     }
                 }
                 let Some(rhs) = self.use_cr(&inner, *close_span) else {
-                    return Cr::Undef(Why::Start);
+                    return Cr::Undef(Why::Error);
                 };
                 self.binary(*op, *negate, lhs, rhs, i.op_span)
             }
@@ -550,22 +573,21 @@ impl Walk<'_, '_> {
                     return cr;
                 }
                 // CAL of a FUNCTION with a formal list (3rd edition, STACK_INT).
-                if let Operand::Var(v) = target {
-                    if v.path.is_empty()
-                        && self.sig.var(&v.base.name).is_none()
-                        && self.is_function(&v.base.name)
-                    {
-                        if *cond != Cond::Always {
-                            self.err(
-                                UNSUPPORTED,
-                                i.op_span,
-                                "CALC/CALCN of a FUNCTION is not supported; use JMPCN around it",
-                            );
-                            return cr;
-                        }
-                        let args = args.clone().unwrap_or(CallArgs::Formal(Vec::new()));
-                        return self.fn_call(&v.base, &args, cr, span, true);
+                if let Operand::Var(v) = target
+                    && v.path.is_empty()
+                    && self.sig.var(&v.base.name).is_none()
+                    && self.is_function(&v.base.name)
+                {
+                    if *cond != Cond::Always {
+                        self.err(
+                            UNSUPPORTED,
+                            i.op_span,
+                            "CALC/CALCN of a FUNCTION is not supported; use JMPCN around it",
+                        );
+                        return cr;
                     }
+                    let args = args.clone().unwrap_or(CallArgs::Formal(Vec::new()));
+                    return self.fn_call(&v.base, &args, cr, span, true);
                 }
                 let Some(inst) = self.place_of(target, false) else {
                     return Cr::Undef(Why::AfterCal(self.line));
@@ -613,7 +635,7 @@ impl Walk<'_, '_> {
 
     fn load(&mut self, negate: bool, operand: &Operand, span: Span) -> Cr {
         let Some(arg) = self.operand(operand) else {
-            return Cr::Undef(Why::Start);
+            return Cr::Undef(Why::Error);
         };
         match arg {
             Arg::Lit(l, s) if !negate => Cr::Lit(l, s),
@@ -626,12 +648,12 @@ impl Walk<'_, '_> {
                         describe(&l)
                     ),
                 );
-                Cr::Undef(Why::Start)
+                Cr::Undef(Why::Error)
             }
             Arg::Typed(_, Ty::Fb(f)) => {
                 self.err(BAD_OPERATOR_TYPE, operand.span(), format!("cannot load a function block instance ({f}); load one of its outputs, e.g. `.Q`"));
                 let _ = span;
-                Cr::Undef(Why::Start)
+                Cr::Undef(Why::Error)
             }
             Arg::Typed(v, t) => {
                 if negate && !t.is_logic() {
@@ -656,6 +678,7 @@ impl Walk<'_, '_> {
     fn use_cr(&mut self, cr: &Cr, span: Span) -> Option<Arg> {
         match cr {
             Cr::Dead => None,
+            Cr::Undef(Why::Error) => None,
             Cr::Undef(Why::Start) => {
                 if let Some(d) = self.err(CR_UNDEFINED, span, "there is no current result here") {
                     d.label = "this uses the current result".into();
@@ -675,12 +698,19 @@ impl Walk<'_, '_> {
                 }
                 None
             }
-            Cr::Undef(Why::Mixed(paths)) => {
-                let paths = paths.clone();
+            Cr::Undef(Why::Mixed(text)) => {
+                // "label\0paths" (the label's name is added where it is known).
+                let (label, paths) = text.split_once('\u{0}').unwrap_or(("above", text));
+                let label = if label == "above" {
+                    "the label above".to_string()
+                } else {
+                    format!("`{label}`")
+                };
+                let paths = paths.to_string();
                 if let Some(d) = self.err(
                     CR_DISAGREES,
                     span,
-                    "the current result's type differs on the paths into the label above",
+                    format!("the current result has different types on the paths into {label}"),
                 ) {
                     d.notes.push(format!("the paths bring: {paths}"));
                     d.help =
@@ -726,6 +756,29 @@ impl Walk<'_, '_> {
         }
     }
 
+    /// Make an argument a value of type `ty` for `dest` ("`x`", "input `PT` of t"):
+    /// like [`Self::fit`], with a message that names both sides.
+    fn fit_to(&mut self, arg: Arg, ty: &Ty, span: Span, dest: &str) -> Option<Value> {
+        if let Arg::Typed(v, t) = &arg {
+            if t != ty {
+                let src = if matches!(v, Value::Cr(_) | Value::Saved(..)) {
+                    "the current result"
+                } else {
+                    "the value"
+                };
+                if let Some(d) = self.err(
+                    TYPE_MISMATCH,
+                    span,
+                    format!("{dest} is {ty}, but {src} is {t}"),
+                ) {
+                    d.help = conversion_hint(t, ty);
+                }
+                return None;
+            }
+        }
+        self.fit(arg, ty, span)
+    }
+
     /// Make an argument a value of type `ty`.
     fn fit(&mut self, arg: Arg, ty: &Ty, span: Span) -> Option<Value> {
         match arg {
@@ -755,6 +808,10 @@ impl Walk<'_, '_> {
                     self.err(UNSUPPORTED, l.span, m);
                     None
                 }
+                LitClass::Invalid(m) => {
+                    self.err(LITERAL_RANGE, l.span, m);
+                    None
+                }
                 other => Some(Arg::Lit(other, l.span)),
             },
             Operand::Var(v) => {
@@ -762,14 +819,44 @@ impl Walk<'_, '_> {
                 Some(Arg::Typed(Value::Read(p.clone()), p.ty))
             }
             Operand::Addr(a) => {
-                self.err(
-                    UNSUPPORTED,
-                    a.span,
-                    "direct addresses (%I, %Q, %M) are not supported yet",
-                );
-                None
+                let p = self.addr_place(a, false)?;
+                Some(Arg::Typed(Value::Read(p.clone()), p.ty))
             }
         }
+    }
+
+    fn addr_place(&mut self, a: &ast::DirectAddress, write: bool) -> Option<Place> {
+        if !self.final_pass {
+            // Resolution reports errors; report them once, on the final pass.
+            let saved = std::mem::take(&mut self.cx.diags);
+            let l = super::decls::resolve_addr(self.cx, a, None);
+            self.cx.diags = saved;
+            return l.map(|l| Place {
+                ty: Ty::Elem(l.elem),
+                root: Root::Addr(l),
+                path: Vec::new(),
+            });
+        }
+        let l = super::decls::resolve_addr(self.cx, a, None)?;
+        if write && l.area == ast::Area::Input {
+            self.err(
+                NOT_WRITABLE,
+                a.span,
+                format!(
+                    "`{}` is an input: the host writes it before each scan",
+                    l.text
+                ),
+            );
+            return None;
+        }
+        if !self.addresses.contains(&l) {
+            self.addresses.push(l.clone());
+        }
+        Some(Place {
+            ty: Ty::Elem(l.elem),
+            root: Root::Addr(l),
+            path: Vec::new(),
+        })
     }
 
     fn place_of(&mut self, o: &Operand, write: bool) -> Option<Place> {
@@ -779,25 +866,41 @@ impl Walk<'_, '_> {
                 self.err(NOT_WRITABLE, l.span, "expected a variable, found a literal");
                 None
             }
-            Operand::Addr(a) => {
-                self.err(
-                    UNSUPPORTED,
-                    a.span,
-                    "direct addresses (%I, %Q, %M) are not supported yet",
-                );
-                None
-            }
+            Operand::Addr(a) => self.addr_place(a, write),
         }
     }
 
     /// Resolve a variable reference; `write` checks that it may be stored to.
     fn place(&mut self, v: &VarRef, write: bool) -> Option<Place> {
         let (root, mut ty, constant) = if let Some((i, var)) = self.sig.var(&v.base.name) {
-            (Root::Var(i), var.ty.clone(), var.constant)
+            match &var.location {
+                Some(l) if write && l.area == ast::Area::Input => {
+                    self.err(
+                        NOT_WRITABLE,
+                        v.span,
+                        format!(
+                            "`{}` is located at the input `{}`: the host writes it",
+                            v.base, l.text
+                        ),
+                    );
+                    return None;
+                }
+                Some(l) => (Root::Addr(l.clone()), var.ty.clone(), var.constant),
+                None if write && var.edge.is_some() => {
+                    self.err(
+                        NOT_WRITABLE,
+                        v.span,
+                        format!(
+                            "`{}` is an edge input (R_EDGE/F_EDGE): it is read-only in the body",
+                            v.base
+                        ),
+                    );
+                    return None;
+                }
+                None => (Root::Var(i), var.ty.clone(), var.constant),
+            }
         } else if self.sig.kind == PouKind::Function && v.base.is(&self.sig.name) {
             (Root::Ret, self.sig.ret.clone()?, false)
-        } else if self.sig.kind == PouKind::Function && v.base.is("ENO") {
-            (Root::Eno, Ty::BOOL, false)
         } else if self.sig.poisoned.contains(&v.base.key()) {
             return None; // its declaration was already reported
         } else {
@@ -1012,7 +1115,7 @@ impl Walk<'_, '_> {
         let Some(arg) = self.use_cr(&cr, span) else {
             return cr;
         };
-        let Some(value) = self.fit(arg, &ty, span) else {
+        let Some(value) = self.fit_to(arg, &ty, span, &format!("input `{name}` of {fb}")) else {
             return cr;
         };
         self.push(Op::CallFb {
@@ -1054,7 +1157,9 @@ impl Walk<'_, '_> {
                                 continue;
                             }
                             let Some(a) = self.operand(o) else { continue };
-                            if let Some(v) = self.fit(a, &ty, o.span()) {
+                            if let Some(v) =
+                                self.fit_to(a, &ty, o.span(), &format!("input `{name}` of {fb}"))
+                            {
                                 ins.push((name, v));
                             }
                         }
@@ -1119,7 +1224,9 @@ impl Walk<'_, '_> {
                 }
                 for (o, (name, ty)) in list.iter().zip(inputs) {
                     let Some(a) = self.operand(o) else { continue };
-                    if let Some(v) = self.fit(a, &ty, o.span()) {
+                    if let Some(v) =
+                        self.fit_to(a, &ty, o.span(), &format!("input `{name}` of {fb}"))
+                    {
                         ins.push((name, v));
                     }
                 }
@@ -1144,7 +1251,7 @@ impl Walk<'_, '_> {
         span: Span,
         formal_only: bool,
     ) -> Cr {
-        let bad = Cr::Undef(Why::Start);
+        let bad = Cr::Undef(Why::Error);
         if let Some(sig) = self
             .env
             .pou(&name.name)
@@ -1158,6 +1265,9 @@ impl Walk<'_, '_> {
             let fname = sig.name.clone();
             let mut values: Vec<Option<Value>> = vec![None; inputs.len()];
             let mut outputs = Vec::new();
+            let mut en: Option<Value> = None;
+            // `ENO => x` on a function that never sets ENO: x gets EN (or TRUE).
+            let mut eno_plain: Vec<(Place, bool)> = Vec::new();
             match args {
                 CallArgs::NonFormal(list) if !formal_only => {
                     let total = list.len() + 1;
@@ -1187,6 +1297,26 @@ impl Walk<'_, '_> {
                 CallArgs::Formal(list) => {
                     for p in list {
                         match &p.kind {
+                            ParamKind::Input(o) if p.name.is("EN") => {
+                                let Some(a) = self.operand(o) else { continue };
+                                en = self.fit(a, &Ty::BOOL, o.span());
+                            }
+                            ParamKind::Output { negate, target }
+                                if p.name.is("ENO") && sig.var("ENO").is_none() =>
+                            {
+                                let Some(place) = self.place_of(target, true) else {
+                                    continue;
+                                };
+                                if place.ty != Ty::BOOL {
+                                    self.err(
+                                        TYPE_MISMATCH,
+                                        target.span(),
+                                        format!("`ENO` is BOOL, the variable is {}", place.ty),
+                                    );
+                                    continue;
+                                }
+                                eno_plain.push((place, *negate));
+                            }
                             ParamKind::Input(o) => {
                                 let Some(k) = inputs.iter().position(|(_, n, _)| p.name.is(n))
                                 else {
@@ -1255,6 +1385,11 @@ impl Walk<'_, '_> {
                 .filter(|o| o.kind == ast::VarKind::Output)
                 .map(|o| o.ty.clone())
                 .collect();
+            let eno = sig
+                .vars
+                .iter()
+                .filter(|o| o.kind == ast::VarKind::Output)
+                .position(|o| o.name == "ENO");
             self.push(Op::SetCr {
                 ty: ret.clone(),
                 expr: Expr::CallUser {
@@ -1262,8 +1397,19 @@ impl Walk<'_, '_> {
                     args,
                     out_types,
                     outputs,
+                    en: en.clone(),
+                    eno,
+                    ret: ret.clone(),
                 },
             });
+            for (place, negate) in eno_plain {
+                let value = en.clone().unwrap_or(Value::Const(Const::Bool(true)));
+                self.push(Op::Store {
+                    place,
+                    value,
+                    negate,
+                });
+            }
             return Cr::Val(ret);
         }
         let key = name.key();
@@ -1326,6 +1472,16 @@ impl Walk<'_, '_> {
             .map(|s| s.name.clone())
             .collect();
         cands.extend(stdfn::names().map(String::from));
+        // A mistyped IL operator (`LDD`) lands here too.
+        cands.extend(
+            [
+                "LD", "LDN", "ST", "STN", "S", "R", "AND", "ANDN", "OR", "ORN", "XOR", "XORN",
+                "NOT", "ADD", "SUB", "MUL", "DIV", "MOD", "GT", "GE", "EQ", "NE", "LE", "LT",
+                "JMP", "JMPC", "JMPCN", "CAL", "CALC", "CALCN", "RET", "RETC", "RETCN", "S1", "R1",
+                "CLK", "CU", "CD", "PV", "IN", "PT",
+            ]
+            .map(String::from),
+        );
         let hint = suggest(&name.name, cands.iter().map(String::as_str))
             .map(|s| format!("did you mean `{s}`?"));
         if let Some(d) = self.err(
@@ -1346,7 +1502,7 @@ impl Walk<'_, '_> {
     }
 
     fn std_call(&mut self, key: &str, argv: Vec<(Arg, Span)>, span: Span) -> Cr {
-        let bad = Cr::Undef(Why::Start);
+        let bad = Cr::Undef(Why::Error);
         let shapes: Vec<stdfn::ArgShape> = argv
             .iter()
             .map(|(a, _)| match a {
@@ -1390,7 +1546,7 @@ impl Walk<'_, '_> {
 
     /// `lhs op rhs` where lhs is the CR (or a saved CR) and rhs the operand.
     fn binary(&mut self, op: ExprOp, negate: bool, lhs: Arg, rhs: Arg, span: Span) -> Cr {
-        let bad = Cr::Undef(Why::Start);
+        let bad = Cr::Undef(Why::Error);
         let bop = bin_op(op);
         // Both untyped literals: fold at compile time.
         if let (Arg::Lit(a, sa), Arg::Lit(b, _)) = (&lhs, &rhs) {
@@ -1418,39 +1574,38 @@ impl Walk<'_, '_> {
             };
         }
         // TIME scaled by a number.
-        if matches!(bop, BinOp::Mul | BinOp::Div) {
-            if let (Arg::Typed(lv, Ty::Elem(te)), r) = (&lhs, &rhs) {
-                if te.is_duration() {
-                    let (rv, ne) = match r {
-                        Arg::Typed(v, Ty::Elem(n)) if n.is_num() => (v.clone(), *n),
-                        Arg::Lit(LitClass::Int(n), _) if i64::try_from(*n).is_ok() => {
-                            (Value::Const(Const::Int(*n, Elem::LINT)), Elem::LINT)
-                        }
-                        Arg::Lit(LitClass::Real(f, _), _) => {
-                            (Value::Const(Const::Real(*f, Elem::LREAL)), Elem::LREAL)
-                        }
-                        _ => {
-                            self.err(
-                                TYPE_MISMATCH,
-                                span,
-                                format!("{} of {} needs a number", op.name(), te.name()),
-                            );
-                            return bad;
-                        }
-                    };
-                    self.push(Op::SetCr {
-                        ty: Ty::Elem(*te),
-                        expr: Expr::TimeScale {
-                            div: bop == BinOp::Div,
-                            time: *te,
-                            lhs: lv.clone(),
-                            num: ne,
-                            rhs: rv,
-                        },
-                    });
-                    return Cr::Val(Ty::Elem(*te));
+        if matches!(bop, BinOp::Mul | BinOp::Div)
+            && let (Arg::Typed(lv, Ty::Elem(te)), r) = (&lhs, &rhs)
+            && te.is_duration()
+        {
+            let (rv, ne) = match r {
+                Arg::Typed(v, Ty::Elem(n)) if n.is_num() => (v.clone(), *n),
+                Arg::Lit(LitClass::Int(n), _) if i64::try_from(*n).is_ok() => {
+                    (Value::Const(Const::Int(*n, Elem::LINT)), Elem::LINT)
                 }
-            }
+                Arg::Lit(LitClass::Real(f, _), _) => {
+                    (Value::Const(Const::Real(*f, Elem::LREAL)), Elem::LREAL)
+                }
+                _ => {
+                    self.err(
+                        TYPE_MISMATCH,
+                        span,
+                        format!("{} of {} needs a number", op.name(), te.name()),
+                    );
+                    return bad;
+                }
+            };
+            self.push(Op::SetCr {
+                ty: Ty::Elem(*te),
+                expr: Expr::TimeScale {
+                    div: bop == BinOp::Div,
+                    time: *te,
+                    lhs: lv.clone(),
+                    num: ne,
+                    rhs: rv,
+                },
+            });
+            return Cr::Val(Ty::Elem(*te));
         }
         let (ty, lv, rv) = match (lhs, rhs) {
             (Arg::Typed(lv, t), Arg::Typed(rv, u)) => {

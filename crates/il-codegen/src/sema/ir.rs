@@ -20,6 +20,8 @@ pub struct CheckedPou {
     pub ret: Option<Ty>,
     pub body: Vec<Stmt>,
     pub label_count: usize,
+    /// Direct addresses used in the body (for `ADDRESSES`).
+    pub addresses: Vec<Loc>,
     /// The CR locals the body uses (one per type).
     pub cr_types: Vec<Ty>,
     /// Types of the slots that hold the outer CR of deferred parentheses.
@@ -30,6 +32,10 @@ pub struct CheckedPou {
 pub struct Var {
     /// As declared.
     pub name: String,
+    /// `AT %...`: the variable is that place of the process image.
+    pub location: Option<Loc>,
+    /// R_EDGE / F_EDGE input: the body sees the edge, not the level.
+    pub edge: Option<crate::ast::Edge>,
     pub kind: VarKind,
     pub ty: Ty,
     pub init: Option<Init>,
@@ -91,8 +97,22 @@ pub enum Root {
     Var(usize),
     /// The FUNCTION's result variable (named like the function).
     Ret,
-    /// ENO of a FUNCTION.
-    Eno,
+    /// A place of the process image (a direct address or a located variable).
+    Addr(Loc),
+}
+
+/// A resolved direct address.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Loc {
+    pub area: crate::ast::Area,
+    /// Byte offset in the area.
+    pub byte: usize,
+    /// Bit number of a bit address.
+    pub bit: Option<u8>,
+    /// The type stored there (its size matches the address).
+    pub elem: Elem,
+    /// As written (`%IX1.0`).
+    pub text: String,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -162,6 +182,11 @@ pub enum Expr {
     /// inputs; `out_types` are all its outputs, `outputs` the ones read with
     /// `=>` (index into `out_types`, target, complemented).
     CallUser {
+        /// EN := value: run only when TRUE.
+        en: Option<Value>,
+        /// Index of the implicit ENO among the outputs, if the function sets ENO.
+        eno: Option<usize>,
+        ret: Ty,
         name: String,
         args: Vec<Value>,
         out_types: Vec<Ty>,
@@ -240,4 +265,7 @@ pub enum Op {
     Return {
         cond: Condition,
     },
+    /// Nothing to do (an instruction whose effect is only on the checker's
+    /// state, like loading a literal); keeps its line comment.
+    Nop,
 }

@@ -45,10 +45,12 @@ pub fn check_all(
             ast::Item::Pou(p) => Some(p),
             _ => None,
         }) {
-            if env.pou(&pou.name.name).is_some_and(|s| s.file == f) {
-                if let Some(checked) = flow::check_pou(&mut cxs[f], &env, pou) {
-                    program.pous.push(checked);
-                }
+            if env
+                .pou(&pou.name.name)
+                .is_some_and(|s| s.file == f && s.span == pou.name.span)
+                && let Some(checked) = flow::check_pou(&mut cxs[f], &env, pou)
+            {
+                program.pous.push(checked);
             }
         }
         programs.push(program);
@@ -93,29 +95,67 @@ pub(crate) fn suggest<'a>(
     candidates: impl IntoIterator<Item = &'a str>,
 ) -> Option<&'a str> {
     let up = name.to_ascii_uppercase();
-    let mut best: Option<(usize, &str)> = None;
+    // Rank by edit distance (a swap of two letters counts once), then prefer
+    // a candidate that extends the name (`Q` → `Q1`), then the closest length.
+    let mut best: Option<((usize, bool, usize), &str)> = None;
     for c in candidates {
-        let d = edit_distance(&up, &c.to_ascii_uppercase());
-        let limit = (up.len().max(c.len()) / 3).max(1);
-        if d <= limit && best.is_none_or(|(bd, _)| d < bd) {
-            best = Some((d, c));
+        let cu = c.to_ascii_uppercase();
+        if cu == up {
+            continue;
+        }
+        let d = edit_distance(&up, &cu);
+        let limit = (up.len().max(cu.len()) / 3).max(1);
+        let rank = (
+            d,
+            !(cu.starts_with(&up) || up.starts_with(&cu)),
+            up.len().abs_diff(cu.len()),
+        );
+        if d <= limit && best.is_none_or(|(b, _)| rank < b) {
+            best = Some((rank, c));
         }
     }
     best.map(|(_, c)| c)
 }
 
+/// Optimal string alignment distance: insertions, deletions, substitutions
+/// and transpositions of neighbours each cost 1.
 fn edit_distance(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.chars().collect();
     let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut cur = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            let sub = prev[j] + usize::from(ca != *cb);
-            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
-        }
-        prev = cur;
+    let mut d = vec![vec![0usize; b.len() + 1]; a.len() + 1];
+    for (i, row) in d.iter_mut().enumerate() {
+        row[0] = i;
     }
-    prev[b.len()]
+    for j in 0..=b.len() {
+        d[0][j] = j;
+    }
+    for i in 1..=a.len() {
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            let mut v = (d[i - 1][j] + 1)
+                .min(d[i][j - 1] + 1)
+                .min(d[i - 1][j - 1] + cost);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                v = v.min(d[i - 2][j - 2] + 1);
+            }
+            d[i][j] = v;
+        }
+    }
+    d[a.len()][b.len()]
+}
+
+#[cfg(test)]
+mod suggest_tests {
+    use super::suggest;
+
+    #[test]
+    fn transpositions_prefixes_and_limits() {
+        assert_eq!(suggest("spede", ["speed", "spread"]), Some("speed"));
+        assert_eq!(suggest("strat", ["start", "stop"]), Some("start"));
+        assert_eq!(suggest("Q", ["S1", "R", "Q1"]), Some("Q1"));
+        assert_eq!(suggest("LDD", ["ADD", "LD"]), Some("LD"));
+        assert_eq!(suggest("motor", ["valve"]), None);
+    }
 }
 
 /// Whether `name` is a standard function block of il-std.

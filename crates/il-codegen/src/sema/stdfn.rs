@@ -70,7 +70,7 @@ fn in_class(t: &Ty, c: Class) -> bool {
 pub(crate) fn describe(s: &Signature) -> String {
     let ty = |p: &ParamTy| match p {
         ParamTy::Concrete(e) => e.name().to_string(),
-        ParamTy::T(c) | ParamTy::Other(c) => format!("{c:?}"),
+        ParamTy::T(c) | ParamTy::Other(c) => class_name(*c).to_string(),
     };
     let params: Vec<String> = s
         .params
@@ -105,7 +105,7 @@ fn lit_default(l: &LitClass, c: Option<Class>) -> Option<Ty> {
             len: DEFAULT_STRING_LEN,
         }),
         LitClass::Typed(c2) => pick(c2.ty()),
-        LitClass::Unsupported(_) => None,
+        LitClass::Unsupported(_) | LitClass::Invalid(_) => None,
     }
 }
 
@@ -158,24 +158,28 @@ pub(crate) fn resolve(key: &str, args: &[ArgShape]) -> Result<Resolved, ResolveE
             }
         }
     }
-    if t.is_none() {
-        if let Some(c) = t_class {
-            t = args
-                .iter()
-                .enumerate()
-                .find_map(|(i, a)| match (param_of(s, i), a) {
-                    (Some(ParamTy::T(_)), ArgShape::Lit(l)) => lit_default(l, Some(c)),
-                    _ => None,
-                });
-        }
+    if t.is_none()
+        && let Some(c) = t_class
+    {
+        t = args
+            .iter()
+            .enumerate()
+            .find_map(|(i, a)| match (param_of(s, i), a) {
+                (Some(ParamTy::T(_)), ArgShape::Lit(l)) => lit_default(l, Some(c)),
+                _ => None,
+            });
     }
-    if let (Some(t), Some(c)) = (&t, t_class) {
-        if !in_class(t, c) {
-            return Err(err(
-                false,
-                format!("{} is not defined for {t} (needs {c:?})", s.name),
-            ));
-        }
+    if let (Some(t), Some(c)) = (&t, t_class)
+        && !in_class(t, c)
+    {
+        return Err(err(
+            false,
+            format!(
+                "{} is not defined for {t} (needs {})",
+                s.name,
+                class_name(c)
+            ),
+        ));
     }
     let mut params = Vec::new();
     for (i, a) in args.iter().enumerate() {
@@ -198,24 +202,34 @@ pub(crate) fn resolve(key: &str, args: &[ArgShape]) -> Result<Resolved, ResolveE
                 ArgShape::Ty(ty) => {
                     return Err(err(
                         false,
-                        format!("argument {} of {} must be {c:?}, not {ty}", i + 1, s.name),
+                        format!(
+                            "argument {} of {} must be {}, not {ty}",
+                            i + 1,
+                            s.name,
+                            class_name(*c)
+                        ),
                     ));
                 }
                 ArgShape::Lit(l) => lit_default(l, Some(*c)).ok_or_else(|| {
                     err(
                         false,
-                        format!("argument {} of {} must be {c:?}", i + 1, s.name),
+                        format!(
+                            "argument {} of {} must be {}",
+                            i + 1,
+                            s.name,
+                            class_name(*c)
+                        ),
                     )
                 })?,
             },
         };
-        if let ArgShape::Ty(have) = a {
-            if *have != ty {
-                return Err(err(
-                    false,
-                    format!("argument {} of {} must be {ty}, not {have}", i + 1, s.name),
-                ));
-            }
+        if let ArgShape::Ty(have) = a
+            && *have != ty
+        {
+            return Err(err(
+                false,
+                format!("argument {} of {} must be {ty}, not {have}", i + 1, s.name),
+            ));
         }
         params.push(ty);
     }
@@ -309,4 +323,21 @@ pub(crate) fn order_formal<A>(
         ));
     }
     Ok(out)
+}
+
+/// The IEC name of a generic type class.
+fn class_name(c: Class) -> &'static str {
+    match c {
+        Class::AnyNum => "ANY_NUM",
+        Class::AnyInt => "ANY_INT",
+        Class::AnyReal => "ANY_REAL",
+        Class::AnyBit => "ANY_BIT",
+        Class::AnyBitString => "ANY_BIT (except BOOL)",
+        Class::AnyMagnitude => "ANY_MAGNITUDE",
+        Class::AnyElementary => "ANY_ELEMENTARY",
+        Class::AnyString => "ANY_STRING",
+        Class::AnyDate => "ANY_DATE",
+        Class::Bool => "BOOL",
+        _ => "ANY",
+    }
 }

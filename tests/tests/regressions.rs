@@ -1,0 +1,70 @@
+//! Regression tests for compiler bugs found by the behaviour suite (each IL
+//! file's header comment describes the original bug).
+
+use il_std::Cycle;
+
+macro_rules! regression_tests {
+    ($m:ident) => {
+        mod $m {
+            use super::*;
+            use il_tests::$m::*;
+
+            /// fn_en_eno.il: EN/ENO of a user FUNCTION from a formal call.
+            #[test]
+            fn en_eno_of_user_functions() {
+                let mut ctx = Cycle::new();
+                let mut c = EnoCaller::default();
+                for (x, enable, r, ok) in [
+                    (5, true, 5, true),
+                    (-3, true, -3, false),
+                    (7, false, 0, false),
+                ] {
+                    c.x = x;
+                    c.enable = enable;
+                    c.call(&mut ctx);
+                    assert_eq!((c.r, c.ok), (r, ok), "x = {x}, EN = {enable}");
+                }
+            }
+
+            /// array_init_parens.il: array initial values (and no warning).
+            #[test]
+            fn array_initial_values() {
+                let mut ctx = Cycle::new();
+                let mut a = ArrInit::default();
+                a.call(&mut ctx);
+                assert_eq!(a.first, 1);
+                assert_eq!(a.arr, [1, 2, 3, 4, 5]);
+            }
+
+            /// fb_type_case.il: an instance of a mixed-case user FB.
+            #[test]
+            fn mixed_case_user_fb_type() {
+                let mut ctx = Cycle::new();
+                let mut u = UsesCounter1::default();
+                u.call(&mut ctx);
+                u.call(&mut ctx);
+                assert_eq!(u.n, 2);
+            }
+
+            /// fn_param_none.il: a FUNCTION input named `None`.
+            #[test]
+            fn input_named_like_a_prelude_variant() {
+                let mut ctx = Cycle::new();
+                assert_eq!(ProbeNone(&mut ctx, 42), 42);
+            }
+
+            /// pou_named_i16.il: a POU named like a Rust primitive becomes `i16_`.
+            #[test]
+            fn pou_named_like_a_primitive() {
+                let mut ctx = Cycle::new();
+                let mut b = i16_::default();
+                b.call(&mut ctx);
+                let y: i16 = b.y;
+                assert_eq!(y, 1);
+            }
+        }
+    };
+}
+
+regression_tests!(via_build);
+regression_tests!(via_macro);

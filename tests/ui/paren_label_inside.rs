@@ -1,0 +1,19 @@
+// Parentheses: a label inside a deferred AND( ... ).
+il_macros::il!(r#"
+FUNCTION_BLOCK Fb
+VAR
+    a : BOOL;
+    b : BOOL;
+    c : BOOL;
+    q : BOOL;
+END_VAR
+    LD a
+    AND(
+inner:  LD b
+        OR c
+    )
+    ST q
+END_FUNCTION_BLOCK
+"#);
+
+fn main() {}
