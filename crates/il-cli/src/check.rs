@@ -67,6 +67,11 @@ pub fn read_source(path: &str) -> Result<SourceFile, String> {
             e.as_bytes()[at]
         )
     })?;
+    // A UTF-8 byte order mark (Windows PLC tools write one) is not source text.
+    let text = match text.strip_prefix('\u{feff}') {
+        Some(rest) => rest.to_string(),
+        None => text,
+    };
     Ok(SourceFile::new(name, text))
 }
 
@@ -206,6 +211,17 @@ mod tests {
             unreadable: 2,
         };
         assert_eq!(summary(&t).unwrap(), "check failed: 2 files not read");
+    }
+
+    #[test]
+    fn byte_order_mark_is_dropped() {
+        let dir = std::env::temp_dir().join(format!("ilc-bom-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let p = dir.join("bom.il");
+        std::fs::write(&p, "\u{feff}PROGRAM p\nEND_PROGRAM\n").unwrap();
+        let f = read_source(p.to_str().unwrap()).unwrap();
+        assert!(f.text.starts_with("PROGRAM"));
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]

@@ -171,7 +171,6 @@ fn color_follows_the_flag() {
 }
 
 #[test]
-#[ignore = "needs parser"]
 fn errors_are_rendered_and_exit_1() {
     let f = temp_file("broken.il", BROKEN.as_bytes());
     let o = ilc(&["check", &f]);
@@ -187,7 +186,6 @@ fn errors_are_rendered_and_exit_1() {
 }
 
 #[test]
-#[ignore = "needs parser"]
 fn json_is_one_object_per_line() {
     let f = temp_file("broken2.il", BROKEN.as_bytes());
     let g = temp_file("valid3.il", VALID.as_bytes());
@@ -215,4 +213,64 @@ fn json_is_one_object_per_line() {
         };
         assert!(r.starts_with("error[IL"));
     }
+}
+
+/// Unreachable code: a warning, not an error.
+const WARNS: &str = "\
+PROGRAM main
+VAR
+    a : BOOL;
+END_VAR
+    LD a
+    JMP done
+    ST a
+done:
+    LD a
+    ST a
+END_PROGRAM
+";
+
+#[test]
+fn warnings_alone_exit_0_but_are_printed() {
+    let f = temp_file("warns.il", WARNS.as_bytes());
+    let o = ilc(&["check", &f]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(o.stdout.is_empty());
+    let e = stderr(&o);
+    assert!(e.starts_with("warning[IL"), "{e}");
+    assert!(e.contains(&format!(" --> {f}:7:5")), "{e}");
+    assert!(e.trim_end().ends_with("warning: 1 warning emitted"), "{e}");
+    let o = ilc(&["check", "--message-format", "json", &f]);
+    assert_eq!(code(&o), 0);
+    assert!(o.stderr.is_empty());
+    let v = json::parse(stdout(&o).trim_end());
+    assert_eq!(json::get(&v, "severity"), &json::J::Str("warning".into()));
+}
+
+#[test]
+fn explain_known_and_unknown_codes() {
+    let o = ilc(&["explain", "il0003"]);
+    assert_eq!(code(&o), 0);
+    assert!(stdout(&o).starts_with("IL0003: "), "{}", stdout(&o));
+    let o = ilc(&["explain", "IL9999"]);
+    assert_eq!(code(&o), 1);
+    assert!(stderr(&o).contains("IL9999"));
+}
+
+#[test]
+fn every_file_is_checked_and_reported() {
+    let bad = temp_file("broken3.il", BROKEN.as_bytes());
+    let good = temp_file("valid4.il", VALID.as_bytes());
+    let warns = temp_file("warns2.il", WARNS.as_bytes());
+    let o = ilc(&["check", &bad, "missing.il", &good, &warns]);
+    assert_eq!(code(&o), 1);
+    let e = stderr(&o);
+    assert!(e.contains(&format!(" --> {bad}:")), "{e}");
+    assert!(e.contains("`missing.il`"), "{e}");
+    assert!(e.contains(&format!(" --> {warns}:7:5")), "{e}");
+    assert!(!e.contains(&good), "{e}");
+    assert!(
+        e.contains("1 warning") && e.contains("1 file not read"),
+        "{e}"
+    );
 }

@@ -3,10 +3,11 @@
 //! from the corpus's `SOURCES.txt` notes. A corpus file missing from the table
 //! fails the test, so new corpus files are noticed.
 //!
-//! The expectations are those of `ilc check` as it is today: syntax only.
-//! Programs that are well-formed IL but call non-IEC functions (echidna's
-//! `dbg`, `piface_write`, `_exit`) or recurse are accepted here; the semantic
-//! checker will refuse them later, and this table will say so then.
+//! The expectation is what a correct IEC 61131-3 checker should say about the
+//! file checked on its own. Where `ilc` does not say that yet, the entry keeps
+//! the correct expectation and names the gap (`gap: Some(..)`): the test then
+//! prints it instead of failing, and fails once the gap is closed so that the
+//! note is removed.
 
 #[path = "../../il-codegen/tests/common/json.rs"]
 mod json;
@@ -22,7 +23,7 @@ enum Expect {
     Accept,
     /// `ilc check` exits 1 and among its errors is one with this code, on this
     /// line, whose message names the non-standard construct `must_mention`
-    /// (case-insensitive).
+    /// (case-insensitive). Other errors may come with it.
     Refuse {
         code: &'static str,
         line: usize,
@@ -32,56 +33,136 @@ enum Expect {
 
 use Expect::*;
 
-const EXPECTED: &[(&str, Expect)] = &[
+struct Entry {
+    file: &'static str,
+    expect: Expect,
+    /// Why `ilc` does not meet the expectation yet (a missing feature or a bug).
+    gap: Option<&'static str>,
+}
+
+const fn ok(file: &'static str, expect: Expect) -> Entry {
+    Entry {
+        file,
+        expect,
+        gap: None,
+    }
+}
+
+const fn gap(file: &'static str, expect: Expect, why: &'static str) -> Entry {
+    Entry {
+        file,
+        expect,
+        gap: Some(why),
+    }
+}
+
+const EXPECTED: &[Entry] = &[
     // Tier 1: the standard's own Annex F examples.
-    ("beremiz_matiec_cmd_monitor_il.txt", Accept),
-    ("beremiz_matiec_fwd_rev_mon_il.txt", Accept),
-    // `CAL LIMIT(MN:=1,IN:=N,MX:=128)`: CAL of a function with a one-line formal
-    // list; syntactically a CAL; that LIMIT is a function is for the checker.
-    ("beremiz_matiec_stack_int_il.txt", Accept),
-    ("beremiz_matiec_weigh_il.txt", Accept),
+    ok("beremiz_matiec_cmd_monitor_il.txt", Accept),
+    // FWD_MON : CMD_MONITOR is declared in cmd_monitor_il.txt; checked on its
+    // own the type is unknown. (Line 60 `LD FWD_REV_FF.Q` is a slip of the
+    // draft too: SR's output is Q1; ilc reports it as IL0112.)
+    ok(
+        "beremiz_matiec_fwd_rev_mon_il.txt",
+        Refuse {
+            code: "IL0105",
+            line: 23,
+            must_mention: "CMD_MONITOR",
+        },
+    ),
+    // `CAL LIMIT(MN:=1,IN:=N,MX:=128)`: CAL of a function, one-line formal list.
+    ok("beremiz_matiec_stack_int_il.txt", Accept),
+    ok("beremiz_matiec_weigh_il.txt", Accept),
     // Tier 2: parser stress files that also hold Structured Text (and SFC).
-    (
+    ok(
         "beremiz_matiec_basic_code.test",
         Refuse {
-            code: "IL00??",
+            code: "IL0009",
             line: 419,
             must_mention: "Structured Text",
         },
     ),
-    (
+    ok(
         "beremiz_matiec_identifier_as_variable2.test",
         Refuse {
-            code: "IL00??",
+            code: "IL0009",
             line: 47,
             must_mention: "Structured Text",
         },
     ),
     // Tier 4: small real programs.
-    ("Autonomy-Logic_STruCpp_state-display.il", Accept),
-    ("eduardojvieira_ZPLC_blinky_2a44dc4.il", Accept),
-    ("eduardojvieira_ZPLC_jumps.il", Accept),
-    ("eduardojvieira_ZPLC_logic.il", Accept),
-    // Tier 4b: echidna. Syntactically IEC; `dbg`, `piface_write`, `_exit` and
-    // recursion are semantic matters.
-    ("61131_echidna_blink.il", Accept),
-    ("61131_echidna_ctu.il", Accept),
-    ("61131_echidna_factorial.il", Accept),
-    ("61131_echidna_rpiface-updown.il", Accept),
-    ("61131_echidna_sine.il", Accept),
+    ok("Autonomy-Logic_STruCpp_state-display.il", Accept),
+    ok("eduardojvieira_ZPLC_blinky_2a44dc4.il", Accept),
+    // `skip1_result AT %Q0.0 : INT`: without a size prefix %Q0.0 is a bit, so an
+    // INT cannot live there (ZPLC's dialect). Separately, with the AT parts
+    // removed, ilc still refuses `LD 999` on line 17 as "not a BOOL" although
+    // it is stored to an INT: a checker bug this table cannot show.
+    ok(
+        "eduardojvieira_ZPLC_jumps.il",
+        Refuse {
+            code: "IL0128",
+            line: 4,
+            must_mention: "%Q0.0",
+        },
+    ),
+    ok("eduardojvieira_ZPLC_logic.il", Accept),
+    // Tier 4b: echidna. `dbg`, `piface_write` and `_exit` are echidna
+    // built-ins, not IEC functions.
+    ok(
+        "61131_echidna_blink.il",
+        Refuse {
+            code: "IL0114",
+            line: 26,
+            must_mention: "dbg",
+        },
+    ),
+    ok(
+        "61131_echidna_ctu.il",
+        Refuse {
+            code: "IL0114",
+            line: 10,
+            must_mention: "dbg",
+        },
+    ),
+    gap(
+        "61131_echidna_factorial.il",
+        Refuse {
+            code: "IL0114",
+            line: 23,
+            must_mention: "dbg",
+        },
+        "the parser refuses `add cycle, 1` (IL0030, line 28), which SOURCES.txt reads as the \
+         non-formal call ADD(CR, cycle, 1) of the extensible ADD function; so the checker never runs",
+    ),
+    ok(
+        "61131_echidna_rpiface-updown.il",
+        Refuse {
+            code: "IL0114",
+            line: 5,
+            must_mention: "piface_write",
+        },
+    ),
+    ok(
+        "61131_echidna_sine.il",
+        Refuse {
+            code: "IL0114",
+            line: 19,
+            must_mention: "dbg",
+        },
+    ),
     // Tier 5: dialects. `;` starts a comment in both; IEC has only `(* *)`.
-    (
+    ok(
         "hiperiondev_il_parser_test2.il",
         Refuse {
-            code: "IL00??",
-            line: 10,
+            code: "IL0008",
+            line: 9,
             must_mention: ";",
         },
     ),
-    (
+    ok(
         "kalamara_plcemu_knuth.il",
         Refuse {
-            code: "IL00??",
+            code: "IL0008",
             line: 2,
             must_mention: ";",
         },
@@ -133,7 +214,6 @@ fn check(path: &Path) -> (i32, Vec<(String, usize, String)>) {
 }
 
 #[test]
-#[ignore = "needs parser"]
 fn corpus_outcomes() {
     let dir = corpus_dir();
     if !dir.is_dir() {
@@ -149,14 +229,15 @@ fn corpus_outcomes() {
         .collect();
     files.sort();
     let mut failures = Vec::new();
-    for (name, _) in EXPECTED {
+    let mut gaps = 0;
+    for Entry { file: name, .. } in EXPECTED {
         if !dir.join(name).is_file() {
             failures.push(format!("{name}: in the table but not in the corpus"));
         }
     }
     for path in &files {
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
-        let Some((_, expect)) = EXPECTED.iter().find(|(n, _)| *n == name) else {
+        let Some(Entry { expect, gap, .. }) = EXPECTED.iter().find(|e| e.file == name) else {
             failures.push(format!(
                 "{name}: new corpus file; add its expected outcome to EXPECTED"
             ));
@@ -169,15 +250,8 @@ fn corpus_outcomes() {
                 .map(|(c, l, m)| format!("\n    {c} line {l}: {m}"))
                 .collect::<String>()
         };
-        match expect {
-            Accept => {
-                if status != 0 || !errors.is_empty() {
-                    failures.push(format!(
-                        "{name}: expected Accept, got exit {status}{}",
-                        shown()
-                    ));
-                }
-            }
+        let (met, wanted) = match expect {
+            Accept => (status == 0 && errors.is_empty(), "Accept".to_string()),
             Refuse {
                 code,
                 line,
@@ -188,16 +262,28 @@ fn corpus_outcomes() {
                         && l == line
                         && m.to_lowercase().contains(&must_mention.to_lowercase())
                 });
-                if status != 1 || !hit {
-                    failures.push(format!(
-                        "{name}: expected {code} on line {line} naming {must_mention:?}, got exit {status}{}",
-                        shown()
-                    ));
-                }
+                (
+                    status == 1 && hit,
+                    format!("{code} on line {line} naming {must_mention:?}"),
+                )
             }
+        };
+        match (met, gap) {
+            (true, None) => {}
+            (false, None) => failures.push(format!(
+                "{name}: expected {wanted}, got exit {status}{}",
+                shown()
+            )),
+            (false, Some(why)) => {
+                println!("known gap: {name}: expected {wanted}, got exit {status}: {why}");
+                gaps += 1;
+            }
+            (true, Some(why)) => failures.push(format!(
+                "{name}: now meets its expectation ({wanted}); remove the gap note \"{why}\""
+            )),
         }
     }
-    println!("checked {} corpus files", files.len());
+    println!("checked {} corpus files, {gaps} known gaps", files.len());
     assert!(
         failures.is_empty(),
         "{} corpus file(s) off:\n{}",
