@@ -41,7 +41,8 @@ enum Why {
 /// The CR's class on one edge into a label (literal values erased).
 #[derive(Clone, Debug, PartialEq)]
 enum Class {
-    LitInt,
+    /// An integer literal, with its value: it joins a typed path only if it fits.
+    LitInt(i128),
     LitReal,
     LitStr(bool),
     Val(Ty),
@@ -149,6 +150,7 @@ fn join(edges: &[(Span, Class, u32)]) -> Cr {
     }
     let mut ty: Option<Ty> = None;
     let mut lit: Option<Class> = None;
+    let mut lits: Vec<&Class> = Vec::new();
     let mut bad = false;
     for (_, c, _) in edges {
         match c {
@@ -158,18 +160,22 @@ fn join(edges: &[(Span, Class, u32)]) -> Cr {
                 Some(_) => bad = true,
             },
             Class::Undef(_) => bad = true,
-            l => match &lit {
-                None => lit = Some(l.clone()),
-                Some(m) if m == l => {}
-                Some(_) => bad = true,
-            },
+            l => {
+                // Literals of one kind join (their values may differ).
+                match &lit {
+                    None => lit = Some(l.clone()),
+                    Some(m) if std::mem::discriminant(m) == std::mem::discriminant(l) => {}
+                    Some(_) => bad = true,
+                }
+                lits.push(l);
+            }
         }
     }
     if !bad {
         match (ty, lit) {
             (Some(t), None) => return Cr::Val(t),
-            (Some(t), Some(l)) if lit_fits(&l, &t) => return Cr::Val(t),
-            (None, Some(Class::LitInt)) => return Cr::Val(Ty::Elem(Elem::DINT)),
+            (Some(t), Some(_)) if lits.iter().all(|l| lit_fits(l, &t)) => return Cr::Val(t),
+            (None, Some(Class::LitInt(_))) => return Cr::Val(Ty::Elem(Elem::DINT)),
             (None, Some(Class::LitReal)) => return Cr::Val(Ty::Elem(Elem::LREAL)),
             (None, Some(Class::LitStr(w))) => {
                 return Cr::Val(Ty::Str {
@@ -186,7 +192,7 @@ fn join(edges: &[(Span, Class, u32)]) -> Cr {
         .map(|(_, c, line)| {
             let what = match c {
                 Class::Val(t) => t.to_string(),
-                Class::LitInt => "an integer literal".into(),
+                Class::LitInt(v) => format!("the integer literal {v}"),
                 Class::LitReal => "a real literal".into(),
                 Class::LitStr(_) => "a string literal".into(),
                 Class::Undef(why) => format!("undefined ({why})"),
@@ -200,7 +206,11 @@ fn join(edges: &[(Span, Class, u32)]) -> Cr {
 
 fn lit_fits(c: &Class, t: &Ty) -> bool {
     match (c, t) {
-        (Class::LitInt, Ty::Elem(e)) => e.int_range().is_some() || e.is_real(),
+        // BOOL takes 0 and 1 in a store, but a label joining an integer path
+        // with a BOOL path is more likely a mistake: keep them apart.
+        (Class::LitInt(v), Ty::Elem(e)) if *e != Elem::BOOL => {
+            coerce(&LitClass::Int(*v), t).is_ok()
+        }
         (Class::LitReal, Ty::Elem(e)) => e.is_real(),
         (Class::LitStr(w), Ty::Str { wide, .. }) => w == wide,
         _ => false,
@@ -306,7 +316,7 @@ impl Walk<'_, '_> {
                     .map_or(m.as_str(), |x| x.1)
                     .to_string(),
             ),
-            Cr::Lit(LitClass::Int(_), _) => Class::LitInt,
+            Cr::Lit(LitClass::Int(v), _) => Class::LitInt(*v),
             Cr::Lit(LitClass::Real(..), _) => Class::LitReal,
             Cr::Lit(LitClass::Str(_, w), _) => Class::LitStr(*w),
             Cr::Lit(..) => Class::Undef("an invalid literal".into()),

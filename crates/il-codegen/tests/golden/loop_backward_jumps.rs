@@ -25,7 +25,6 @@ pub fn SumTo(__ctx: &mut ::il_std::Cycle, mut __v_n: i32) -> i32 {
                 __v_acc = 0i32;
                 // 7: ST   i
                 __v_i = 0i32;
-                // 8: next:   LD   i
                 __cr_dint = 0i32;
                 __pc = 1usize;
             }
