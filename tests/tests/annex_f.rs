@@ -293,3 +293,33 @@ mod fwd_rev_mon {
         assert!(m.FWD_REV_ALRM, "SR: set dominates reset");
     }
 }
+
+/// FWD_REV_MON reads `FWD_REV_FF.Q`, but FWD_REV_FF is an SR whose output is
+/// `Q1`: the checker refuses it at that line and suggests `Q1`; the corrected
+/// copy (made by build.rs) compiles and is tested above.
+#[cfg(il_corpus)]
+#[test]
+fn fwd_rev_mon_as_published_is_refused_with_q1_suggested() {
+    use il_codegen::diag::SourceFile;
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/corpus/");
+    let read = |n: &str| SourceFile::new(n, std::fs::read_to_string(format!("{dir}{n}")).unwrap());
+    let files = [
+        read("beremiz_matiec_cmd_monitor_il.txt"),
+        read("beremiz_matiec_fwd_rev_mon_il.txt"),
+    ];
+    let errors =
+        il_codegen::compile_all_to_files(&files).expect_err("FWD_REV_FF.Q must be refused");
+    let (index, diags) = &errors[0];
+    assert_eq!(*index, 1, "the error is in FWD_REV_MON, not CMD_MONITOR");
+    let errs: Vec<_> = diags.iter().filter(|d| d.is_error()).collect();
+    assert_eq!(errs.len(), 1, "{errs:#?}");
+    let d = errs[0];
+    assert_eq!(d.code, "IL0112");
+    assert_eq!(
+        files[1].line_col(d.span.lo).0,
+        60,
+        "the line of `LD FWD_REV_FF.Q`"
+    );
+    assert!(d.message.contains("`Q`"), "{}", d.message);
+    assert_eq!(d.help.as_deref(), Some("did you mean `Q1`?"));
+}

@@ -68,3 +68,33 @@ macro_rules! regression_tests {
 
 regression_tests!(via_build);
 regression_tests!(via_macro);
+
+macro_rules! operand_list_tests {
+    ($m:ident) => {
+        mod $m {
+            use super::*;
+            use il_tests::$m::AddList;
+
+            /// `ADD b, c` is ADD(CR, b, c); `GT b, c` is CR > b AND b > c.
+            #[test]
+            fn extensible_functions_with_operand_lists() {
+                let mut ctx = Cycle::new();
+                let mut f = AddList::default();
+                (f.a, f.b, f.c) = (1, 20, 3);
+                f.call(&mut ctx);
+                assert_eq!(f.sum, 24);
+                assert!(f.big, "24 > 20 > 3");
+                (f.a, f.b, f.c) = (1, 2, 3);
+                f.call(&mut ctx);
+                assert_eq!(f.sum, 6);
+                assert!(!f.big, "6 > 2 but not 2 > 3");
+            }
+        }
+    };
+}
+
+mod operand_lists {
+    use super::*;
+    operand_list_tests!(via_build);
+    operand_list_tests!(via_macro);
+}

@@ -61,8 +61,8 @@ fn one_instruction_per_line() {
         "unexpected `ST` after the instruction"
     );
     assert_eq!(
-        line3("ADD x, 1", "IL0030", 6),
-        "`ADD` takes one operand, not a list"
+        line3("LD x, 1", "IL0030", 5),
+        "`LD` takes one operand, not a list"
     );
     assert_eq!(
         line3("LD x y", "IL0030", 6),

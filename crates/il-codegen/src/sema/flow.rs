@@ -769,8 +769,10 @@ impl Walk<'_, '_> {
     /// Make an argument a value of type `ty` for `dest` ("`x`", "input `PT` of t"):
     /// like [`Self::fit`], with a message that names both sides.
     fn fit_to(&mut self, arg: Arg, ty: &Ty, span: Span, dest: &str) -> Option<Value> {
-        if let Arg::Typed(v, t) = &arg {
-            if t != ty {
+        if let Arg::Typed(v, t) = &arg
+            && t != ty
+        {
+            {
                 let src = if matches!(v, Value::Cr(_) | Value::Saved(..)) {
                     "the current result"
                 } else {
@@ -1282,7 +1284,7 @@ impl Walk<'_, '_> {
                 CallArgs::NonFormal(list) if !formal_only => {
                     let total = list.len() + 1;
                     if total != inputs.len() {
-                        if let Some(d) = self.err(ARG_COUNT, span, format!("{fname} takes {} inputs; this call gives {total} (the current result and {} operands)", inputs.len(), list.len())) {
+                        if let Some(d) = self.err(ARG_COUNT, span, format!("{fname} takes {} input(s); this call gives {total} (the current result and {} operand(s))", inputs.len(), list.len())) {
                             d.notes.push(format!("inputs of {fname}: {}", inputs.iter().map(|(_, n, t)| format!("{n} : {t}")).collect::<Vec<_>>().join(", ")));
                         }
                         return bad;

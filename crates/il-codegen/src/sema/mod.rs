@@ -126,8 +126,8 @@ fn edit_distance(a: &str, b: &str) -> usize {
     for (i, row) in d.iter_mut().enumerate() {
         row[0] = i;
     }
-    for j in 0..=b.len() {
-        d[0][j] = j;
+    for (j, cell) in d[0].iter_mut().enumerate() {
+        *cell = j;
     }
     for i in 1..=a.len() {
         for j in 1..=b.len() {
@@ -144,6 +144,13 @@ fn edit_distance(a: &str, b: &str) -> usize {
     d[a.len()][b.len()]
 }
 
+/// Whether `name` is a standard function block of il-std.
+pub(crate) fn is_std_fb(name: &str) -> bool {
+    stdfb::lookup(name).is_some()
+}
+
+pub(crate) use flow::default_const;
+
 #[cfg(test)]
 mod suggest_tests {
     use super::suggest;
@@ -157,10 +164,3 @@ mod suggest_tests {
         assert_eq!(suggest("motor", ["valve"]), None);
     }
 }
-
-/// Whether `name` is a standard function block of il-std.
-pub(crate) fn is_std_fb(name: &str) -> bool {
-    stdfb::lookup(name).is_some()
-}
-
-pub(crate) use flow::default_const;
