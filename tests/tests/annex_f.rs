@@ -1,3 +1,6 @@
+// Hosts create a block with Default and then set its inputs, as a PLC does.
+#![allow(clippy::field_reassign_with_default)]
+
 //! The IEC 61131-3 Annex F IL programs (CMD_MONITOR, STACK_INT, WEIGH,
 //! FWD_REV_MON), compiled by build.rs from ../shared/corpus when present,
 //! tested against the standard's descriptions of them.
