@@ -3,7 +3,7 @@
 use std::io::{self, IsTerminal, Read, Write};
 use std::path::Path;
 
-use il_codegen::diag::{Diagnostic, Severity, SourceFile, render, to_json};
+use il_codegen::diag::{Severity, SourceFile, render, to_json};
 
 /// How diagnostics are written.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -83,12 +83,6 @@ fn io_reason(e: &io::Error) -> String {
     }
 }
 
-/// Every diagnostic of one file. The single place where `ilc` runs the
-/// compiler's checks: [`il_codegen::check_source`] gets every new stage.
-pub fn check_file(file: &SourceFile) -> Vec<Diagnostic> {
-    il_codegen::check_source(file)
-}
-
 /// Run `ilc check` over `paths`, writing JSON to `out` and everything else to
 /// `err`. Returns the totals; the caller turns them into the exit status.
 pub fn run(
@@ -99,16 +93,19 @@ pub fn run(
     err: &mut dyn Write,
 ) -> Totals {
     let mut totals = Totals::default();
+    let mut files = Vec::new();
     for path in paths {
-        let file = match read_source(path) {
-            Ok(f) => f,
+        match read_source(path) {
+            Ok(f) => files.push(f),
             Err(msg) => {
                 totals.unreadable += 1;
                 let _ = writeln!(err, "{}", error_line(color, &msg));
-                continue;
             }
-        };
-        let diags = check_file(&file);
+        }
+    }
+    // The files form one program, as with `ilc emit` and the build-script
+    // Builder: a FUNCTION_BLOCK of one file may be used in another.
+    for (file, diags) in files.iter().zip(il_codegen::check_sources(&files)) {
         for d in &diags {
             match d.severity {
                 Severity::Error => totals.errors += 1,
@@ -117,11 +114,11 @@ pub fn run(
         }
         match format {
             Format::Human => {
-                let _ = err.write_all(render(&file, &diags, color).as_bytes());
+                let _ = err.write_all(render(file, &diags, color).as_bytes());
             }
             Format::Json => {
                 for d in &diags {
-                    let _ = writeln!(out, "{}", to_json(&file, d));
+                    let _ = writeln!(out, "{}", to_json(file, d));
                 }
             }
         }

@@ -274,3 +274,30 @@ fn every_file_is_checked_and_reported() {
         "{e}"
     );
 }
+
+/// Files given together are one program: FWD_REV_MON uses CMD_MONITOR from
+/// another file, and the only error left is the standard's own `FWD_REV_FF.Q`.
+#[test]
+fn files_are_checked_together() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/corpus/");
+    let (a, b) = (
+        format!("{dir}beremiz_matiec_cmd_monitor_il.txt"),
+        format!("{dir}beremiz_matiec_fwd_rev_mon_il.txt"),
+    );
+    if !std::path::Path::new(&a).exists() {
+        println!("SKIPPED: ../shared/corpus not found");
+        return;
+    }
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ilc"))
+        .args(["check", "--color", "never", &a, &b])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert_eq!(err.matches("error[").count(), 1, "{err}");
+    assert!(
+        err.contains("error[IL0112]: SR has no input or output `Q`"),
+        "{err}"
+    );
+    assert!(err.contains("did you mean `Q1`?"), "{err}");
+}

@@ -16,5 +16,5 @@ pub mod sema;
 pub mod syntax;
 
 pub use builder::{Builder, Error, write_if_changed};
-pub use check::check_source;
+pub use check::{check_source, check_sources};
 pub use compile::{Compiled, compile, compile_all_to_files, compile_to_file, format_file};
