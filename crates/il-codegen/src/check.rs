@@ -8,11 +8,12 @@ use crate::diag::{Diagnostic, SourceFile, has_errors};
 pub fn check_sources(files: &[SourceFile]) -> Vec<Vec<Diagnostic>> {
     let parsed: Vec<_> = files.iter().map(crate::syntax::parse).collect();
     let mut all: Vec<Vec<Diagnostic>> = parsed.iter().map(|(_, d)| d.clone()).collect();
-    if !all.iter().any(|d| has_errors(d)) {
-        let pairs: Vec<_> = files.iter().zip(parsed.iter().map(|(u, _)| u)).collect();
-        for (d, more) in all.iter_mut().zip(crate::sema::check_all(&pairs).1) {
-            d.extend(more);
-        }
+    // Files with syntax errors stay out of the semantic check (it would
+    // mostly repeat them); the others are checked together.
+    let clean: Vec<usize> = (0..files.len()).filter(|&i| !has_errors(&all[i])).collect();
+    let pairs: Vec<_> = clean.iter().map(|&i| (&files[i], &parsed[i].0)).collect();
+    for (&i, more) in clean.iter().zip(crate::sema::check_all(&pairs).1) {
+        all[i].extend(more);
     }
     for d in &mut all {
         d.sort_by_key(|d| (d.span.lo, d.span.hi));
