@@ -217,7 +217,7 @@ fn json_is_one_object_per_line() {
 
 /// Unreachable code: a warning, not an error.
 const WARNS: &str = "\
-PROGRAM main
+PROGRAM warns
 VAR
     a : BOOL;
 END_VAR
