@@ -98,3 +98,36 @@ mod operand_lists {
     operand_list_tests!(via_build);
     operand_list_tests!(via_macro);
 }
+
+macro_rules! pending_call_tests {
+    ($m:ident) => {
+        mod $m {
+            use super::*;
+            use il_tests::$m::MuxLit;
+
+            /// `LD k / MUX 10, 20, 30 / ST mux_out`: the literals take the
+            /// type of `mux_out` (INT), as plain literals would.
+            #[test]
+            fn untyped_literal_arguments_take_their_type_from_use() {
+                let mut ctx = Cycle::new();
+                let mut m = MuxLit::default();
+                for (k, out) in [(0, 10), (1, 20), (2, 30)] {
+                    m.k = k;
+                    m.call(&mut ctx);
+                    assert_eq!(m.mux_out, out);
+                }
+                assert_eq!(ctx.fault_count(), 0);
+                m.k = 7;
+                m.call(&mut ctx);
+                assert_eq!(m.mux_out, 10, "out of range gives IN0 and a fault");
+                assert_eq!(ctx.fault_count(), 1);
+            }
+        }
+    };
+}
+
+mod pending_calls {
+    use super::*;
+    pending_call_tests!(via_build);
+    pending_call_tests!(via_macro);
+}

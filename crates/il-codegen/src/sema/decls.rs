@@ -645,6 +645,23 @@ pub(crate) enum LitClass {
     Unsupported(&'static str),
     /// A typed literal whose value does not fit its prefix (`SINT#300`).
     Invalid(String),
+    /// A generic standard function applied to untyped literals only
+    /// (`LD k / MUX 10, 20, 30`): like a literal, it gets its type from its
+    /// first typed use, and its code is emitted then.
+    Pending(Box<Pending>),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Pending {
+    pub key: String,
+    pub args: Vec<(PendArg, Span)>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum PendArg {
+    Typed(super::ir::Value, Ty),
+    Lit(LitClass),
 }
 
 pub(crate) fn lit_class(lit: &Literal) -> LitClass {
@@ -725,6 +742,7 @@ pub(crate) fn coerce(lit: &LitClass, ty: &Ty) -> Result<Const, String> {
         }
         (LitClass::Unsupported(msg), _) => Err((*msg).to_string()),
         (LitClass::Invalid(msg), _) => Err(msg.clone()),
+        (LitClass::Pending(p), _) => Err(format!("the result of {} has no type here", p.key)),
         _ => mismatch(),
     }
 }
@@ -753,6 +771,7 @@ pub(crate) fn describe(lit: &LitClass) -> String {
         LitClass::Str(..) => "a string literal".to_string(),
         LitClass::Unsupported(m) => (*m).to_string(),
         LitClass::Invalid(m) => m.clone(),
+        LitClass::Pending(p) => format!("the result of {} on untyped literals", p.key),
     }
 }
 

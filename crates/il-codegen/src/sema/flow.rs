@@ -6,7 +6,7 @@
 //! report diagnostics and build the IR with those states.
 
 use super::codes::*;
-use super::decls::{Env, LitClass, PouSig, coerce, describe, lit_class};
+use super::decls::{Env, LitClass, PendArg, Pending, PouSig, coerce, describe, lit_class};
 use super::ir::{self, BinOp, CheckedPou, Const, Expr, Op, PathElem, Place, Root, Value};
 use super::types::{Elem, Ty};
 use super::{Cx, stdfb, stdfn, suggest};
@@ -272,6 +272,7 @@ impl Walk<'_, '_> {
                         continue;
                     };
                     // The fall-through edge comes from the line before the label.
+                    cr = self.settle_cr(cr);
                     if cr != Cr::Dead {
                         self.edge(l, &cr, id.span);
                     }
@@ -323,7 +324,9 @@ impl Walk<'_, '_> {
             Cr::Val(t) => Class::Val(t.clone()),
         };
         self.edges[l].push((span, class, self.line));
-        if let (Cr::Lit(lit, lspan), Cr::Val(t)) = (cr, &self.label_in[l].clone()) {
+        if let (Cr::Lit(lit, lspan), Cr::Val(t)) = (cr, &self.label_in[l].clone())
+            && !matches!(lit, LitClass::Pending(_))
+        {
             match coerce(lit, t) {
                 Ok(c) => self.push(Op::SetCr {
                     ty: t.clone(),
@@ -429,7 +432,7 @@ impl Walk<'_, '_> {
                 Cr::Val(Ty::BOOL)
             }
             InstrKind::Not => {
-                let Some(arg) = self.use_cr(&cr, span) else {
+                let Some(arg) = self.use_cr(&cr, span).and_then(|a| self.settle(a)) else {
                     return cr;
                 };
                 match arg {
@@ -481,7 +484,9 @@ impl Walk<'_, '_> {
                 body,
                 close_span,
             } => {
-                let Some(lhs) = self.use_cr(&cr, span) else {
+                // A pending call is emitted before the inner instructions,
+                // which reuse the CR locals its arguments may read.
+                let Some(lhs) = self.use_cr(&cr, span).and_then(|a| self.settle(a)) else {
                     return Cr::Undef(Why::Error);
                 };
                 let lhs = match lhs {
@@ -535,6 +540,7 @@ impl Walk<'_, '_> {
                 self.jumped[l] = true;
                 match cond {
                     Cond::Always => {
+                        let cr = self.settle_cr(cr);
                         self.edge(l, &cr, span);
                         self.push(Op::Jump {
                             label: l,
@@ -749,6 +755,9 @@ impl Walk<'_, '_> {
                 }
                 None
             }
+            Arg::Lit(LitClass::Pending(p), _) => {
+                self.materialize(&p, Some(&Ty::BOOL)).map(|(v, _)| v)
+            }
             Arg::Lit(l, s) => match coerce(&l, &Ty::BOOL) {
                 Ok(c) => {
                     // The CR is BOOL from here on, so it must live in its local.
@@ -802,13 +811,7 @@ impl Walk<'_, '_> {
                 }
                 None
             }
-            Arg::Lit(l, s) => match coerce(&l, ty) {
-                Ok(c) => Some(Value::Const(c)),
-                Err(m) => {
-                    self.err(LITERAL_RANGE, s, m);
-                    None
-                }
-            },
+            Arg::Lit(l, s) => self.lit_value(&l, ty, s, LITERAL_RANGE),
         }
     }
 
@@ -1513,8 +1516,109 @@ impl Walk<'_, '_> {
         bad
     }
 
+    /// A pending call as an argument where no type is expected: emit it
+    /// with the types its arguments default to.
+    fn settle(&mut self, a: Arg) -> Option<Arg> {
+        match a {
+            Arg::Lit(LitClass::Pending(p), _) => {
+                let (v, t) = self.materialize(&p, None)?;
+                Some(Arg::Typed(v, t))
+            }
+            a => Some(a),
+        }
+    }
+
+    fn settle_cr(&mut self, cr: Cr) -> Cr {
+        match cr {
+            Cr::Lit(LitClass::Pending(p), _) => match self.materialize(&p, None) {
+                Some((_, t)) => Cr::Val(t),
+                None => Cr::Undef(Why::Error),
+            },
+            cr => cr,
+        }
+    }
+
+    /// Emit a pending call with result type `force` (or its default): the
+    /// CR local of that type holds the result.
+    fn materialize(&mut self, p: &Pending, force: Option<&Ty>) -> Option<(Value, Ty)> {
+        let shapes: Vec<stdfn::ArgShape> = p
+            .args
+            .iter()
+            .map(|(a, _)| match a {
+                PendArg::Typed(_, t) => stdfn::ArgShape::Ty(t.clone()),
+                PendArg::Lit(l) => stdfn::ArgShape::Lit(l.clone()),
+            })
+            .collect();
+        let res = match stdfn::resolve(&p.key, &shapes, force) {
+            Ok(r) => r,
+            Err(e) => {
+                if let Some(d) = self.err(TYPE_MISMATCH, p.span, e.message) {
+                    d.notes.push(format!("signature: {}", e.signature));
+                }
+                return None;
+            }
+        };
+        if let Some(f) = force
+            && res.ret != *f
+        {
+            self.err(
+                TYPE_MISMATCH,
+                p.span,
+                format!(
+                    "{} cannot give {f} here (its arguments make it {})",
+                    p.key, res.ret
+                ),
+            );
+            return None;
+        }
+        let mut values = Vec::new();
+        for ((a, s), t) in p.args.iter().zip(&res.params) {
+            let v = match a {
+                PendArg::Typed(v, _) => v.clone(),
+                PendArg::Lit(l) => self.lit_value(l, t, *s, LITERAL_RANGE)?,
+            };
+            values.push(v);
+        }
+        self.push(Op::SetCr {
+            ty: res.ret.clone(),
+            expr: Expr::CallStd {
+                call: res.call,
+                args: values,
+                arg_types: res.params,
+                ret: res.ret.clone(),
+            },
+        });
+        Some((Value::Cr(res.ret.clone()), res.ret))
+    }
+
+    /// A literal (or pending call) as a value of type `ty`.
+    fn lit_value(
+        &mut self,
+        l: &LitClass,
+        ty: &Ty,
+        span: Span,
+        code: &'static str,
+    ) -> Option<Value> {
+        if let LitClass::Pending(p) = l {
+            return self.materialize(p, Some(ty)).map(|(v, _)| v);
+        }
+        match coerce(l, ty) {
+            Ok(c) => Some(Value::Const(c)),
+            Err(m) => {
+                self.err(code, span, m);
+                None
+            }
+        }
+    }
+
     fn std_call(&mut self, key: &str, argv: Vec<(Arg, Span)>, span: Span) -> Cr {
         let bad = Cr::Undef(Why::Error);
+        let mut settled = Vec::new();
+        for (a, s) in argv {
+            let Some(a) = self.settle(a) else { return bad };
+            settled.push((a, s));
+        }
+        let argv = settled;
         let shapes: Vec<stdfn::ArgShape> = argv
             .iter()
             .map(|(a, _)| match a {
@@ -1522,7 +1626,22 @@ impl Walk<'_, '_> {
                 Arg::Lit(l, _) => stdfn::ArgShape::Lit(l.clone()),
             })
             .collect();
-        match stdfn::resolve(key, &shapes) {
+        if stdfn::needs_context(key, &shapes) {
+            let args = argv
+                .into_iter()
+                .map(|(a, s)| match a {
+                    Arg::Typed(v, t) => (PendArg::Typed(v, t), s),
+                    Arg::Lit(l, _) => (PendArg::Lit(l), s),
+                })
+                .collect();
+            let p = Pending {
+                key: key.to_string(),
+                args,
+                span,
+            };
+            return Cr::Lit(LitClass::Pending(Box::new(p)), span);
+        }
+        match stdfn::resolve(key, &shapes, None) {
             Ok(res) => {
                 let mut values = Vec::new();
                 for ((a, s), t) in argv.into_iter().zip(&res.params) {
@@ -1560,6 +1679,17 @@ impl Walk<'_, '_> {
     fn binary(&mut self, op: ExprOp, negate: bool, lhs: Arg, rhs: Arg, span: Span) -> Cr {
         let bad = Cr::Undef(Why::Error);
         let bop = bin_op(op);
+        // A pending call meeting only literals takes its default type.
+        let pending = |a: &Arg| matches!(a, Arg::Lit(LitClass::Pending(_), _));
+        if matches!(lhs, Arg::Lit(..))
+            && matches!(rhs, Arg::Lit(..))
+            && (pending(&lhs) || pending(&rhs))
+        {
+            let (Some(l), Some(r)) = (self.settle(lhs), self.settle(rhs)) else {
+                return bad;
+            };
+            return self.binary(op, negate, l, r, span);
+        }
         // Both untyped literals: fold at compile time.
         if let (Arg::Lit(a, sa), Arg::Lit(b, _)) = (&lhs, &rhs) {
             return match fold(bop, negate, a, b) {
@@ -1629,19 +1759,13 @@ impl Walk<'_, '_> {
                 }
                 (t, lv, rv)
             }
-            (Arg::Typed(lv, t), Arg::Lit(l, s)) => match coerce(&l, &t) {
-                Ok(c) => (t, lv, Value::Const(c)),
-                Err(m) => {
-                    self.err(TYPE_MISMATCH, s, m);
-                    return bad;
-                }
+            (Arg::Typed(lv, t), Arg::Lit(l, s)) => match self.lit_value(&l, &t, s, TYPE_MISMATCH) {
+                Some(v) => (t, lv, v),
+                None => return bad,
             },
-            (Arg::Lit(l, s), Arg::Typed(rv, t)) => match coerce(&l, &t) {
-                Ok(c) => (t, Value::Const(c), rv),
-                Err(m) => {
-                    self.err(TYPE_MISMATCH, s, m);
-                    return bad;
-                }
+            (Arg::Lit(l, s), Arg::Typed(rv, t)) => match self.lit_value(&l, &t, s, TYPE_MISMATCH) {
+                Some(v) => (t, v, rv),
+                None => return bad,
             },
             (Arg::Lit(..), Arg::Lit(..)) => unreachable_fold(),
         };

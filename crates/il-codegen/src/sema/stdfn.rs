@@ -105,11 +105,39 @@ fn lit_default(l: &LitClass, c: Option<Class>) -> Option<Ty> {
             len: DEFAULT_STRING_LEN,
         }),
         LitClass::Typed(c2) => pick(c2.ty()),
-        LitClass::Unsupported(_) | LitClass::Invalid(_) => None,
+        LitClass::Unsupported(_) | LitClass::Invalid(_) | LitClass::Pending(_) => None,
     }
 }
 
-pub(crate) fn resolve(key: &str, args: &[ArgShape]) -> Result<Resolved, ResolveError> {
+/// Whether a call's generic type can only come from its use: the result is
+/// the generic T and every T argument is an untyped number.
+pub(crate) fn needs_context(key: &str, args: &[ArgShape]) -> bool {
+    let Some(s) = sig::lookup(key) else {
+        return false;
+    };
+    if !matches!(s.ret, ParamTy::T(_)) {
+        return false;
+    }
+    let mut literal = false;
+    for (i, a) in args.iter().enumerate() {
+        if let Some(ParamTy::T(_)) = param_of(s, i) {
+            match a {
+                ArgShape::Ty(_) => return false,
+                ArgShape::Lit(LitClass::Int(_) | LitClass::Real(..)) => literal = true,
+                ArgShape::Lit(_) => {}
+            }
+        }
+    }
+    literal
+}
+
+/// Resolve a call; `force` is the type the result must have when the
+/// arguments leave the generic type open.
+pub(crate) fn resolve(
+    key: &str,
+    args: &[ArgShape],
+    force: Option<&Ty>,
+) -> Result<Resolved, ResolveError> {
     let s = sig::lookup(key).ok_or_else(|| ResolveError {
         count: false,
         message: format!("unknown function {key}"),
@@ -157,6 +185,11 @@ pub(crate) fn resolve(key: &str, args: &[ArgShape]) -> Result<Resolved, ResolveE
                 }
             }
         }
+    }
+    if t.is_none()
+        && let Some(c) = t_class
+    {
+        t = force.filter(|f| in_class(f, c)).cloned();
     }
     if t.is_none()
         && let Some(c) = t_class
