@@ -204,7 +204,20 @@ impl Pou<'_> {
             } => {
                 let v = self.value(value, line);
                 let v = if *negate { quote!(!#v) } else { v };
-                self.write(place, v, line)
+                match (&place.range, place.ty.elem()) {
+                    // A subrange store outside the bounds is skipped and recorded.
+                    (Some((lo, hi)), Some(e)) => {
+                        let ty = e.rust();
+                        let (lo, hi) = (
+                            crate::emit::values::constant(&crate::sema::ir::Const::Int(*lo, e)),
+                            crate::emit::values::constant(&crate::sema::ir::Const::Int(*hi, e)),
+                        );
+                        let w = self.write(place, quote!(__r), line);
+                        let fault = self.fault("SubrangeViolation", line);
+                        quote!({ let __r: #ty = #v; if __r >= #lo && __r <= #hi { #w } else { #fault; } })
+                    }
+                    _ => self.write(place, v, line),
+                }
             }
             Op::SetIf { place, value, cond } => {
                 let c = self.value(cond, line);

@@ -27,8 +27,9 @@ pub struct Options {
 
 /// Emit every POU of a checked program.
 pub fn program(p: &Program, opts: Options) -> TokenStream {
+    let types = p.types.iter().map(emit_type);
     let items = p.pous.iter().map(|pou| emit_pou(pou, opts));
-    quote!(#(#items)*)
+    quote!(#(#types)* #(#items)*)
 }
 
 /// The Rust type of an IEC type; user FBs are items beside the generated code.
@@ -263,4 +264,62 @@ fn addresses(pou: &CheckedPou) -> Vec<TokenStream> {
             quote!(::il_std::Located { name: #name, address: #text, area: #area, byte: #byte, bit: #bit, ty: #ty })
         })
         .collect()
+}
+
+/// A user STRUCT or enumeration as a Rust item the host can use directly.
+fn emit_type(t: &crate::sema::ir::TypeDef) -> TokenStream {
+    use crate::sema::ir::TypeDef;
+    match t {
+        TypeDef::Struct { name, fields } => {
+            let id = item_ident(name);
+            let doc = format!(" IEC 61131-3 STRUCT `{name}`, generated from Instruction List.");
+            let decls = fields.iter().map(|f| {
+                let fid = rust_ident(&f.name);
+                let ty = rust_ty(&f.ty);
+                quote!(pub #fid: #ty,)
+            });
+            let inits = fields.iter().map(|f| {
+                let fid = rust_ident(&f.name);
+                let v = values::init_value(&f.ty, f.init.as_ref());
+                quote!(#fid: #v,)
+            });
+            quote! {
+                #[doc = #doc]
+                #[derive(Clone, Copy, Debug, PartialEq)]
+                #[allow(non_snake_case, non_camel_case_types, clippy::all)]
+                pub struct #id { #(#decls)* }
+
+                #[allow(clippy::all)]
+                impl ::core::default::Default for #id {
+                    fn default() -> Self {
+                        Self { #(#inits)* }
+                    }
+                }
+            }
+        }
+        TypeDef::Enum {
+            name,
+            values,
+            default,
+        } => {
+            let id = item_ident(name);
+            let doc =
+                format!(" IEC 61131-3 enumeration `{name}`, generated from Instruction List.");
+            let vals = values.iter().enumerate().map(|(i, (v, disc))| {
+                let vid = rust_ident(v);
+                let d = disc.map(|n| {
+                    let lit = proc_macro2::Literal::i64_unsuffixed(n as i64);
+                    quote!(= #lit)
+                });
+                let def = (i == *default).then(|| quote!(#[default]));
+                quote!(#def #vid #d,)
+            });
+            quote! {
+                #[doc = #doc]
+                #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+                #[allow(non_camel_case_types, clippy::all)]
+                pub enum #id { #(#vals)* }
+            }
+        }
+    }
 }

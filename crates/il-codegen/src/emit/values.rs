@@ -46,6 +46,11 @@ pub(crate) fn constant(c: &Const) -> TokenStream {
             let lit = Literal::i64_suffixed(*v);
             quote!(#ty(#lit))
         }
+        Const::Enum { ty, value } => {
+            let t = item_ident(ty);
+            let v = rust_ident(value);
+            quote!(#t::#v)
+        }
         Const::Str {
             value,
             wide: false,
@@ -76,7 +81,7 @@ pub(crate) fn default_value(t: &Ty) -> TokenStream {
             v
         }
         Ty::Elem(_) | Ty::Str { .. } => constant(&crate::sema::default_const(t)),
-        Ty::Fb(_) => quote!(::core::default::Default::default()),
+        Ty::Fb(_) | Ty::Struct(_) | Ty::Enum(_) => quote!(::core::default::Default::default()),
     }
 }
 
@@ -117,6 +122,15 @@ pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
                 body = quote!(::core::array::from_fn(|#id| #body));
             }
             body
+        }
+        (Some(Init::Struct(fields)), Ty::Struct(_)) => {
+            let ty = rust_ty(t);
+            let sets = fields.iter().map(|(n, fty, init)| {
+                let id = rust_ident(n);
+                let v = init_value(fty, Some(init));
+                quote!(__s.#id = #v;)
+            });
+            quote!({ let mut __s = <#ty as ::core::default::Default>::default(); #(#sets)* __s })
         }
         (Some(Init::Fields(fields)), Ty::Fb(_)) => {
             let ty = rust_ty(t);

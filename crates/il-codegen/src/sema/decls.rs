@@ -1,7 +1,7 @@
 //! Declarations: POU interfaces, variable types, initial values, literals.
 
 use super::codes::*;
-use super::ir::{Const, Init, Loc, Var};
+use super::ir::{Const, Field, Init, Loc, TypeDef, Var};
 use super::types::{DEFAULT_STRING_LEN, Elem, Ty};
 use super::{Cx, stdfb, suggest};
 use crate::ast::{
@@ -12,6 +12,111 @@ use std::collections::{HashMap, HashSet};
 /// The interfaces of every POU of the unit, by upper-case name.
 pub(crate) struct Env {
     pub pous: HashMap<String, PouSig>,
+    pub types: TypeTables,
+}
+
+/// Resolved user types.
+#[derive(Default)]
+pub(crate) struct TypeTables {
+    /// STRUCT key → its fields.
+    pub structs: HashMap<String, Vec<Field>>,
+    /// Enumeration key → (name as declared, values).
+    pub enums: HashMap<String, (String, Vec<String>)>,
+    /// Items to emit, with the index of the declaring file.
+    pub defs: Vec<(usize, TypeDef)>,
+}
+
+impl TypeTables {
+    /// The enumeration that has a value `name`, if exactly one has.
+    pub fn enum_of_value(&self, name: &str) -> Option<(String, String)> {
+        let mut found = self.enums.values().filter_map(|(ty, vals)| {
+            vals.iter()
+                .find(|v| v.eq_ignore_ascii_case(name))
+                .map(|v| (ty.clone(), v.clone()))
+        });
+        let first = found.next()?;
+        found.next().is_none().then_some(first)
+    }
+}
+
+/// Every name a declaration can refer to, across all files.
+pub(crate) struct Names<'u> {
+    /// POU key → (name as declared, kind).
+    pub pous: HashMap<String, (String, PouKind)>,
+    /// User type key → its declaration.
+    pub types: HashMap<String, &'u ast::TypeDecl>,
+    depth: std::cell::Cell<u32>,
+}
+
+impl Names<'_> {
+    /// A user type by key: `Some(Some(ty))` when resolved, `Some(None)` after
+    /// an error, `None` when no user type has that name.
+    fn user_type(&self, cx: &mut Cx, key: &str, span: Span) -> Option<Option<Ty>> {
+        let decl = self.types.get(key)?;
+        Some(match &decl.spec {
+            TypeSpec::Struct { .. } => Some(Ty::Struct(decl.name.name.clone())),
+            TypeSpec::Enum { .. } => Some(Ty::Enum(decl.name.name.clone())),
+            spec => {
+                // An alias or a subrange: the type it names (aliases may chain).
+                if self.depth.get() > 32 {
+                    cx.err(
+                        RECURSION,
+                        span,
+                        format!("type `{}` is defined in terms of itself", decl.name),
+                    );
+                    return Some(None);
+                }
+                self.depth.set(self.depth.get() + 1);
+                let t = resolve_type(cx, self, spec);
+                self.depth.set(self.depth.get() - 1);
+                t
+            }
+        })
+    }
+
+    /// Subrange bounds of a type spec (inline or through aliases).
+    pub fn range_of(&self, spec: &TypeSpec) -> Option<(i128, i128)> {
+        self.range_depth(spec, 0)
+    }
+
+    fn range_depth(&self, spec: &TypeSpec, depth: u32) -> Option<(i128, i128)> {
+        match spec {
+            TypeSpec::Subrange { range, .. } => match (&range.lo, &range.hi) {
+                (
+                    ConstExpr::Lit(Literal {
+                        kind: LitKind::Int(lo),
+                        ..
+                    }),
+                    ConstExpr::Lit(Literal {
+                        kind: LitKind::Int(hi),
+                        ..
+                    }),
+                ) => Some((*lo, *hi)),
+                _ => None,
+            },
+            TypeSpec::Named(id) if depth < 32 => self
+                .types
+                .get(&id.key())
+                .and_then(|d| self.range_depth(&d.spec, depth + 1)),
+            _ => None,
+        }
+    }
+
+    /// The initial value a named type gives its variables (`TYPE T : INT := 5`).
+    pub fn default_init(&self, spec: &TypeSpec) -> Option<&Initializer> {
+        let mut spec = spec;
+        for _ in 0..32 {
+            let TypeSpec::Named(id) = spec else {
+                return None;
+            };
+            let decl = self.types.get(&id.key())?;
+            if let Some(i) = &decl.init {
+                return Some(i);
+            }
+            spec = &decl.spec;
+        }
+        None
+    }
 }
 
 pub(crate) struct PouSig {
@@ -52,6 +157,7 @@ impl Env {
 pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
     let mut env = Env {
         pous: HashMap::new(),
+        types: TypeTables::default(),
     };
     let mut seen: HashMap<String, (usize, Span)> = HashMap::new();
     let pous: Vec<(usize, &ast::Pou)> = units
@@ -89,31 +195,168 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
             }
         }
     }
-    // Upper-case key → the name as declared (the Rust struct's name).
-    let fb_names: HashMap<String, (String, PouKind)> = pous
-        .iter()
-        .map(|(_, p)| (p.name.key(), (p.name.name.clone(), p.kind)))
-        .collect();
+    // Every POU and user type by upper-case key, across all files.
+    let mut types: HashMap<String, &ast::TypeDecl> = HashMap::new();
+    let mut type_file: Vec<(usize, &ast::TypeDecl)> = Vec::new();
+    for (f, unit) in units.iter().enumerate() {
+        for item in &unit.items {
+            let ast::Item::Types(decls) = item else {
+                continue;
+            };
+            for d in decls {
+                let key = d.name.key();
+                check_ident(&mut cxs[f], &d.name);
+                if types.contains_key(&key)
+                    || seen.contains_key(&key)
+                    || Elem::from_name(&key).is_some()
+                    || stdfb::lookup(&key).is_some()
+                {
+                    cxs[f].err(
+                        DUPLICATE_DECL,
+                        d.name.span,
+                        format!("`{}` is already the name of a type or POU", d.name),
+                    );
+                    continue;
+                }
+                types.insert(key, d);
+                type_file.push((f, d));
+            }
+        }
+    }
+    let fb_names = Names {
+        pous: pous
+            .iter()
+            .map(|(_, p)| (p.name.key(), (p.name.name.clone(), p.kind)))
+            .collect(),
+        types,
+        depth: std::cell::Cell::new(0),
+    };
+    // Enumerations first (struct fields and initial values refer to them).
+    for (f, d) in &type_file {
+        if let TypeSpec::Enum { values, .. } = &d.spec {
+            let mut vals = Vec::new();
+            let mut seen_vals: HashSet<String> = HashSet::new();
+            for v in values {
+                if !seen_vals.insert(v.name.key()) {
+                    cxs[*f].err(
+                        DUPLICATE_DECL,
+                        v.name.span,
+                        format!("`{}` appears twice in `{}`", v.name, d.name),
+                    );
+                    continue;
+                }
+                let disc = match &v.value {
+                    None => None,
+                    Some(Literal {
+                        kind: LitKind::Int(n),
+                        ..
+                    }) if i64::try_from(*n).is_ok() => Some(*n),
+                    Some(l) => {
+                        cxs[*f].err(
+                            BAD_INIT,
+                            l.span,
+                            "an enumeration value must be a (64-bit) integer",
+                        );
+                        None
+                    }
+                };
+                vals.push((v.name.name.clone(), disc));
+            }
+            let default = match &d.init {
+                Some(Initializer::Simple(Operand::Var(v))) => {
+                    vals.iter().position(|(n, _)| v.base.is(n)).unwrap_or(0)
+                }
+                _ => 0,
+            };
+            env.types.enums.insert(
+                d.name.key(),
+                (
+                    d.name.name.clone(),
+                    vals.iter().map(|(n, _)| n.clone()).collect(),
+                ),
+            );
+            env.types.defs.push((
+                *f,
+                TypeDef::Enum {
+                    name: d.name.name.clone(),
+                    values: vals,
+                    default,
+                },
+            ));
+        }
+    }
+    for (f, d) in &type_file {
+        if let TypeSpec::Struct { fields, .. } = &d.spec {
+            let mut out: Vec<Field> = Vec::new();
+            for decl in fields {
+                let Some(ty) = resolve_type(&mut cxs[*f], &fb_names, &decl.ty) else {
+                    continue;
+                };
+                if matches!(ty, Ty::Fb(_)) {
+                    cxs[*f].err(
+                        BAD_OPERATOR_TYPE,
+                        decl.ty.span(),
+                        "a STRUCT field cannot be a function block instance",
+                    );
+                    continue;
+                }
+                let range = fb_names.range_of(&decl.ty);
+                let init = decl
+                    .init
+                    .as_ref()
+                    .or_else(|| fb_names.default_init(&decl.ty));
+                let init = init.and_then(|i| init_value(&mut cxs[*f], &env.types, i, &ty, range));
+                for n in &decl.names {
+                    if out.iter().any(|o| n.is(&o.name)) {
+                        cxs[*f].err(
+                            DUPLICATE_DECL,
+                            n.span,
+                            format!("field `{n}` is declared twice"),
+                        );
+                        continue;
+                    }
+                    out.push(Field {
+                        name: n.name.clone(),
+                        ty: ty.clone(),
+                        init: init.clone(),
+                        range,
+                    });
+                }
+            }
+            env.types.structs.insert(d.name.key(), out.clone());
+            env.types.defs.push((
+                *f,
+                TypeDef::Struct {
+                    name: d.name.name.clone(),
+                    fields: out,
+                },
+            ));
+        }
+    }
+    // A STRUCT that contains itself has no finite size.
+    for (f, d) in &type_file {
+        if matches!(d.spec, TypeSpec::Struct { .. })
+            && struct_contains(&env.types, &d.name.key(), &d.name.key(), 0)
+        {
+            cxs[*f].err(
+                RECURSION,
+                d.name.span,
+                format!("STRUCT `{}` contains itself", d.name),
+            );
+        }
+    }
     for (f, p) in &pous {
         if env.pous.contains_key(&p.name.key()) {
             continue;
         }
-        let mut sig = pou_sig(&mut cxs[*f], &fb_names, p);
+        let mut sig = pou_sig(&mut cxs[*f], &fb_names, &env.types, p);
         sig.file = *f;
         env.pous.insert(p.name.key(), sig);
     }
     for (f, unit) in units.iter().enumerate() {
         for item in &unit.items {
             match item {
-                ast::Item::Types(decls) => {
-                    if let Some(d) = decls.first() {
-                        cxs[f].err(
-                            UNSUPPORTED,
-                            d.span,
-                            "user-defined types (TYPE ... END_TYPE) are not supported yet",
-                        );
-                    }
-                }
+                ast::Item::Types(_) => {}
                 ast::Item::Configuration(c) => {
                     cxs[f].err(
                         UNSUPPORTED,
@@ -128,7 +371,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
     env
 }
 
-fn pou_sig(cx: &mut Cx, fb_names: &HashMap<String, (String, PouKind)>, p: &ast::Pou) -> PouSig {
+fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast::Pou) -> PouSig {
     check_ident(cx, &p.name);
     let mut sig = PouSig {
         kind: p.kind,
@@ -217,7 +460,12 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashMap<String, (String, PouKind)>, p: &ast::
             if location.is_some() && decl.init.is_some() {
                 cx.warn(BAD_INIT, decl.span, "the initial value of a located variable is not applied: the host owns the process image");
             }
-            let init = decl.init.as_ref().and_then(|i| init_value(cx, i, &ty));
+            let range = fb_names.range_of(&decl.ty);
+            let init = decl
+                .init
+                .as_ref()
+                .or_else(|| fb_names.default_init(&decl.ty));
+            let init = init.and_then(|i| init_value(cx, types, i, &ty, range));
             for name in &decl.names {
                 check_ident(cx, name);
                 let key = name.key();
@@ -246,6 +494,7 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashMap<String, (String, PouKind)>, p: &ast::
                     name: name.name.clone(),
                     location: location.clone(),
                     edge: decl.edge,
+                    range,
                     kind: block.kind,
                     ty: ty.clone(),
                     init: init.clone(),
@@ -263,6 +512,7 @@ fn pou_sig(cx: &mut Cx, fb_names: &HashMap<String, (String, PouKind)>, p: &ast::
             name: "ENO".into(),
             location: None,
             edge: None,
+            range: None,
             kind: ast::VarKind::Output,
             ty: Ty::BOOL,
             init: Some(Init::Const(Const::Bool(true))),
@@ -408,11 +658,21 @@ fn check_ident(cx: &mut Cx, id: &ast::Ident) {
     }
 }
 
-pub(crate) fn resolve_type(
-    cx: &mut Cx,
-    fb_names: &HashMap<String, (String, PouKind)>,
-    spec: &TypeSpec,
-) -> Option<Ty> {
+fn struct_contains(t: &TypeTables, key: &str, target: &str, depth: u32) -> bool {
+    let Some(fields) = t.structs.get(key) else {
+        return false;
+    };
+    depth < 64
+        && fields.iter().any(|f| {
+            let mut ty = &f.ty;
+            while let Ty::Array { elem, .. } = ty {
+                ty = elem;
+            }
+            matches!(ty, Ty::Struct(n) if n.eq_ignore_ascii_case(target) || struct_contains(t, &n.to_ascii_uppercase(), target, depth + 1))
+        })
+}
+
+pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Option<Ty> {
     match spec {
         TypeSpec::Named(id) => {
             if let Some(e) = Elem::from_name(&id.name) {
@@ -437,7 +697,10 @@ pub(crate) fn resolve_type(
             if let Some(fb) = stdfb::lookup(&key) {
                 return Some(Ty::Fb(fb.name.to_string()));
             }
-            match fb_names.get(&key) {
+            if let Some(t) = fb_names.user_type(cx, &key, id.span) {
+                return t;
+            }
+            match fb_names.pous.get(&key) {
                 Some((declared, PouKind::FunctionBlock)) => return Some(Ty::Fb(declared.clone())),
                 Some((declared, kind)) => {
                     let why = if *kind == PouKind::Program {
@@ -516,13 +779,36 @@ pub(crate) fn resolve_type(
                 elem: Box::new(elem),
             })
         }
-        TypeSpec::Subrange { span, .. }
-        | TypeSpec::Enum { span, .. }
-        | TypeSpec::Struct { span, .. } => {
+        TypeSpec::Subrange { base, range, span } => {
+            let e =
+                Elem::from_name(&base.name).filter(|e| e.int_range().is_some() && *e != Elem::BOOL);
+            let Some(e) = e else {
+                cx.err(
+                    BAD_INIT,
+                    base.span,
+                    format!("a subrange needs an integer base type, not `{base}`"),
+                );
+                return None;
+            };
+            let (Some(lo), Some(hi)) = (const_int(cx, &range.lo), const_int(cx, &range.hi)) else {
+                return None;
+            };
+            let (min, max) = e.int_range().unwrap_or_default();
+            if lo > hi || (lo as i128) < min || (hi as i128) > max {
+                cx.err(
+                    BAD_INIT,
+                    *span,
+                    format!("the subrange {lo}..{hi} is empty or outside {}", e.name()),
+                );
+                return None;
+            }
+            Some(Ty::Elem(e))
+        }
+        TypeSpec::Enum { span, .. } | TypeSpec::Struct { span, .. } => {
             cx.err(
                 UNSUPPORTED,
                 *span,
-                "subrange, enumeration and structure types are not supported yet",
+                "enumerations and structures are declared in TYPE ... END_TYPE and used by name",
             );
             None
         }
@@ -546,16 +832,90 @@ fn const_int(cx: &mut Cx, c: &ConstExpr) -> Option<i64> {
     }
 }
 
-fn init_value(cx: &mut Cx, init: &Initializer, ty: &Ty) -> Option<Init> {
+fn init_value(
+    cx: &mut Cx,
+    types: &TypeTables,
+    init: &Initializer,
+    ty: &Ty,
+    range: Option<(i128, i128)>,
+) -> Option<Init> {
     match (init, ty) {
         (Initializer::Simple(Operand::Lit(lit)), Ty::Elem(_) | Ty::Str { .. }) => {
             match coerce(&lit_class(lit), ty) {
+                Ok(Const::Int(v, e)) if range.is_some_and(|(lo, hi)| v < lo || v > hi) => {
+                    let (lo, hi) = range.unwrap_or_default();
+                    cx.err(
+                        BAD_INIT,
+                        lit.span,
+                        format!("{v} is outside the subrange {lo}..{hi}"),
+                    );
+                    let _ = e;
+                    None
+                }
                 Ok(c) => Some(Init::Const(c)),
                 Err(msg) => {
                     cx.err(BAD_INIT, lit.span, msg);
                     None
                 }
             }
+        }
+        (Initializer::Simple(o), Ty::Enum(name)) => {
+            let value = match o {
+                Operand::Lit(Literal {
+                    kind: LitKind::Enum { ty: t, value },
+                    ..
+                }) if t.is(name) => value,
+                Operand::Var(v) if v.path.is_empty() => &v.base,
+                _ => {
+                    cx.err(
+                        BAD_INIT,
+                        o.span(),
+                        format!("expected a value of the enumeration {name}"),
+                    );
+                    return None;
+                }
+            };
+            let vals = types
+                .enums
+                .get(&name.to_ascii_uppercase())
+                .map(|(_, v)| v.clone())
+                .unwrap_or_default();
+            match vals.iter().find(|v| value.is(v)) {
+                Some(v) => Some(Init::Const(Const::Enum {
+                    ty: name.clone(),
+                    value: v.clone(),
+                })),
+                None => {
+                    cx.err(
+                        BAD_INIT,
+                        o.span(),
+                        format!("`{value}` is not a value of {name} ({})", vals.join(", ")),
+                    );
+                    None
+                }
+            }
+        }
+        (Initializer::Struct { fields, .. }, Ty::Struct(name)) => {
+            let defs = types
+                .structs
+                .get(&name.to_ascii_uppercase())
+                .cloned()
+                .unwrap_or_default();
+            let mut out = Vec::new();
+            for (fname, v) in fields {
+                let Some(f) = defs.iter().find(|f| fname.is(&f.name)) else {
+                    cx.err(
+                        UNKNOWN_MEMBER,
+                        fname.span,
+                        format!("{name} has no field `{fname}`"),
+                    );
+                    continue;
+                };
+                if let Some(i) = init_value(cx, types, v, &f.ty, f.range) {
+                    out.push((f.name.clone(), f.ty.clone(), i));
+                }
+            }
+            Some(Init::Struct(out))
         }
         (Initializer::Array { elems, span }, Ty::Array { dims, elem }) => {
             let total: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
@@ -576,7 +936,7 @@ fn init_value(cx: &mut Cx, init: &Initializer, ty: &Ty) -> Option<Init> {
                         return None;
                     }
                 };
-                let Some(Init::Const(c)) = init_value(cx, e, elem) else {
+                let Some(Init::Const(c)) = init_value(cx, types, e, elem, None) else {
                     if !matches!(e, Initializer::Simple(Operand::Lit(_))) {
                         cx.err(UNSUPPORTED, e.span(), "array elements must be literals");
                     }
@@ -618,7 +978,7 @@ fn init_value(cx: &mut Cx, init: &Initializer, ty: &Ty) -> Option<Init> {
                     );
                     continue;
                 };
-                if let Some(Init::Const(c)) = init_value(cx, v, &Ty::Elem(*e)) {
+                if let Some(Init::Const(c)) = init_value(cx, types, v, &Ty::Elem(*e), None) {
                     out.push((iec.to_string(), c));
                 }
             }
@@ -790,7 +1150,7 @@ pub(crate) fn check_recursion(cxs: &mut [Cx], env: &Env, units: &[&ast::Compilat
                     if let Ty::Fb(t) = &v.ty
                         && env.pou(t).is_some()
                     {
-                        out.push((t.clone(), f, p.name.span));
+                        out.push((t.to_ascii_uppercase(), f, p.name.span));
                     }
                 }
             }

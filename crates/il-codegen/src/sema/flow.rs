@@ -368,6 +368,19 @@ impl Walk<'_, '_> {
                     );
                     return cr;
                 }
+                if let (Some((lo, hi)), Value::Const(Const::Int(v, _))) = (place.range, &value)
+                    && (*v < lo || *v > hi)
+                {
+                    self.err(
+                        LITERAL_RANGE,
+                        span,
+                        format!(
+                            "{v} is outside the subrange {lo}..{hi} of `{}`",
+                            self.cx.file.snippet(target.span())
+                        ),
+                    );
+                    return cr;
+                }
                 self.push(Op::Store {
                     place,
                     value,
@@ -816,6 +829,51 @@ impl Walk<'_, '_> {
     }
 
     fn operand(&mut self, o: &Operand) -> Option<Arg> {
+        // Enumeration values: `Color#Red`, or a bare `Red` that names no variable.
+        match o {
+            Operand::Lit(ast::Literal {
+                kind: ast::LitKind::Enum { ty, value },
+                span,
+                ..
+            }) => {
+                let Some((name, vals)) = self.env.types.enums.get(&ty.key()).cloned() else {
+                    self.err(
+                        UNKNOWN_TYPE,
+                        ty.span,
+                        format!("`{ty}` is not an enumeration type"),
+                    );
+                    return None;
+                };
+                let Some(v) = vals.iter().find(|v| value.is(v)) else {
+                    let hint = suggest(&value.name, vals.iter().map(String::as_str))
+                        .map(|s| format!("did you mean `{s}`?"));
+                    if let Some(d) = self.err(
+                        UNKNOWN_NAME,
+                        *span,
+                        format!("`{value}` is not a value of {name}"),
+                    ) {
+                        d.help = hint;
+                    }
+                    return None;
+                };
+                let c = Const::Enum {
+                    ty: name,
+                    value: v.clone(),
+                };
+                return Some(Arg::Typed(Value::Const(c.clone()), c.ty()));
+            }
+            Operand::Var(v)
+                if v.path.is_empty()
+                    && self.sig.var(&v.base.name).is_none()
+                    && !(self.sig.kind == PouKind::Function && v.base.is(&self.sig.name)) =>
+            {
+                if let Some((ty, value)) = self.env.types.enum_of_value(&v.base.name) {
+                    let c = Const::Enum { ty, value };
+                    return Some(Arg::Typed(Value::Const(c.clone()), c.ty()));
+                }
+            }
+            _ => {}
+        }
         match o {
             Operand::Lit(l) => match lit_class(l) {
                 LitClass::Typed(c) => Some(Arg::Typed(Value::Const(c.clone()), c.ty())),
@@ -847,6 +905,7 @@ impl Walk<'_, '_> {
             let l = super::decls::resolve_addr(self.cx, a, None);
             self.cx.diags = saved;
             return l.map(|l| Place {
+                range: None,
                 ty: Ty::Elem(l.elem),
                 root: Root::Addr(l),
                 path: Vec::new(),
@@ -868,6 +927,7 @@ impl Walk<'_, '_> {
             self.addresses.push(l.clone());
         }
         Some(Place {
+            range: None,
             ty: Ty::Elem(l.elem),
             root: Root::Addr(l),
             path: Vec::new(),
@@ -937,11 +997,17 @@ impl Walk<'_, '_> {
             self.err(NOT_WRITABLE, v.span, format!("`{}` is a CONSTANT", v.base));
             return None;
         }
+        let mut range = self
+            .sig
+            .var(&v.base.name)
+            .and_then(|(_, var)| var.range)
+            .filter(|_| matches!(root, Root::Var(_)));
         let mut path = Vec::new();
         for acc in &v.path {
             match acc {
                 Accessor::Field(f) => {
-                    let Ty::Fb(fb) = &ty else {
+                    range = None;
+                    let (Ty::Fb(fb) | Ty::Struct(fb)) = &ty else {
                         self.err(
                             UNKNOWN_MEMBER,
                             f.span,
@@ -950,6 +1016,15 @@ impl Walk<'_, '_> {
                         return None;
                     };
                     let fb = fb.clone();
+                    if let Some(field) = self
+                        .env
+                        .types
+                        .structs
+                        .get(&fb.to_ascii_uppercase())
+                        .and_then(|fs| fs.iter().find(|x| f.is(&x.name)))
+                    {
+                        range = field.range;
+                    }
                     let (name, mty, is_input) = self.member(&fb, &f.name, f.span)?;
                     if write && !is_input {
                         self.err(
@@ -963,6 +1038,7 @@ impl Walk<'_, '_> {
                     ty = mty;
                 }
                 Accessor::Index(subs, span) => {
+                    range = None;
                     let Ty::Array { dims, elem } = &ty else {
                         self.err(
                             BAD_INDEX,
@@ -1040,7 +1116,12 @@ impl Walk<'_, '_> {
             );
             return None;
         }
-        Some(Place { root, path, ty })
+        Some(Place {
+            root,
+            path,
+            ty,
+            range,
+        })
     }
 
     /// A member of an FB type: (declared name, type, is it an input).
@@ -1057,6 +1138,9 @@ impl Walk<'_, '_> {
                     .iter()
                     .map(|(n, e)| (n.to_string(), Ty::Elem(*e), false)),
             );
+        } else if let Some(fields) = self.env.types.structs.get(&fb.to_ascii_uppercase()) {
+            // Every field of a STRUCT can be read and written.
+            all.extend(fields.iter().map(|f| (f.name.clone(), f.ty.clone(), true)));
         } else if let Some(sig) = self.env.pou(fb) {
             for v in &sig.vars {
                 match v.kind {
@@ -1861,6 +1945,7 @@ fn op_allowed(op: ExprOp, negate: bool, t: &Ty) -> Result<(), String> {
             }
         }
         Ty::Str { .. } => op.is_compare(),
+        Ty::Enum(_) => matches!(op, ExprOp::Eq | ExprOp::Ne),
         _ => false,
     };
     if ok {

@@ -7,7 +7,34 @@ use crate::ast::{PouKind, VarKind};
 
 #[derive(Clone, Debug, Default)]
 pub struct Program {
+    /// User types declared in this file (TYPE ... END_TYPE).
+    pub types: Vec<TypeDef>,
     pub pous: Vec<CheckedPou>,
+}
+
+/// A user type that becomes a Rust item.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TypeDef {
+    Struct {
+        name: String,
+        fields: Vec<Field>,
+    },
+    /// Values with their explicit discriminants, and the default value's index.
+    Enum {
+        name: String,
+        values: Vec<(String, Option<i128>)>,
+        default: usize,
+    },
+}
+
+/// A field of a user STRUCT.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Field {
+    pub name: String,
+    pub ty: Ty,
+    pub init: Option<Init>,
+    /// Subrange bounds of an integer field.
+    pub range: Option<(i128, i128)>,
 }
 
 #[derive(Clone, Debug)]
@@ -36,6 +63,8 @@ pub struct Var {
     pub location: Option<Loc>,
     /// R_EDGE / F_EDGE input: the body sees the edge, not the level.
     pub edge: Option<crate::ast::Edge>,
+    /// Subrange bounds of an integer variable.
+    pub range: Option<(i128, i128)>,
     pub kind: VarKind,
     pub ty: Ty,
     pub init: Option<Init>,
@@ -52,6 +81,8 @@ pub enum Init {
     Array(Vec<Const>),
     /// Inputs of an FB instance: `t : TON := (PT := T#1s)`.
     Fields(Vec<(String, Const)>),
+    /// A structure: `(x := 1, inner := (y := 2))`, with each field's type.
+    Struct(Vec<(String, Ty, Init)>),
 }
 
 /// A typed constant.
@@ -68,6 +99,11 @@ pub enum Const {
         wide: bool,
         len: u32,
     },
+    /// A value of a user enumeration.
+    Enum {
+        ty: String,
+        value: String,
+    },
 }
 
 impl Const {
@@ -79,6 +115,7 @@ impl Const {
                 wide: *wide,
                 len: *len,
             },
+            Const::Enum { ty, .. } => Ty::Enum(ty.clone()),
         }
     }
 }
@@ -89,6 +126,8 @@ pub struct Place {
     pub root: Root,
     pub path: Vec<PathElem>,
     pub ty: Ty,
+    /// Subrange bounds to check on stores.
+    pub range: Option<(i128, i128)>,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -40,7 +40,17 @@ pub fn check_all(
     let env = decls::collect(&mut cxs, &asts);
     let mut programs = Vec::new();
     for (f, unit) in asts.iter().enumerate() {
-        let mut program = ir::Program::default();
+        let types = env
+            .types
+            .defs
+            .iter()
+            .filter(|(tf, _)| *tf == f)
+            .map(|(_, d)| d.clone())
+            .collect();
+        let mut program = ir::Program {
+            types,
+            pous: Vec::new(),
+        };
         for pou in unit.items.iter().filter_map(|i| match i {
             ast::Item::Pou(p) => Some(p),
             _ => None,

@@ -177,8 +177,12 @@ pub enum Ty {
         dims: Vec<(i64, i64)>,
         elem: Box<Ty>,
     },
-    /// An instance of a standard or user function block (upper-case name).
+    /// An instance of a standard or user function block (name as declared).
     Fb(String),
+    /// A user STRUCT type (name as declared).
+    Struct(String),
+    /// A user enumeration (name as declared).
+    Enum(String),
 }
 
 /// IEC's default STRING length (implementation-defined; il-std uses 80).
@@ -221,7 +225,7 @@ impl Ty {
                 }
                 t
             }
-            Ty::Fb(name) => fb_path(name),
+            Ty::Fb(name) | Ty::Struct(name) | Ty::Enum(name) => fb_path(name),
         }
     }
 
@@ -239,7 +243,7 @@ impl Ty {
                 s.push_str(&elem.mangle());
                 s
             }
-            Ty::Fb(n) => n.to_ascii_lowercase(),
+            Ty::Fb(n) | Ty::Struct(n) | Ty::Enum(n) => n.to_ascii_lowercase(),
         }
     }
 }
@@ -266,7 +270,7 @@ impl fmt::Display for Ty {
                 }
                 write!(f, "] OF {elem}")
             }
-            Ty::Fb(n) => f.write_str(n),
+            Ty::Fb(n) | Ty::Struct(n) | Ty::Enum(n) => f.write_str(n),
         }
     }
 }
