@@ -2,7 +2,7 @@
 //!
 //! Stages: [`syntax`] (text → [`ast`]), [`sema`] (names, types of the current
 //! result, flow → checked IR), [`emit`] (IR → Rust tokens). Every stage
-//! collects [`diag::Diagnostic`]s. [`compile`] runs them for the front ends:
+//! collects [`diag::Diagnostic`]s. [`compile()`] runs them for the front ends:
 //! the `il!` macro, the build-script [`Builder`] and the `ilc` command.
 
 pub mod ast;

@@ -167,7 +167,7 @@ impl Elem {
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Ty {
     Elem(Elem),
-    /// STRING[len] / WSTRING[len]
+    /// `STRING[len]` / `WSTRING[len]`
     Str {
         wide: bool,
         len: u32,
