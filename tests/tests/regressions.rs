@@ -131,3 +131,43 @@ mod pending_calls {
     pending_call_tests!(via_build);
     pending_call_tests!(via_macro);
 }
+
+macro_rules! conversion_fault_tests {
+    ($m:ident) => {
+        mod $m {
+            use super::*;
+            use il_std::{FaultKind, STRING};
+            use il_tests::$m::ConvFaults;
+
+            /// Out-of-range conversions saturate and record ConversionOutOfRange;
+            /// a too-long CONCAT truncates and records StringOverflow.
+            #[test]
+            fn conversion_and_string_faults_are_recorded() {
+                let mut ctx = Cycle::new();
+                let mut c = ConvFaults::default();
+                c.r = 2.5;
+                c.a = STRING::<4>::from_str_truncating("ab").0;
+                c.b = STRING::<4>::from_str_truncating("cd").0;
+                c.call(&mut ctx);
+                assert_eq!((c.i, c.t, c.s.to_string().as_str()), (2, 2, "abcd"));
+                assert_eq!(ctx.fault_count(), 0);
+                c.r = 1.0e9;
+                c.b = STRING::<4>::from_str_truncating("cde").0;
+                c.call(&mut ctx);
+                assert_eq!(c.i, i16::MAX);
+                assert_eq!(c.s.to_string(), "abcd");
+                let kinds: Vec<FaultKind> = ctx.faults().map(|f| f.kind).collect();
+                assert_eq!(
+                    kinds,
+                    [FaultKind::ConversionOutOfRange, FaultKind::StringOverflow]
+                );
+            }
+        }
+    };
+}
+
+mod conversion_faults {
+    use super::*;
+    conversion_fault_tests!(via_build);
+    conversion_fault_tests!(via_macro);
+}

@@ -399,12 +399,58 @@ impl Pou<'_> {
                         });
                 quote!(if #en { #call } else { #(#eno_false)* #d })
             }
-            Expr::CallStd { call, args, .. } => {
+            Expr::CallStd {
+                call,
+                args,
+                arg_types,
+                ret,
+            } => {
                 let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
                 match call {
+                    // REAL → integer out of range (or NaN) saturates, as the
+                    // plain function does, and is recorded as a fault.
+                    StdCall::Plain(n)
+                        if (n.contains("_TO_") || n.contains("TRUNC"))
+                            && arg_types
+                                .first()
+                                .and_then(Ty::elem)
+                                .is_some_and(Elem::is_real)
+                            && ret
+                                .elem()
+                                .is_some_and(|e| e.int_range().is_some() && e != Elem::BOOL) =>
+                    {
+                        let t = rust_ty(ret);
+                        let f = if n.contains("TRUNC") {
+                            quote!(trunc_to_int_checked)
+                        } else {
+                            quote!(real_to_int_checked)
+                        };
+                        let a = &args[0];
+                        let fault = self.fault("ConversionOutOfRange", line);
+                        quote!({
+                            let (__v, __bad) = ::il_std::conv::#f::<#t>(#a as f64);
+                            if __bad { #fault; }
+                            __v
+                        })
+                    }
                     StdCall::Plain(n) => {
                         let f = format_ident!("{}", n);
                         quote!(::il_std::func::#f(#(#args),*))
+                    }
+                    // A result longer than the first string's capacity is
+                    // truncated and recorded.
+                    StdCall::Fold(n) if *n == "CONCAT" => {
+                        let fault = self.fault("StringOverflow", line);
+                        let mut it = args.into_iter();
+                        let mut acc = it.next().unwrap_or_default();
+                        for a in it {
+                            acc = quote!({
+                                let (__v, __bad) = ::il_std::func::concat_checked(#acc, #a);
+                                if __bad { #fault; }
+                                __v
+                            });
+                        }
+                        acc
                     }
                     StdCall::Fold(n) => {
                         let f = format_ident!("{}", n);
