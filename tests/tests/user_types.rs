@@ -48,3 +48,36 @@ macro_rules! user_type_tests {
 
 user_type_tests!(via_build);
 user_type_tests!(via_macro);
+
+macro_rules! fb_array_tests {
+    ($m:ident) => {
+        mod $m {
+            use super::*;
+            use il_std::TIME;
+            use il_tests::$m::TimerBank;
+
+            /// An array of TON instances called by index in a loop.
+            #[test]
+            fn arrays_of_function_blocks() {
+                let mut ctx = Cycle::new();
+                let mut b = TimerBank::default();
+                b.start = [true, true, true];
+                for _ in 0..2 {
+                    b.call(&mut ctx);
+                    ctx.advance(TIME::from_ms(100));
+                }
+                // After 200 ms: timers 1 (100 ms) and 2 (200 ms) are done.
+                b.call(&mut ctx);
+                assert_eq!(b.done, [true, true, false]);
+                assert_eq!(b.timers[2].PT, TIME::from_ms(300));
+                assert_eq!(ctx.fault_count(), 0);
+            }
+        }
+    };
+}
+
+mod fb_arrays {
+    use super::*;
+    fb_array_tests!(via_build);
+    fb_array_tests!(via_macro);
+}
