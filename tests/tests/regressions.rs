@@ -171,3 +171,59 @@ mod conversion_faults {
     conversion_fault_tests!(via_build);
     conversion_fault_tests!(via_macro);
 }
+
+macro_rules! differential_regression_tests {
+    ($m:ident) => {
+        mod $m {
+            use super::*;
+            use il_std::{FaultKind, TIME};
+            use il_tests::$m::{DivFnForm, FnArgElement, TimeMulReal, UselessCompare};
+
+            #[test]
+            fn div_and_mod_function_forms_record_faults() {
+                let mut ctx = Cycle::new();
+                let mut p = DivFnForm::default();
+                p.call(&mut ctx);
+                assert_eq!((p.r, p.m), (0, 0));
+                assert_eq!(ctx.fault_count(), 2);
+                assert_eq!(
+                    ctx.last_fault().map(|f| f.kind),
+                    Some(FaultKind::DivisionByZero)
+                );
+            }
+
+            #[test]
+            fn function_arguments_that_index_arrays() {
+                let mut ctx = Cycle::new();
+                let mut p = FnArgElement::default();
+                p.call(&mut ctx);
+                assert_eq!(p.r, 8);
+                p.k = 9;
+                p.call(&mut ctx);
+                assert_eq!(p.r, 5, "out of range reads 0");
+                assert_eq!(
+                    ctx.last_fault().map(|f| f.kind),
+                    Some(FaultKind::IndexOutOfRange)
+                );
+            }
+
+            #[test]
+            fn time_times_real_is_one_rule() {
+                let mut ctx = Cycle::new();
+                let mut p = TimeMulReal::default();
+                p.call(&mut ctx);
+                assert_eq!(p.by_op, p.by_fn);
+                assert_eq!(p.by_op, TIME(2), "1 ns * 1.5 rounds to even: 2 ns");
+                let mut q = UselessCompare::default();
+                q.call(&mut ctx);
+                assert!(q.a && !q.b);
+            }
+        }
+    };
+}
+
+mod differential_regressions {
+    use super::*;
+    differential_regression_tests!(via_build);
+    differential_regression_tests!(via_macro);
+}

@@ -96,7 +96,8 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
         pou.kind.keyword(),
         pou.name
     );
-    let allow = quote!(#[allow(non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, clippy::all)]);
+    let allow = quote!(#[allow(non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels,
+        unused_comparisons, clippy::all)]);
 
     match pou.kind {
         PouKind::Function => {

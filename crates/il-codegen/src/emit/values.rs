@@ -362,6 +362,18 @@ impl Pou<'_> {
                 let t = time.rust();
                 let l = self.receiver(lhs, line);
                 let r = self.receiver(rhs, line);
+                // TIME: the operator and MUL_TIME/DIV_TIME are one rule.
+                if *time == Elem::TIME {
+                    if !*div {
+                        return quote!(::il_std::func::MUL_TIME(#l, #r));
+                    }
+                    let fault = self.fault("DivisionByZero", line);
+                    return quote!({
+                        let (__v, __bad) = ::il_std::func::div_time_checked(#l, #r);
+                        if __bad { #fault; }
+                        __v
+                    });
+                }
                 match (div, num.is_real()) {
                     (false, false) => quote!(#t(#l.0.wrapping_mul(#r as i64))),
                     (false, true) => quote!(#t(((#l.0 as f64) * (#r as f64)) as i64)),
@@ -433,6 +445,25 @@ impl Pou<'_> {
                             __v
                         })
                     }
+                    StdCall::Plain(n)
+                        if matches!(*n, "DIV" | "MOD")
+                            && arg_types
+                                .first()
+                                .and_then(Ty::elem)
+                                .is_some_and(|e| e.is_int()) =>
+                    {
+                        let f = if *n == "DIV" {
+                            quote!(div_checked)
+                        } else {
+                            quote!(mod_checked)
+                        };
+                        let fault = self.fault("DivisionByZero", line);
+                        quote!({
+                            let (__v, __bad) = ::il_std::func::#f(#(#args),*);
+                            if __bad { #fault; }
+                            __v
+                        })
+                    }
                     StdCall::Plain(n) => {
                         let f = format_ident!("{}", n);
                         quote!(::il_std::func::#f(#(#args),*))
@@ -498,9 +529,23 @@ impl Pou<'_> {
         line: u32,
     ) -> TokenStream {
         let f = item_ident(name);
-        let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
+        // Arguments are evaluated into locals first: an indexed read may record
+        // a fault in `__ctx`, which the call itself borrows.
+        let ids: Vec<_> = (0..args.len()).map(|k| format_ident!("__a{}", k)).collect();
+        let arg_lets: Vec<_> = args
+            .iter()
+            .zip(&ids)
+            .map(|(a, id)| {
+                let v = self.value(a, line);
+                quote!(let #id = #v;)
+            })
+            .collect();
+        let args = ids;
         if out_types.is_empty() {
-            return quote!(#f(__ctx, #(#args,)*));
+            if arg_lets.is_empty() {
+                return quote!(#f(__ctx));
+            }
+            return quote!({ #(#arg_lets)* #f(__ctx, #(#args,)*) });
         }
         // Every output needs a place, read by `=>` or not.
         let ids: Vec<_> = (0..out_types.len())
@@ -517,6 +562,7 @@ impl Pou<'_> {
             self.write(place, v, line)
         });
         quote!({
+            #(#arg_lets)*
             #(#lets)*
             let __r = #f(__ctx, #(#args,)* #(&mut #ids,)*);
             #(#stores)*

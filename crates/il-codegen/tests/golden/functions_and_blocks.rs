@@ -8,6 +8,7 @@
     unused_assignments,
     unreachable_code,
     unused_labels,
+    unused_comparisons,
     clippy::all
 )]
 pub fn Scale(__ctx: &mut ::il_std::Cycle, mut __v_raw: i16, mut __v_span: i16) -> i16 {
@@ -77,6 +78,7 @@ impl Filler {
         unused_assignments,
         unreachable_code,
         unused_labels,
+        unused_comparisons,
         clippy::all
     )]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
@@ -96,7 +98,11 @@ impl Filler {
         // 18: LD   level
         __cr_int = self.level;
         // 19: Scale 10
-        __cr_int = Scale(__ctx, __cr_int, 10i16);
+        __cr_int = {
+            let __a0 = __cr_int;
+            let __a1 = 10i16;
+            Scale(__ctx, __a0, __a1)
+        };
         // 20: LIMIT 0, 100
         __cr_int = ::il_std::func::LIMIT(__cr_int, 0i16, 100i16);
         // 21: ST   history[slot]

@@ -8,6 +8,7 @@
     unused_assignments,
     unreachable_code,
     unused_labels,
+    unused_comparisons,
     clippy::all
 )]
 pub fn SumTo(__ctx: &mut ::il_std::Cycle, mut __v_n: i32) -> i32 {

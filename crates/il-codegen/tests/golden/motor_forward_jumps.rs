@@ -39,6 +39,7 @@ impl Motor {
         unused_assignments,
         unreachable_code,
         unused_labels,
+        unused_comparisons,
         clippy::all
     )]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
