@@ -64,3 +64,28 @@ fn literal_only_arithmetic_is_exact_and_range_checked() {
     assert_eq!(e.len(), 1, "{e:?}");
     assert_eq!(e[0].0, "IL0116");
 }
+
+/// Hundreds of labels: every instruction is checked and emitted (the label
+/// analysis once settled one label per round and dropped code after 64).
+#[test]
+fn many_labels_settle_and_nothing_is_dropped() {
+    let mut body = String::from("LD 0\nST n\n");
+    for i in 0..300 {
+        body.push_str(&format!(
+            "l{i}: LD n\nADD 1\nST n\nGT 1000\nJMPC l{}\n",
+            i + 1
+        ));
+    }
+    body.push_str("l300: LD n\nST n\n");
+    // A backward loop in the middle as well.
+    body.push_str("back: LD n\nSUB 1\nST n\nGT 10\nJMPC back\n");
+    let src = format!("FUNCTION_BLOCK T\nVAR n : INT; END_VAR\n{body}END_FUNCTION_BLOCK\n");
+    let f = SourceFile::new("t.il", src);
+    let c = il_codegen::compile(&f, Default::default()).unwrap_or_else(|d| panic!("{d:?}"));
+    // Only `l0` (never jumped to) is worth a warning; no unreachable code.
+    assert_eq!(c.warnings.len(), 1, "{:?}", c.warnings);
+    assert_eq!(c.warnings[0].code, "IL0120");
+    let code = c.tokens.to_string();
+    assert_eq!(code.matches("wrapping_add").count(), 300);
+    assert_eq!(code.matches("wrapping_sub").count(), 1);
+}

@@ -81,6 +81,17 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
         }
     }
     let n = label_spans.len();
+    // Where each label stands in the body: edges from later statements are
+    // backward edges, known only from the previous round.
+    let mut label_pos = vec![0; n];
+    for (i, s) in pou.body.iter().enumerate() {
+        if let ast::Stmt::Label(id) = s
+            && let Some(&l) = labels.get(&id.key())
+            && label_pos[l] == 0
+        {
+            label_pos[l] = i;
+        }
+    }
     let mut w = Walk {
         cx,
         env,
@@ -88,6 +99,10 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
         labels,
         label_in: vec![Cr::Dead; n],
         edges: vec![Vec::new(); n],
+        label_pos,
+        pos: 0,
+        back_prev: vec![Vec::new(); n],
+        back_now: vec![Vec::new(); n],
         final_pass: false,
         out: Vec::new(),
         cr_types: Vec::new(),
@@ -98,14 +113,26 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
     };
     // Fixpoint: the lattice per label is short (dead → literal → type → mixed),
     // so a few rounds settle it; the cap only guards against oscillation bugs.
-    for _ in 0..(n + 4).min(64) {
+    // Forward edges are used in the same round, so straight-line code with
+    // any number of labels settles in two rounds; each round adds backward
+    // edges, and the per-label lattice is short, so loops settle quickly too.
+    let mut settled = false;
+    for _ in 0..64 {
         w.edges.iter_mut().for_each(Vec::clear);
+        w.back_now.iter_mut().for_each(Vec::clear);
         w.walk(&pou.body);
         let next: Vec<Cr> = w.edges.iter().map(|e| join(e)).collect();
-        if next == w.label_in {
+        let same = next == w.label_in && w.back_now == w.back_prev;
+        w.label_in = next;
+        w.back_prev = w.back_now.clone();
+        if same {
+            settled = true;
             break;
         }
-        w.label_in = next;
+    }
+    if !settled {
+        // Never silently: report it rather than emit code from unsettled states.
+        w.cx.err(UNSUPPORTED, pou.name.span, format!("the flow analysis of `{}` did not settle (too many nested loops); please report this", pou.name));
     }
     w.final_pass = true;
     w.edges.iter_mut().for_each(Vec::clear);
@@ -226,6 +253,13 @@ struct Walk<'a, 'c> {
     label_in: Vec<Cr>,
     /// Edges into each label found in this round: (source span, class, line).
     edges: Vec<Vec<(Span, Class, u32)>>,
+    /// Body index of each label.
+    label_pos: Vec<usize>,
+    /// Body index of the statement being walked.
+    pos: usize,
+    /// Backward edges found in the previous round / this round.
+    back_prev: Vec<Vec<(Span, Class, u32)>>,
+    back_now: Vec<Vec<(Span, Class, u32)>>,
     final_pass: bool,
     out: Vec<ir::Stmt>,
     cr_types: Vec<Ty>,
@@ -265,7 +299,8 @@ impl Walk<'_, '_> {
         self.save_types.clear();
         let mut cr = Cr::Undef(Why::Start);
         let mut warned_dead = false;
-        for stmt in body {
+        for (i, stmt) in body.iter().enumerate() {
+            self.pos = i;
             match stmt {
                 ast::Stmt::Label(id) => {
                     let Some(&l) = self.labels.get(&id.key()) else {
@@ -277,7 +312,11 @@ impl Walk<'_, '_> {
                         self.edge(l, &cr, id.span);
                     }
                     self.line = self.cx.line(id.span);
-                    cr = match self.label_in[l].clone() {
+                    // This round's edges (all from before the label) plus the
+                    // previous round's backward edges.
+                    let mut into = self.edges[l].clone();
+                    into.extend(self.back_prev[l].iter().cloned());
+                    cr = match join(&into) {
                         Cr::Undef(Why::Mixed(paths)) => {
                             Cr::Undef(Why::Mixed(format!("{}\u{0}{paths}", id.name)))
                         }
@@ -323,6 +362,9 @@ impl Walk<'_, '_> {
             Cr::Lit(..) => Class::Undef("an invalid literal".into()),
             Cr::Val(t) => Class::Val(t.clone()),
         };
+        if self.pos > self.label_pos[l] {
+            self.back_now[l].push((span, class.clone(), self.line));
+        }
         self.edges[l].push((span, class, self.line));
         if let (Cr::Lit(lit, lspan), Cr::Val(t)) = (cr, &self.label_in[l].clone())
             && !matches!(lit, LitClass::Pending(_))
