@@ -226,29 +226,6 @@ pub fn many_pous(count: usize, seed: u64) -> String {
     s
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn deterministic_and_sized() {
-        let a = big_pou(1000, 7);
-        assert_eq!(a, big_pou(1000, 7));
-        let n = a.lines().count();
-        assert!((1000..1020).contains(&n), "{n} lines");
-        assert_ne!(a, big_pou(1000, 8));
-        for n in [1000, 10_000, 100_000] {
-            let labels = big_pou(n, 1).lines().filter(|l| l.ends_with(':')).count();
-            assert!(
-                (10..=MAX_LABELS).contains(&labels),
-                "{n} lines: {labels} labels"
-            );
-            let s = big_pou_straight(n, 1);
-            assert!(!s.contains("JMP") && s.lines().count() >= n);
-        }
-    }
-}
-
 /// The interlock benchmark (`plc/interlock.il`) and its hand-written Rust
 /// twin (`src/hand/interlock.rs`), both produced from one rung table so that
 /// they hold the same logic: rung `k` is
@@ -259,16 +236,21 @@ pub const INTERLOCK_RUNGS: usize = 300;
 
 fn interlock_table() -> Vec<[usize; 6]> {
     let mut rng = XorShift::new(61131);
+    // Distinct operands per rung, so no rung simplifies to a shorter one.
+    let mut pick = |n: usize, not: &[usize]| loop {
+        let v = rng.below(n);
+        if !not.contains(&v) {
+            break v;
+        }
+    };
     (0..INTERLOCK_RUNGS)
         .map(|k| {
-            [
-                k % 256,
-                rng.below(64),
-                rng.below(256),
-                rng.below(64),
-                rng.below(256),
-                rng.below(64),
-            ]
+            let a = pick(64, &[]);
+            let b = pick(256, &[]);
+            let c = pick(64, &[a]);
+            let d = pick(256, &[b]);
+            let e = pick(64, &[a, c]);
+            [k % 256, a, b, c, d, e]
         })
         .collect()
 }
@@ -324,4 +306,27 @@ pub fn blocks_il() -> String {
     }
     s.push_str("END_PROGRAM\n");
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn deterministic_and_sized() {
+        let a = big_pou(1000, 7);
+        assert_eq!(a, big_pou(1000, 7));
+        let n = a.lines().count();
+        assert!((1000..1020).contains(&n), "{n} lines");
+        assert_ne!(a, big_pou(1000, 8));
+        for n in [1000, 10_000, 100_000] {
+            let labels = big_pou(n, 1).lines().filter(|l| l.ends_with(':')).count();
+            assert!(
+                (10..=MAX_LABELS).contains(&labels),
+                "{n} lines: {labels} labels"
+            );
+            let s = big_pou_straight(n, 1);
+            assert!(!s.contains("JMP") && s.lines().count() >= n);
+        }
+    }
 }
