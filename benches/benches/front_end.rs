@@ -1,0 +1,142 @@
+//! Group 1, front end: parse, check (sema) and emit separately, and the
+//! whole `il_codegen::compile`, on one generated POU of 1k, 10k and 100k
+//! lines and on programs of many small POUs. Each benchmark counts IL lines
+//! as its items, so divan's throughput column (items/s) gives lines per
+//! second: equal throughput at every size means linear growth.
+//!
+//! `cargo bench -p il-bench --bench front_end`
+
+use divan::counter::ItemsCount;
+use divan::{Bencher, black_box};
+use il_bench::generator;
+use il_codegen::diag::SourceFile;
+use il_codegen::{emit, sema, syntax};
+
+fn main() {
+    divan::main();
+}
+
+const LINES: [usize; 3] = [1_000, 10_000, 100_000];
+/// Small POUs of about 20 lines each: 50 (1k lines) and 500 (10k lines).
+const POUS: [usize; 2] = [50, 500];
+
+fn big(lines: usize) -> SourceFile {
+    SourceFile::new("big.il", generator::big_pou(lines, 1))
+}
+
+fn straight(lines: usize) -> SourceFile {
+    SourceFile::new("straight.il", generator::big_pou_straight(lines, 1))
+}
+
+fn many(pous: usize) -> SourceFile {
+    SourceFile::new("many.il", generator::many_pous(pous, 1))
+}
+
+fn lines_of(f: &SourceFile) -> ItemsCount {
+    ItemsCount::new(f.text.lines().count())
+}
+
+fn bench_parse(b: Bencher, file: SourceFile) {
+    b.counter(lines_of(&file))
+        .bench_local(|| syntax::parse(black_box(&file)));
+}
+
+fn bench_check(b: Bencher, file: SourceFile) {
+    let (unit, _) = syntax::parse(&file);
+    b.counter(lines_of(&file))
+        .bench_local(|| sema::check(black_box(&file), black_box(&unit)));
+}
+
+fn bench_emit(b: Bencher, file: SourceFile) {
+    let (unit, _) = syntax::parse(&file);
+    let (program, diags) = sema::check(&file, &unit);
+    assert!(!diags.iter().any(|d| d.is_error()));
+    b.counter(lines_of(&file))
+        .bench_local(|| emit::program(black_box(&program), emit::Options::default()));
+}
+
+fn bench_whole(b: Bencher, file: SourceFile) {
+    b.counter(lines_of(&file)).bench_local(|| {
+        il_codegen::compile(black_box(&file), emit::Options::default())
+            .expect("generated IL compiles")
+    });
+}
+
+/// What a build script does: compile with line markers and format the
+/// `.rs` text with prettyplease.
+fn bench_to_file(b: Bencher, file: SourceFile) {
+    b.counter(lines_of(&file)).bench_local(|| {
+        il_codegen::compile_to_file(black_box(&file)).expect("generated IL compiles")
+    });
+}
+
+/// One POU of N lines.
+mod one_pou {
+    use super::*;
+
+    #[divan::bench(args = LINES, max_time = 4)]
+    fn parse(b: Bencher, lines: usize) {
+        bench_parse(b, big(lines));
+    }
+    #[divan::bench(args = LINES, max_time = 4)]
+    fn check(b: Bencher, lines: usize) {
+        bench_check(b, big(lines));
+    }
+    #[divan::bench(args = LINES, max_time = 4)]
+    fn emit(b: Bencher, lines: usize) {
+        bench_emit(b, big(lines));
+    }
+    #[divan::bench(args = LINES, max_time = 4)]
+    fn whole(b: Bencher, lines: usize) {
+        bench_whole(b, big(lines));
+    }
+    #[divan::bench(args = LINES, max_time = 4)]
+    fn whole_to_file(b: Bencher, lines: usize) {
+        bench_to_file(b, big(lines));
+    }
+}
+
+/// The same POU without labels and jumps: what check costs without the
+/// label fixpoint's repeated passes.
+mod one_pou_straight {
+    use super::*;
+
+    #[divan::bench(args = LINES, max_time = 4)]
+    fn parse(b: Bencher, lines: usize) {
+        bench_parse(b, straight(lines));
+    }
+    #[divan::bench(args = LINES, max_time = 4)]
+    fn check(b: Bencher, lines: usize) {
+        bench_check(b, straight(lines));
+    }
+    #[divan::bench(args = LINES, max_time = 4)]
+    fn emit(b: Bencher, lines: usize) {
+        bench_emit(b, straight(lines));
+    }
+    #[divan::bench(args = LINES, max_time = 4)]
+    fn whole(b: Bencher, lines: usize) {
+        bench_whole(b, straight(lines));
+    }
+}
+
+/// N small FUNCTION_BLOCKs of about 20 lines each in one file.
+mod many_pous {
+    use super::*;
+
+    #[divan::bench(args = POUS, max_time = 3)]
+    fn parse(b: Bencher, pous: usize) {
+        bench_parse(b, many(pous));
+    }
+    #[divan::bench(args = POUS, max_time = 3)]
+    fn check(b: Bencher, pous: usize) {
+        bench_check(b, many(pous));
+    }
+    #[divan::bench(args = POUS, max_time = 3)]
+    fn emit(b: Bencher, pous: usize) {
+        bench_emit(b, many(pous));
+    }
+    #[divan::bench(args = POUS, max_time = 3)]
+    fn whole(b: Bencher, pous: usize) {
+        bench_whole(b, many(pous));
+    }
+}
