@@ -119,6 +119,55 @@ pub fn command() -> Command {
                 ),
         )
         .subcommand(
+            Command::new("run")
+                .about("Simulate scans of a PROGRAM with the interpreter and print a table")
+                .after_long_help(crate::run::EXAMPLES)
+                .arg(Arg::new("file").value_name("FILE").required(true).help("IL source file"))
+                .arg(Arg::new("program").long("program").value_name("NAME").help(
+                    "The PROGRAM (or FUNCTION_BLOCK) to run; default: the file's only PROGRAM",
+                ))
+                .arg(
+                    Arg::new("cycles")
+                        .long("cycles")
+                        .value_name("N")
+                        .help("Number of scans")
+                        .value_parser(clap::value_parser!(u64).range(1..=10_000_000))
+                        .default_value("10"),
+                )
+                .arg(
+                    Arg::new("step")
+                        .long("step")
+                        .value_name("DURATION")
+                        .help("Simulated time between scans (10ms, T#1s)")
+                        .value_parser(crate::run::parse_step)
+                        .default_value("10ms"),
+                )
+                .arg(
+                    Arg::new("set")
+                        .long("set")
+                        .value_name("VAR=VALUE[@CYCLE]")
+                        .help("Write VALUE to VAR before scan CYCLE (default 1); repeatable")
+                        .value_parser(crate::run::parse_set)
+                        .action(ArgAction::Append),
+                )
+                .arg(
+                    Arg::new("watch")
+                        .long("watch")
+                        .value_name("VAR,...")
+                        .help("Variables to show (members as t1.Q); default: all")
+                        .value_delimiter(',')
+                        .action(ArgAction::Append),
+                )
+                .arg(
+                    Arg::new("color")
+                        .long("color")
+                        .value_name("WHEN")
+                        .help("Colour the diagnostics")
+                        .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
+                        .default_value("auto"),
+                ),
+        )
+        .subcommand(
             Command::new("explain")
                 .about("Explain a diagnostic code, e.g. IL0003")
                 .arg(Arg::new("code").value_name("CODE").required(true)),

@@ -20,6 +20,8 @@ mod stdfb;
 mod stdfn;
 mod value;
 
+/// The runtime the interpreter runs on (for front ends without their own dependency).
+pub use il_std;
 pub use stdfb::StdFb;
 pub use value::{Instance, Value, fmt_dur};
 
