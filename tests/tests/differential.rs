@@ -9,10 +9,13 @@
 //! IL_DIFF_COUNT=10000 IL_DIFF_SEED=7 cargo test -p il-tests --test differential -- --nocapture
 //! ```
 //!
-//! Reproducers of past mismatches live in tests/differential/regressions/*.il
-//! and are run by `regressions_agree` (inputs: every input FALSE/0 and then
-//! the generator's patterns for their seed are not needed: they run 5 scans
-//! with default inputs).
+//! (`IL_DIFF_BATCH` programs per crate build, default 500.)
+//!
+//! A mismatch is shrunk by line deletion (each round builds all candidates in
+//! one crate) and written to `tests/differential/regressions/seed_N.il` with its
+//! inputs in `seed_N.scans`; `regressions_agree` runs every file kept there.
+//! `tests/differential/compiler-bugs/` holds reproducers of compiler bugs the
+//! generator found (and now avoids).
 
 #[path = "../differential/gen.rs"]
 mod generator;
@@ -179,7 +182,7 @@ fn build_and_run(dir: &Path, cases: &[Case]) -> Vec<Vec<String>> {
         ),
     )
     .unwrap();
-    let mut main = String::from("#![allow(clippy::all)]\n");
+    let mut main = String::from("#![allow(clippy::all, dead_code)]\n");
     main.push_str(MAIN_RS);
     for c in cases {
         let name = format!("p{}.rs", c.index);
@@ -312,11 +315,13 @@ fn interpreter_agrees_with_generated_rust() {
     );
     // Batches keep each crate to a size rustc handles quickly.
     let mut mismatches = Vec::new();
+    let mut first_bad = None;
     let batch = env_num("IL_DIFF_BATCH", 500) as usize;
     for (b, chunk) in cases.chunks(batch).enumerate() {
         let got = build_and_run(&tmp_dir(&format!("differential_{b}")), chunk);
         for (c, g) in chunk.iter().zip(got) {
             if let Some(d) = first_difference(&c.expected, &g) {
+                first_bad.get_or_insert(c.seed);
                 mismatches.push(format!("seed {} ({d}):\n{}", c.seed, c.program.il));
             }
         }
@@ -326,10 +331,223 @@ fn interpreter_agrees_with_generated_rust() {
         cases.len(),
         mismatches.len()
     );
+    if let Some(seed) = first_bad {
+        let p = generator::generate(seed);
+        let (il, prog) = shrink(p);
+        let path = save_regression(seed, &il, &prog);
+        mismatches.insert(
+            0,
+            format!("shrunk reproducer written to {}:\n{il}", path.display()),
+        );
+    }
     assert!(
         mismatches.is_empty(),
         "{} mismatches; first: {}",
         mismatches.len(),
         mismatches[0]
     );
+}
+
+/// Body lines of the program that may be deleted (instructions and labels).
+fn body_lines(il: &str) -> Vec<usize> {
+    let mut in_var = false;
+    let mut out = Vec::new();
+    for (k, l) in il.lines().enumerate() {
+        let t = l.trim();
+        if t.starts_with("VAR") {
+            in_var = true;
+        } else if t == "END_VAR" {
+            in_var = false;
+        } else if !in_var
+            && !t.is_empty()
+            && !t.starts_with("FUNCTION")
+            && !t.starts_with("END_")
+            && !t.starts_with("PROGRAM")
+            && !t.starts_with("(*")
+        {
+            out.push(k);
+        }
+    }
+    out
+}
+
+fn without(il: &str, drop: &[usize]) -> String {
+    il.lines()
+        .enumerate()
+        .filter(|(k, _)| !drop.contains(k))
+        .map(|(_, l)| format!("{l}\n"))
+        .collect()
+}
+
+/// Delta debugging by line deletion: each round builds every candidate that
+/// still checks into one crate and keeps the smallest that still mismatches.
+fn shrink(p: Program) -> (String, Program) {
+    let mut p = p;
+    for _round in 0..40 {
+        let lines = body_lines(&p.il);
+        let mut candidates = Vec::new();
+        for size in [16, 8, 4, 2, 1] {
+            if size > lines.len() {
+                continue;
+            }
+            let mut start = 0;
+            while start < lines.len() {
+                let drop: Vec<usize> = lines[start..(start + size).min(lines.len())].to_vec();
+                candidates.push(without(&p.il, &drop));
+                start += size;
+            }
+        }
+        let mut cases = Vec::new();
+        for (i, il) in candidates.iter().enumerate() {
+            let q = Program {
+                il: il.clone(),
+                inputs: p.inputs.clone(),
+                scans: p.scans.clone(),
+                step_ns: p.step_ns,
+            };
+            if let Ok(c) = prepare(i, 0, q) {
+                cases.push(c);
+            }
+            if cases.len() >= 150 {
+                break;
+            }
+        }
+        if cases.is_empty() {
+            break;
+        }
+        let got = build_and_run(&tmp_dir("differential_shrink"), &cases);
+        let best = cases
+            .into_iter()
+            .zip(got)
+            .filter(|(c, g)| first_difference(&c.expected, g).is_some())
+            .min_by_key(|(c, _)| c.program.il.len());
+        match best {
+            Some((c, _)) => p = c.program,
+            None => break,
+        }
+    }
+    (p.il.clone(), p)
+}
+
+fn lit_text(l: &Lit) -> String {
+    match l {
+        Lit::Bool(b) => if *b { "TRUE" } else { "FALSE" }.to_string(),
+        Lit::Int(v) => v.to_string(),
+        Lit::Real(f) => format!("{f:?}"),
+        Lit::Time(ns) => format!("T#{}", il_codegen::interp::fmt_dur(*ns)),
+    }
+}
+
+/// `regressions/seed_N.il` and `seed_N.scans` (line 1: `step_ns=N`, then one
+/// line of `input=value` per scan).
+fn save_regression(seed: u64, il: &str, p: &Program) -> PathBuf {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("differential/regressions");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(format!("seed_{seed}.il"));
+    std::fs::write(&path, il).unwrap();
+    let mut scans = format!("step_ns={}\n", p.step_ns);
+    for s in &p.scans {
+        let cells: Vec<String> = p
+            .inputs
+            .iter()
+            .zip(s)
+            .map(|(v, l)| format!("{}={}", v.name, lit_text(l)))
+            .collect();
+        scans.push_str(&cells.join(" "));
+        scans.push('\n');
+    }
+    std::fs::write(path.with_extension("scans"), scans).unwrap();
+    path
+}
+
+fn value_lit(v: &Value) -> Lit {
+    match v {
+        Value::Bool(b) => Lit::Bool(*b),
+        Value::Int(x, _) => Lit::Int(*x),
+        Value::Real(f) => Lit::Real(*f as f64),
+        Value::LReal(f) => Lit::Real(*f),
+        Value::Time(ns, _) => Lit::Time(*ns),
+        other => panic!("not an input value: {other:?}"),
+    }
+}
+
+fn gen_type(t: &il_codegen::sema::types::Ty) -> T {
+    let name = t.to_string();
+    [
+        T::Bool,
+        T::Sint,
+        T::Int,
+        T::Dint,
+        T::Lint,
+        T::Usint,
+        T::Uint,
+        T::Udint,
+        T::Ulint,
+        T::Byte,
+        T::Word,
+        T::Dword,
+        T::Lword,
+        T::Real,
+        T::Lreal,
+        T::Time,
+    ]
+    .into_iter()
+    .find(|g| g.name() == name)
+    .unwrap_or_else(|| panic!("input of type {name}"))
+}
+
+/// Every kept reproducer still agrees (one crate build for all of them).
+#[test]
+fn regressions_agree() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("differential/regressions");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .map(|d| d.filter_map(|e| e.ok().map(|e| e.path())).collect())
+        .unwrap_or_default();
+    files.retain(|p| p.extension().is_some_and(|e| e == "il"));
+    files.sort();
+    let mut cases = Vec::new();
+    for (i, f) in files.iter().enumerate() {
+        let il = std::fs::read_to_string(f).unwrap();
+        let scans = std::fs::read_to_string(f.with_extension("scans")).unwrap();
+        let mut lines = scans.lines();
+        let step_ns: i64 = lines
+            .next()
+            .and_then(|l| l.strip_prefix("step_ns="))
+            .and_then(|n| n.parse().ok())
+            .expect("step_ns=N");
+        let prog = load(&SourceFile::new(f.display().to_string(), il.clone()))
+            .unwrap_or_else(|e| panic!("{}: {e}", f.display()));
+        let m = Machine::new(&prog, "Main").unwrap();
+        let mut inputs: Vec<generator::Var> = Vec::new();
+        let mut rows = Vec::new();
+        for l in lines.filter(|l| !l.trim().is_empty()) {
+            let mut row = Vec::new();
+            for cell in l.split_whitespace() {
+                let (n, v) = cell.split_once('=').unwrap();
+                let val = m.parse_value(n, v).unwrap_or_else(|e| panic!("{e}"));
+                if rows.is_empty() {
+                    inputs.push(generator::Var {
+                        name: n.to_string(),
+                        ty: gen_type(&m.type_of(n).unwrap()),
+                    });
+                }
+                row.push(value_lit(&val));
+            }
+            rows.push(row);
+        }
+        let p = Program {
+            il,
+            inputs,
+            scans: rows,
+            step_ns,
+        };
+        cases.push(prepare(i, 0, p).unwrap_or_else(|e| panic!("{}: {e}", f.display())));
+    }
+    assert!(!cases.is_empty(), "no reproducers in {}", dir.display());
+    let got = build_and_run(&tmp_dir("differential_regressions"), &cases);
+    for ((c, g), f) in cases.iter().zip(got).zip(&files) {
+        if let Some(d) = first_difference(&c.expected, &g) {
+            panic!("{}: {d}", f.display());
+        }
+    }
 }
