@@ -310,6 +310,12 @@ impl Pou<'_> {
             }
             _ => {
                 let divisor = matches!(op, "DIV" | "MOD");
+                if matches!(op, "ADD" | "MUL" | "AND" | "OR" | "XOR") && self.rng.chance(10) {
+                    // extensible function with an operand list: CR op a op b
+                    let (a, b) = (self.operand(t, false), self.operand(t, false));
+                    self.emit(format!("{op} {a}, {b}"));
+                    return;
+                }
                 if depth < 3 && op != "&N" && op != "&" && self.rng.chance(18) {
                     self.paren(op, t, t, depth);
                 } else {
@@ -422,6 +428,11 @@ impl Pou<'_> {
     }
 
     fn std_fn(&mut self, t: T) {
+        if t.is_real() && self.rng.chance(25) {
+            let e = self.rng.below(4);
+            self.emit(format!("EXPT {e}"));
+            return;
+        }
         if t.is_num() || t == T::Time {
             match self.rng.below(4) {
                 0 => {
@@ -510,6 +521,46 @@ impl Pou<'_> {
                 self.emit(format!("JMPC Loop{k}"));
             }
             2 | 3 if !self.fbs.is_empty() => self.fb_call(),
+            4 => {
+                // SEL / MUX select among operands of one type
+                let t = *self.rng.pick(types);
+                if self.rng.chance(50) {
+                    self.bool_cond();
+                    // The first operand typed: literals alone would make the result DINT/LREAL.
+                    let (a, b) = (self.typed_operand(t), self.operand(t, false));
+                    self.emit(format!("SEL {a}, {b}"));
+                } else {
+                    let ints: Vec<String> = self
+                        .vars
+                        .iter()
+                        .filter(|v| v.ty.is_int())
+                        .map(|v| v.name.clone())
+                        .collect();
+                    if ints.is_empty() {
+                        return;
+                    }
+                    let k = self.rng.pick(&ints).clone();
+                    self.emit(format!("LD {k}"));
+                    let n = 2 + self.rng.below(3);
+                    let mut ops: Vec<String> = (0..n).map(|_| self.operand(t, false)).collect();
+                    ops[0] = self.typed_operand(t);
+                    self.emit(format!("MUX {}", ops.join(", ")));
+                }
+                self.finish_expr(t);
+            }
+            5 if depth < 2 && self.rng.chance(50) => {
+                // unconditional forward jump over a block (unreachable code)
+                let l = format!("L{}", self.labels);
+                self.labels += 1;
+                self.emit(format!("JMP {l}"));
+                self.block(types, depth + 1);
+                self.label(&l);
+            }
+            6 if depth == 0 && !self.in_function && self.rng.chance(15) => {
+                self.bool_cond();
+                let r = *self.rng.pick(&["RETC", "RETCN", "RETNC"]);
+                self.emit(r);
+            }
             _ => {
                 let t = self.expr(types);
                 self.finish_expr(t);
@@ -564,6 +615,46 @@ impl Pou<'_> {
                 self.emit(format!("LD {inst}.Q"));
                 self.store(T::Bool);
             }
+            "RS" => {
+                let (s, r) = (bv(self), bv(self));
+                self.emit(format!("LD {s}"));
+                self.emit(format!("S {inst}"));
+                self.emit(format!("LD {r}"));
+                self.emit(format!("R1 {inst}"));
+                self.emit(format!("LD {inst}.Q1"));
+                self.store(T::Bool);
+            }
+            "CTD" => {
+                let (x, l) = (bv(self), bv(self));
+                let pv = 1 + self.rng.below(5);
+                if self.rng.chance(50) {
+                    self.emit(format!("CAL {inst}(CD := {x}, LD := {l}, PV := {pv})"));
+                } else {
+                    self.emit(format!("LD {pv}"));
+                    self.emit(format!("PV {inst}"));
+                    self.emit(format!("LD {l}"));
+                    self.emit(format!("LD {inst}"));
+                    self.emit(format!("LD {x}"));
+                    self.emit(format!("CD {inst}"));
+                }
+                self.emit(format!("LD {inst}.Q"));
+                self.store(T::Bool);
+                self.emit(format!("LD {inst}.CV"));
+                self.store(T::Int);
+            }
+            "CTUD" => {
+                let (u, d, r, l) = (bv(self), bv(self), bv(self), bv(self));
+                let pv = 1 + self.rng.below(5);
+                self.emit(format!(
+                    "CAL {inst}(CU := {u}, CD := {d}, R := {r}, LD := {l}, PV := {pv})"
+                ));
+                self.emit(format!("LD {inst}.QU"));
+                self.store(T::Bool);
+                self.emit(format!("LD {inst}.QD"));
+                self.store(T::Bool);
+                self.emit(format!("LD {inst}.CV"));
+                self.store(T::Int);
+            }
             "SR" => {
                 let (s, r) = (bv(self), bv(self));
                 self.emit(format!("LD {s}"));
@@ -577,7 +668,11 @@ impl Pou<'_> {
                 // user block Blk(x : T, en : BOOL) => (y : T, q : BOOL)
                 let t = self.has_fn.unwrap_or(T::Int);
                 let (x, en) = (self.operand(t, false), bv(self));
-                if self.rng.chance(50) {
+                if self.rng.chance(25) {
+                    self.bool_cond();
+                    let c = *self.rng.pick(&["CALC", "CALCN", "CALNC"]);
+                    self.emit(format!("{c} {inst}(x := {x}, en := {en})"));
+                } else if self.rng.chance(50) {
                     self.emit(format!("CAL {inst}(x := {x}, en := {en})"));
                 } else {
                     self.emit(format!("LD {x}"));
@@ -787,7 +882,10 @@ pub fn generate(seed: u64) -> Program {
     ];
     if types.contains(&T::Int) {
         fbs.push(("c1".into(), "CTU"));
+        fbs.push(("c2".into(), "CTD"));
+        fbs.push(("c3".into(), "CTUD"));
     }
+    fbs.push(("rs1".into(), "RS"));
     fbs.push(("t1".into(), "TON"));
     fbs.push(("t2".into(), "TOF"));
     fbs.push(("t3".into(), "TP"));
