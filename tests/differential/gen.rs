@@ -300,7 +300,14 @@ impl Pou<'_> {
         match op {
             "NOT" => self.emit("NOT"),
             "MULK" | "DIVK" => {
-                let k = if self.rng.chance(50) && !self.vars_of(T::Dint).is_empty() {
+                let reals: Vec<String> = [T::Real, T::Lreal]
+                    .iter()
+                    .flat_map(|t| self.vars_of(*t))
+                    .collect();
+                let k = if !reals.is_empty() && self.rng.chance(30) {
+                    // TIME scaled by a real (truncated to whole ns)
+                    self.rng.pick(&reals).clone()
+                } else if self.rng.chance(50) && !self.vars_of(T::Dint).is_empty() {
                     let v = self.vars_of(T::Dint);
                     self.rng.pick(&v).clone()
                 } else {

@@ -167,6 +167,10 @@ struct Case {
 /// Build one crate with every case and run it; the output lines per case.
 fn build_and_run(dir: &Path, cases: &[Case]) -> Vec<Vec<String>> {
     let src = dir.join("src");
+    // One target directory for every generated crate (il-std is built once);
+    // distinct package names keep their executables apart.
+    let crate_name = dir.file_name().unwrap().to_string_lossy().replace('_', "-");
+    let target = dir.parent().unwrap().join("differential-target");
     std::fs::create_dir_all(&src).unwrap();
     let il_std = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("../crates/il-std")
@@ -175,9 +179,10 @@ fn build_and_run(dir: &Path, cases: &[Case]) -> Vec<Vec<String>> {
     std::fs::write(
         dir.join("Cargo.toml"),
         format!(
-            "[package]\nname = \"il-differential\"\nversion = \"0.0.0\"\nedition = \"2024\"\npublish = false\n\n\
+            "[package]\nname = \"{}\"\nversion = \"0.0.0\"\nedition = \"2024\"\npublish = false\n\n\
              [dependencies]\nil-std = {{ path = {:?} }}\n\n[workspace]\n\n\
              [profile.dev]\nopt-level = 0\ndebug = false\nincremental = false\n",
+            crate_name,
             il_std.display().to_string()
         ),
     )
@@ -202,7 +207,7 @@ fn build_and_run(dir: &Path, cases: &[Case]) -> Vec<Vec<String>> {
         .args(["build", "--quiet", "--offline"])
         .current_dir(dir)
         .env_remove("RUSTFLAGS")
-        .env("CARGO_TARGET_DIR", dir.join("target"))
+        .env("CARGO_TARGET_DIR", &target)
         .status()
         .expect("run cargo");
     assert!(
@@ -210,7 +215,7 @@ fn build_and_run(dir: &Path, cases: &[Case]) -> Vec<Vec<String>> {
         "the generated crate in {} does not build",
         dir.display()
     );
-    let exe = dir.join("target/debug/il-differential");
+    let exe = target.join("debug").join(&crate_name);
     let out = Command::new(&exe)
         .output()
         .expect("run the generated programs");

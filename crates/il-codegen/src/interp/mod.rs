@@ -60,7 +60,7 @@ pub fn load(file: &SourceFile) -> Result<Program, String> {
 /// A program (or function block) instance ready to scan.
 #[derive(Clone, Debug)]
 pub struct Machine {
-    prog: Program,
+    prog: std::sync::Arc<Program>,
     /// POU names as `&'static str` for `Cycle::fault` (leaked once per machine).
     names: Vec<&'static str>,
     inst: Instance,
@@ -164,7 +164,7 @@ impl Machine {
             .map(|p| &*Box::leak(p.name.clone().into_boxed_str()))
             .collect();
         let mut m = Machine {
-            prog: prog.clone(),
+            prog: std::sync::Arc::new(prog.clone()),
             names,
             inst: Instance {
                 pou: 0,
@@ -752,7 +752,8 @@ impl Machine {
 
     fn run(&mut self, f: &mut Frame, ctx: &mut Cycle) -> Result<(), String> {
         let pou = f.pou;
-        let body: Vec<Stmt> = self.prog.pous[pou].body.clone();
+        let prog = self.prog.clone();
+        let body: &[Stmt] = &prog.pous[pou].body;
         let mut labels = vec![usize::MAX; self.prog.pous[pou].label_count];
         for (i, s) in body.iter().enumerate() {
             if let Op::Label(l) = s.op {
