@@ -168,3 +168,36 @@ fn usage_errors_exit_2() {
         assert_eq!(o.status.code(), Some(2), "{args:?}: {}", text(&o.stderr));
     }
 }
+
+#[test]
+fn members_of_standard_blocks_can_be_set_and_watched() {
+    let f = file(
+        "dotted.il",
+        "PROGRAM Main\nVAR\n    go : BOOL;\n    t1 : TON;\n    done : BOOL;\nEND_VAR\n    LD go\n    IN t1\n    LD t1.Q\n    ST done\nEND_PROGRAM\n",
+    );
+    let o = ilc(&[
+        "run",
+        &f,
+        "--cycles",
+        "4",
+        "--step",
+        "1s",
+        "--set",
+        "go=TRUE",
+        "--set",
+        "t1.PT=T#2s",
+        "--watch",
+        "t1.ET,done",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert_eq!(
+        text(&o.stdout),
+        "\
+cycle  time  t1.ET  done
+    1  0s    T#0s   FALSE
+    2  1s    T#1s   FALSE
+    3  2s    T#2s   TRUE
+    4  3s    T#2s   TRUE
+"
+    );
+}
