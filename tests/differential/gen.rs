@@ -182,6 +182,8 @@ struct Pou<'r> {
     arrays: Vec<(String, T, i64, i64)>,
     in_function: bool,
     max_loops: usize,
+    /// Fn1 stores ENO, so a call may read it with `ENO =>`.
+    fn_eno: bool,
 }
 
 fn int_lit(rng: &mut Rng, t: T) -> i128 {
@@ -425,8 +427,28 @@ impl Pou<'_> {
                     let saved = std::mem::take(&mut self.arrays);
                     let o = self.operand(t, false);
                     let f = self.operand(T::Bool, false);
+                    if self.rng.chance(35) {
+                        // formal call with EN (and ENO when Fn1 sets it)
+                        let b = self.operand(t, false);
+                        let en = self.operand(T::Bool, false);
+                        self.emit("Fn1(");
+                        self.emit(format!("    EN := {en},"));
+                        self.emit(format!("    a := {o},"));
+                        self.emit(format!("    b := {b},"));
+                        let eno = self.writable(T::Bool);
+                        if self.fn_eno && !eno.is_empty() {
+                            self.emit(format!("    flag := {f},"));
+                            let e = self.rng.pick(&eno).clone();
+                            let not = if self.rng.chance(30) { "NOT " } else { "" };
+                            self.emit(format!("    {not}ENO => {e}"));
+                        } else {
+                            self.emit(format!("    flag := {f}"));
+                        }
+                        self.emit(")");
+                    } else {
+                        self.emit(format!("Fn1 {o}, {f}"));
+                    }
                     self.arrays = saved;
-                    self.emit(format!("Fn1 {o}, {f}"));
                 }
                 _ => self.same_type_op(t, 0),
             }
@@ -733,6 +755,7 @@ pub fn generate(seed: u64) -> Program {
     );
     let mut il = String::new();
 
+    let fn_eno = rng.chance(50);
     // FUNCTION Fn1 : ft
     {
         let vars = vec![
@@ -761,6 +784,7 @@ pub fn generate(seed: u64) -> Program {
             arrays: Vec::new(),
             in_function: true,
             max_loops: 0,
+            fn_eno: false,
         };
         p.vars.push(Var {
             name: "tmp".into(),
@@ -770,6 +794,10 @@ pub fn generate(seed: u64) -> Program {
             name: "tb".into(),
             ty: T::Bool,
         });
+        if fn_eno {
+            p.emit("LD flag");
+            p.emit("ST ENO");
+        }
         for _ in 0..1 + p.rng.below(3) {
             p.block(&[ft, T::Bool], 1);
         }
@@ -844,6 +872,7 @@ pub fn generate(seed: u64) -> Program {
             arrays: Vec::new(),
             in_function: false,
             max_loops: 2,
+            fn_eno,
         };
         for _ in 0..1 + p.rng.below(4) {
             p.block(&[ft, T::Bool], 0);
@@ -909,6 +938,7 @@ pub fn generate(seed: u64) -> Program {
             arrays: arrays.clone(),
             in_function: false,
             max_loops: n_loops,
+            fn_eno,
         };
         let n = 3 + p.rng.below(8);
         for _ in 0..n {

@@ -323,7 +323,7 @@ fn interpreter_agrees_with_generated_rust() {
     let mut first_bad = None;
     let batch = env_num("IL_DIFF_BATCH", 500) as usize;
     for (b, chunk) in cases.chunks(batch).enumerate() {
-        let got = build_and_run(&tmp_dir(&format!("differential_{b}")), chunk);
+        let got = build_and_run(&tmp_dir(&format!("differential_{base}_{b}")), chunk);
         for (c, g) in chunk.iter().zip(got) {
             if let Some(d) = first_difference(&c.expected, &g) {
                 first_bad.get_or_insert(c.seed);
