@@ -17,6 +17,7 @@ Examples:
   ilc check --message-format json a.il   One JSON object per diagnostic on stdout
   ilc check --color always a.il | less -R
   cat a.il | ilc check -                 Read the source from standard input
+  ilc run main.il --cycles 5 --watch q   Simulate 5 scans without compiling
   ilc explain IL0003                     What a diagnostic code means
 
 Exit status:

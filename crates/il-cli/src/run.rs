@@ -9,7 +9,7 @@ use il_codegen::interp::{Machine, Value, fmt_dur};
 
 pub const EXAMPLES: &str = "\
 Examples:
-  ilc run motor.il --cycles 5 --set start=TRUE@2 --watch start,run
+  ilc run motor.il --program Motor --cycles 5 --set start=TRUE@2 --watch start,run,starts
   ilc run timers.il --program Main --cycles 20 --step 50ms --watch t1.Q,t1.ET
 
 Cycles are numbered from 1; scan k runs at time (k-1) * step. A --set without
