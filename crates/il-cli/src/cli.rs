@@ -17,6 +17,7 @@ Examples:
   ilc check --message-format json a.il   One JSON object per diagnostic on stdout
   ilc check --color always a.il | less -R
   cat a.il | ilc check -                 Read the source from standard input
+  ilc run main.il --cycles 5 --watch q   Simulate 5 scans without compiling
   ilc explain IL0003                     What a diagnostic code means
 
 Exit status:
@@ -108,6 +109,55 @@ pub fn command() -> Command {
                         .long("out-dir")
                         .value_name("DIR")
                         .help("Write DIR/<name>.rs for each FILE instead of printing"),
+                )
+                .arg(
+                    Arg::new("color")
+                        .long("color")
+                        .value_name("WHEN")
+                        .help("Colour the diagnostics")
+                        .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
+                        .default_value("auto"),
+                ),
+        )
+        .subcommand(
+            Command::new("run")
+                .about("Simulate scans of a PROGRAM with the interpreter and print a table")
+                .after_long_help(crate::run::EXAMPLES)
+                .arg(Arg::new("file").value_name("FILE").required(true).help("IL source file"))
+                .arg(Arg::new("program").long("program").value_name("NAME").help(
+                    "The PROGRAM (or FUNCTION_BLOCK) to run; default: the file's only PROGRAM",
+                ))
+                .arg(
+                    Arg::new("cycles")
+                        .long("cycles")
+                        .value_name("N")
+                        .help("Number of scans")
+                        .value_parser(clap::value_parser!(u64).range(1..=10_000_000))
+                        .default_value("10"),
+                )
+                .arg(
+                    Arg::new("step")
+                        .long("step")
+                        .value_name("DURATION")
+                        .help("Simulated time between scans (10ms, T#1s)")
+                        .value_parser(crate::run::parse_step)
+                        .default_value("10ms"),
+                )
+                .arg(
+                    Arg::new("set")
+                        .long("set")
+                        .value_name("VAR=VALUE[@CYCLE]")
+                        .help("Write VALUE to VAR before scan CYCLE (default 1); repeatable")
+                        .value_parser(crate::run::parse_set)
+                        .action(ArgAction::Append),
+                )
+                .arg(
+                    Arg::new("watch")
+                        .long("watch")
+                        .value_name("VAR,...")
+                        .help("Variables to show (members as t1.Q); default: all")
+                        .value_delimiter(',')
+                        .action(ArgAction::Append),
                 )
                 .arg(
                     Arg::new("color")

@@ -3,6 +3,7 @@
 mod check;
 mod cli;
 mod emit;
+mod run;
 
 use std::io;
 use std::process::ExitCode;
@@ -59,6 +60,35 @@ fn main() -> ExitCode {
             } else {
                 ExitCode::from(1)
             }
+        }
+        Some(("run", m)) => {
+            let opts = run::Options {
+                file: m.get_one::<String>("file").cloned().unwrap_or_default(),
+                program: m.get_one::<String>("program").cloned(),
+                cycles: m.get_one::<u64>("cycles").copied().unwrap_or(10),
+                step: m
+                    .get_one::<il_codegen::interp::il_std::TIME>("step")
+                    .copied()
+                    .unwrap_or(il_codegen::interp::il_std::TIME::from_ms(10)),
+                sets: m
+                    .get_many::<run::SetArg>("set")
+                    .into_iter()
+                    .flatten()
+                    .cloned()
+                    .collect(),
+                watch: m
+                    .get_many::<String>("watch")
+                    .into_iter()
+                    .flatten()
+                    .map(|s| s.trim().to_string())
+                    .filter(|s| !s.is_empty())
+                    .collect(),
+                color: check::use_color(
+                    m.get_one::<String>("color").map_or("auto", String::as_str),
+                ),
+            };
+            let code = run::run(&opts, &mut io::stdout().lock(), &mut io::stderr().lock());
+            ExitCode::from(code)
         }
         Some(("explain", m)) => {
             let code = m.get_one::<String>("code").map_or("", String::as_str);

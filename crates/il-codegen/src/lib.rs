@@ -12,6 +12,7 @@ pub mod compile;
 pub mod diag;
 pub mod emit;
 pub mod expand;
+pub mod interp;
 pub mod sema;
 pub mod syntax;
 

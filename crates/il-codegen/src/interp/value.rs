@@ -1,0 +1,199 @@
+//! Runtime values of the reference interpreter and the elementary operations
+//! on them, with the same results as the Rust the emitter generates.
+
+use super::stdfb::StdFb;
+use crate::sema::ir::Const;
+use crate::sema::types::Elem;
+
+/// A runtime value.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    Bool(bool),
+    /// An integer or bit string, always inside its type's range.
+    Int(i128, Elem),
+    Real(f32),
+    LReal(f64),
+    /// TIME/LTIME (ns), DATE (days), TOD (ns), DT (ns): the il-std inner value.
+    Time(i64, Elem),
+    /// STRING (bytes) or WSTRING (UTF-16 units).
+    Str {
+        units: Vec<u16>,
+        wide: bool,
+    },
+    /// Array elements, row-major over all dimensions.
+    Array(Vec<Value>),
+    /// An instance of a user FUNCTION_BLOCK or PROGRAM.
+    Fb(Box<Instance>),
+    /// An instance of a standard function block (the real il-std block).
+    StdFb(Box<StdFb>),
+}
+
+/// The memory of a user FUNCTION_BLOCK or PROGRAM instance.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Instance {
+    /// Index into `Program::pous`.
+    pub pou: usize,
+    /// One slot per `CheckedPou::vars` entry (temporaries are re-initialised
+    /// on every call).
+    pub vars: Vec<Value>,
+    /// R_EDGE/F_EDGE memory, per variable.
+    pub edge_mem: Vec<bool>,
+}
+
+/// Two's complement truncation of `v` to the integer type `e`.
+pub fn wrap(v: i128, e: Elem) -> i128 {
+    match e {
+        Elem::SINT => v as i8 as i128,
+        Elem::INT => v as i16 as i128,
+        Elem::DINT => v as i32 as i128,
+        Elem::LINT => v as i64 as i128,
+        Elem::USINT | Elem::BYTE => v as u8 as i128,
+        Elem::UINT | Elem::WORD => v as u16 as i128,
+        Elem::UDINT | Elem::DWORD => v as u32 as i128,
+        Elem::ULINT | Elem::LWORD => v as u64 as i128,
+        Elem::BOOL => (v & 1 != 0) as i128,
+        _ => v,
+    }
+}
+
+/// Bit width of an integer or bit-string type.
+pub fn bits(e: Elem) -> u32 {
+    match e {
+        Elem::SINT | Elem::USINT | Elem::BYTE => 8,
+        Elem::INT | Elem::UINT | Elem::WORD => 16,
+        Elem::DINT | Elem::UDINT | Elem::DWORD => 32,
+        _ => 64,
+    }
+}
+
+pub fn str_units(s: &str, wide: bool, len: u32) -> Vec<u16> {
+    let len = len as usize;
+    if wide {
+        let mut out = Vec::new();
+        for c in s.chars() {
+            let mut b = [0u16; 2];
+            let enc = c.encode_utf16(&mut b);
+            if out.len() + enc.len() > len {
+                break;
+            }
+            out.extend_from_slice(enc);
+        }
+        out
+    } else {
+        let mut end = s.len().min(len);
+        while !s.is_char_boundary(end) {
+            end -= 1;
+        }
+        s.as_bytes()[..end].iter().map(|&b| u16::from(b)).collect()
+    }
+}
+
+impl Value {
+    pub fn from_const(c: &Const) -> Value {
+        match c {
+            Const::Bool(b) => Value::Bool(*b),
+            Const::Int(v, Elem::BOOL) => Value::Bool(*v != 0),
+            Const::Int(v, e) => Value::Int(wrap(*v, *e), *e),
+            Const::Real(v, Elem::REAL) => {
+                let f = *v as f32;
+                Value::Real(if f.is_finite() { f } else { 0.0 })
+            }
+            Const::Real(v, _) => Value::LReal(if v.is_finite() { *v } else { 0.0 }),
+            Const::Time(v, e) => Value::Time(*v, *e),
+            Const::Str { value, wide, len } => Value::Str {
+                units: str_units(value, *wide, *len),
+                wide: *wide,
+            },
+        }
+    }
+
+    pub fn as_bool(&self) -> bool {
+        match self {
+            Value::Bool(b) => *b,
+            Value::Int(v, _) => *v != 0,
+            _ => false,
+        }
+    }
+
+    /// The value as the emitter's `x as i64` (integers only).
+    pub fn as_i64(&self) -> i64 {
+        match self {
+            Value::Int(v, _) => *v as i64,
+            Value::Bool(b) => *b as i64,
+            Value::Real(f) => *f as i64,
+            Value::LReal(f) => *f as i64,
+            Value::Time(v, _) => *v,
+            _ => 0,
+        }
+    }
+
+    pub fn as_f64(&self) -> f64 {
+        match self {
+            Value::Int(v, _) => *v as f64,
+            Value::Real(f) => *f as f64,
+            Value::LReal(f) => *f,
+            Value::Bool(b) => *b as u8 as f64,
+            Value::Time(v, _) => *v as f64,
+            _ => 0.0,
+        }
+    }
+
+    /// Text for tables and dumps (IEC-like, but stable and exact).
+    pub fn display(&self) -> String {
+        match self {
+            Value::Bool(b) => if *b { "TRUE" } else { "FALSE" }.to_string(),
+            Value::Int(v, _) => v.to_string(),
+            Value::Real(f) => format!("{f:?}"),
+            Value::LReal(f) => format!("{f:?}"),
+            Value::Time(v, Elem::TIME) => format!("T#{}", fmt_dur(*v)),
+            Value::Time(v, Elem::LTIME) => format!("LTIME#{}", fmt_dur(*v)),
+            Value::Time(v, e) => format!("{}#{v}", e.name()),
+            Value::Str { units, wide } => {
+                let s = if *wide {
+                    String::from_utf16_lossy(units)
+                } else {
+                    String::from_utf8_lossy(&units.iter().map(|&u| u as u8).collect::<Vec<_>>())
+                        .into_owned()
+                };
+                if *wide {
+                    format!("\"{s}\"")
+                } else {
+                    format!("'{s}'")
+                }
+            }
+            Value::Array(items) => {
+                let v: Vec<String> = items.iter().map(Value::display).collect();
+                format!("[{}]", v.join(", "))
+            }
+            Value::Fb(_) | Value::StdFb(_) => "<instance>".to_string(),
+        }
+    }
+}
+
+/// `1s500ms`, `-2ms`, `0s`, `1.5us`-free exact form: whole units down to ns.
+pub fn fmt_dur(ns: i64) -> String {
+    if ns == 0 {
+        return "0s".into();
+    }
+    let mut out = String::new();
+    let neg = ns < 0;
+    let mut n = ns.unsigned_abs();
+    if neg {
+        out.push('-');
+    }
+    for (unit, size) in [
+        ("d", 86_400_000_000_000u64),
+        ("h", 3_600_000_000_000),
+        ("m", 60_000_000_000),
+        ("s", 1_000_000_000),
+        ("ms", 1_000_000),
+        ("us", 1_000),
+        ("ns", 1),
+    ] {
+        if n >= size {
+            out.push_str(&format!("{}{unit}", n / size));
+            n %= size;
+        }
+    }
+    out
+}
