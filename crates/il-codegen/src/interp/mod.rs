@@ -349,6 +349,11 @@ impl Machine {
 
     fn default_of(&self, t: &Ty) -> Result<Value, String> {
         Ok(match t {
+            Ty::Struct(n) | Ty::Enum(n) => {
+                return Err(format!(
+                    "user type `{n}`: TYPE declarations are not supported by the interpreter yet"
+                ));
+            }
             Ty::Elem(_) | Ty::Str { .. } => Value::from_const(&crate::sema::default_const(t)),
             Ty::Array { dims, elem } => {
                 let n: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
@@ -657,6 +662,14 @@ impl Machine {
                     Value::Time(t, _) => t,
                     _ => return Err("internal: TIME operand".into()),
                 };
+                if *time == Elem::TIME {
+                    // As the emitter: the operator is MUL_TIME / DIV_TIME.
+                    let (v, bad) = time_scale(*div, t, &r, *num);
+                    if bad {
+                        self.fault(ctx, f, FaultKind::DivisionByZero, line);
+                    }
+                    return Ok(Value::Time(v, *time));
+                }
                 let v = match (div, num.is_real()) {
                     (false, false) => t.wrapping_mul(r.as_i64()),
                     (false, true) => ((t as f64) * r.as_f64()) as i64,
@@ -1056,4 +1069,37 @@ pub fn parse_literal(ty: &Ty, text: &str) -> Option<Value> {
 /// Wrapping of an integer into a type, for callers building values by hand.
 pub fn int(v: i128, e: Elem) -> Value {
     Value::Int(wrap(v, e), e)
+}
+
+/// `MUL_TIME` / `div_time_checked` of il-std with the number in its own Rust
+/// type, exactly as generated code calls them.
+fn time_scale(div: bool, t: i64, r: &Value, num: Elem) -> (i64, bool) {
+    use il_std::func::{MUL_TIME, div_time_checked};
+    let t = il_std::TIME(t);
+    macro_rules! go {
+        ($v:expr) => {
+            if div {
+                let (v, bad) = div_time_checked(t, $v);
+                (v.0, bad)
+            } else {
+                (MUL_TIME(t, $v).0, false)
+            }
+        };
+    }
+    let i = match r {
+        Value::Int(v, _) => *v,
+        _ => 0,
+    };
+    match (num, r) {
+        (_, Value::Real(x)) => go!(*x),
+        (_, Value::LReal(x)) => go!(*x),
+        (Elem::SINT, _) => go!(i as i8),
+        (Elem::INT, _) => go!(i as i16),
+        (Elem::DINT, _) => go!(i as i32),
+        (Elem::LINT, _) => go!(i as i64),
+        (Elem::USINT | Elem::BYTE, _) => go!(i as u8),
+        (Elem::UINT | Elem::WORD, _) => go!(i as u16),
+        (Elem::UDINT | Elem::DWORD, _) => go!(i as u32),
+        _ => go!(i as u64),
+    }
 }

@@ -459,6 +459,33 @@ pub fn call(
     fault: &mut dyn FnMut(il_std::FaultKind),
 ) -> Result<Value, String> {
     match call {
+        // As the emitter: integer DIV/MOD by zero records a fault, and REAL →
+        // integer conversions out of range (or NaN) saturate and record one.
+        StdCall::Plain(n) if matches!(*n, "DIV" | "MOD") => {
+            if let (Some(Value::Int(_, _)), Some(Value::Int(0, _))) = (args.first(), args.get(1)) {
+                fault(il_std::FaultKind::DivisionByZero);
+            }
+            plain(n, args, ret)
+        }
+        StdCall::Plain(n)
+            if (n.contains("_TO_") || n.contains("TRUNC"))
+                && matches!(args.first(), Some(Value::Real(_) | Value::LReal(_)))
+                && ret
+                    .elem()
+                    .is_some_and(|e| e.int_range().is_some() && e != Elem::BOOL) =>
+        {
+            let x = args.first().map(Value::as_f64).unwrap_or(0.0);
+            let r = if n.contains("TRUNC") {
+                x.trunc()
+            } else {
+                x.round_ties_even()
+            };
+            let (lo, hi) = ret.elem().and_then(Elem::int_range).unwrap_or((0, 0));
+            if !r.is_finite() || r < lo as f64 || r > hi as f64 {
+                fault(il_std::FaultKind::ConversionOutOfRange);
+            }
+            plain(n, args, ret)
+        }
         StdCall::Plain(n) => plain(n, args, ret),
         StdCall::Fold(n) => {
             let mut it = args.iter();

@@ -92,6 +92,8 @@ impl Value {
     pub fn from_const(c: &Const) -> Value {
         match c {
             Const::Bool(b) => Value::Bool(*b),
+            // Unreachable: a machine refuses user types when it is built.
+            Const::Enum { .. } => Value::Bool(false),
             Const::Int(v, Elem::BOOL) => Value::Bool(*v != 0),
             Const::Int(v, e) => Value::Int(wrap(*v, *e), *e),
             Const::Real(v, Elem::REAL) => {
