@@ -237,7 +237,7 @@ impl Pou<'_> {
         for e in &p.path {
             match e {
                 PathElem::Field(f) => {
-                    let f = member_ident(f);
+                    let f = rust_ident(f);
                     chain = if mutable {
                         quote!(#chain.map(|__x| &mut __x.#f))
                     } else {
@@ -264,7 +264,7 @@ impl Pou<'_> {
         let mut t = self.root(&p.root);
         for e in &p.path {
             if let PathElem::Field(f) = e {
-                let f = member_ident(f);
+                let f = rust_ident(f);
                 t = quote!(#t.#f);
             }
         }
@@ -510,10 +510,6 @@ impl Pou<'_> {
                             __v
                         })
                     }
-                    StdCall::Convert { from, to } => {
-                        let f = format_ident!("{}_TO_{}", short(*from), short(*to));
-                        quote!(::il_std::func::#f(#(#args),*))
-                    }
                 }
             }
         }
@@ -662,16 +658,4 @@ fn io_write(l: &Loc, v: TokenStream) -> TokenStream {
         _ => (quote!(set_lword), quote!(__v as u64)),
     };
     quote!({ let __v: #ty = #v; __ctx.io.#set(#a, #b, #conv); })
-}
-
-fn member_ident(name: &str) -> proc_macro2::Ident {
-    rust_ident(name)
-}
-
-fn short(e: Elem) -> &'static str {
-    match e {
-        Elem::TOD => "TOD",
-        Elem::DT => "DT",
-        e => e.name(),
-    }
 }

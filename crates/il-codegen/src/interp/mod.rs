@@ -631,22 +631,7 @@ impl Machine {
                 if *negate_rhs {
                     r = stdfn::not(&r);
                 }
-                let name = match op {
-                    BinOp::And => "AND",
-                    BinOp::Or => "OR",
-                    BinOp::Xor => "XOR",
-                    BinOp::Add => "ADD",
-                    BinOp::Sub => "SUB",
-                    BinOp::Mul => "MUL",
-                    BinOp::Div => "DIV",
-                    BinOp::Mod => "MOD",
-                    BinOp::Gt => "GT",
-                    BinOp::Ge => "GE",
-                    BinOp::Eq => "EQ",
-                    BinOp::Ne => "NE",
-                    BinOp::Le => "LE",
-                    BinOp::Lt => "LT",
-                };
+                let name = op.name();
                 stdfn::plain(name, &[l, r], ty)
             }
             Expr::TimeScale {

@@ -518,10 +518,5 @@ pub fn call(
                 }
             }
         }
-        StdCall::Convert { from, to } => {
-            let v = args.first().ok_or("conversion without argument")?;
-            convert(*from, *to, v)
-                .ok_or_else(|| unsupported(&format!("{}_TO_{}", from.name(), to.name())))
-        }
     }
 }

@@ -11,8 +11,7 @@ use super::ir::{self, BinOp, CheckedPou, Const, Expr, Op, PathElem, Place, Root,
 use super::types::{Elem, Ty};
 use super::{Cx, stdfb, stdfn, suggest};
 use crate::ast::{
-    self, Accessor, CallArgs, Cond, ExprOp, FbInputOp, InstrKind, Operand, ParamKind, PouKind,
-    Span, VarRef,
+    self, Accessor, CallArgs, Cond, ExprOp, InstrKind, Operand, ParamKind, PouKind, Span, VarRef,
 };
 use std::collections::HashMap;
 
@@ -460,7 +459,7 @@ impl Walk<'_, '_> {
                         format!(
                             "`{which}` is not an input operator of {} (an instance of {})",
                             self.cx.file.snippet(target.span()),
-                            fb_name(&inst.ty)
+                            inst.ty
                         ),
                     );
                     return cr;
@@ -699,7 +698,7 @@ impl Walk<'_, '_> {
                 let Some(inst) = self.place_of(instance, false) else {
                     return cr;
                 };
-                self.fb_input(inst, op_input_name(*op), cr, span)
+                self.fb_input(inst, op.input_name(), cr, span)
             }
         }
     }
@@ -1804,7 +1803,7 @@ impl Walk<'_, '_> {
     /// `lhs op rhs` where lhs is the CR (or a saved CR) and rhs the operand.
     fn binary(&mut self, op: ExprOp, negate: bool, lhs: Arg, rhs: Arg, span: Span) -> Cr {
         let bad = Cr::Undef(Why::Error);
-        let bop = bin_op(op);
+        let bop = op;
         // A pending call meeting only literals takes its default type.
         let pending = |a: &Arg| matches!(a, Arg::Lit(LitClass::Pending(_), _));
         if matches!(lhs, Arg::Lit(..))
@@ -1893,7 +1892,8 @@ impl Walk<'_, '_> {
                 Some(v) => (t, v, rv),
                 None => return bad,
             },
-            (Arg::Lit(..), Arg::Lit(..)) => unreachable_fold(),
+            // Two literals were folded above.
+            (Arg::Lit(..), Arg::Lit(..)) => return bad,
         };
         if let Err(m) = op_allowed(op, negate, &ty) {
             self.err(BAD_OPERATOR_TYPE, span, m);
@@ -1918,23 +1918,6 @@ impl Walk<'_, '_> {
     }
 }
 
-/// Both-literal operations were handled before; this keeps the match total.
-fn unreachable_fold() -> (Ty, Value, Value) {
-    (
-        Ty::BOOL,
-        Value::Const(Const::Bool(false)),
-        Value::Const(Const::Bool(false)),
-    )
-}
-
-fn fb_name(t: &Ty) -> String {
-    t.to_string()
-}
-
-fn op_input_name(op: FbInputOp) -> &'static str {
-    op.input_name()
-}
-
 pub(crate) fn default_const(t: &Ty) -> Const {
     match t {
         Ty::Elem(Elem::BOOL) => Const::Bool(false),
@@ -1947,25 +1930,6 @@ pub(crate) fn default_const(t: &Ty) -> Const {
             len: *len,
         },
         _ => Const::Bool(false),
-    }
-}
-
-fn bin_op(op: ExprOp) -> BinOp {
-    match op {
-        ExprOp::And => BinOp::And,
-        ExprOp::Or => BinOp::Or,
-        ExprOp::Xor => BinOp::Xor,
-        ExprOp::Add => BinOp::Add,
-        ExprOp::Sub => BinOp::Sub,
-        ExprOp::Mul => BinOp::Mul,
-        ExprOp::Div => BinOp::Div,
-        ExprOp::Mod => BinOp::Mod,
-        ExprOp::Gt => BinOp::Gt,
-        ExprOp::Ge => BinOp::Ge,
-        ExprOp::Eq => BinOp::Eq,
-        ExprOp::Ne => BinOp::Ne,
-        ExprOp::Le => BinOp::Le,
-        ExprOp::Lt => BinOp::Lt,
     }
 }
 

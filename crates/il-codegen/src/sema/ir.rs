@@ -3,6 +3,8 @@
 //! must compile.
 
 use super::types::{Elem, Ty};
+/// The IR's binary operators are the IL expression operators themselves.
+pub use crate::ast::ExprOp as BinOp;
 use crate::ast::{PouKind, VarKind};
 
 #[derive(Clone, Debug, Default)]
@@ -176,24 +178,6 @@ pub enum Value {
     Saved(usize, Ty),
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum BinOp {
-    And,
-    Or,
-    Xor,
-    Add,
-    Sub,
-    Mul,
-    Div,
-    Mod,
-    Gt,
-    Ge,
-    Eq,
-    Ne,
-    Le,
-    Lt,
-}
-
 /// A computation whose result becomes the CR.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Expr {
@@ -251,8 +235,6 @@ pub enum StdCall {
     Chain(&'static str),
     /// `MUX(K, IN0, ...)`.
     Mux,
-    /// Elementary conversion `X_TO_Y` done inline.
-    Convert { from: Elem, to: Elem },
 }
 
 #[derive(Clone, Debug, PartialEq)]
