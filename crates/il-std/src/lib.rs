@@ -52,6 +52,7 @@ pub mod math;
 pub mod num;
 pub mod signature;
 mod string;
+mod task;
 mod time;
 mod types;
 
@@ -65,5 +66,6 @@ pub use fb::{
 };
 pub use image::{Area, INPUT_BYTES, Located, MEMORY_BYTES, OUTPUT_BYTES, ProcessImage};
 pub use string::{DEFAULT_STRING_LEN, STRING, WSTRING};
+pub use task::{TaskInfo, TaskState};
 pub use time::{DATE, DATE_AND_TIME, DT, LTIME, TIME, TIME_OF_DAY, TOD};
 pub use types::*;

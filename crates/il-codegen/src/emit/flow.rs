@@ -10,6 +10,7 @@
 use super::Pou;
 use crate::ast::PouKind;
 use crate::sema::ir::{Op, Stmt};
+use crate::sema::types::Ty;
 use proc_macro2::{Ident, Punct, Spacing, Span, TokenStream};
 use quote::{format_ident, quote};
 
@@ -232,6 +233,8 @@ impl Pou<'_> {
                 inst,
                 inputs,
                 outputs,
+                inouts,
+                externals,
                 cond,
             } => {
                 // Inputs are evaluated before the instance is borrowed.
@@ -246,7 +249,26 @@ impl Pou<'_> {
                     let f = super::rust_ident(n);
                     quote!(__fb.#f = #id;)
                 });
-                let call = self.with_fb(inst, quote!(#(#sets)* __fb.call(__ctx);), line);
+                let (io_lets, io_args, io_back) = self.bind_inouts(inouts, Some(inst), line);
+                let ext = (!externals.is_empty()).then(|| {
+                    let Ty::Fb(fb) = &inst.ty else { return quote!() };
+                    let st = super::names::ext_ident(fb);
+                    let fields = externals.iter().map(|(e, constant)| {
+                        let id = super::rust_ident(e);
+                        if *constant {
+                            quote!(#id: &*__ext.#id)
+                        } else {
+                            quote!(#id: &mut *__ext.#id)
+                        }
+                    });
+                    quote!(#st { #(#fields,)* })
+                });
+                let call = self.with_fb(
+                    inst,
+                    quote!(#(#sets)* __fb.call(__ctx, #(#io_args,)* #ext);),
+                    line,
+                );
+                let call = quote!(#io_lets #call #io_back);
                 let outs = outputs.iter().map(|(n, target, neg)| {
                     let mut src = inst.clone();
                     src.path.push(crate::sema::ir::PathElem::Field(n.clone()));

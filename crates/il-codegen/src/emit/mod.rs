@@ -5,6 +5,7 @@
 //! DIV/MOD by zero yields 0 and records a fault in the cycle context, array
 //! accesses go through `get` and record a fault when out of range.
 
+mod config;
 mod flow;
 mod names;
 mod values;
@@ -29,7 +30,8 @@ pub struct Options {
 pub fn program(p: &Program, opts: Options) -> TokenStream {
     let types = p.types.iter().map(emit_type);
     let items = p.pous.iter().map(|pou| emit_pou(pou, opts));
-    quote!(#(#types)* #(#items)*)
+    let configs = p.configs.iter().map(config::emit_config);
+    quote!(#(#types)* #(#items)* #(#configs)*)
 }
 
 /// The Rust type of an IEC type; user FBs are items beside the generated code.
@@ -58,7 +60,9 @@ impl Pou<'_> {
     /// Whether variable `i` lives in `self` (FB/PROGRAM memory) or is a local.
     fn in_self(&self, i: usize) -> bool {
         let v = &self.pou.vars[i];
-        self.pou.kind != PouKind::Function && v.kind != VarKind::Temp && v.location.is_none()
+        self.pou.kind != PouKind::Function
+            && !matches!(v.kind, VarKind::Temp | VarKind::InOut | VarKind::External)
+            && v.location.is_none()
     }
 }
 
@@ -80,9 +84,10 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
     });
     let temp_locals = pou.vars.iter().enumerate().filter(|(i, v)| {
         // FUNCTION inputs and outputs are parameters, FB memory is in `self`.
-        let param =
-            pou.kind == PouKind::Function && matches!(v.kind, VarKind::Input | VarKind::Output);
-        !(p.in_self(*i) || param)
+        let param = pou.kind == PouKind::Function
+            && matches!(v.kind, VarKind::Input | VarKind::Output)
+            || matches!(v.kind, VarKind::InOut | VarKind::External);
+        !(p.in_self(*i) || param || v.location.is_some())
     });
     let temp_locals = temp_locals.map(|(_, v)| {
         let id = local_ident(&v.name);
@@ -96,7 +101,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
         pou.kind.keyword(),
         pou.name
     );
-    let allow = quote!(#[allow(non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels,
+    let allow = quote!(#[allow(non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens,
         unused_comparisons, clippy::all)]);
 
     match pou.kind {
@@ -120,6 +125,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                     let ty = rust_ty(&v.ty);
                     quote!(mut #id: #ty)
                 });
+            let inouts = inout_params(pou);
             let outs = pou
                 .vars
                 .iter()
@@ -142,7 +148,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
             quote! {
                 #[doc = #doc]
                 #allow
-                pub fn #name(__ctx: &mut ::il_std::Cycle, #(#params,)* #(#outs,)*) -> #ret_ty {
+                pub fn #name(__ctx: &mut ::il_std::Cycle, #(#params,)* #(#inouts,)* #(#outs,)*) -> #ret_ty {
                     let mut __ret: #ret_ty = #ret_default;
                     #(#out_inits)*
                     #locals
@@ -203,6 +209,50 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
             } else {
                 " Call the block once."
             };
+            let inouts = inout_params(pou);
+            let externals: Vec<_> = pou
+                .vars
+                .iter()
+                .filter(|v| v.kind == VarKind::External && v.location.is_none())
+                .collect();
+            let ext_id = names::ext_ident(&pou.name);
+            let (ext_item, ext_param) = if externals.is_empty() {
+                (quote!(), quote!())
+            } else {
+                let fields = externals.iter().map(|v| {
+                    let id = rust_ident(&v.name);
+                    let ty = rust_ty(&v.ty);
+                    if v.constant {
+                        let vdoc = format!(" VAR_EXTERNAL CONSTANT (IL line {})", v.line);
+                        quote!(#[doc = #vdoc] pub #id: &'a #ty,)
+                    } else {
+                        let vdoc = format!(" VAR_EXTERNAL (IL line {})", v.line);
+                        quote!(#[doc = #vdoc] pub #id: &'a mut #ty,)
+                    }
+                });
+                let edoc = format!(
+                    " The globals `{}` uses (its VAR_EXTERNALs), passed to every call.",
+                    pou.name
+                );
+                (
+                    quote! {
+                        #[doc = #edoc]
+                        #[allow(non_snake_case, non_camel_case_types)]
+                        pub struct #ext_id<'a> { #(#fields)* }
+                    },
+                    quote!(mut __ext: #ext_id<'_>),
+                )
+            };
+            // The generic trait fits blocks called with the context alone.
+            let trait_impl = (inouts.is_empty() && externals.is_empty()).then(|| {
+                quote! {
+                    impl ::il_std::FunctionBlock for #name {
+                        fn call(&mut self, ctx: &mut ::il_std::Cycle) {
+                            #name::call(self, ctx)
+                        }
+                    }
+                }
+            });
             quote! {
                 #[doc = #doc]
                 #[derive(Clone, Debug, PartialEq)]
@@ -226,21 +276,31 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
 
                     #[doc = #method_doc]
                     #allow
-                    pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
+                    pub fn call(&mut self, __ctx: &mut ::il_std::Cycle, #(#inouts,)* #ext_param) {
                         #(#edge_lets)*
                         #locals
                         #body
                     }
                 }
 
-                impl ::il_std::FunctionBlock for #name {
-                    fn call(&mut self, ctx: &mut ::il_std::Cycle) {
-                        #name::call(self, ctx)
-                    }
-                }
+                #trait_impl
+                #ext_item
             }
         }
     }
+}
+
+/// `__v_x: &mut T` for every VAR_IN_OUT, in declaration order.
+fn inout_params(pou: &CheckedPou) -> Vec<TokenStream> {
+    pou.vars
+        .iter()
+        .filter(|v| v.kind == VarKind::InOut)
+        .map(|v| {
+            let id = local_ident(&v.name);
+            let ty = rust_ty(&v.ty);
+            quote!(#id: &mut #ty)
+        })
+        .collect()
 }
 
 fn addresses(pou: &CheckedPou) -> Vec<TokenStream> {
@@ -251,20 +311,23 @@ fn addresses(pou: &CheckedPou) -> Vec<TokenStream> {
     let direct = pou.addresses.iter().map(|l| (l.text.as_str(), l));
     located
         .chain(direct)
-        .map(|(name, l)| {
-            let area = match l.area {
-                crate::ast::Area::Input => quote!(::il_std::Area::Input),
-                crate::ast::Area::Output => quote!(::il_std::Area::Output),
-                crate::ast::Area::Memory => quote!(::il_std::Area::Memory),
-            };
-            let (text, byte, ty) = (&l.text, l.byte, l.elem.name());
-            let bit = match l.bit {
-                Some(b) => quote!(::core::option::Option::Some(#b)),
-                None => quote!(::core::option::Option::None),
-            };
-            quote!(::il_std::Located { name: #name, address: #text, area: #area, byte: #byte, bit: #bit, ty: #ty })
-        })
+        .map(|(name, l)| self::located(name, l))
         .collect()
+}
+
+/// An `il_std::Located` entry of an `ADDRESSES` table.
+fn located(name: &str, l: &crate::sema::ir::Loc) -> TokenStream {
+    let area = match l.area {
+        crate::ast::Area::Input => quote!(::il_std::Area::Input),
+        crate::ast::Area::Output => quote!(::il_std::Area::Output),
+        crate::ast::Area::Memory => quote!(::il_std::Area::Memory),
+    };
+    let (text, byte, ty) = (&l.text, l.byte, l.elem.name());
+    let bit = match l.bit {
+        Some(b) => quote!(::core::option::Option::Some(#b)),
+        None => quote!(::core::option::Option::None),
+    };
+    quote!(::il_std::Located { name: #name, address: #text, area: #area, byte: #byte, bit: #bit, ty: #ty })
 }
 
 /// A user STRUCT or enumeration as a Rust item the host can use directly.

@@ -193,7 +193,13 @@ impl Pou<'_> {
                 if self.in_self(*i) {
                     let id = rust_ident(&v.name);
                     quote!(self.#id)
-                } else if self.pou.kind == PouKind::Function && v.kind == VarKind::Output {
+                } else if v.kind == VarKind::External {
+                    // A global, through the reference the caller passed.
+                    let id = rust_ident(&v.name);
+                    quote!((*__ext.#id))
+                } else if v.kind == VarKind::InOut
+                    || self.pou.kind == PouKind::Function && v.kind == VarKind::Output
+                {
                     let id = local_ident(&v.name);
                     quote!((*#id))
                 } else {
@@ -390,13 +396,14 @@ impl Pou<'_> {
             Expr::CallUser {
                 name,
                 args,
+                inouts,
                 outputs,
                 out_types,
                 en,
                 eno,
                 ret,
             } => {
-                let call = self.user_call(name, args, outputs, out_types, line);
+                let call = self.user_call(name, args, inouts, outputs, out_types, line);
                 let Some(en) = en else { return call };
                 // EN = FALSE: the function does not run; its result is the
                 // default and ENO (if read with `=>`) is FALSE.
@@ -520,6 +527,7 @@ impl Pou<'_> {
         &self,
         name: &str,
         args: &[Value],
+        inouts: &[Place],
         outputs: &[(usize, Place, bool)],
         out_types: &[Ty],
         line: u32,
@@ -537,11 +545,17 @@ impl Pou<'_> {
             })
             .collect();
         let args = ids;
+        let (io_lets, io_args, io_back) = self.bind_inouts(inouts, None, line);
         if out_types.is_empty() {
-            if arg_lets.is_empty() {
+            if arg_lets.is_empty() && inouts.is_empty() {
                 return quote!(#f(__ctx));
             }
-            return quote!({ #(#arg_lets)* #f(__ctx, #(#args,)*) });
+            return quote!({
+                #(#arg_lets)* #io_lets
+                let __r = #f(__ctx, #(#args,)* #(#io_args,)*);
+                #io_back
+                __r
+            });
         }
         // Every output needs a place, read by `=>` or not.
         let ids: Vec<_> = (0..out_types.len())
@@ -559,11 +573,47 @@ impl Pou<'_> {
         });
         quote!({
             #(#arg_lets)*
+            #io_lets
             #(#lets)*
-            let __r = #f(__ctx, #(#args,)* #(&mut #ids,)*);
+            let __r = #f(__ctx, #(#args,)* #(#io_args,)* #(&mut #ids,)*);
+            #io_back
             #(#stores)*
             __r
         })
+    }
+
+    /// The arguments for VAR_IN_OUT parameters: `&mut place` where the place
+    /// is a plain path that no other argument (nor the called instance
+    /// `avoid`) shares; otherwise a copy in a local written back after the
+    /// call (array elements, the process image, aliased variables).
+    pub(crate) fn bind_inouts(
+        &self,
+        places: &[Place],
+        avoid: Option<&Place>,
+        line: u32,
+    ) -> (TokenStream, Vec<TokenStream>, TokenStream) {
+        let mut lets = TokenStream::new();
+        let mut back = TokenStream::new();
+        let mut args = Vec::new();
+        for (k, p) in places.iter().enumerate() {
+            let shares = |q: &Place| q.root == p.root;
+            let direct = !matches!(p.root, Root::Addr(_))
+                && !Self::has_index(p)
+                && !avoid.is_some_and(shares)
+                && !places.iter().enumerate().any(|(j, q)| j != k && shares(q));
+            if direct {
+                let path = self.simple_path(p);
+                args.push(quote!(&mut #path));
+            } else {
+                let id = format_ident!("__io{}", k);
+                let ty = rust_ty(&p.ty);
+                let v = self.read(p, line);
+                lets.extend(quote!(let mut #id: #ty = #v;));
+                back.extend(self.write(p, quote!(#id), line));
+                args.push(quote!(&mut #id));
+            }
+        }
+        (lets, args, back)
     }
 
     fn binary(&self, op: BinOp, ty: &Ty, l: TokenStream, r: TokenStream, line: u32) -> TokenStream {
@@ -621,7 +671,7 @@ fn area(l: &Loc) -> TokenStream {
 }
 
 /// Read a located value from the process image.
-fn io_read(l: &Loc) -> TokenStream {
+pub(crate) fn io_read(l: &Loc) -> TokenStream {
     let a = area(l);
     let b = l.byte;
     if let Some(bit) = l.bit {
@@ -642,7 +692,7 @@ fn io_read(l: &Loc) -> TokenStream {
 }
 
 /// Store a value (tokens of its Rust type) into the process image.
-fn io_write(l: &Loc, v: TokenStream) -> TokenStream {
+pub(crate) fn io_write(l: &Loc, v: TokenStream) -> TokenStream {
     let a = area(l);
     let b = l.byte;
     if let Some(bit) = l.bit {

@@ -144,10 +144,23 @@ fn find_var(pou: &CheckedPou, name: &str) -> Option<usize> {
     })
 }
 
-/// Whether variable `i` is memory of the instance (as the emitter decides).
+/// Whether variable `i` is memory of the instance. A VAR_EXTERNAL is too:
+/// a PROGRAM run alone keeps its own copy of the global, and a function
+/// block gets the caller's value copied in and out around every call.
 fn in_self(pou: &CheckedPou, i: usize) -> bool {
     let v = &pou.vars[i];
-    pou.kind != PouKind::Function && v.kind != VarKind::Temp && v.location.is_none()
+    pou.kind != PouKind::Function
+        && !matches!(v.kind, VarKind::Temp | VarKind::InOut)
+        && v.location.is_none()
+}
+
+/// Names of the variables of `pou` of kind `kind` (located ones excluded).
+fn names_of(pou: &CheckedPou, kind: VarKind) -> Vec<String> {
+    pou.vars
+        .iter()
+        .filter(|v| v.kind == kind && v.location.is_none())
+        .map(|v| v.name.clone())
+        .collect()
 }
 
 fn cond_holds(c: &Option<bool>, want: bool) -> bool {
@@ -330,7 +343,8 @@ impl Machine {
             .position(|p| p.name.eq_ignore_ascii_case(name) && p.kind == PouKind::Function)
             .ok_or_else(|| format!("no FUNCTION named `{name}`"))?;
         self.steps = 0;
-        self.call_function(p, args, ctx)
+        let (r, outs, _) = self.call_function(p, args, Vec::new(), ctx)?;
+        Ok((r, outs))
     }
 
     fn new_instance(&self, pou: usize) -> Result<Instance, String> {
@@ -677,6 +691,7 @@ impl Machine {
                 ret,
                 name,
                 args,
+                inouts,
                 out_types: _,
                 outputs,
             } => {
@@ -705,7 +720,15 @@ impl Machine {
                         })
                     })
                     .ok_or_else(|| format!("internal: no FUNCTION {name}"))?;
-                let (r, outs) = self.call_function(p, vals, ctx)?;
+                let mut refs = Vec::with_capacity(inouts.len());
+                for place in inouts {
+                    refs.push(self.read(f, place, ctx, line)?);
+                }
+                let (r, outs, back) = self.call_function(p, vals, refs, ctx)?;
+                // VAR_IN_OUT: copy-in/copy-out, as the emitter does for places it cannot borrow.
+                for (place, v) in inouts.iter().zip(back) {
+                    self.write(f, place, v, ctx, line)?;
+                }
                 for (k, place, neg) in outputs {
                     let v = outs.get(*k).cloned().ok_or("internal: output index")?;
                     let v = if *neg { stdfn::not(&v) } else { v };
@@ -802,6 +825,8 @@ impl Machine {
                     inst,
                     inputs,
                     outputs,
+                    inouts,
+                    externals,
                     cond,
                 } => {
                     if !self.condition(f, cond, ctx, line)? {
@@ -811,7 +836,37 @@ impl Machine {
                     for (n, v) in inputs {
                         ins.push((n.clone(), self.value(f, v, ctx, line)?));
                     }
-                    self.call_fb_at(f, inst, ins, ctx, line)?;
+                    // In-outs and the globals the block uses: copied in, and out after the call.
+                    let mut places: Vec<Place> = inouts.clone();
+                    for (e, _) in externals {
+                        let k = find_var(&self.prog.pous[f.pou], e)
+                            .ok_or_else(|| format!("internal: caller has no external {e}"))?;
+                        places.push(Place {
+                            root: Root::Var(k),
+                            path: Vec::new(),
+                            ty: self.prog.pous[f.pou].vars[k].ty.clone(),
+                            range: None,
+                        });
+                    }
+                    let mut names = match &inst.ty {
+                        Ty::Fb(fb) => self
+                            .prog
+                            .pous
+                            .iter()
+                            .find(|p| p.name.eq_ignore_ascii_case(fb))
+                            .map(|p| names_of(p, VarKind::InOut))
+                            .unwrap_or_default(),
+                        _ => Vec::new(),
+                    };
+                    names.extend(externals.iter().map(|(e, _)| e.clone()));
+                    let mut refs = Vec::with_capacity(places.len());
+                    for (n, p) in names.iter().zip(&places) {
+                        refs.push((n.clone(), self.read(f, p, ctx, line)?));
+                    }
+                    let back = self.call_fb_at(f, inst, ins, refs, ctx, line)?;
+                    for (p, v) in places.iter().zip(back) {
+                        self.write(f, p, v, ctx, line)?;
+                    }
                     for (n, target, neg) in outputs {
                         let mut src = inst.clone();
                         src.path.push(PathElem::Field(n.clone()));
@@ -848,13 +903,16 @@ impl Machine {
         f: &mut Frame,
         inst: &Place,
         ins: Vec<(String, Value)>,
+        refs: Vec<(String, Value)>,
         ctx: &mut Cycle,
         line: u32,
-    ) -> Result<(), String> {
+    ) -> Result<Vec<Value>, String> {
         let (steps, ok) = self.steps(f, inst, ctx, line)?;
+        // The values to copy back (unchanged if the call does not happen).
+        let mut back: Vec<Value> = refs.iter().map(|(_, v)| v.clone()).collect();
         if !ok {
             self.fault(ctx, f, FaultKind::IndexOutOfRange, line);
-            return Ok(());
+            return Ok(back);
         }
         let mut b = match self.read_at(self_root(f, &inst.root)?, &steps) {
             Some(v) => v,
@@ -870,12 +928,18 @@ impl Machine {
                 fb.call(ctx);
             }
             Value::Fb(i) => {
-                for (n, v) in ins {
+                let mut ref_idx = Vec::with_capacity(refs.len());
+                for (n, v) in ins.into_iter().chain(refs) {
                     let k = find_var(&self.prog.pous[i.pou], &n)
                         .ok_or_else(|| format!("internal: no input {n}"))?;
                     i.vars[k] = v;
+                    ref_idx.push(k);
                 }
                 self.call_instance(i, ctx)?;
+                let skip = ref_idx.len() - back.len();
+                for (slot, k) in back.iter_mut().zip(&ref_idx[skip..]) {
+                    *slot = i.vars[*k].clone();
+                }
             }
             _ => return Err("internal: CAL of a non-instance".into()),
         }
@@ -883,7 +947,7 @@ impl Machine {
         let done = self.write_at(&mut root, &steps, b);
         *self_root(f, &inst.root)? = root;
         if done {
-            Ok(())
+            Ok(back)
         } else {
             Err("internal: cannot store the instance".into())
         }
@@ -912,7 +976,9 @@ impl Machine {
             }
         }
         let mut vars = std::mem::take(&mut inst.vars);
-        let temps: Vec<usize> = (0..p.vars.len()).filter(|&i| !in_self(p, i)).collect();
+        let temps: Vec<usize> = (0..p.vars.len())
+            .filter(|&i| !in_self(p, i) && p.vars[i].kind != VarKind::InOut)
+            .collect();
         for i in temps {
             let v = &self.prog.pous[pou].vars[i];
             vars[i] = self.init_of(&v.ty, v.init.as_ref())?;
@@ -959,14 +1025,17 @@ impl Machine {
         &mut self,
         pou: usize,
         args: Vec<Value>,
+        inouts: Vec<Value>,
         ctx: &mut Cycle,
-    ) -> Result<(Value, Vec<Value>), String> {
+    ) -> Result<(Value, Vec<Value>, Vec<Value>), String> {
         let p = &self.prog.pous[pou];
         let mut args = args.into_iter();
+        let mut inouts = inouts.into_iter();
         let mut vars = Vec::with_capacity(p.vars.len());
         for v in &p.vars {
             vars.push(match v.kind {
                 VarKind::Input => args.next().ok_or("internal: missing argument")?,
+                VarKind::InOut => inouts.next().ok_or("internal: missing in-out")?,
                 _ => self.init_of(&v.ty, v.init.as_ref())?,
             });
         }
@@ -978,10 +1047,17 @@ impl Machine {
             .vars
             .iter()
             .zip(f.vars)
-            .filter(|(v, _)| v.kind == VarKind::Output)
-            .map(|(_, x)| x)
-            .collect();
-        Ok((f.ret, outs))
+            .map(|(v, x)| (v.kind, x))
+            .collect::<Vec<_>>();
+        let (outs, back): (Vec<_>, Vec<_>) = outs
+            .into_iter()
+            .filter(|(k, _)| matches!(k, VarKind::Output | VarKind::InOut))
+            .partition(|(k, _)| *k == VarKind::Output);
+        Ok((
+            f.ret,
+            outs.into_iter().map(|(_, x)| x).collect(),
+            back.into_iter().map(|(_, x)| x).collect(),
+        ))
     }
 }
 

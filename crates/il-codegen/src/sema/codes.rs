@@ -63,6 +63,14 @@ codes! {
         "IEC identifiers cannot contain two underscores in a row or end with an underscore (the generated code reserves such names).";
     BAD_ADDRESS = "IL0128", "invalid direct address",
         "The address does not fit: a located variable's type must have the address's size (%IX: BOOL; %IB: BYTE/SINT/USINT; %IW: WORD/INT/UINT; %ID: DWORD/DINT/UDINT/REAL; %IL: LWORD/LINT/ULINT/LREAL), the address must lie inside the process image, and inputs (%I) are written by the host only.\n\n    sensor AT %IX0.0 : INT;   (* an INT needs %IW *)";
+    BAD_GLOBAL = "IL0129", "VAR_EXTERNAL without a matching VAR_GLOBAL",
+        "A POU uses a global through VAR_EXTERNAL, and the configuration that runs it (or the POU that calls the function block) has no global of that name and type. Globals are declared with VAR_GLOBAL in a CONFIGURATION or RESOURCE; a FUNCTION_BLOCK that uses a global needs the same VAR_EXTERNAL in every POU that holds an instance of it (the generated code passes the global down).\n\n    PROGRAM Main\n    VAR_EXTERNAL speed : INT; END_VAR\n    ...\n    CONFIGURATION Plant\n    VAR_GLOBAL speed : REAL; END_VAR   (* INT expected *)";
+    BAD_IN_OUT = "IL0130", "VAR_IN_OUT needs a variable",
+        "A VAR_IN_OUT parameter is passed by reference: every call must bind it (`CAL inst(io := variable)`), to a variable of exactly its type, not to a literal or an expression.\n\n    CAL  scaler(buffer := 5)   (* buffer is VAR_IN_OUT *)";
+    BAD_CONFIG = "IL0131", "invalid configuration, task or program instance",
+        "A CONFIGURATION/RESOURCE names an unknown task or program, a TASK has an invalid INTERVAL, PRIORITY or SINGLE, or a program instance's arguments do not fit.\n\n    TASK fast (INTERVAL := 10, PRIORITY := 1);   (* INTERVAL needs a TIME: T#10ms *)";
+    BAD_SECTION = "IL0132", "variable section not allowed here",
+        "The VAR section cannot appear in this kind of POU, or cannot have that attribute: VAR_GLOBAL belongs in a CONFIGURATION or RESOURCE (POUs use globals through VAR_EXTERNAL); a FUNCTION has no VAR_EXTERNAL; VAR_EXTERNAL and VAR_IN_OUT take no initial value and no address.\n\n    FUNCTION_BLOCK Pump\n    VAR_GLOBAL pressure : REAL; END_VAR";
     BAD_INIT = "IL0127", "invalid initial value",
         "The initial value does not fit the declared type.";
 }

@@ -13,6 +13,8 @@ use std::collections::{HashMap, HashSet};
 pub(crate) struct Env {
     pub pous: HashMap<String, PouSig>,
     pub types: TypeTables,
+    /// Checked configurations, with the index of the declaring file.
+    pub configs: Vec<(usize, super::ir::ConfigDef)>,
 }
 
 /// Resolved user types.
@@ -158,6 +160,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
     let mut env = Env {
         pous: HashMap::new(),
         types: TypeTables::default(),
+        configs: Vec::new(),
     };
     let mut seen: HashMap<String, (usize, Span)> = HashMap::new();
     let pous: Vec<(usize, &ast::Pou)> = units
@@ -353,25 +356,12 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
         sig.file = *f;
         env.pous.insert(p.name.key(), sig);
     }
-    for (f, unit) in units.iter().enumerate() {
-        for item in &unit.items {
-            match item {
-                ast::Item::Types(_) => {}
-                ast::Item::Configuration(c) => {
-                    cxs[f].err(
-                        UNSUPPORTED,
-                        c.name.span,
-                        "CONFIGURATION is not supported yet",
-                    );
-                }
-                ast::Item::Pou(_) => {}
-            }
-        }
-    }
+    env.configs = super::config::collect(cxs, units, &fb_names, &mut env);
+    super::config::check_fb_externals(cxs, &pous, &env);
     env
 }
 
-fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast::Pou) -> PouSig {
+pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast::Pou) -> PouSig {
     check_ident(cx, &p.name);
     let mut sig = PouSig {
         kind: p.kind,
@@ -404,22 +394,39 @@ fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast::Pou) -> P
         for decl in &block.decls {
             sig.poisoned.extend(decl.names.iter().map(|n| n.key()));
         }
-        match (p.kind, block.kind) {
-            (_, ast::VarKind::InOut) => {
-                cx.err(UNSUPPORTED, block.span, "VAR_IN_OUT is not supported yet");
-                continue;
-            }
-            (_, ast::VarKind::External) | (_, ast::VarKind::Global) => {
+        let refused = match (p.kind, block.kind) {
+            (_, ast::VarKind::Global) => Some((BAD_SECTION, "VAR_GLOBAL belongs in a CONFIGURATION or RESOURCE: declare the variable there and use it here through VAR_EXTERNAL")),
+            (PouKind::Function, ast::VarKind::External) => Some((BAD_SECTION, "a FUNCTION cannot use globals (VAR_EXTERNAL): pass the value as an input or a VAR_IN_OUT")),
+            (PouKind::Program, ast::VarKind::InOut) => Some((UNSUPPORTED, "VAR_IN_OUT of a PROGRAM is not supported: share the variable through VAR_GLOBAL/VAR_EXTERNAL")),
+            _ => None,
+        };
+        if let Some((code, msg)) = refused {
+            cx.err(code, block.span, msg);
+            continue;
+        }
+        let by_ref = matches!(block.kind, ast::VarKind::InOut | ast::VarKind::External);
+        if by_ref && block.retain == ast::Retain::Retain {
+            cx.err(
+                BAD_SECTION,
+                block.span,
+                format!(
+                    "{} cannot be RETAIN: the variable it refers to decides",
+                    block.kind.keyword()
+                ),
+            );
+        }
+        for decl in &block.decls {
+            if by_ref && (decl.init.is_some() || decl.location.is_some()) {
                 cx.err(
-                    UNSUPPORTED,
-                    block.span,
-                    format!("{} is not supported yet", block.kind.keyword()),
+                    BAD_SECTION,
+                    decl.span,
+                    format!(
+                        "a {} refers to a variable declared elsewhere: it takes no initial value and no address",
+                        block.kind.keyword()
+                    ),
                 );
                 continue;
             }
-            _ => {}
-        }
-        for decl in &block.decls {
             if decl.edge.is_some()
                 && (p.kind == PouKind::Function || block.kind != ast::VarKind::Input)
             {
@@ -499,6 +506,7 @@ fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast::Pou) -> P
                     ty: ty.clone(),
                     init: init.clone(),
                     constant: block.constant,
+                    retain: block.retain == ast::Retain::Retain,
                     line: cx.line(name.span),
                 });
             }
@@ -517,6 +525,7 @@ fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast::Pou) -> P
             ty: Ty::BOOL,
             init: Some(Init::Const(Const::Bool(true))),
             constant: false,
+            retain: false,
             line: cx.line(p.name.span),
         });
     }
@@ -832,7 +841,7 @@ fn const_int(cx: &mut Cx, c: &ConstExpr) -> Option<i64> {
     }
 }
 
-fn init_value(
+pub(crate) fn init_value(
     cx: &mut Cx,
     types: &TypeTables,
     init: &Initializer,

@@ -681,14 +681,48 @@ impl Walk<'_, '_> {
                         None => return Cr::Undef(Why::AfterCal(self.line)),
                     },
                 };
-                let (inputs, outputs) = match args {
-                    None => (Vec::new(), Vec::new()),
+                let (inouts_decl, externals) = self.fb_refs(&fb);
+                let (inputs, outputs, inouts) = match args {
+                    None => (Vec::new(), Vec::new(), Vec::new()),
                     Some(a) => self.fb_args(&fb, a, target.span()),
                 };
+                if inouts.len() != inouts_decl.len() {
+                    if let Some(CallArgs::Formal(_)) | None = args {
+                        let missing: Vec<&str> = inouts_decl
+                            .iter()
+                            .filter(|(n, _)| !inouts.iter().any(|(m, _)| m.eq_ignore_ascii_case(n)))
+                            .map(|(n, _)| n.as_str())
+                            .collect();
+                        if !missing.is_empty() {
+                            self.err(
+                                BAD_IN_OUT,
+                                span,
+                                format!(
+                                    "{fb} has VAR_IN_OUT {}: every call binds it (`CAL inst({} := variable)`)",
+                                    missing.iter().map(|m| format!("`{m}`")).collect::<Vec<_>>().join(", "),
+                                    missing[0]
+                                ),
+                            );
+                        }
+                    }
+                    return Cr::Undef(Why::AfterCal(self.line));
+                }
+                // In declaration order.
+                let inouts = inouts_decl
+                    .iter()
+                    .filter_map(|(n, _)| {
+                        inouts
+                            .iter()
+                            .find(|(m, _)| m.eq_ignore_ascii_case(n))
+                            .map(|(_, p)| p.clone())
+                    })
+                    .collect();
                 self.push(Op::CallFb {
                     inst,
                     inputs,
                     outputs,
+                    inouts,
+                    externals,
                     cond: cond_v,
                 });
                 Cr::Undef(Why::AfterCal(self.line))
@@ -1258,13 +1292,71 @@ impl Walk<'_, '_> {
         let Some(value) = self.fit_to(arg, &ty, span, &format!("input `{name}` of {fb}")) else {
             return cr;
         };
+        let (inouts, externals) = self.fb_refs(&fb);
+        if let Some((n, _)) = inouts.first() {
+            self.err(
+                BAD_IN_OUT,
+                span,
+                format!("{fb} has VAR_IN_OUT `{n}`, which every call binds: use `CAL inst({n} := variable, ...)`"),
+            );
+            return cr;
+        }
         self.push(Op::CallFb {
             inst,
             inputs: vec![(name, value)],
             outputs: Vec::new(),
+            inouts: Vec::new(),
+            externals,
             cond: None,
         });
         cr
+    }
+
+    /// A user FB's VAR_IN_OUTs (name, type) and the names of its VAR_EXTERNALs
+    /// that the caller passes (the located ones need no passing).
+    #[allow(clippy::type_complexity)]
+    fn fb_refs(&self, fb: &str) -> (Vec<(String, Ty)>, Vec<(String, bool)>) {
+        let Some(sig) = self.env.pou(fb).filter(|s| s.kind == PouKind::FunctionBlock) else {
+            return (Vec::new(), Vec::new());
+        };
+        let inouts = sig
+            .vars
+            .iter()
+            .filter(|v| v.kind == ast::VarKind::InOut)
+            .map(|v| (v.name.clone(), v.ty.clone()))
+            .collect();
+        let externals = sig
+            .vars
+            .iter()
+            .filter(|v| v.kind == ast::VarKind::External && v.location.is_none())
+            .map(|v| (v.name.clone(), v.constant))
+            .collect();
+        (inouts, externals)
+    }
+
+    /// The place bound to a VAR_IN_OUT `name : ty`: a writable variable of exactly that type.
+    fn inout_place(&mut self, o: &Operand, name: &str, ty: &Ty, callee: &str) -> Option<Place> {
+        if let Operand::Lit(l) = o {
+            self.err(
+                BAD_IN_OUT,
+                l.span,
+                format!("`{name}` is a VAR_IN_OUT of {callee}: it needs a variable, not a literal"),
+            );
+            return None;
+        }
+        let place = self.place_of(o, true)?;
+        if &place.ty != ty {
+            self.err(
+                BAD_IN_OUT,
+                o.span(),
+                format!(
+                    "`{name}` is a VAR_IN_OUT of {callee} of type {ty}; the variable is {} (a reference needs exactly the same type)",
+                    place.ty
+                ),
+            );
+            return None;
+        }
+        Some(place)
     }
 
     /// The argument list of a CAL of an FB.
@@ -1274,12 +1366,41 @@ impl Walk<'_, '_> {
         fb: &str,
         args: &CallArgs,
         span: Span,
-    ) -> (Vec<(String, Value)>, Vec<(String, Place, bool)>) {
+    ) -> (
+        Vec<(String, Value)>,
+        Vec<(String, Place, bool)>,
+        Vec<(String, Place)>,
+    ) {
         let mut ins = Vec::new();
         let mut outs = Vec::new();
+        let mut inouts: Vec<(String, Place)> = Vec::new();
+        let (inout_decl, _) = self.fb_refs(fb);
         match args {
             CallArgs::Formal(list) => {
                 for p in list {
+                    if let Some((name, ty)) = inout_decl.iter().find(|(n, _)| p.name.is(n)) {
+                        match &p.kind {
+                            ParamKind::Input(o) => {
+                                if inouts.iter().any(|(n, _)| n == name) {
+                                    self.err(
+                                        DUPLICATE_DECL,
+                                        p.name.span,
+                                        format!("`{name}` is bound twice"),
+                                    );
+                                } else if let Some(pl) = self.inout_place(o, name, ty, fb) {
+                                    inouts.push((name.clone(), pl));
+                                }
+                            }
+                            ParamKind::Output { .. } => {
+                                self.err(
+                                    BAD_IN_OUT,
+                                    p.span,
+                                    format!("`{name}` is a VAR_IN_OUT of {fb}: bind it with `{name} := variable`"),
+                                );
+                            }
+                        }
+                        continue;
+                    }
                     let Some((name, ty, is_input)) = self.member(fb, &p.name.name, p.name.span)
                     else {
                         continue;
@@ -1338,6 +1459,16 @@ impl Walk<'_, '_> {
                     }
                 }
             }
+            CallArgs::NonFormal(_) if !inout_decl.is_empty() => {
+                self.err(
+                    BAD_IN_OUT,
+                    span,
+                    format!(
+                        "{fb} has VAR_IN_OUT `{}`: call it with a formal list (`CAL inst({} := variable, ...)`)",
+                        inout_decl[0].0, inout_decl[0].0
+                    ),
+                );
+            }
             CallArgs::NonFormal(list) => {
                 let inputs: Vec<(String, Ty)> = if let Some(s) = stdfb::lookup(fb) {
                     s.inputs
@@ -1372,7 +1503,7 @@ impl Walk<'_, '_> {
                 }
             }
         }
-        (ins, outs)
+        (ins, outs, inouts)
     }
 
     fn is_function(&self, name: &str) -> bool {
@@ -1401,6 +1532,31 @@ impl Walk<'_, '_> {
                 .inputs()
                 .map(|(i, v)| (i, v.name.clone(), v.ty.clone()))
                 .collect();
+            let inouts: Vec<(String, Ty)> = sig
+                .vars
+                .iter()
+                .filter(|v| v.kind == ast::VarKind::InOut)
+                .map(|v| (v.name.clone(), v.ty.clone()))
+                .collect();
+            // Positional order: inputs and in-outs as declared.
+            let params: Vec<(bool, usize)> = {
+                let (mut i, mut j) = (0, 0);
+                sig.vars
+                    .iter()
+                    .filter_map(|v| match v.kind {
+                        ast::VarKind::Input => {
+                            i += 1;
+                            Some((false, i - 1))
+                        }
+                        ast::VarKind::InOut => {
+                            j += 1;
+                            Some((true, j - 1))
+                        }
+                        _ => None,
+                    })
+                    .collect()
+            };
+            let mut inout_places: Vec<Option<Place>> = vec![None; inouts.len()];
             let ret = sig.ret.clone();
             let fname = sig.name.clone();
             let mut values: Vec<Option<Value>> = vec![None; inputs.len()];
@@ -1411,19 +1567,34 @@ impl Walk<'_, '_> {
             match args {
                 CallArgs::NonFormal(list) if !formal_only => {
                     let total = list.len() + 1;
-                    if total != inputs.len() {
-                        if let Some(d) = self.err(ARG_COUNT, span, format!("{fname} takes {} input(s); this call gives {total} (the current result and {} operand(s))", inputs.len(), list.len())) {
-                            d.notes.push(format!("inputs of {fname}: {}", inputs.iter().map(|(_, n, t)| format!("{n} : {t}")).collect::<Vec<_>>().join(", ")));
+                    if total != params.len() {
+                        if let Some(d) = self.err(ARG_COUNT, span, format!("{fname} takes {} input(s); this call gives {total} (the current result and {} operand(s))", params.len(), list.len())) {
+                            d.notes.push(format!("inputs of {fname}: {}", inputs.iter().map(|(_, n, t)| format!("{n} : {t}")).chain(inouts.iter().map(|(n, t)| format!("{n} : {t} (VAR_IN_OUT)"))).collect::<Vec<_>>().join(", ")));
                         }
+                        return bad;
+                    }
+                    if params[0].0 {
+                        self.err(BAD_IN_OUT, span, format!("the first parameter of {fname}, `{}`, is a VAR_IN_OUT: the current result is a value, not a variable; use a formal call `{fname}({} := variable, ...)`", inouts[0].0, inouts[0].0));
                         return bad;
                     }
                     let Some(first) = self.use_cr(&cr, span) else {
                         return bad;
                     };
-                    values[0] = self.fit(first, &inputs[0].2, span);
+                    values[params[0].1] = self.fit(first, &inputs[params[0].1].2, span);
                     for (k, o) in list.iter().enumerate() {
-                        let Some(a) = self.operand(o) else { return bad };
-                        values[k + 1] = self.fit(a, &inputs[k + 1].2, o.span());
+                        match params[k + 1] {
+                            (true, j) => {
+                                let (n, t) = inouts[j].clone();
+                                inout_places[j] = self.inout_place(o, &n, &t, &fname);
+                                if inout_places[j].is_none() {
+                                    return bad;
+                                }
+                            }
+                            (false, j) => {
+                                let Some(a) = self.operand(o) else { return bad };
+                                values[j] = self.fit(a, &inputs[j].2, o.span());
+                            }
+                        }
                     }
                 }
                 CallArgs::NonFormal(_) => {
@@ -1456,6 +1627,15 @@ impl Walk<'_, '_> {
                                     continue;
                                 }
                                 eno_plain.push((place, *negate));
+                            }
+                            ParamKind::Input(o)
+                                if let Some(j) = inouts.iter().position(|(n, _)| p.name.is(n)) =>
+                            {
+                                let (n, t) = inouts[j].clone();
+                                inout_places[j] = self.inout_place(o, &n, &t, &fname);
+                                if inout_places[j].is_none() {
+                                    return bad;
+                                }
                             }
                             ParamKind::Input(o) => {
                                 let Some(k) = inputs.iter().position(|(_, n, _)| p.name.is(n))
@@ -1515,9 +1695,21 @@ impl Walk<'_, '_> {
                 }
             }
             let Some(ret) = ret else { return bad };
+            if let Some(j) = inout_places.iter().position(Option::is_none) {
+                self.err(
+                    BAD_IN_OUT,
+                    span,
+                    format!(
+                        "{fname} has VAR_IN_OUT `{}`: every call binds it (`{fname}({} := variable, ...)`)",
+                        inouts[j].0, inouts[j].0
+                    ),
+                );
+                return bad;
+            }
             if values.iter().any(Option::is_none) {
                 return bad;
             }
+            let inouts = inout_places.into_iter().flatten().collect();
             let args = values.into_iter().flatten().collect();
             let out_types = sig
                 .vars
@@ -1534,6 +1726,7 @@ impl Walk<'_, '_> {
                 ty: ret.clone(),
                 expr: Expr::CallUser {
                     name: fname,
+                    inouts,
                     args,
                     out_types,
                     outputs,

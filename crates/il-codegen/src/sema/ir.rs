@@ -12,6 +12,71 @@ pub struct Program {
     /// User types declared in this file (TYPE ... END_TYPE).
     pub types: Vec<TypeDef>,
     pub pous: Vec<CheckedPou>,
+    /// CONFIGURATIONs declared in this file.
+    pub configs: Vec<ConfigDef>,
+}
+
+/// A CONFIGURATION: its globals, and its resources with their tasks and
+/// program instances. It becomes a struct the host drives with the time.
+#[derive(Clone, Debug)]
+pub struct ConfigDef {
+    pub name: String,
+    /// VAR_GLOBAL of the configuration (kind `Var`; located ones live in the
+    /// process image and are not fields).
+    pub globals: Vec<Var>,
+    pub resources: Vec<ResourceDef>,
+}
+
+/// A RESOURCE (or the unnamed one of a configuration without RESOURCE).
+#[derive(Clone, Debug)]
+pub struct ResourceDef {
+    /// `None`: the configuration declares its tasks and programs directly.
+    pub name: Option<String>,
+    pub globals: Vec<Var>,
+    pub tasks: Vec<TaskDef>,
+    pub programs: Vec<ProgramInst>,
+}
+
+/// `TASK t (INTERVAL := T#10ms, PRIORITY := 1)`.
+#[derive(Clone, Debug)]
+pub struct TaskDef {
+    pub name: String,
+    /// Nanoseconds; 0 = no periodic release.
+    pub interval: i64,
+    pub priority: u32,
+    /// SINGLE: released on a rising edge of this BOOL global.
+    pub single: Option<GlobalRef>,
+}
+
+/// A global of a configuration: `resource` None = the configuration's own.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GlobalRef {
+    pub resource: Option<usize>,
+    pub index: usize,
+}
+
+/// `PROGRAM p WITH t : P (a := g, b => h)`.
+#[derive(Clone, Debug)]
+pub struct ProgramInst {
+    pub name: String,
+    /// The PROGRAM type.
+    pub program: String,
+    /// Index into the resource's tasks; `None`: runs on every call, after the tasks.
+    pub task: Option<usize>,
+    /// The globals bound to the program's (non-located) VAR_EXTERNALs, in
+    /// their declaration order; `true` for a VAR_EXTERNAL CONSTANT.
+    pub externals: Vec<(String, GlobalRef, bool)>,
+    /// Inputs set before every run.
+    pub inputs: Vec<(String, ProgArg)>,
+    /// Outputs copied to globals after every run (target, source output).
+    pub outputs: Vec<(String, GlobalRef)>,
+}
+
+/// The value given to a program input in a configuration.
+#[derive(Clone, Debug)]
+pub enum ProgArg {
+    Global(GlobalRef),
+    Const(Const),
 }
 
 /// A user type that becomes a Rust item.
@@ -71,6 +136,8 @@ pub struct Var {
     pub ty: Ty,
     pub init: Option<Init>,
     pub constant: bool,
+    /// Declared in a RETAIN section: part of the snapshot the host saves.
+    pub retain: bool,
     /// Line of the declaration, for comments.
     pub line: u32,
 }
@@ -207,6 +274,8 @@ pub enum Expr {
     CallUser {
         /// EN := value: run only when TRUE.
         en: Option<Value>,
+        /// Places bound to the VAR_IN_OUTs, in their declaration order.
+        inouts: Vec<Place>,
         /// Index of the implicit ENO among the outputs, if the function sets ENO.
         eno: Option<usize>,
         ret: Ty,
@@ -276,6 +345,12 @@ pub enum Op {
         inst: Place,
         inputs: Vec<(String, Value)>,
         outputs: Vec<(String, Place, bool)>,
+        /// Places bound to the FB's VAR_IN_OUTs, in their declaration order.
+        inouts: Vec<Place>,
+        /// The FB's (non-located) VAR_EXTERNALs, in declaration order: the
+        /// caller passes its own externals of the same names. `true`: the
+        /// FB declares it CONSTANT (a shared reference suffices).
+        externals: Vec<(String, bool)>,
         cond: Condition,
     },
     Jump {

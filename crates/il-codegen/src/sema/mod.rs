@@ -2,6 +2,7 @@
 //! every instruction, and control flow. Produces the checked [`ir::Program`].
 
 pub mod codes;
+mod config;
 mod decls;
 mod flow;
 pub mod ir;
@@ -47,9 +48,16 @@ pub fn check_all(
             .filter(|(tf, _)| *tf == f)
             .map(|(_, d)| d.clone())
             .collect();
+        let configs = env
+            .configs
+            .iter()
+            .filter(|(cf, _)| *cf == f)
+            .map(|(_, c)| c.clone())
+            .collect();
         let mut program = ir::Program {
             types,
             pous: Vec::new(),
+            configs,
         };
         for pou in unit.items.iter().filter_map(|i| match i {
             ast::Item::Pou(p) => Some(p),
