@@ -182,6 +182,7 @@ pub(crate) fn emit_config(c: &ConfigDef) -> TokenStream {
         }
     }
     let ntasks = tasks.len();
+    let retain = retain_items(c, &name);
     let located = c
         .globals
         .iter()
@@ -215,6 +216,7 @@ pub(crate) fn emit_config(c: &ConfigDef) -> TokenStream {
         }
 
         #sub_items
+        #retain
 
         #[allow(non_snake_case, unused_mut, unused_variables, clippy::all)]
         impl #name {
@@ -248,6 +250,70 @@ pub(crate) fn emit_config(c: &ConfigDef) -> TokenStream {
             /// Periodic releases missed because `run` was called too late, per task (in [`Self::TASKS`] order).
             pub fn overruns(&self) -> [u64; #ntasks] {
                 [#(self.#state_ids.overruns()),*]
+            }
+        }
+    }
+}
+
+/// The configuration's RETAIN snapshot: its RETAIN globals and the
+/// snapshots of its programs (fields of named resources are prefixed
+/// `Resource__`).
+fn retain_items(c: &ConfigDef, name: &proc_macro2::Ident) -> TokenStream {
+    let mut fields = Vec::new();
+    let mut takes = Vec::new();
+    let mut puts = Vec::new();
+    let scopes = std::iter::once((None, &c.globals, &[][..]))
+        .chain(c.resources.iter().map(|r| (r.name.as_ref(), &r.globals, &r.programs[..])));
+    for (res, globals, programs) in scopes {
+        let (base, prefix) = match res {
+            Some(r) => {
+                let id = rust_ident(r);
+                (quote!(self.#id), format!("{r}__"))
+            }
+            None => (quote!(self), String::new()),
+        };
+        for v in globals.iter().filter(|v| v.retain && v.location.is_none()) {
+            let id = rust_ident(&v.name);
+            let f = rust_ident(&format!("{prefix}{}", v.name));
+            let ty = rust_ty(&v.ty);
+            let doc = format!(" VAR_GLOBAL RETAIN (IL line {})", v.line);
+            fields.push(quote!(#[doc = #doc] pub #f: #ty,));
+            takes.push(quote!(#f: ::core::clone::Clone::clone(&#base.#id),));
+            puts.push(quote!(#base.#id = ::core::clone::Clone::clone(&s.#f);));
+        }
+        for p in programs.iter().filter(|p| p.retain) {
+            let id = rust_ident(&p.name);
+            let f = rust_ident(&format!("{prefix}{}", p.name));
+            let ty = names::retain_ident(&p.program);
+            let doc = format!(" The RETAIN variables of program instance `{}`", p.name);
+            fields.push(quote!(#[doc = #doc] pub #f: #ty,));
+            takes.push(quote!(#f: #base.#id.retain(),));
+            puts.push(quote!(#base.#id.restore(&s.#f);));
+        }
+    }
+    if fields.is_empty() {
+        return quote!();
+    }
+    let st = names::retain_ident(&c.name);
+    let doc = format!(
+        " The RETAIN state of CONFIGURATION `{}`: what a host saves before power-off and restores at a warm start.",
+        c.name
+    );
+    quote! {
+        #[doc = #doc]
+        #[derive(Clone, Debug, PartialEq)]
+        #[allow(non_snake_case, non_camel_case_types)]
+        pub struct #st { #(#fields)* }
+
+        #[allow(clippy::all)]
+        impl #name {
+            /// A snapshot of every RETAIN variable of the configuration.
+            pub fn retain(&self) -> #st {
+                #st { #(#takes)* }
+            }
+            /// Puts a snapshot back (a warm start); other variables keep their values.
+            pub fn restore(&mut self, s: &#st) {
+                #(#puts)*
             }
         }
     }

@@ -243,6 +243,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                     quote!(mut __ext: #ext_id<'_>),
                 )
             };
+            let retain = retain_items(pou);
             // The generic trait fits blocks called with the context alone.
             let trait_impl = (inouts.is_empty() && externals.is_empty()).then(|| {
                 quote! {
@@ -285,6 +286,78 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
 
                 #trait_impl
                 #ext_item
+                #retain
+            }
+        }
+    }
+}
+
+/// The RETAIN snapshot type of an FB/PROGRAM, with `retain()` and `restore()`.
+fn retain_items(pou: &CheckedPou) -> TokenStream {
+    use crate::sema::ir::Retained;
+    if pou.retained.is_empty() {
+        return quote!();
+    }
+    let name = item_ident(&pou.name);
+    let st = names::retain_ident(&pou.name);
+    let mut fields = Vec::new();
+    let mut takes = Vec::new();
+    let mut puts = Vec::new();
+    for (i, how) in &pou.retained {
+        let v = &pou.vars[*i];
+        let id = rust_ident(&v.name);
+        match how {
+            Retained::Whole => {
+                let ty = rust_ty(&v.ty);
+                let doc = format!(" {} RETAIN (IL line {})", v.kind.keyword(), v.line);
+                fields.push(quote!(#[doc = #doc] pub #id: #ty,));
+                takes.push(quote!(#id: ::core::clone::Clone::clone(&self.#id),));
+                puts.push(quote!(self.#id = ::core::clone::Clone::clone(&s.#id);));
+            }
+            Retained::Nested => {
+                // The snapshot of each instance, arrays mapped element-wise.
+                let ty = v.ty.rust(&|fb| {
+                    let r = names::retain_ident(fb);
+                    quote!(#r)
+                });
+                let doc = format!(" The RETAIN variables of `{}` (IL line {})", v.name, v.line);
+                fields.push(quote!(#[doc = #doc] pub #id: #ty,));
+                let mut depth = 0;
+                let mut t = &v.ty;
+                while let Ty::Array { elem, dims } = t {
+                    depth += dims.len();
+                    t = elem;
+                }
+                let mut take = quote!(__x.retain());
+                let mut put = quote!(__d.restore(__s););
+                for _ in 0..depth {
+                    take = quote!(__x.each_ref().map(|__x| #take));
+                    put = quote!(for (__d, __s) in __d.iter_mut().zip(__s.iter()) { #put });
+                }
+                takes.push(quote!(#id: { let __x = &self.#id; #take },));
+                puts.push(quote!({ let (__d, __s) = (&mut self.#id, &s.#id); #put }));
+            }
+        }
+    }
+    let doc = format!(
+        " The RETAIN variables of `{}` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.",
+        pou.name
+    );
+    quote! {
+        #[doc = #doc]
+        #[derive(Clone, Debug, PartialEq)]
+        #[allow(non_snake_case, non_camel_case_types)]
+        pub struct #st { #(#fields)* }
+
+        #[allow(clippy::all)]
+        impl #name {
+            /// A snapshot of the RETAIN variables.
+            pub fn retain(&self) -> #st {
+                #st { #(#takes)* }
+            }
+            /// Puts a snapshot back (a warm start); other variables keep their values.
+            pub fn restore(&mut self, s: &#st) {
+                #(#puts)*
             }
         }
     }

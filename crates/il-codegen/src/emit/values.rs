@@ -550,6 +550,9 @@ impl Pou<'_> {
             if arg_lets.is_empty() && inouts.is_empty() {
                 return quote!(#f(__ctx));
             }
+            if inouts.is_empty() {
+                return quote!({ #(#arg_lets)* #f(__ctx, #(#args,)*) });
+            }
             return quote!({
                 #(#arg_lets)* #io_lets
                 let __r = #f(__ctx, #(#args,)* #(#io_args,)*);

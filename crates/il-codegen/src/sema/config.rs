@@ -7,7 +7,9 @@
 
 use super::codes::*;
 use super::decls::{Env, Names, PouSig, init_value, pou_sig};
-use super::ir::{ConfigDef, GlobalRef, Init, ProgArg, ProgramInst, ResourceDef, TaskDef, Var};
+use super::ir::{
+    ConfigDef, GlobalRef, Init, ProgArg, ProgramInst, ResourceDef, Retained, TaskDef, Var,
+};
 use super::types::Ty;
 use super::{Cx, suggest};
 use crate::ast::{self, LitKind, Operand, ParamKind, PouKind, Span, VarKind};
@@ -381,6 +383,9 @@ fn programs(
         {
             match lookup(def, res, &v.name) {
                 None => {
+                    let near = suggest(&v.name, all_global_names(def, res))
+                        .map(|s| format!("the configuration has `{s}`; "))
+                        .unwrap_or_default();
                     cx.err(
                         BAD_GLOBAL,
                         pi.span,
@@ -389,7 +394,10 @@ fn programs(
                             sig.name, v.name, def.name
                         ),
                     )
-                    .help = Some(format!("add `{} : {};` to a VAR_GLOBAL block", v.name, v.ty));
+                    .help = Some(format!(
+                        "{near}add `{} : {};` to a VAR_GLOBAL block",
+                        v.name, v.ty
+                    ));
                 }
                 Some((_, g)) if g.ty != v.ty => {
                     cx.err(
@@ -422,6 +430,7 @@ fn programs(
             externals,
             inputs,
             outputs,
+            retain: !retained(env, sig).is_empty(),
         });
     }
     out
@@ -509,6 +518,37 @@ fn program_args(
         }
     }
     (inputs, outputs)
+}
+
+/// The variables of an FB/PROGRAM that its RETAIN snapshot holds.
+pub(crate) fn retained(env: &Env, sig: &PouSig) -> Vec<(usize, Retained)> {
+    retained_depth(env, sig, 0)
+}
+
+fn retained_depth(env: &Env, sig: &PouSig, depth: u32) -> Vec<(usize, Retained)> {
+    if sig.kind == PouKind::Function || depth > 16 {
+        return Vec::new();
+    }
+    sig.vars
+        .iter()
+        .enumerate()
+        .filter(|(_, v)| {
+            matches!(v.kind, VarKind::Var | VarKind::Input | VarKind::Output)
+                && v.location.is_none()
+        })
+        .filter_map(|(i, v)| {
+            if v.retain {
+                return Some((i, Retained::Whole));
+            }
+            let mut t = &v.ty;
+            while let Ty::Array { elem, .. } = t {
+                t = elem;
+            }
+            let Ty::Fb(fb) = t else { return None };
+            let inner = env.pou(fb)?;
+            (!retained_depth(env, inner, depth + 1).is_empty()).then_some((i, Retained::Nested))
+        })
+        .collect()
 }
 
 /// A POU holding an instance of a FUNCTION_BLOCK that uses globals passes

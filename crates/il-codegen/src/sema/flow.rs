@@ -163,6 +163,7 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
         addresses: w.addresses,
         cr_types: w.cr_types,
         save_types: w.save_types,
+        retained: super::config::retained(env, sig),
     })
 }
 
@@ -688,9 +689,14 @@ impl Walk<'_, '_> {
                 };
                 if inouts.len() != inouts_decl.len() {
                     if let Some(CallArgs::Formal(_)) | None = args {
+                        // Only the names not written at all (a bad binding was reported).
+                        let written = |n: &str| match args {
+                            Some(CallArgs::Formal(list)) => list.iter().any(|p| p.name.is(n)),
+                            _ => false,
+                        };
                         let missing: Vec<&str> = inouts_decl
                             .iter()
-                            .filter(|(n, _)| !inouts.iter().any(|(m, _)| m.eq_ignore_ascii_case(n)))
+                            .filter(|(n, _)| !written(n))
                             .map(|(n, _)| n.as_str())
                             .collect();
                         if !missing.is_empty() {

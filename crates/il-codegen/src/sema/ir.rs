@@ -70,6 +70,8 @@ pub struct ProgramInst {
     pub inputs: Vec<(String, ProgArg)>,
     /// Outputs copied to globals after every run (target, source output).
     pub outputs: Vec<(String, GlobalRef)>,
+    /// The program has RETAIN variables (a `retain()` snapshot).
+    pub retain: bool,
 }
 
 /// The value given to a program input in a configuration.
@@ -120,6 +122,18 @@ pub struct CheckedPou {
     pub cr_types: Vec<Ty>,
     /// Types of the slots that hold the outer CR of deferred parentheses.
     pub save_types: Vec<Ty>,
+    /// What the RETAIN snapshot of an FB/PROGRAM holds (empty: no snapshot).
+    pub retained: Vec<(usize, Retained)>,
+}
+
+/// How a variable is part of a RETAIN snapshot.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Retained {
+    /// Declared RETAIN: its whole value (an FB instance with all its state).
+    Whole,
+    /// An instance (or array of instances) of a block that has RETAIN
+    /// variables: their snapshot.
+    Nested,
 }
 
 #[derive(Clone, Debug)]

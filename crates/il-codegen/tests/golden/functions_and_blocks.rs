@@ -8,6 +8,7 @@
     unused_assignments,
     unreachable_code,
     unused_labels,
+    unused_parens,
     unused_comparisons,
     clippy::all
 )]
@@ -78,6 +79,7 @@ impl Filler {
         unused_assignments,
         unreachable_code,
         unused_labels,
+        unused_parens,
         unused_comparisons,
         clippy::all
     )]

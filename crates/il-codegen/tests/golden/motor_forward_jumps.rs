@@ -39,6 +39,7 @@ impl Motor {
         unused_assignments,
         unreachable_code,
         unused_labels,
+        unused_parens,
         unused_comparisons,
         clippy::all
     )]
