@@ -13,6 +13,7 @@
 //! | [`batch_weigh`] | `plc/batch_weigh.il` | build.rs | a FUNCTION with EN/ENO, BCD, parentheses, a recorded fault |
 //! | [`stair_light`] | inline in `src/stair_light.rs` | `il!` | TOF, TIME comparison |
 //! | [`readme_motor`] | `motor.il` (the README's) | `il!(file = ...)` | R_TRIG, a forward jump |
+//! | [`bottling`] | `plc/bottling.il` | build.rs | a CONFIGURATION of two tasks, VAR_GLOBAL/VAR_EXTERNAL, a located global |
 //!
 //! `build.rs` compiles every `plc/*.il` file with [`il_codegen::Builder`]
 //! into `OUT_DIR`; [`plc`] includes the generated Rust. Every program is
@@ -40,6 +41,7 @@ use core::fmt;
 use il_std::TIME;
 
 pub mod batch_weigh;
+pub mod bottling;
 pub mod conveyor;
 pub mod motor_starter;
 pub mod readme_motor;
@@ -50,6 +52,7 @@ pub mod traffic_light;
 /// files could use each other's function blocks).
 pub mod plc {
     include!(concat!(env!("OUT_DIR"), "/batch_weigh.rs"));
+    include!(concat!(env!("OUT_DIR"), "/bottling.rs"));
     include!(concat!(env!("OUT_DIR"), "/conveyor.rs"));
     include!(concat!(env!("OUT_DIR"), "/motor_starter.rs"));
     include!(concat!(env!("OUT_DIR"), "/traffic_light.rs"));
@@ -71,6 +74,7 @@ pub const ALL: &[(&str, Example)] = &[
     ("batch_weigh", batch_weigh::run),
     ("stair_light", stair_light::run),
     ("readme_motor", readme_motor::run),
+    ("bottling", bottling::run),
 ];
 
 /// One value of a time-line column, formatted for a narrow column.
