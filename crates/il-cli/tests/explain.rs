@@ -51,10 +51,10 @@ END_PROGRAM
     (
         "IL0121",
         "\
-FUNCTION_BLOCK Swap
-VAR_IN_OUT a, b : INT; END_VAR
+PROGRAM Main
+VAR_IN_OUT a : INT; END_VAR   (* in-outs of a PROGRAM: use globals *)
     LD   a
-END_FUNCTION_BLOCK
+END_PROGRAM
 ",
     ),
     (

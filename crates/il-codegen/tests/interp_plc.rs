@@ -440,3 +440,27 @@ fn unknown_names_are_errors_not_panics() {
             .is_err()
     );
 }
+
+/// globals_tasks.il: VAR_IN_OUT of a FUNCTION and of an FB (an array element
+/// too) and an FB's VAR_EXTERNAL are copied in and out around the call; a
+/// PROGRAM run alone keeps its own copy of its globals. Same values as
+/// tests/tests/globals_tasks.rs asserts for the generated code.
+#[test]
+fn in_outs_and_externals() {
+    let mut m = machine("globals_tasks.il", "FastLoop");
+    m.set("limit", i(2, Elem::DINT)).unwrap();
+    let mut ctx = Cycle::new();
+    for _ in 0..3 {
+        m.scan(&mut ctx).unwrap();
+    }
+    assert_eq!((int(&m, "ticks"), int(&m, "calls"), int(&m, "seen")), (3, 6, 3));
+    assert_eq!(int(&m, "sum"), 6);
+    let Some(Value::Array(arr)) = m.get("arr") else {
+        panic!("arr is an array")
+    };
+    assert_eq!(arr[1], i(30, Elem::DINT));
+    assert_eq!((int(&m, "x"), int(&m, "y")), (3, 3));
+    assert!(boolean(&m, "swapped"));
+    // lamp is located through the configuration: it is the process image.
+    assert!(ctx.io.bit(il_std::Area::Output, 0, 0));
+}
