@@ -96,9 +96,8 @@ const EXPECTED: &[Entry] = &[
     ok("Autonomy-Logic_STruCpp_state-display.il", Accept),
     ok("eduardojvieira_ZPLC_blinky_2a44dc4.il", Accept),
     // `skip1_result AT %Q0.0 : INT`: without a size prefix %Q0.0 is a bit, so an
-    // INT cannot live there (ZPLC's dialect). Separately, with the AT parts
-    // removed, ilc still refuses `LD 999` on line 17 as "not a BOOL" although
-    // it is stored to an INT: a checker bug this table cannot show.
+    // INT cannot live there (ZPLC's dialect). With the AT parts removed the
+    // file is accepted (only the warning that line 29 never runs).
     ok(
         "eduardojvieira_ZPLC_jumps.il",
         Refuse {

@@ -136,6 +136,24 @@ fn stubs(file: &SourceFile) -> TokenStream {
         p.save_types.clear();
         p.label_count = 0;
     }
+    // A program instance whose globals could not all be bound would call
+    // its program with a wrong argument: leave it out of the stub.
+    let externals = |name: &str| {
+        program.pous.iter().find(|p| p.name == name).map(|p| {
+            p.vars
+                .iter()
+                .filter(|v| v.kind == crate::ast::VarKind::External && v.location.is_none())
+                .count()
+        })
+    };
+    let mut configs = std::mem::take(&mut program.configs);
+    for c in &mut configs {
+        for r in &mut c.resources {
+            r.programs
+                .retain(|pi| externals(&pi.program) == Some(pi.externals.len()));
+        }
+    }
+    program.configs = configs;
     let _ = Span::call_site();
     emit::program(&program, emit::Options::default())
 }

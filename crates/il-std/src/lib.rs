@@ -50,6 +50,8 @@ mod image;
 pub mod literal;
 pub mod math;
 pub mod num;
+#[cfg(feature = "serde")]
+pub mod serde_array;
 pub mod signature;
 mod string;
 mod task;

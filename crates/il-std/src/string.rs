@@ -317,3 +317,35 @@ mod tests {
         assert_eq!(w.capacity(), DEFAULT_STRING_LEN);
     }
 }
+
+/// Strings serialise as text; a longer text is truncated to the capacity.
+#[cfg(feature = "serde")]
+macro_rules! string_serde {
+    ($name:ident) => {
+        impl<const N: usize> serde::Serialize for $name<N> {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                s.collect_str(self)
+            }
+        }
+
+        impl<'de, const N: usize> serde::Deserialize<'de> for $name<N> {
+            fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+                struct V<const N: usize>;
+                impl<const N: usize> serde::de::Visitor<'_> for V<N> {
+                    type Value = $name<N>;
+                    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                        f.write_str("a string")
+                    }
+                    fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<$name<N>, E> {
+                        Ok($name::<N>::from_str_truncating(v).0)
+                    }
+                }
+                d.deserialize_str(V::<N>)
+            }
+        }
+    };
+}
+#[cfg(feature = "serde")]
+string_serde!(STRING);
+#[cfg(feature = "serde")]
+string_serde!(WSTRING);

@@ -41,6 +41,7 @@ pub struct TaskInfo {
 /// assert!(t.due(ms(40), ms(10), None));
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TaskState {
     next: Option<TIME>,
     single: bool,

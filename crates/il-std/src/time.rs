@@ -21,6 +21,7 @@ macro_rules! duration_type {
     ($name:ident, $prefix:literal, $doc:literal) => {
         #[doc = $doc]
         #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+        #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
         pub struct $name(
             /// Signed duration in nanoseconds.
             pub i64,
@@ -212,6 +213,7 @@ pub(crate) fn days_in_month(y: i64, m: u32) -> u32 {
 ///
 /// Displays as `D#2001-04-09`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct DATE(
     /// Days since 1970-01-01 (negative before).
     pub i64,
@@ -244,6 +246,7 @@ impl fmt::Display for DATE {
 /// Displays as `TOD#11:36:15.2`. Values outside one day (only possible by writing the field
 /// directly) are displayed modulo 24 h.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TOD(
     /// Nanoseconds since midnight.
     pub i64,
@@ -306,6 +309,7 @@ impl fmt::Display for TOD {
 ///
 /// Displays as `DT#2001-04-09-11:36:15.2`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct DT(
     /// Nanoseconds since 1970-01-01T00:00:00.
     pub i64,

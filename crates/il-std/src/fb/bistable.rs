@@ -16,6 +16,7 @@ use crate::cycle::Cycle;
 /// assert!(sr.Q1);
 /// ```
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SR {
     /// Input: set (dominant).
     pub S1: bool,
@@ -55,6 +56,7 @@ impl SR {
 /// assert!(!rs.Q1);
 /// ```
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RS {
     /// Input: set.
     pub S: bool,

@@ -27,6 +27,7 @@ macro_rules! counters {
         /// assert_eq!((c.CV, c.Q), (2, true));
         /// ```
         #[derive(Clone, Debug, Default, PartialEq)]
+        #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
         pub struct $ctu {
             /// Input: count up on its rising edge.
             pub CU: bool,
@@ -76,6 +77,7 @@ macro_rules! counters {
         /// assert_eq!((c.CV, c.Q), (0, true));
         /// ```
         #[derive(Clone, Debug, Default, PartialEq)]
+        #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
         pub struct $ctd {
             /// Input: count down on its rising edge.
             pub CD: bool,
@@ -126,6 +128,7 @@ macro_rules! counters {
         /// assert_eq!((c.CV, c.QU, c.QD), (1, true, false));
         /// ```
         #[derive(Clone, Debug, Default, PartialEq)]
+        #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
         pub struct $ctud {
             /// Input: count up on its rising edge.
             pub CU: bool,

@@ -18,6 +18,7 @@ use crate::cycle::Cycle;
 /// assert!(!r.Q);         // CLK still TRUE: no edge
 /// ```
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct R_TRIG {
     /// Input: the signal watched.
     pub CLK: bool,
@@ -60,6 +61,7 @@ impl R_TRIG {
 /// assert!(!f.Q);
 /// ```
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct F_TRIG {
     /// Input: the signal watched.
     pub CLK: bool,

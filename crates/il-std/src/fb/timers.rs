@@ -43,6 +43,7 @@ fn delta(last: TIME, now: TIME) -> TIME {
 /// assert_eq!(trace, [(true, 0), (true, 10), (true, 20), (false, 30), (false, 30), (false, 30), (false, 0)]);
 /// ```
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TP {
     /// Input: a rising edge starts the pulse.
     pub IN: bool,
@@ -59,6 +60,7 @@ pub struct TP {
 }
 
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 enum PulseState {
     #[default]
     Idle,
@@ -158,6 +160,7 @@ impl TP {
 /// assert_eq!(trace, [(false, 0), (false, 10), (false, 20), (true, 30), (true, 30), (false, 0)]);
 /// ```
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TON {
     /// Input: timing runs while TRUE.
     pub IN: bool,
@@ -241,6 +244,7 @@ impl TON {
 /// assert_eq!(trace, [(true, 0), (true, 0), (true, 10), (true, 20), (false, 30), (true, 0)]);
 /// ```
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct TOF {
     /// Input: a falling edge starts the off delay.
     pub IN: bool,
@@ -324,6 +328,7 @@ impl TOF {
 /// assert_eq!(rtc.CDT.to_string(), "DT#2001-04-09-11:01:30");
 /// ```
 #[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RTC {
     /// Input: the clock runs while TRUE; a rising edge loads `PDT`.
     pub IN: bool,
