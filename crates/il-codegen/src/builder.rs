@@ -204,4 +204,44 @@ mod tests {
         assert!(e.to_string().contains("no/such/file.il"), "{e}");
         assert!(!dir.join("file.rs").exists());
     }
+
+    #[test]
+    fn plcopen_file_becomes_stem_rs_and_errors_show_xml_lines() {
+        let dir = std::env::temp_dir().join(format!("il-builder-xml-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let xml = dir.join("cell.xml");
+        let project = |body: &str| {
+            format!(
+                "<project>\n<types><pous>\n<pou name=\"P\" pouType=\"program\">\n\
+                 <interface><localVars><variable name=\"x\"><type><INT/></type></variable>\
+                 </localVars></interface>\n<body><IL><p><![CDATA[{body}]]></p></IL></body>\n\
+                 </pou>\n</pous></types>\n</project>\n"
+            )
+        };
+        std::fs::write(&xml, project("LD x\nADD 1\nST x\n")).unwrap();
+        let build = || {
+            Builder::new()
+                .plcopen_file(&xml)
+                .out_dir(dir.join("out"))
+                .cargo_directives(false)
+                .compile()
+        };
+        let written = build().unwrap();
+        assert_eq!(written, [dir.join("out").join("cell.rs")]);
+        let code = std::fs::read_to_string(&written[0]).unwrap();
+        assert!(code.contains("pub struct P"), "{code}");
+        assert!(code.contains("// 6: ADD 1"), "{code}");
+        let t1 = std::fs::metadata(&written[0]).unwrap().modified().unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        build().unwrap();
+        assert_eq!(
+            std::fs::metadata(&written[0]).unwrap().modified().unwrap(),
+            t1
+        );
+        std::fs::write(&xml, project("LD x\nADD y\nST x\n")).unwrap();
+        let e = build().unwrap_err().to_string();
+        assert!(e.contains("cell.xml:6:5"), "{e}");
+        assert!(e.contains("6 | ADD y"), "{e}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }

@@ -78,3 +78,43 @@ fn counter_il_counts_in_the_interpreter() {
     m.scan(&mut ctx).expect("scan");
     assert_eq!(int(&m, "OUT"), 18);
 }
+
+/// Truncated and damaged copies of the project: diagnostics, never a panic,
+/// and every span inside the XML text.
+#[test]
+fn damaged_copies_never_panic() {
+    let Some(xml) = read() else { return };
+    let text = xml.text.clone();
+    let mut variants: Vec<String> = (0..text.len())
+        .step_by(211)
+        .filter(|&k| text.is_char_boundary(k))
+        .map(|k| text[..k].to_string())
+        .collect();
+    // Damage inside the IL body: each line of CounterIL dropped in turn,
+    // and characters that break IL.
+    let body_start = text.find("<![CDATA[LD Reset").expect("CounterIL body");
+    let body_end = body_start + text[body_start..].find("]]>").unwrap();
+    let body = &text[body_start..body_end];
+    for (k, line) in body.lines().enumerate() {
+        if !line.trim().is_empty() {
+            variants.push(text.replacen(line, "", 1));
+            variants.push(text.replacen(line, &format!("{line} (*"), 1));
+            variants.push(text.replacen(line, &format!("{k}: ?? {line}"), 1));
+        }
+    }
+    for v in &variants {
+        let input = Input::plcopen(SourceFile::new("v.xml", v.clone()));
+        for d in check_inputs(std::slice::from_ref(&input)).remove(0) {
+            assert!(
+                d.span.lo <= d.span.hi && d.span.hi as usize <= v.len(),
+                "{d:?}"
+            );
+            for (s, _) in &d.secondary {
+                assert!(s.hi as usize <= v.len());
+            }
+            let _ = il_codegen::diag::render(input.source(), std::slice::from_ref(&d), false);
+            let _ = il_codegen::diag::to_json(input.source(), &d);
+        }
+        let _ = il_codegen::compile_inputs(std::slice::from_ref(&input));
+    }
+}

@@ -695,6 +695,20 @@ impl<'a, 'i> Tr<'a, 'i> {
                 }
             }
         }
+        for extra in kids(c, "accessVars").chain(kids(c, "configVars")) {
+            let at = self.tag(extra);
+            self.diags.push(
+                Diagnostic::warning(
+                    NOT_TRANSLATED,
+                    at,
+                    format!(
+                        "`<{}>` of CONFIGURATION `{name}` is not translated",
+                        extra.tag_name().name()
+                    ),
+                )
+                .with_label("skipped"),
+            );
+        }
         self.put("CONFIGURATION ", c);
         self.attr(c, "name");
         self.put("\n", c);
