@@ -1,12 +1,15 @@
 //! Compiles the IL test programs through the build-script front end.
 //! `plc/*.il` are ours; the Annex F programs are read from `../shared/corpus`
 //! when it is present (they are GPL test inputs and are never copied into
-//! the repository), which enables `cfg(il_corpus)`.
+//! the repository), which enables `cfg(il_corpus)`. The PLCopen XML project
+//! of the corpus (Beremiz's first_steps) goes through
+//! `Builder::plcopen_file` and enables `cfg(il_plcopen_corpus)`.
 
 use std::path::{Path, PathBuf};
 
 fn main() {
     println!("cargo::rustc-check-cfg=cfg(il_corpus)");
+    println!("cargo::rustc-check-cfg=cfg(il_plcopen_corpus)");
     let mut files: Vec<PathBuf> = std::fs::read_dir("plc")
         .expect("tests/plc exists")
         .filter_map(|e| e.ok().map(|e| e.path()))
@@ -53,5 +56,19 @@ fn main() {
             .unwrap_or_else(|e| panic!("\n{e}"));
     } else {
         println!("cargo:warning=../shared/corpus not found: Annex F tests are skipped");
+    }
+    let first_steps = corpus.join("beremiz_beremiz_first_steps_plc.xml");
+    if first_steps.exists() {
+        println!("cargo:rustc-cfg=il_plcopen_corpus");
+        // Its CounterIL is the only IL POU; the others (ST, FBD, LD, SFC)
+        // and the configuration (which runs the FBD plc_prg) are left out
+        // with warnings (shown as cargo warnings on a fresh build).
+        il_codegen::Builder::new()
+            .plcopen_file(&first_steps)
+            .out_dir(out.join("plcopen"))
+            .compile()
+            .unwrap_or_else(|e| panic!("\n{e}"));
+    } else {
+        println!("cargo:warning=../shared/corpus not found: PLCopen tests are skipped");
     }
 }

@@ -30,3 +30,13 @@ pub mod annex_f {
     ));
     include!(concat!(env!("OUT_DIR"), "/annex_f/fwd_rev_mon_fixed.rs"));
 }
+
+/// `CounterIL`, the IL POU of Beremiz's first_steps PLCopen XML project
+/// (`../shared/corpus/beremiz_beremiz_first_steps_plc.xml`).
+#[cfg(il_plcopen_corpus)]
+pub mod first_steps {
+    include!(concat!(
+        env!("OUT_DIR"),
+        "/plcopen/beremiz_beremiz_first_steps_plc.rs"
+    ));
+}

@@ -105,7 +105,14 @@ pub fn run(
     }
     // The files form one program, as with `ilc emit` and the build-script
     // Builder: a FUNCTION_BLOCK of one file may be used in another.
-    for (file, diags) in files.iter().zip(il_codegen::check_sources(&files)) {
+    // A `.xml` file is a PLCopen project: its IL is checked with the rest and
+    // its diagnostics point into the XML.
+    let inputs: Vec<il_codegen::Input> = files
+        .into_iter()
+        .map(il_codegen::Input::by_extension)
+        .collect();
+    for (input, diags) in inputs.iter().zip(il_codegen::check_inputs(&inputs)) {
+        let file = input.source();
         for d in &diags {
             match d.severity {
                 Severity::Error => totals.errors += 1,

@@ -14,6 +14,7 @@ Examples:
   ilc emit motor.il                      Print the Rust code generated from motor.il
   ilc emit -o src/plc *.il               Write one .rs file per IL file
   ilc check src/*.il                     Check several files (all are checked)
+  ilc check plc.xml                      Check the IL POUs of a PLCopen XML project
   ilc check --message-format json a.il   One JSON object per diagnostic on stdout
   ilc check --color always a.il | less -R
   cat a.il | ilc check -                 Read the source from standard input
@@ -61,7 +62,7 @@ pub fn command() -> Command {
                 .arg(
                     Arg::new("files")
                         .value_name("FILE")
-                        .help("IL source files to check (`-` reads standard input)")
+                        .help("IL source files to check (`-` reads standard input); a `.xml` file is a PLCopen TC6 project")
                         .required(true)
                         .num_args(1..)
                         .action(ArgAction::Append),
@@ -98,7 +99,7 @@ pub fn command() -> Command {
                 .arg(
                     Arg::new("files")
                         .value_name("FILE")
-                        .help("IL source files, compiled together as one program")
+                        .help("IL source files (or PLCopen `.xml` projects), compiled together as one program")
                         .required(true)
                         .num_args(1..)
                         .action(ArgAction::Append),
@@ -123,7 +124,12 @@ pub fn command() -> Command {
             Command::new("run")
                 .about("Simulate scans of a PROGRAM with the interpreter and print a table")
                 .after_long_help(crate::run::EXAMPLES)
-                .arg(Arg::new("file").value_name("FILE").required(true).help("IL source file"))
+                .arg(
+                    Arg::new("file")
+                        .value_name("FILE")
+                        .required(true)
+                        .help("IL source file, or a PLCopen `.xml` project"),
+                )
                 .arg(Arg::new("program").long("program").value_name("NAME").help(
                     "The PROGRAM (or FUNCTION_BLOCK) to run; default: the file's only PROGRAM",
                 ))

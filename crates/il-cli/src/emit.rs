@@ -4,7 +4,7 @@ use il_codegen::diag::render::render;
 use std::io::Write;
 use std::path::Path;
 
-/// Compile `files` as one program. Diagnostics go to `err`; the Rust code to
+/// Compile `files` as one program (a `.xml` file is a PLCopen project). Diagnostics go to `err`; the Rust code to
 /// `out`, or to `<dir>/<stem>.rs` per input (written only when every file
 /// compiles, each atomically and only when changed). Returns success.
 pub fn run(
@@ -18,7 +18,7 @@ pub fn run(
     let mut ok = true;
     for f in files {
         match crate::check::read_source(f) {
-            Ok(src) => sources.push(src),
+            Ok(src) => sources.push(il_codegen::Input::by_extension(src)),
             Err(e) => {
                 let _ = writeln!(err, "{}", crate::check::error_line(color, &e));
                 ok = false;
@@ -28,16 +28,17 @@ pub fn run(
     if !ok {
         return false;
     }
-    let compiled = match il_codegen::compile_all_to_files(&sources) {
+    let compiled = match il_codegen::compile_inputs(&sources) {
         Ok(c) => c,
         Err(per_file) => {
             for (i, d) in per_file {
-                let _ = write!(err, "{}", render(&sources[i], &d, color));
+                let _ = write!(err, "{}", render(sources[i].source(), &d, color));
             }
             return false;
         }
     };
-    for ((code, warnings), src) in compiled.iter().zip(&sources) {
+    for ((code, warnings), input) in compiled.iter().zip(&sources) {
+        let src = input.source();
         if !warnings.is_empty() {
             let _ = write!(err, "{}", render(src, warnings, color));
         }

@@ -101,16 +101,19 @@ pub fn run(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> u8 {
 }
 
 fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), String> {
-    let file: SourceFile = crate::check::read_source(&o.file)?;
-    let (unit, mut diags) = il_codegen::syntax::parse(&file);
+    // A `.xml` file is a PLCopen project: its IL POUs are run.
+    let input = il_codegen::Input::by_extension(crate::check::read_source(&o.file)?);
+    let file: &SourceFile = input.il_text();
+    let (unit, mut diags) = il_codegen::syntax::parse(file);
     let mut prog = None;
     if !has_errors(&diags) {
-        let (p, d) = il_codegen::sema::check(&file, &unit);
+        let (p, d) = il_codegen::sema::check(file, &unit);
         diags.extend(d);
         prog = Some(p);
     }
+    let diags = input.finish(diags);
     if !diags.is_empty() {
-        let _ = write!(err, "{}", render::render(&file, &diags, o.color));
+        let _ = write!(err, "{}", render::render(input.source(), &diags, o.color));
     }
     let prog = match prog {
         Some(p) if !has_errors(&diags) => p,

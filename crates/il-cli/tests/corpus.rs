@@ -92,6 +92,10 @@ const EXPECTED: &[Entry] = &[
             must_mention: "Structured Text",
         },
     ),
+    // Tier 3: IL inside PLCopen TC6 XML. CounterIL compiles; the POUs in
+    // ST, FBD, LD and SFC and the configuration (it runs the FBD plc_prg)
+    // are left out with warnings (IL0203, IL0204).
+    ok("beremiz_beremiz_first_steps_plc.xml", Accept),
     // Tier 4: small real programs.
     ok("Autonomy-Logic_STruCpp_state-display.il", Accept),
     ok("eduardojvieira_ZPLC_blinky_2a44dc4.il", Accept),
@@ -186,7 +190,7 @@ fn is_corpus_file(p: &Path) -> bool {
         .extension()
         .map(|e| e.to_string_lossy().to_ascii_lowercase())
         .unwrap_or_default();
-    p.is_file() && name != "SOURCES.txt" && matches!(ext.as_str(), "il" | "txt" | "test")
+    p.is_file() && name != "SOURCES.txt" && matches!(ext.as_str(), "il" | "txt" | "test" | "xml")
 }
 
 /// The errors `ilc check --message-format json` reports: (code, line, message, exit status).

@@ -223,15 +223,17 @@ fn render_docs() -> String {
     s.push_str("# Diagnostic codes\n\n");
     s.push_str(
         "Every message of the compiler carries a code: `IL0001`..`IL0099` come from the \
-         front end (reading the text: lexer, parser, declarations), `IL0100` and up from \
-         the checker (names, types, the current result, jumps, calls). The same text is \
+         front end (reading the text: lexer, parser, declarations), `IL0100`..`IL0199` from \
+         the checker (names, types, the current result, jumps, calls), `IL0201` and up from \
+         the PLCopen XML import. The same text is \
          printed by `ilc explain CODE` (the code is case-insensitive):\n\n\
          ```sh\ncargo run -p il-cli -- explain IL0106\n```\n\n\
          `ilc check FILE` prints the messages with the IL line and column, `ilc check \
          --message-format json FILE` as one JSON object per line; a build script \
          (`il_codegen::Builder`) and `il!` report the same codes. IL0119 (unreachable \
          instruction), IL0120 (unused label) and IL0127 for the initial value of a located \
-         variable (the host owns the process image) are warnings; everything else is an error, \
+         variable (the host owns the process image) are warnings, and so are IL0203 and IL0204 (parts \
+         of a PLCopen project that are left out); everything else is an error, \
          and no file with an error produces code.\n\n",
     );
     s.push_str("| code | meaning |\n|---|---|\n");

@@ -9,16 +9,20 @@
 //! ```
 //! writes `$OUT_DIR/motor.rs`, which the crate includes with
 //! `include!(concat!(env!("OUT_DIR"), "/motor.rs"));`.
+//!
+//! A PLCopen TC6 XML project joins the same program with
+//! `.plcopen_file("plc/project.xml")` and becomes `$OUT_DIR/project.rs`.
 
-use crate::compile::compile_all_to_files;
 use crate::diag::{SourceFile, render::render};
+use crate::input::{Input, compile_inputs};
 use std::fmt;
 use std::path::{Path, PathBuf};
 
 /// Compiles IL files to Rust files, for build scripts.
 #[derive(Clone, Debug, Default)]
 pub struct Builder {
-    files: Vec<PathBuf>,
+    /// Each file, and whether it is PLCopen XML.
+    files: Vec<(PathBuf, bool)>,
     out_dir: Option<PathBuf>,
     cargo_directives: Option<bool>,
 }
@@ -38,6 +42,7 @@ impl fmt::Display for Error {
 impl std::error::Error for Error {}
 
 impl Builder {
+    /// A builder with no files; output goes to `$OUT_DIR`.
     pub fn new() -> Self {
         Builder::default()
     }
@@ -45,14 +50,23 @@ impl Builder {
     /// Add an IL source file (relative paths are relative to the crate root,
     /// where cargo runs build scripts).
     pub fn file(mut self, path: impl AsRef<Path>) -> Self {
-        self.files.push(path.as_ref().to_path_buf());
+        self.files.push((path.as_ref().to_path_buf(), false));
+        self
+    }
+
+    /// Add a PLCopen TC6 XML project (as exported by Beremiz, OpenPLC or
+    /// CODESYS): its POUs with IL bodies, data types and configurations
+    /// join the program, and become `<stem>.rs`. POUs in other languages
+    /// are left out with a warning; diagnostics show the XML's lines.
+    pub fn plcopen_file(mut self, path: impl AsRef<Path>) -> Self {
+        self.files.push((path.as_ref().to_path_buf(), true));
         self
     }
 
     /// Add several files.
     pub fn files<P: AsRef<Path>>(mut self, paths: impl IntoIterator<Item = P>) -> Self {
         self.files
-            .extend(paths.into_iter().map(|p| p.as_ref().to_path_buf()));
+            .extend(paths.into_iter().map(|p| (p.as_ref().to_path_buf(), false)));
         self
     }
 
@@ -82,14 +96,24 @@ impl Builder {
         };
         let mut sources = Vec::new();
         let mut failed = String::new();
-        for path in &self.files {
+        for (path, xml) in &self.files {
             if cargo {
                 println!("cargo:rerun-if-changed={}", path.display());
             }
             match std::fs::read_to_string(path) {
-                Ok(t) => sources.push(SourceFile::new(path.display().to_string(), t)),
+                Ok(t) => {
+                    // Windows tools write a byte order mark; it is not text.
+                    let t = t.strip_prefix('\u{feff}').map(str::to_string).unwrap_or(t);
+                    let file = SourceFile::new(path.display().to_string(), t);
+                    sources.push(if *xml {
+                        Input::plcopen(file)
+                    } else {
+                        Input::il(file)
+                    });
+                }
                 Err(e) => failed.push_str(&format!(
-                    "error: cannot read IL file `{}`: {e}\n",
+                    "error: cannot read {} file `{}`: {e}\n",
+                    if *xml { "PLCopen XML" } else { "IL" },
                     path.display()
                 )),
             }
@@ -98,22 +122,22 @@ impl Builder {
             return Err(Error { rendered: failed });
         }
         // All files form one program: a FUNCTION_BLOCK of one is usable in another.
-        let outputs = match compile_all_to_files(&sources) {
+        let outputs = match compile_inputs(&sources) {
             Ok(o) => o,
             Err(per_file) => {
                 let rendered = per_file
                     .iter()
-                    .map(|(i, d)| render(&sources[*i], d, false))
+                    .map(|(i, d)| render(sources[*i].source(), d, false))
                     .collect::<String>();
                 return Err(Error { rendered });
             }
         };
         let mut planned = Vec::new();
-        for ((code, warnings), (path, file)) in
+        for ((code, warnings), ((path, _), input)) in
             outputs.into_iter().zip(self.files.iter().zip(&sources))
         {
             if cargo && !warnings.is_empty() {
-                for line in render(file, &warnings, false).lines() {
+                for line in render(input.source(), &warnings, false).lines() {
                     println!("cargo:warning={line}");
                 }
             }
@@ -179,5 +203,45 @@ mod tests {
             .unwrap_err();
         assert!(e.to_string().contains("no/such/file.il"), "{e}");
         assert!(!dir.join("file.rs").exists());
+    }
+
+    #[test]
+    fn plcopen_file_becomes_stem_rs_and_errors_show_xml_lines() {
+        let dir = std::env::temp_dir().join(format!("il-builder-xml-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let xml = dir.join("cell.xml");
+        let project = |body: &str| {
+            format!(
+                "<project>\n<types><pous>\n<pou name=\"P\" pouType=\"program\">\n\
+                 <interface><localVars><variable name=\"x\"><type><INT/></type></variable>\
+                 </localVars></interface>\n<body><IL><p><![CDATA[{body}]]></p></IL></body>\n\
+                 </pou>\n</pous></types>\n</project>\n"
+            )
+        };
+        std::fs::write(&xml, project("LD x\nADD 1\nST x\n")).unwrap();
+        let build = || {
+            Builder::new()
+                .plcopen_file(&xml)
+                .out_dir(dir.join("out"))
+                .cargo_directives(false)
+                .compile()
+        };
+        let written = build().unwrap();
+        assert_eq!(written, [dir.join("out").join("cell.rs")]);
+        let code = std::fs::read_to_string(&written[0]).unwrap();
+        assert!(code.contains("pub struct P"), "{code}");
+        assert!(code.contains("// 6: ADD 1"), "{code}");
+        let t1 = std::fs::metadata(&written[0]).unwrap().modified().unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        build().unwrap();
+        assert_eq!(
+            std::fs::metadata(&written[0]).unwrap().modified().unwrap(),
+            t1
+        );
+        std::fs::write(&xml, project("LD x\nADD y\nST x\n")).unwrap();
+        let e = build().unwrap_err().to_string();
+        assert!(e.contains("cell.xml:6:5"), "{e}");
+        assert!(e.contains("6 | ADD y"), "{e}");
+        let _ = std::fs::remove_dir_all(&dir);
     }
 }

@@ -13,7 +13,10 @@ pub struct CodeInfo {
 
 /// Every code of every stage.
 pub fn all() -> impl Iterator<Item = &'static CodeInfo> {
-    crate::syntax::CODES.iter().chain(crate::sema::CODES)
+    crate::syntax::CODES
+        .iter()
+        .chain(crate::sema::CODES)
+        .chain(crate::plcopen::CODES)
 }
 
 /// Look a code up (`IL0003`, case-insensitive).

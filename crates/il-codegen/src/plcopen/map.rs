@@ -1,0 +1,168 @@
+//! The IL text made from an XML file, and where each of its bytes came from.
+//!
+//! Text is appended in pieces: a piece *copied* from the XML (a run of IL
+//! body text, a name in an attribute) maps byte for byte; a *generated* piece
+//! (a keyword, `:`, a decoded `&lt;`) maps as a whole to the XML range it
+//! stands for. [`SpanMap::to_xml`] turns a span in the IL text into a span in
+//! the XML text.
+
+use std::ops::Range;
+
+use crate::ast::Span;
+
+#[derive(Clone, Copy, Debug)]
+struct Piece {
+    /// Start in the IL text; the piece ends where the next one starts.
+    il: u32,
+    /// The XML range it came from.
+    xml_lo: u32,
+    xml_hi: u32,
+    /// Byte-for-byte copy (then `xml_hi - xml_lo` is the piece's length).
+    linear: bool,
+}
+
+/// IL text under construction, with its map back into the XML.
+#[derive(Debug, Default)]
+pub(crate) struct Writer {
+    pub(crate) text: String,
+    pieces: Vec<Piece>,
+}
+
+fn u(n: usize) -> u32 {
+    u32::try_from(n).unwrap_or(u32::MAX)
+}
+
+impl Writer {
+    /// Append generated text standing for the XML range `at`.
+    pub(crate) fn gen_at(&mut self, s: &str, at: Range<usize>) {
+        if s.is_empty() {
+            return;
+        }
+        let hi = at.end.max(at.start);
+        self.pieces.push(Piece {
+            il: u(self.text.len()),
+            xml_lo: u(at.start),
+            xml_hi: u(hi),
+            linear: false,
+        });
+        self.text.push_str(s);
+    }
+
+    /// Append `s`, which is the XML text starting at byte `xml_start`.
+    pub(crate) fn copy(&mut self, s: &str, xml_start: usize) {
+        if s.is_empty() {
+            return;
+        }
+        self.pieces.push(Piece {
+            il: u(self.text.len()),
+            xml_lo: u(xml_start),
+            xml_hi: u(xml_start + s.len()),
+            linear: true,
+        });
+        self.text.push_str(s);
+    }
+
+    /// Finish: the IL text and its map.
+    pub(crate) fn finish(self) -> (String, SpanMap) {
+        let end = u(self.text.len());
+        (
+            self.text,
+            SpanMap {
+                pieces: self.pieces,
+                end,
+            },
+        )
+    }
+}
+
+/// Where each byte of a generated IL text came from in its XML file.
+#[derive(Clone, Debug, Default)]
+pub struct SpanMap {
+    pieces: Vec<Piece>,
+    end: u32,
+}
+
+impl SpanMap {
+    fn piece_end(&self, i: usize) -> u32 {
+        self.pieces.get(i + 1).map_or(self.end, |p| p.il)
+    }
+
+    /// The piece holding byte `off` (the last piece for the end of the text).
+    fn find(&self, off: u32) -> Option<usize> {
+        if self.pieces.is_empty() {
+            return None;
+        }
+        let i = self.pieces.partition_point(|p| p.il <= off);
+        Some(i.saturating_sub(1))
+    }
+
+    fn lo(&self, off: u32) -> u32 {
+        let Some(i) = self.find(off) else { return 0 };
+        let p = self.pieces[i];
+        if p.linear {
+            (p.xml_lo + (off - p.il.min(off))).min(p.xml_hi)
+        } else {
+            p.xml_lo
+        }
+    }
+
+    fn hi(&self, off: u32) -> u32 {
+        // The piece that ends at or holds `off` from the left.
+        let Some(i) = self.find(off.saturating_sub(1)) else {
+            return 0;
+        };
+        let p = self.pieces[i];
+        if off > self.piece_end(i) {
+            return p.xml_hi;
+        }
+        if p.linear {
+            (p.xml_lo + (off - p.il.min(off))).min(p.xml_hi)
+        } else {
+            p.xml_hi
+        }
+    }
+
+    /// The XML span of an IL span.
+    pub fn to_xml(&self, span: Span) -> Span {
+        let lo = self.lo(span.lo);
+        if span.hi <= span.lo {
+            return Span { lo, hi: lo };
+        }
+        let hi = self.hi(span.hi);
+        Span { lo, hi: hi.max(lo) }
+    }
+
+    /// The XML byte offset where IL byte `off` came from.
+    pub fn offset_to_xml(&self, off: u32) -> u32 {
+        self.lo(off)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn copied_text_maps_byte_for_byte_generated_as_a_whole() {
+        let mut w = Writer::default();
+        w.gen_at("PROGRAM ", 0..9);
+        w.copy("main", 20);
+        w.gen_at("<", 40..44);
+        w.copy("LD x", 44);
+        let (text, map) = w.finish();
+        assert_eq!(text, "PROGRAM main<LD x");
+        assert_eq!(map.to_xml(Span { lo: 8, hi: 12 }), Span { lo: 20, hi: 24 });
+        assert_eq!(map.to_xml(Span { lo: 0, hi: 7 }), Span { lo: 0, hi: 9 });
+        assert_eq!(map.to_xml(Span { lo: 12, hi: 13 }), Span { lo: 40, hi: 44 });
+        assert_eq!(map.to_xml(Span { lo: 13, hi: 17 }), Span { lo: 44, hi: 48 });
+        // Across pieces: from the first's start to the last's end.
+        assert_eq!(map.to_xml(Span { lo: 9, hi: 15 }), Span { lo: 21, hi: 46 });
+        // Empty spans, including at the very end.
+        assert_eq!(map.to_xml(Span { lo: 17, hi: 17 }), Span { lo: 48, hi: 48 });
+        assert_eq!(map.to_xml(Span { lo: 99, hi: 99 }), Span { lo: 48, hi: 48 });
+        assert_eq!(
+            SpanMap::default().to_xml(Span { lo: 3, hi: 5 }),
+            Span { lo: 0, hi: 0 }
+        );
+    }
+}

@@ -1,0 +1,205 @@
+//! PLCopen TC6 XML import: the interchange format of Beremiz, OpenPLC and
+//! CODESYS.
+//!
+//! [`Import::new`] reads a `<project>` and writes one IL source text holding
+//! its data types (`TYPE ... END_TYPE`), the POUs whose body is `<IL>` (their
+//! interface from the XML's variable declarations) and its configurations.
+//! POUs in ST, FBD, LD or SFC are reported by name (a warning, IL0203) and
+//! left out. The IL text goes through the normal pipeline; every diagnostic
+//! is then moved back into the XML text ([`Import::to_xml`]), so messages
+//! quote the XML file's own lines and columns.
+//!
+//! A `VAR_EXTERNAL CONSTANT` that names exactly one `VAR_GLOBAL CONSTANT` of
+//! the project's configurations becomes a local `VAR CONSTANT` with the
+//! global's initial value (the checker does not translate `VAR_EXTERNAL`
+//! yet, and a constant cannot differ between the two). A configuration
+//! whose program instances run a POU that was not translated is left out
+//! with a warning (IL0204).
+
+mod map;
+mod text;
+mod translate;
+
+pub use map::SpanMap;
+
+use crate::ast::Span;
+use crate::diag::codes::CodeInfo;
+use crate::diag::{Diagnostic, SourceFile};
+
+macro_rules! codes {
+    ($($id:ident = $code:literal, $title:literal, $expl:literal;)*) => {
+        /// The codes of the PLCopen import.
+        pub mod codes {
+            $(
+                #[doc = $title]
+                pub const $id: &str = $code;
+            )*
+        }
+        /// Every code of the PLCopen import with its explanation.
+        pub static CODES: &[CodeInfo] = &[$(CodeInfo { code: $code, title: $title, explanation: $expl },)*];
+    };
+}
+
+codes! {
+    MALFORMED_XML = "IL0201", "malformed XML",
+        "The file is not well-formed XML, so it cannot be read as a PLCopen project. The message gives the line and column where the XML parser stopped.\n\n    <pou name=\"Main\" pouType=\"program\">\n      <body><IL><xhtml:p>LD a</IL></body>   <!-- </xhtml:p> missing -->";
+    BAD_PROJECT = "IL0202", "not a valid PLCopen project",
+        "The XML is well-formed but lacks something a PLCopen TC6 project must have: the root `<project>`, a POU's `name` or `pouType`, a variable's `<type>`, a FUNCTION's `<returnType>`.\n\n    <pou name=\"Main\">   <!-- pouType=\"program\" missing -->";
+    NOT_IL = "IL0203", "POU body not in IL",
+        "Only POUs whose body is Instruction List (`<body><IL>`) are translated. A POU in Structured Text, FBD, LD or SFC is left out with this warning; the other POUs still compile. A POU that uses a left-out one gets an `unknown type` error.\n\n    <pou name=\"CounterST\" pouType=\"functionBlock\">\n      <body><ST><xhtml:p>Cnt := Cnt + 1;</xhtml:p></ST></body>";
+    NOT_TRANSLATED = "IL0204", "PLCopen element left out",
+        "A part of the project is left out, with this warning: actions and transitions of a POU, access variables, and a configuration whose program instance runs a POU that was not translated (because its body is not IL).\n\n    <task name=\"main\" priority=\"1\" interval=\"T#10ms\">\n      <pouInstance name=\"prg\" typeName=\"MainFBD\"/>   <!-- MainFBD's body is FBD -->";
+    UNTRANSLATABLE = "IL0205", "PLCopen element cannot be translated",
+        "The project uses something IL has no equivalent for, e.g. a `<pointer>` type.\n\n    <variable name=\"p\"><type><pointer><baseType><INT/></baseType></pointer></type></variable>";
+}
+
+use codes::MALFORMED_XML;
+
+/// What happened to one POU of the project.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PouInfo {
+    /// The POU's name, as in the XML.
+    pub name: String,
+    /// `PROGRAM`, `FUNCTION_BLOCK` or `FUNCTION`.
+    pub kind: &'static str,
+    /// The body's language as TC6 names it: `IL`, `ST`, `FBD`, `LD`, `SFC`.
+    pub language: String,
+    /// Whether it is part of the IL text (only IL bodies are).
+    pub translated: bool,
+}
+
+/// A PLCopen XML file translated to IL.
+#[derive(Clone, Debug)]
+pub struct Import {
+    /// The XML file as read: what diagnostics point into.
+    pub xml: SourceFile,
+    /// The IL text made from it, under the XML file's name.
+    pub il: SourceFile,
+    /// The import's own diagnostics (XML errors, POUs left out), in XML
+    /// positions.
+    pub diagnostics: Vec<Diagnostic>,
+    /// Every POU of the project, translated or not, in document order.
+    pub pous: Vec<PouInfo>,
+    /// Where the bytes of `il` came from in `xml`.
+    pub map: SpanMap,
+}
+
+/// A readable name for a TC6 body language.
+pub(crate) fn language_name(tc6: &str) -> &'static str {
+    match tc6 {
+        "IL" => "Instruction List",
+        "ST" => "Structured Text",
+        "FBD" => "Function Block Diagram",
+        "LD" => "Ladder Diagram",
+        "SFC" => "Sequential Function Chart",
+        _ => "another language",
+    }
+}
+
+/// The byte offset of a 1-based line and character column.
+fn offset_of(text: &str, row: u32, col: u32) -> usize {
+    let mut start = 0;
+    for _ in 1..row {
+        match text[start..].find('\n') {
+            Some(k) => start += k + 1,
+            None => return text.len(),
+        }
+    }
+    let line = &text[start..];
+    let line = &line[..line.find('\n').unwrap_or(line.len())];
+    start
+        + line
+            .char_indices()
+            .nth(col.saturating_sub(1) as usize)
+            .map_or(line.len(), |(k, _)| k)
+}
+
+impl Import {
+    /// Translate a PLCopen XML file. Never fails: a malformed file gives an
+    /// import with an empty IL text and an error (IL0201) in `diagnostics`.
+    pub fn new(xml: SourceFile) -> Import {
+        let opts = roxmltree::ParsingOptions {
+            allow_dtd: false,
+            ..roxmltree::ParsingOptions::default()
+        };
+        let t = match roxmltree::Document::parse_with_options(&xml.text, opts) {
+            Ok(doc) => translate::translate(&doc, &xml.text),
+            Err(e) => {
+                let pos = e.pos();
+                let at = offset_of(&xml.text, pos.row, pos.col);
+                let width = xml.text[at..].chars().next().map_or(0, char::len_utf8);
+                let msg = e.to_string();
+                // roxmltree ends its messages with "at ROW:COL"; the
+                // rendered diagnostic shows the place itself.
+                let msg = match msg.rfind(" at ") {
+                    Some(k) if msg[k + 4..].contains(':') => msg[..k].to_string(),
+                    _ => msg,
+                };
+                translate::Translation {
+                    text: String::new(),
+                    map: SpanMap::default(),
+                    diags: vec![
+                        Diagnostic::error(
+                            MALFORMED_XML,
+                            Span::new(at, at + width),
+                            format!("malformed XML: {msg}"),
+                        )
+                        .with_label("the XML parser stopped here"),
+                    ],
+                    pous: Vec::new(),
+                }
+            }
+        };
+        let il = SourceFile::new(xml.name.clone(), t.text);
+        Import {
+            xml,
+            il,
+            diagnostics: t.diags,
+            pous: t.pous,
+            map: t.map,
+        }
+    }
+
+    /// Move a diagnostic about the IL text into the XML text (primary and
+    /// secondary spans); a name of a POU that was left out gets a note.
+    pub fn to_xml(&self, mut d: Diagnostic) -> Diagnostic {
+        let word = self.il.snippet(d.span).trim();
+        if let Some(p) = self
+            .pous
+            .iter()
+            .find(|p| !p.translated && !word.is_empty() && p.name.eq_ignore_ascii_case(word))
+        {
+            d.notes.push(format!(
+                "`{}` is a {} of this project whose body is {} ({}); it was not translated",
+                p.name,
+                p.kind,
+                language_name(&p.language),
+                p.language
+            ));
+        }
+        d.span = self.map.to_xml(d.span);
+        for (s, _) in &mut d.secondary {
+            *s = self.map.to_xml(*s);
+        }
+        d
+    }
+
+    /// For each IL line (index 0 is line 1), the XML line it came from:
+    /// the line of its first non-blank character.
+    pub fn xml_lines(&self) -> Vec<usize> {
+        let mut start = 0usize;
+        self.il
+            .text
+            .split('\n')
+            .map(|line| {
+                let lead = line.len() - line.trim_start().len();
+                let off = u32::try_from(start + lead).unwrap_or(u32::MAX);
+                start += line.len() + 1;
+                self.xml.line_col(self.map.offset_to_xml(off)).0
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests;
