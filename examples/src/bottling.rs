@@ -42,7 +42,13 @@ pub fn run() -> Timeline {
         let valve = ctx.io.bit(Area::Output, 0, 0);
         tl.record(
             ctx.now(),
-            &[&line.running, &ran.as_str(), &line.bottles, &line.rate, &valve],
+            &[
+                &line.running,
+                &ran.as_str(),
+                &line.bottles,
+                &line.rate,
+                &valve,
+            ],
             note,
         );
         ctx.advance(SCAN);

@@ -42,7 +42,10 @@ macro_rules! retain_tests {
                 assert_eq!((warm.hours, warm.odo.km, warm.wheels[1].km), (4, 20, 4));
                 assert_eq!(warm.starts.CV, 2);
                 // Not RETAIN: back to the initial values.
-                assert_eq!((warm.speed, warm.odo.trips, warm.wheels[1].trips), (0, 0, 0));
+                assert_eq!(
+                    (warm.speed, warm.odo.trips, warm.wheels[1].trips),
+                    (0, 0, 0)
+                );
                 run(&mut warm, 1);
                 assert_eq!((warm.hours, warm.odo.km), (5, 25));
             }

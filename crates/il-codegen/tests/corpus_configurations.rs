@@ -12,7 +12,11 @@ const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/corpu
 fn without_builtins(text: &str) -> String {
     text.lines()
         .map(|l| {
-            let first = l.split_whitespace().next().unwrap_or("").to_ascii_lowercase();
+            let first = l
+                .split_whitespace()
+                .next()
+                .unwrap_or("")
+                .to_ascii_lowercase();
             if ["dbg", "_exit", "piface_write"].contains(&first.as_str()) {
                 "" // keep the line numbers
             } else {
@@ -27,7 +31,9 @@ fn without_builtins(text: &str) -> String {
 fn echidna_configurations_are_accepted() {
     let dir = std::path::Path::new(CORPUS);
     if !dir.exists() {
-        println!("SKIPPED: ../shared/corpus not found (corpus tests need the shared folder beside the checkout)");
+        println!(
+            "SKIPPED: ../shared/corpus not found (corpus tests need the shared folder beside the checkout)"
+        );
         return;
     }
     let mut seen = 0;
@@ -40,7 +46,11 @@ fn echidna_configurations_are_accepted() {
         let text = without_builtins(&std::fs::read_to_string(&path).unwrap());
         let config_line = text
             .lines()
-            .position(|l| l.trim_start().to_ascii_lowercase().starts_with("configuration"))
+            .position(|l| {
+                l.trim_start()
+                    .to_ascii_lowercase()
+                    .starts_with("configuration")
+            })
             .unwrap_or_else(|| panic!("{name}: no CONFIGURATION"))
             + 1;
         let file = SourceFile::new(name.clone(), text);
@@ -63,7 +73,10 @@ fn echidna_configurations_are_accepted() {
                 .unwrap_or_else(|d| panic!("{name}: {d:?}"))
                 .tokens
                 .to_string();
-            assert!(out.contains("pub struct config1"), "{name}: no configuration struct");
+            assert!(
+                out.contains("pub struct config1"),
+                "{name}: no configuration struct"
+            );
         }
         seen += 1;
     }

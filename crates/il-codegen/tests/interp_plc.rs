@@ -453,7 +453,10 @@ fn in_outs_and_externals() {
     for _ in 0..3 {
         m.scan(&mut ctx).unwrap();
     }
-    assert_eq!((int(&m, "ticks"), int(&m, "calls"), int(&m, "seen")), (3, 6, 3));
+    assert_eq!(
+        (int(&m, "ticks"), int(&m, "calls"), int(&m, "seen")),
+        (3, 6, 3)
+    );
     assert_eq!(int(&m, "sum"), 6);
     let Some(Value::Array(arr)) = m.get("arr") else {
         panic!("arr is an array")

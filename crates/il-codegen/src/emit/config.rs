@@ -81,7 +81,11 @@ pub(crate) fn emit_config(c: &ConfigDef) -> TokenStream {
         .flat_map(|(r, res)| (0..res.tasks.len()).map(move |t| (r, t)))
         .collect();
     let number = |r: usize, t: usize| -> usize {
-        c.resources[..r].iter().map(|x| x.tasks.len()).sum::<usize>() + t
+        c.resources[..r]
+            .iter()
+            .map(|x| x.tasks.len())
+            .sum::<usize>()
+            + t
     };
     tasks.sort_by_key(|&(r, t)| (c.resources[r].tasks[t].priority, number(r, t)));
     let state_ids: Vec<_> = (0..tasks.len())
@@ -262,8 +266,11 @@ fn retain_items(c: &ConfigDef, name: &proc_macro2::Ident) -> TokenStream {
     let mut fields = Vec::new();
     let mut takes = Vec::new();
     let mut puts = Vec::new();
-    let scopes = std::iter::once((None, &c.globals, &[][..]))
-        .chain(c.resources.iter().map(|r| (r.name.as_ref(), &r.globals, &r.programs[..])));
+    let scopes = std::iter::once((None, &c.globals, &[][..])).chain(
+        c.resources
+            .iter()
+            .map(|r| (r.name.as_ref(), &r.globals, &r.programs[..])),
+    );
     for (res, globals, programs) in scopes {
         let (base, prefix) = match res {
             Some(r) => {

@@ -251,7 +251,9 @@ impl Pou<'_> {
                 });
                 let (io_lets, io_args, io_back) = self.bind_inouts(inouts, Some(inst), line);
                 let ext = (!externals.is_empty()).then(|| {
-                    let Ty::Fb(fb) = &inst.ty else { return quote!() };
+                    let Ty::Fb(fb) = &inst.ty else {
+                        return quote!();
+                    };
                     let st = super::names::ext_ident(fb);
                     let fields = externals.iter().map(|(e, constant)| {
                         let id = super::rust_ident(e);

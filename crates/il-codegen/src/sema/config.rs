@@ -139,7 +139,9 @@ fn globals_of_resource(
     let owner = r.name.as_ref().unwrap_or(&c.name);
     let mut g = globals(cx, names, env, owner, &r.globals);
     g.retain(|(v, span)| {
-        let clash = config.iter().any(|(c, _)| c.name.eq_ignore_ascii_case(&v.name));
+        let clash = config
+            .iter()
+            .any(|(c, _)| c.name.eq_ignore_ascii_case(&v.name));
         if clash {
             cx.err(
                 DUPLICATE_DECL,
@@ -230,7 +232,12 @@ fn lookup(def: &ConfigDef, res: usize, name: &str) -> Option<(GlobalRef, Var)> {
 fn all_global_names(def: &ConfigDef, res: usize) -> Vec<&str> {
     def.globals
         .iter()
-        .chain(def.resources.get(res).map(|r| r.globals.as_slice()).unwrap_or(&[]))
+        .chain(
+            def.resources
+                .get(res)
+                .map(|r| r.globals.as_slice())
+                .unwrap_or(&[]),
+        )
         .map(|v| v.name.as_str())
         .collect()
 }
@@ -347,7 +354,10 @@ fn programs(
             continue;
         }
         seen.insert(pi.name.key(), pi.name.span);
-        let Some(sig) = env.pou(&pi.program.name).filter(|s| s.kind == PouKind::Program) else {
+        let Some(sig) = env
+            .pou(&pi.program.name)
+            .filter(|s| s.kind == PouKind::Program)
+        else {
             let programs = env
                 .pous
                 .values()
@@ -459,7 +469,11 @@ fn program_args(
                 format!(
                     "program `{}` has no {} `{}`",
                     sig.name,
-                    if want == VarKind::Input { "input" } else { "output" },
+                    if want == VarKind::Input {
+                        "input"
+                    } else {
+                        "output"
+                    },
                     a.name
                 ),
             );

@@ -395,9 +395,18 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
             sig.poisoned.extend(decl.names.iter().map(|n| n.key()));
         }
         let refused = match (p.kind, block.kind) {
-            (_, ast::VarKind::Global) => Some((BAD_SECTION, "VAR_GLOBAL belongs in a CONFIGURATION or RESOURCE: declare the variable there and use it here through VAR_EXTERNAL")),
-            (PouKind::Function, ast::VarKind::External) => Some((BAD_SECTION, "a FUNCTION cannot use globals (VAR_EXTERNAL): pass the value as an input or a VAR_IN_OUT")),
-            (PouKind::Program, ast::VarKind::InOut) => Some((UNSUPPORTED, "VAR_IN_OUT of a PROGRAM is not supported: share the variable through VAR_GLOBAL/VAR_EXTERNAL")),
+            (_, ast::VarKind::Global) => Some((
+                BAD_SECTION,
+                "VAR_GLOBAL belongs in a CONFIGURATION or RESOURCE: declare the variable there and use it here through VAR_EXTERNAL",
+            )),
+            (PouKind::Function, ast::VarKind::External) => Some((
+                BAD_SECTION,
+                "a FUNCTION cannot use globals (VAR_EXTERNAL): pass the value as an input or a VAR_IN_OUT",
+            )),
+            (PouKind::Program, ast::VarKind::InOut) => Some((
+                UNSUPPORTED,
+                "VAR_IN_OUT of a PROGRAM is not supported: share the variable through VAR_GLOBAL/VAR_EXTERNAL",
+            )),
             _ => None,
         };
         if let Some((code, msg)) = refused {

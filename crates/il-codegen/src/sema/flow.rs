@@ -1322,7 +1322,11 @@ impl Walk<'_, '_> {
     /// that the caller passes (the located ones need no passing).
     #[allow(clippy::type_complexity)]
     fn fb_refs(&self, fb: &str) -> (Vec<(String, Ty)>, Vec<(String, bool)>) {
-        let Some(sig) = self.env.pou(fb).filter(|s| s.kind == PouKind::FunctionBlock) else {
+        let Some(sig) = self
+            .env
+            .pou(fb)
+            .filter(|s| s.kind == PouKind::FunctionBlock)
+        else {
             return (Vec::new(), Vec::new());
         };
         let inouts = sig
