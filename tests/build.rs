@@ -17,8 +17,11 @@ fn main() {
         .collect();
     files.sort();
     println!("cargo:rerun-if-changed=plc");
+    // serde derives on everything the build.rs front end generates here (the
+    // il! copies in via_macro have none): it must compile for every program.
     let generated = il_codegen::Builder::new()
         .files(&files)
+        .serde(true)
         .compile()
         .unwrap_or_else(|e| panic!("\n{e}"));
     // One index per front end, so both run the same programs.

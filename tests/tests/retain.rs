@@ -71,3 +71,37 @@ macro_rules! retain_tests {
 
 retain_tests!(via_build);
 retain_tests!(via_macro);
+
+/// build.rs compiles with `Builder::serde(true)`: a snapshot goes through
+/// JSON and back (arrays longer than 32, 2-D arrays, strings, TIME, a
+/// standard block kept whole, nested FB snapshots).
+#[test]
+fn snapshots_round_trip_through_serde() {
+    use il_tests::via_build::{Fleet, Vehicle, Vehicle__Retain};
+    let mut v = Vehicle::default();
+    let mut ctx = Cycle::new();
+    for _ in 0..3 {
+        v.call(&mut ctx);
+    }
+    let s = v.retain();
+    assert_eq!(
+        (s.log[39], s.grid[1][2], s.uptime),
+        (3, true, il_std::TIME::from_ms(3000))
+    );
+    assert_eq!(s.driver.to_string(), "Ada");
+    let json = serde_json::to_string(&s).unwrap();
+    let back: Vehicle__Retain = serde_json::from_str(&json).unwrap();
+    assert_eq!(back, s);
+    let mut warm = Vehicle::default();
+    warm.restore(&back);
+    assert_eq!((warm.hours, warm.log[39], warm.odo.km), (3, 3, 15));
+    // A whole configuration snapshot, too.
+    let mut f = Fleet::default();
+    f.run(&mut ctx);
+    f.total = 7;
+    let json = serde_json::to_string(&f.retain()).unwrap();
+    assert!(json.contains("\"total\":7"), "{json}");
+    // A wrong length is an error, not a panic.
+    let bad = json.replace("\"total\":7", "\"total\":\"x\"");
+    assert!(serde_json::from_str::<il_tests::via_build::Fleet__Retain>(&bad).is_err());
+}

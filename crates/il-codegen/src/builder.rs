@@ -14,7 +14,7 @@
 //! `.plcopen_file("plc/project.xml")` and becomes `$OUT_DIR/project.rs`.
 
 use crate::diag::{SourceFile, render::render};
-use crate::input::{Input, compile_inputs};
+use crate::input::{Input, compile_inputs_with};
 use std::fmt;
 use std::path::{Path, PathBuf};
 
@@ -25,6 +25,7 @@ pub struct Builder {
     files: Vec<(PathBuf, bool)>,
     out_dir: Option<PathBuf>,
     cargo_directives: Option<bool>,
+    serde: bool,
 }
 
 /// A failed build: every diagnostic of every file, rendered like rustc.
@@ -83,6 +84,15 @@ impl Builder {
         self
     }
 
+    /// Derive `serde::Serialize` and `serde::Deserialize` on the generated
+    /// user types, FB/PROGRAM structs and RETAIN snapshots (default: off).
+    /// The crate then depends on `serde` (with `derive`) and on `il-std`
+    /// with its `serde` feature.
+    pub fn serde(mut self, on: bool) -> Self {
+        self.serde = on;
+        self
+    }
+
     /// Compile every file. Nothing is written unless every file compiles;
     /// each output is written atomically and only when its content changed.
     /// Returns the paths of the generated files.
@@ -122,7 +132,13 @@ impl Builder {
             return Err(Error { rendered: failed });
         }
         // All files form one program: a FUNCTION_BLOCK of one is usable in another.
-        let outputs = match compile_inputs(&sources) {
+        let outputs = match compile_inputs_with(
+            &sources,
+            crate::emit::Options {
+                serde: self.serde,
+                ..Default::default()
+            },
+        ) {
             Ok(o) => o,
             Err(per_file) => {
                 let rendered = per_file

@@ -45,7 +45,7 @@ pub fn compile(file: &SourceFile, opts: emit::Options) -> Result<Compiled, Vec<D
 pub fn compile_all_to_files(
     files: &[SourceFile],
 ) -> Result<Vec<(String, Vec<Diagnostic>)>, Vec<(usize, Vec<Diagnostic>)>> {
-    Ok(compile_all_tokens(files)?
+    Ok(compile_all_tokens(files, emit::Options::default())?
         .into_iter()
         .zip(files)
         .map(|((tokens, w), f)| (format_file(f, &tokens), w))
@@ -57,6 +57,7 @@ pub fn compile_all_to_files(
 #[allow(clippy::type_complexity)]
 pub(crate) fn compile_all_tokens(
     files: &[SourceFile],
+    opts: emit::Options,
 ) -> Result<Vec<(TokenStream, Vec<Diagnostic>)>, Vec<(usize, Vec<Diagnostic>)>> {
     let mut units = Vec::new();
     let mut all: Vec<Vec<Diagnostic>> = Vec::new();
@@ -77,7 +78,11 @@ pub(crate) fn compile_all_tokens(
                 .zip(all)
                 .map(|(p, mut w)| {
                     sort(&mut w);
-                    (emit::program(&p, emit::Options { line_markers: true }), w)
+                    let opts = emit::Options {
+                        line_markers: true,
+                        ..opts
+                    };
+                    (emit::program(&p, opts), w)
                 })
                 .collect());
         }
@@ -100,7 +105,13 @@ fn sort(diags: &mut [Diagnostic]) {
 /// Compile to the text of a `.rs` file: formatted, `@generated`, with each
 /// IL line's source as a comment above the code it became.
 pub fn compile_to_file(file: &SourceFile) -> Result<(String, Vec<Diagnostic>), Vec<Diagnostic>> {
-    let c = compile(file, emit::Options { line_markers: true })?;
+    let c = compile(
+        file,
+        emit::Options {
+            line_markers: true,
+            ..Default::default()
+        },
+    )?;
     Ok((format_file(file, &c.tokens), c.warnings))
 }
 

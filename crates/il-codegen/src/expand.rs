@@ -2,7 +2,8 @@
 //! here; `il-macros` only converts the token streams.
 //!
 //! Forms: `il!(r#"...IL..."#)` and `il!(file = "plc/motor.il")` (relative to
-//! the crate being compiled; the file is tracked so edits rebuild).
+//! the crate being compiled; the file is tracked so edits rebuild), either
+//! followed by `, serde` to derive serde's traits on the generated types.
 
 use crate::compile::compile;
 use crate::diag::{SourceFile, has_errors, render::render_short_in};
@@ -15,15 +16,33 @@ enum Input {
     File(syn::LitStr),
 }
 
-const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or a file relative to the crate, `il!(file = \"plc/motor.il\")`";
+/// What follows the IL: `, serde`.
+fn parse_flags(ps: syn::parse::ParseStream) -> syn::Result<bool> {
+    let mut serde = false;
+    while ps.parse::<Option<syn::Token![,]>>()?.is_some() {
+        if ps.is_empty() {
+            break;
+        }
+        let flag: syn::Ident = ps.parse()?;
+        if flag != "serde" {
+            return Err(syn::Error::new(flag.span(), USAGE));
+        }
+        serde = true;
+    }
+    if !ps.is_empty() {
+        return Err(ps.error(USAGE));
+    }
+    Ok(serde)
+}
 
-fn parse_input(tokens: TokenStream) -> syn::Result<Input> {
+const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or a file relative to the crate, `il!(file = \"plc/motor.il\")`, optionally followed by `, serde`";
+
+fn parse_input(tokens: TokenStream) -> syn::Result<(Input, bool)> {
     syn::parse::Parser::parse2(
         |ps: syn::parse::ParseStream| {
             if ps.peek(syn::LitStr) {
                 let lit: syn::LitStr = ps.parse()?;
-                let _: Option<syn::Token![,]> = ps.parse()?;
-                return Ok(Input::Inline(lit));
+                return Ok((Input::Inline(lit), parse_flags(ps)?));
             }
             let kw: syn::Ident = ps.parse()?;
             if kw != "file" {
@@ -31,8 +50,7 @@ fn parse_input(tokens: TokenStream) -> syn::Result<Input> {
             }
             let _: syn::Token![=] = ps.parse()?;
             let lit: syn::LitStr = ps.parse()?;
-            let _: Option<syn::Token![,]> = ps.parse()?;
-            Ok(Input::File(lit))
+            Ok((Input::File(lit), parse_flags(ps)?))
         },
         tokens,
     )
@@ -63,10 +81,17 @@ pub fn expand(tokens: TokenStream) -> TokenStream {
 
 fn expand_inner(tokens: TokenStream) -> TokenStream {
     let mut first_line = None;
-    let (file, lit_span, track) = match parse_input(tokens) {
+    let (input, serde) = match parse_input(tokens) {
         // syn's own messages ("expected identifier") say nothing about il!.
         Err(e) => return syn::Error::new(e.span(), USAGE).to_compile_error(),
-        Ok(Input::Inline(lit)) => {
+        Ok(x) => x,
+    };
+    let opts = emit::Options {
+        serde,
+        ..Default::default()
+    };
+    let (file, lit_span, track) = match input {
+        Input::Inline(lit) => {
             // The IL's line 1 is the rest of the line where the string starts
             // (0 when the compiler does not report locations).
             let line = lit.span().start().line;
@@ -77,7 +102,7 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
                 quote!(),
             )
         }
-        Ok(Input::File(lit)) => {
+        Input::File(lit) => {
             let rel = lit.value();
             let base = std::env::var_os("CARGO_MANIFEST_DIR")
                 .map(std::path::PathBuf::from)
@@ -102,7 +127,7 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
             }
         }
     };
-    match compile(&file, emit::Options::default()) {
+    match compile(&file, opts) {
         Ok(c) => {
             let items = c.tokens;
             quote!(#track #items)
@@ -112,7 +137,7 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
                 let msg = render_short_in(&file, d, first_line);
                 quote_spanned!(lit_span=> ::core::compile_error!(#msg);)
             });
-            let stubs = stubs(&file);
+            let stubs = stubs(&file, opts);
             quote!(#track #(#errors)* #stubs)
         }
     }
@@ -120,7 +145,7 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
 
 /// Items with the interfaces of every POU that could be checked, and empty
 /// bodies; emitted only next to `compile_error!`s.
-fn stubs(file: &SourceFile) -> TokenStream {
+fn stubs(file: &SourceFile, opts: emit::Options) -> TokenStream {
     let (unit, diags) = syntax::parse(file);
     if has_errors(&diags) && unit.items.is_empty() {
         return TokenStream::new();
@@ -155,5 +180,29 @@ fn stubs(file: &SourceFile) -> TokenStream {
     }
     program.configs = configs;
     let _ = Span::call_site();
-    emit::program(&program, emit::Options::default())
+    emit::program(&program, opts)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::expand;
+    use quote::quote;
+
+    #[test]
+    fn serde_flag_derives_and_unknown_flags_are_refused() {
+        let il = "FUNCTION_BLOCK F\nVAR x : INT; END_VAR\n    LD x\n    ST x\nEND_FUNCTION_BLOCK\n";
+        let plain = expand(quote!(#il)).to_string();
+        assert!(!plain.contains("serde"), "{plain}");
+        let with = expand(quote!(#il, serde)).to_string();
+        assert!(with.contains(":: serde :: Serialize"), "{with}");
+        let with_comma = expand(quote!(#il, serde,)).to_string();
+        assert_eq!(with, with_comma);
+        let bad = expand(quote!(#il, serdes)).to_string();
+        assert!(
+            bad.contains("compile_error") && bad.contains("serde"),
+            "{bad}"
+        );
+        let trailing = expand(quote!(#il, )).to_string();
+        assert_eq!(trailing, plain);
+    }
 }

@@ -103,8 +103,18 @@ pub fn check_inputs(inputs: &[Input]) -> Vec<Vec<Diagnostic>> {
 pub fn compile_inputs(
     inputs: &[Input],
 ) -> Result<Vec<(String, Vec<Diagnostic>)>, Vec<(usize, Vec<Diagnostic>)>> {
+    compile_inputs_with(inputs, crate::emit::Options::default())
+}
+
+/// [`compile_inputs`] with emitter options (e.g. `serde`; line markers are
+/// always on for files).
+#[allow(clippy::type_complexity)]
+pub fn compile_inputs_with(
+    inputs: &[Input],
+    opts: crate::emit::Options,
+) -> Result<Vec<(String, Vec<Diagnostic>)>, Vec<(usize, Vec<Diagnostic>)>> {
     let files: Vec<SourceFile> = inputs.iter().map(|i| i.il_text().clone()).collect();
-    let compiled = compile_all_tokens(&files);
+    let compiled = compile_all_tokens(&files, opts);
     let import_errors = inputs.iter().any(Input::has_import_errors);
     match compiled {
         Ok(per_file) if !import_errors => Ok(per_file

@@ -6,7 +6,7 @@ use crate::sema::ir::{ConfigDef, GlobalRef, ProgArg, Var};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
-pub(crate) fn emit_config(c: &ConfigDef) -> TokenStream {
+pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
     let name = item_ident(&c.name);
     // Named resources are sub-structs; the unnamed one is flattened.
     let res_path = |r: usize| -> TokenStream {
@@ -186,7 +186,7 @@ pub(crate) fn emit_config(c: &ConfigDef) -> TokenStream {
         }
     }
     let ntasks = tasks.len();
-    let retain = retain_items(c, &name);
+    let retain = retain_items(c, &name, opts);
     let located = c
         .globals
         .iter()
@@ -262,7 +262,7 @@ pub(crate) fn emit_config(c: &ConfigDef) -> TokenStream {
 /// The configuration's RETAIN snapshot: its RETAIN globals and the
 /// snapshots of its programs (fields of named resources are prefixed
 /// `Resource__`).
-fn retain_items(c: &ConfigDef, name: &proc_macro2::Ident) -> TokenStream {
+fn retain_items(c: &ConfigDef, name: &proc_macro2::Ident, opts: super::Options) -> TokenStream {
     let mut fields = Vec::new();
     let mut takes = Vec::new();
     let mut puts = Vec::new();
@@ -284,7 +284,8 @@ fn retain_items(c: &ConfigDef, name: &proc_macro2::Ident) -> TokenStream {
             let f = rust_ident(&format!("{prefix}{}", v.name));
             let ty = rust_ty(&v.ty);
             let doc = format!(" VAR_GLOBAL RETAIN (IL line {})", v.line);
-            fields.push(quote!(#[doc = #doc] pub #f: #ty,));
+            let sf = super::serde_field(&v.ty, opts);
+            fields.push(quote!(#[doc = #doc] #sf pub #f: #ty,));
             takes.push(quote!(#f: ::core::clone::Clone::clone(&#base.#id),));
             puts.push(quote!(#base.#id = ::core::clone::Clone::clone(&s.#f);));
         }
@@ -306,9 +307,11 @@ fn retain_items(c: &ConfigDef, name: &proc_macro2::Ident) -> TokenStream {
         " The RETAIN state of CONFIGURATION `{}`: what a host saves before power-off and restores at a warm start.",
         c.name
     );
+    let serde = super::serde_derive(opts);
     quote! {
         #[doc = #doc]
         #[derive(Clone, Debug, PartialEq)]
+        #serde
         #[allow(non_snake_case, non_camel_case_types)]
         pub struct #st { #(#fields)* }
 

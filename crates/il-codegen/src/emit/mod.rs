@@ -24,13 +24,39 @@ pub struct Options {
     /// Put `__il_line!(N);` markers before the code of each IL line; the file
     /// writer turns them into `// N: <IL text>` comments after formatting.
     pub line_markers: bool,
+    /// Derive `serde::Serialize`/`Deserialize` on the generated user types,
+    /// FB/PROGRAM structs and RETAIN snapshots (the user's crate depends on
+    /// `serde` and enables `il-std`'s `serde` feature).
+    pub serde: bool,
+}
+
+/// `#[derive(Serialize, Deserialize)]` when serde is on.
+pub(crate) fn serde_derive(opts: Options) -> TokenStream {
+    if opts.serde {
+        quote!(#[derive(::serde::Serialize, ::serde::Deserialize)])
+    } else {
+        quote!()
+    }
+}
+
+/// For a field of type `t`: serde covers arrays up to 32 elements itself;
+/// a longer (outermost) dimension goes through `il_std::serde_array`.
+pub(crate) fn serde_field(t: &Ty, opts: Options) -> TokenStream {
+    match t {
+        Ty::Array { dims, .. }
+            if opts.serde && dims.first().is_some_and(|(lo, hi)| hi - lo + 1 > 32) =>
+        {
+            quote!(#[serde(with = "::il_std::serde_array")])
+        }
+        _ => quote!(),
+    }
 }
 
 /// Emit every POU of a checked program.
 pub fn program(p: &Program, opts: Options) -> TokenStream {
-    let types = p.types.iter().map(emit_type);
+    let types = p.types.iter().map(|t| emit_type(t, opts));
     let items = p.pous.iter().map(|pou| emit_pou(pou, opts));
-    let configs = p.configs.iter().map(config::emit_config);
+    let configs = p.configs.iter().map(|c| config::emit_config(c, opts));
     quote!(#(#types)* #(#items)* #(#configs)*)
 }
 
@@ -169,7 +195,8 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 let id = rust_ident(&v.name);
                 let ty = rust_ty(&v.ty);
                 let vdoc = format!(" {} (IL line {})", v.kind.keyword(), v.line);
-                quote!(#[doc = #vdoc] pub #id: #ty,)
+                let sf = serde_field(&v.ty, opts);
+                quote!(#[doc = #vdoc] #sf pub #id: #ty,)
             });
             let inits = fields.iter().map(|v| {
                 let id = rust_ident(&v.name);
@@ -243,7 +270,8 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                     quote!(mut __ext: #ext_id<'_>),
                 )
             };
-            let retain = retain_items(pou);
+            let retain = retain_items(pou, opts);
+            let serde = serde_derive(opts);
             // The generic trait fits blocks called with the context alone.
             let trait_impl = (inouts.is_empty() && externals.is_empty()).then(|| {
                 quote! {
@@ -257,6 +285,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
             quote! {
                 #[doc = #doc]
                 #[derive(Clone, Debug, PartialEq)]
+                #serde
                 #[allow(non_snake_case, non_camel_case_types, clippy::all)]
                 pub struct #name {
                     #(#decls)*
@@ -293,7 +322,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
 }
 
 /// The RETAIN snapshot type of an FB/PROGRAM, with `retain()` and `restore()`.
-fn retain_items(pou: &CheckedPou) -> TokenStream {
+fn retain_items(pou: &CheckedPou, opts: Options) -> TokenStream {
     use crate::sema::ir::Retained;
     if pou.retained.is_empty() {
         return quote!();
@@ -310,7 +339,8 @@ fn retain_items(pou: &CheckedPou) -> TokenStream {
             Retained::Whole => {
                 let ty = rust_ty(&v.ty);
                 let doc = format!(" {} RETAIN (IL line {})", v.kind.keyword(), v.line);
-                fields.push(quote!(#[doc = #doc] pub #id: #ty,));
+                let sf = serde_field(&v.ty, opts);
+                fields.push(quote!(#[doc = #doc] #sf pub #id: #ty,));
                 takes.push(quote!(#id: ::core::clone::Clone::clone(&self.#id),));
                 puts.push(quote!(self.#id = ::core::clone::Clone::clone(&s.#id);));
             }
@@ -321,7 +351,8 @@ fn retain_items(pou: &CheckedPou) -> TokenStream {
                     quote!(#r)
                 });
                 let doc = format!(" The RETAIN variables of `{}` (IL line {})", v.name, v.line);
-                fields.push(quote!(#[doc = #doc] pub #id: #ty,));
+                let sf = serde_field(&v.ty, opts);
+                fields.push(quote!(#[doc = #doc] #sf pub #id: #ty,));
                 let mut depth = 0;
                 let mut t = &v.ty;
                 while let Ty::Array { elem, dims } = t {
@@ -343,9 +374,11 @@ fn retain_items(pou: &CheckedPou) -> TokenStream {
         " The RETAIN variables of `{}` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.",
         pou.name
     );
+    let serde = serde_derive(opts);
     quote! {
         #[doc = #doc]
         #[derive(Clone, Debug, PartialEq)]
+        #serde
         #[allow(non_snake_case, non_camel_case_types)]
         pub struct #st { #(#fields)* }
 
@@ -404,7 +437,8 @@ fn located(name: &str, l: &crate::sema::ir::Loc) -> TokenStream {
 }
 
 /// A user STRUCT or enumeration as a Rust item the host can use directly.
-fn emit_type(t: &crate::sema::ir::TypeDef) -> TokenStream {
+fn emit_type(t: &crate::sema::ir::TypeDef, opts: Options) -> TokenStream {
+    let serde = serde_derive(opts);
     use crate::sema::ir::TypeDef;
     match t {
         TypeDef::Struct { name, fields } => {
@@ -413,7 +447,8 @@ fn emit_type(t: &crate::sema::ir::TypeDef) -> TokenStream {
             let decls = fields.iter().map(|f| {
                 let fid = rust_ident(&f.name);
                 let ty = rust_ty(&f.ty);
-                quote!(pub #fid: #ty,)
+                let sf = serde_field(&f.ty, opts);
+                quote!(#sf pub #fid: #ty,)
             });
             let inits = fields.iter().map(|f| {
                 let fid = rust_ident(&f.name);
@@ -423,6 +458,7 @@ fn emit_type(t: &crate::sema::ir::TypeDef) -> TokenStream {
             quote! {
                 #[doc = #doc]
                 #[derive(Clone, Copy, Debug, PartialEq)]
+                #serde
                 #[allow(non_snake_case, non_camel_case_types, clippy::all)]
                 pub struct #id { #(#decls)* }
 
@@ -454,6 +490,7 @@ fn emit_type(t: &crate::sema::ir::TypeDef) -> TokenStream {
             quote! {
                 #[doc = #doc]
                 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+                #serde
                 #[allow(non_camel_case_types, clippy::all)]
                 pub enum #id { #(#vals)* }
             }
