@@ -89,20 +89,25 @@ pub fn run(
     paths: &[String],
     format: Format,
     color: bool,
+    progress: bool,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> Totals {
     let mut totals = Totals::default();
     let mut files = Vec::new();
-    for path in paths {
+    let mut bar = crate::progress::Progress::new(progress, paths.len());
+    for (k, path) in paths.iter().enumerate() {
+        bar.reading(k + 1, err);
         match read_source(path) {
             Ok(f) => files.push(f),
             Err(msg) => {
+                bar.clear(err);
                 totals.unreadable += 1;
                 let _ = writeln!(err, "{}", error_line(color, &msg));
             }
         }
     }
+    bar.stage("Checking", err);
     // The files form one program, as with `ilc emit` and the build-script
     // Builder: a FUNCTION_BLOCK of one file may be used in another.
     // A `.xml` file is a PLCopen project: its IL is checked with the rest and
@@ -111,7 +116,9 @@ pub fn run(
         .into_iter()
         .map(il_codegen::Input::by_extension)
         .collect();
-    for (input, diags) in inputs.iter().zip(il_codegen::check_inputs(&inputs)) {
+    let checked = il_codegen::check_inputs(&inputs);
+    bar.clear(err);
+    for (input, diags) in inputs.iter().zip(checked) {
         let file = input.source();
         for d in &diags {
             match d.severity {
@@ -140,6 +147,7 @@ pub fn run(
         };
         let _ = writeln!(err, "{line}");
     }
+    bar.finish(err);
     let _ = out.flush();
     let _ = err.flush();
     totals

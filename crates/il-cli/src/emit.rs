@@ -11,24 +11,32 @@ pub fn run(
     files: &[String],
     dir: Option<&Path>,
     color: bool,
+    progress: bool,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> bool {
     let mut sources = Vec::new();
     let mut ok = true;
-    for f in files {
+    let mut bar = crate::progress::Progress::new(progress, files.len());
+    for (k, f) in files.iter().enumerate() {
+        bar.reading(k + 1, err);
         match crate::check::read_source(f) {
             Ok(src) => sources.push(il_codegen::Input::by_extension(src)),
             Err(e) => {
+                bar.clear(err);
                 let _ = writeln!(err, "{}", crate::check::error_line(color, &e));
                 ok = false;
             }
         }
     }
     if !ok {
+        bar.clear(err);
         return false;
     }
-    let compiled = match il_codegen::compile_inputs(&sources) {
+    bar.stage("Compiling", err);
+    let compiled = il_codegen::compile_inputs(&sources);
+    bar.clear(err);
+    let compiled = match compiled {
         Ok(c) => c,
         Err(per_file) => {
             for (i, d) in per_file {
@@ -58,5 +66,6 @@ pub fn run(
             }
         }
     }
+    bar.finish(err);
     true
 }

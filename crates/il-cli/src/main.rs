@@ -3,9 +3,10 @@
 mod check;
 mod cli;
 mod emit;
+mod progress;
 mod run;
 
-use std::io;
+use std::io::{self, IsTerminal};
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
@@ -29,6 +30,7 @@ fn main() -> ExitCode {
                 &files,
                 format,
                 color,
+                io::stderr().is_terminal(),
                 &mut io::stdout().lock(),
                 &mut io::stderr().lock(),
             );
@@ -52,6 +54,7 @@ fn main() -> ExitCode {
                 &files,
                 dir.as_deref(),
                 color,
+                io::stderr().is_terminal(),
                 &mut io::stdout().lock(),
                 &mut io::stderr().lock(),
             );
