@@ -5,6 +5,8 @@
 //! collects [`diag::Diagnostic`]s. [`compile()`] runs them for the front ends:
 //! the `il!` macro, the build-script [`Builder`] and the `ilc` command.
 
+#![warn(missing_docs)]
+
 pub mod ast;
 mod builder;
 pub mod check;
