@@ -144,7 +144,7 @@ pub enum VarKind {
     InOut,
     /// `VAR_EXTERNAL`: a VAR_GLOBAL of the configuration, bound by name.
     External,
-    /// `VAR_GLOBAL`: in a CONFIGURATION or RESOURCE (or a PROGRAM).
+    /// `VAR_GLOBAL`: in a CONFIGURATION or RESOURCE (the checker refuses it in a POU).
     Global,
     /// `VAR_TEMP`: re-initialised on every call.
     Temp,
