@@ -38,6 +38,7 @@ impl fmt::Display for Error {
 impl std::error::Error for Error {}
 
 impl Builder {
+    /// A builder with no files yet, writing to `OUT_DIR`.
     pub fn new() -> Self {
         Builder::default()
     }
