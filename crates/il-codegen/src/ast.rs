@@ -210,7 +210,7 @@ pub struct VarDecl {
     pub location: Option<DirectAddress>,
     /// The declared type.
     pub ty: TypeSpec,
-    /// `R_EDGE` / `F_EDGE` (VAR_INPUT of BOOL only).
+    /// `R_EDGE` / `F_EDGE` (the checker allows it on VAR_INPUTs of FBs and PROGRAMs).
     pub edge: Option<Edge>,
     /// `:= init`, if given.
     pub init: Option<Initializer>,
@@ -326,7 +326,7 @@ pub enum Initializer {
     Simple(Operand),
     /// `[1, 2, 3(0)]` — each element with its repeat count.
     Array {
-        /// Each element with its repeat count: `3(0)` is `(Some(3), 0)`.
+        /// Each element with its repeat count, if any (`3(0)`: three zeros).
         elems: Vec<(Option<Literal>, Initializer)>,
         /// `[` to `]`.
         span: Span,
@@ -380,7 +380,8 @@ pub struct Configuration {
 /// `RESOURCE r ON cpu ... END_RESOURCE`: tasks and program instances on one processor.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Resource {
-    /// The resource's name; `None` for the implicit resource of a configuration without RESOURCE.
+    /// The resource's name; `None` for the implicit resource that holds the tasks and
+    /// programs declared directly in the configuration.
     pub name: Option<Ident>,
     /// `ON processor`
     pub on: Option<Ident>,
@@ -390,7 +391,7 @@ pub struct Resource {
     pub tasks: Vec<Task>,
     /// Its `PROGRAM` instances.
     pub programs: Vec<ProgramInstance>,
-    /// The whole resource (for the implicit one, the configuration's body).
+    /// The whole resource (for the implicit one, the whole configuration).
     pub span: Span,
 }
 
