@@ -6,11 +6,14 @@ use std::fmt;
 /// Half-open byte range `lo..hi` into the source file.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Span {
+    /// First byte (inclusive).
     pub lo: u32,
+    /// End byte (exclusive).
     pub hi: u32,
 }
 
 impl Span {
+    /// A span from byte offsets (a source is at most 4 GiB, so they fit in `u32`).
     pub fn new(lo: usize, hi: usize) -> Self {
         // Sources over 4 GiB are refused before parsing, so these never truncate.
         Span {
@@ -25,6 +28,7 @@ impl Span {
             hi: self.hi.max(other.hi),
         }
     }
+    /// The span as a `usize` range, for slicing the source text.
     pub fn range(self) -> std::ops::Range<usize> {
         self.lo as usize..self.hi as usize
     }
@@ -34,11 +38,14 @@ impl Span {
 /// or [`Ident::is`], never with `==` on `name`.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Ident {
+    /// The name with its original spelling (case preserved).
     pub name: String,
+    /// Where the name is written.
     pub span: Span,
 }
 
 impl Ident {
+    /// A name with its spelling and position.
     pub fn new(name: impl Into<String>, span: Span) -> Self {
         Ident {
             name: name.into(),
@@ -64,27 +71,36 @@ impl fmt::Display for Ident {
 /// One source file.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct CompilationUnit {
+    /// POUs, TYPE blocks and CONFIGURATIONs, in source order.
     pub items: Vec<Item>,
 }
 
 // A file holds a handful of items; boxing the large POU would buy nothing.
+/// A top-level declaration of a compilation unit.
 #[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum Item {
+    /// A FUNCTION, FUNCTION_BLOCK or PROGRAM.
     Pou(Pou),
     /// `TYPE ... END_TYPE`
     Types(Vec<TypeDecl>),
+    /// `CONFIGURATION ... END_CONFIGURATION`
     Configuration(Configuration),
 }
 
+/// The kind of a program organisation unit (POU).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum PouKind {
+    /// `FUNCTION f : INT ... END_FUNCTION`: no memory between calls, returns a value.
     Function,
+    /// `FUNCTION_BLOCK fb ... END_FUNCTION_BLOCK`: instantiated; keeps its variables between calls.
     FunctionBlock,
+    /// `PROGRAM p ... END_PROGRAM`: the top-level unit a task or the host runs every cycle.
     Program,
 }
 
 impl PouKind {
+    /// The opening keyword (`FUNCTION`, `FUNCTION_BLOCK`, `PROGRAM`).
     pub fn keyword(self) -> &'static str {
         match self {
             PouKind::Function => "FUNCTION",
@@ -97,11 +113,15 @@ impl PouKind {
 /// A FUNCTION, FUNCTION_BLOCK or PROGRAM.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Pou {
+    /// FUNCTION, FUNCTION_BLOCK or PROGRAM.
     pub kind: PouKind,
+    /// The POU's name (the FUNCTION's name is also its result variable).
     pub name: Ident,
     /// The result type of a FUNCTION.
     pub return_type: Option<TypeSpec>,
+    /// The VAR blocks, in source order.
     pub var_blocks: Vec<VarBlock>,
+    /// The instruction list, labels included.
     pub body: Vec<Stmt>,
     /// Whether the body was wrapped in KAS-IDE `BEGIN_IL ... END_IL`.
     pub begin_il: bool,
@@ -111,18 +131,27 @@ pub struct Pou {
     pub end_span: Span,
 }
 
+/// The section keyword of a [`VarBlock`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum VarKind {
+    /// `VAR`: internal variables (kept between calls, except in a FUNCTION).
     Var,
+    /// `VAR_INPUT`: inputs, set by the caller.
     Input,
+    /// `VAR_OUTPUT`: outputs, read by the caller.
     Output,
+    /// `VAR_IN_OUT`: passed by reference; the caller must give a variable.
     InOut,
+    /// `VAR_EXTERNAL`: a VAR_GLOBAL of the configuration, bound by name.
     External,
+    /// `VAR_GLOBAL`: in a CONFIGURATION or RESOURCE (the checker refuses it in a POU).
     Global,
+    /// `VAR_TEMP`: re-initialised on every call.
     Temp,
 }
 
 impl VarKind {
+    /// The section keyword (`VAR_INPUT`, ...).
     pub fn keyword(self) -> &'static str {
         match self {
             VarKind::Var => "VAR",
@@ -136,38 +165,56 @@ impl VarKind {
     }
 }
 
+/// The retention qualifier of a VAR block or program instance.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub enum Retain {
+    /// Neither keyword: the implementation's default (not retained here).
     #[default]
     Unspecified,
+    /// `RETAIN`: kept across a warm restart (in the generated RETAIN snapshot).
     Retain,
+    /// `NON_RETAIN`: explicitly re-initialised on a warm restart.
     NonRetain,
 }
 
 /// `VAR_INPUT CONSTANT RETAIN ... END_VAR`
 #[derive(Clone, Debug, PartialEq)]
 pub struct VarBlock {
+    /// The section keyword.
     pub kind: VarKind,
+    /// `CONSTANT`: the variables may not be written.
     pub constant: bool,
+    /// `RETAIN` / `NON_RETAIN`, if given.
     pub retain: Retain,
+    /// The declarations of the block.
     pub decls: Vec<VarDecl>,
+    /// From the VAR keyword to END_VAR.
     pub span: Span,
 }
 
+/// Edge detection of a BOOL input (`R_EDGE` / `F_EDGE`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Edge {
+    /// `R_EDGE`: the body sees TRUE only in the call where the input goes FALSE → TRUE.
     Rising,
+    /// `F_EDGE`: the body sees TRUE only in the call where the input goes TRUE → FALSE.
     Falling,
 }
 
 /// `a, b AT %IX0.0 : BOOL R_EDGE := TRUE;`
 #[derive(Clone, Debug, PartialEq)]
 pub struct VarDecl {
+    /// The names declared together (`a, b`); at least one.
     pub names: Vec<Ident>,
+    /// `AT %IX0.0`: the variable is that place of the process image.
     pub location: Option<DirectAddress>,
+    /// The declared type.
     pub ty: TypeSpec,
+    /// `R_EDGE` / `F_EDGE` (the checker allows it on VAR_INPUTs of FBs and PROGRAMs).
     pub edge: Option<Edge>,
+    /// `:= init`, if given.
     pub init: Option<Initializer>,
+    /// From the first name to the `;`.
     pub span: Span,
 }
 
@@ -178,29 +225,49 @@ pub enum TypeSpec {
     Named(Ident),
     /// `STRING`, `STRING[20]`, `WSTRING(10)`.
     String {
+        /// `WSTRING` (UTF-16) rather than `STRING` (bytes).
         wide: bool,
+        /// The maximum length in characters, if given.
         len: Option<ConstExpr>,
+        /// The whole type.
         span: Span,
     },
     /// `ARRAY [0..9, 1..3] OF INT`
     Array {
+        /// One `lo..hi` per dimension.
         dims: Vec<Subrange>,
+        /// The element type.
         elem: Box<TypeSpec>,
+        /// The whole type.
         span: Span,
     },
     /// `INT (0..100)`
     Subrange {
+        /// The integer base type (`INT`).
         base: Ident,
+        /// The allowed range.
         range: Subrange,
+        /// The whole type.
         span: Span,
     },
     /// `(Red, Green := 5, Blue)` (only in TYPE declarations)
-    Enum { values: Vec<EnumValue>, span: Span },
+    Enum {
+        /// The values in declaration order.
+        values: Vec<EnumValue>,
+        /// The whole type.
+        span: Span,
+    },
     /// `STRUCT a : INT; b : BOOL := TRUE; END_STRUCT` (only in TYPE declarations)
-    Struct { fields: Vec<VarDecl>, span: Span },
+    Struct {
+        /// The field declarations.
+        fields: Vec<VarDecl>,
+        /// `STRUCT` to `END_STRUCT`.
+        span: Span,
+    },
 }
 
 impl TypeSpec {
+    /// Where the type is written.
     pub fn span(&self) -> Span {
         match self {
             TypeSpec::Named(id) => id.span,
@@ -216,19 +283,25 @@ impl TypeSpec {
 /// `lo..hi`
 #[derive(Clone, Debug, PartialEq)]
 pub struct Subrange {
+    /// Lower bound (inclusive).
     pub lo: ConstExpr,
+    /// Upper bound (inclusive).
     pub hi: ConstExpr,
+    /// `lo..hi` as written.
     pub span: Span,
 }
 
 /// A compile-time constant in a type: a literal or the name of a constant.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ConstExpr {
+    /// A literal (`10`, `INT#-5`).
     Lit(Literal),
+    /// The name of a constant (`VAR CONSTANT` or `VAR_GLOBAL CONSTANT`).
     Name(Ident),
 }
 
 impl ConstExpr {
+    /// Where the constant is written.
     pub fn span(&self) -> Span {
         match self {
             ConstExpr::Lit(l) => l.span,
@@ -237,9 +310,12 @@ impl ConstExpr {
     }
 }
 
+/// One value of an enumeration type: `Green` or `Green := 5`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct EnumValue {
+    /// The value's name.
     pub name: Ident,
+    /// The explicit value after `:=`, if given.
     pub value: Option<Literal>,
 }
 
@@ -250,17 +326,22 @@ pub enum Initializer {
     Simple(Operand),
     /// `[1, 2, 3(0)]` — each element with its repeat count.
     Array {
+        /// Each element with its repeat count, if any (`3(0)`: three zeros).
         elems: Vec<(Option<Literal>, Initializer)>,
+        /// `[` to `]`.
         span: Span,
     },
     /// `(a := 1, b := TRUE)` for structures, and for FB instances' inputs.
     Struct {
+        /// `name := value` for each field or FB input.
         fields: Vec<(Ident, Initializer)>,
+        /// `(` to `)`.
         span: Span,
     },
 }
 
 impl Initializer {
+    /// Where the initial value is written.
     pub fn span(&self) -> Span {
         match self {
             Initializer::Simple(o) => o.span(),
@@ -272,52 +353,77 @@ impl Initializer {
 /// `name : spec := init;` inside TYPE ... END_TYPE.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TypeDecl {
+    /// The type's name.
     pub name: Ident,
+    /// What it is: a renamed type, subrange, enumeration, array, STRUCT or STRING.
     pub spec: TypeSpec,
+    /// The type's default initial value, if given (`INT := 5`).
     pub init: Option<Initializer>,
+    /// From the name to the `;`.
     pub span: Span,
 }
 
 /// `CONFIGURATION c ... END_CONFIGURATION`
 #[derive(Clone, Debug, PartialEq)]
 pub struct Configuration {
+    /// The configuration's name.
     pub name: Ident,
+    /// Its `VAR_GLOBAL` blocks.
     pub globals: Vec<VarBlock>,
     /// Resources; a configuration without RESOURCE gets one unnamed resource
     /// holding its tasks and programs (`name` = None).
     pub resources: Vec<Resource>,
+    /// `CONFIGURATION` to `END_CONFIGURATION`.
     pub span: Span,
 }
 
+/// `RESOURCE r ON cpu ... END_RESOURCE`: tasks and program instances on one processor.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Resource {
+    /// The resource's name; `None` for the implicit resource that holds the tasks and
+    /// programs declared directly in the configuration.
     pub name: Option<Ident>,
     /// `ON processor`
     pub on: Option<Ident>,
+    /// Its `VAR_GLOBAL` blocks.
     pub globals: Vec<VarBlock>,
+    /// Its `TASK` declarations.
     pub tasks: Vec<Task>,
+    /// Its `PROGRAM` instances.
     pub programs: Vec<ProgramInstance>,
+    /// The whole resource (for the implicit one, the whole configuration).
     pub span: Span,
 }
 
 /// `TASK t (INTERVAL := T#10ms, PRIORITY := 1);`
 #[derive(Clone, Debug, PartialEq)]
 pub struct Task {
+    /// The task's name.
     pub name: Ident,
+    /// `SINGLE := flag`: run once on each rising edge of a BOOL global.
     pub single: Option<Operand>,
+    /// `INTERVAL := T#10ms`: the period.
     pub interval: Option<Operand>,
+    /// `PRIORITY := 1`: 0 is the highest.
     pub priority: Option<Literal>,
+    /// `TASK` to `;`.
     pub span: Span,
 }
 
 /// `PROGRAM p WITH t : MyProgram (a := x, b => y);`
 #[derive(Clone, Debug, PartialEq)]
 pub struct ProgramInstance {
+    /// The instance's name.
     pub name: Ident,
+    /// `PROGRAM RETAIN p ...` / `PROGRAM NON_RETAIN p ...`.
     pub retain: Retain,
+    /// `WITH t`: the task that runs it; `None` runs it on every cycle.
     pub task: Option<Ident>,
+    /// The PROGRAM type instantiated.
     pub program: Ident,
+    /// `a := x` binds an input to a global or a constant, `b => y` an output to a global.
     pub args: Vec<ParamAssign>,
+    /// `PROGRAM` to `;`.
     pub span: Span,
 }
 
@@ -326,11 +432,14 @@ pub struct ProgramInstance {
 pub enum Stmt {
     /// `name:` — alone on its line or before an instruction.
     Label(Ident),
+    /// An instruction, e.g. `LD x` or `JMPC next`.
     Instr(Instr),
 }
 
+/// One IL instruction: an operator with its modifiers and operands.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Instr {
+    /// The operator and its operands.
     pub kind: InstrKind,
     /// The operator as written (`JMPNC`, `&N`, `ld`): for messages.
     pub op_span: Span,
@@ -342,6 +451,7 @@ pub struct Instr {
 /// The condition of JMP, CAL and RET.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Cond {
+    /// No modifier: unconditional.
     Always,
     /// `C`: when the CR is TRUE.
     IfTrue,
@@ -353,23 +463,38 @@ pub enum Cond {
 /// may be deferred with `(`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ExprOp {
+    /// `AND` / `&` (`ANDN` / `&N` with negate): Boolean or bitwise AND.
     And,
+    /// `OR` (`ORN`): Boolean or bitwise OR.
     Or,
+    /// `XOR` (`XORN`): Boolean or bitwise exclusive OR.
     Xor,
+    /// `ADD`: addition.
     Add,
+    /// `SUB`: subtraction.
     Sub,
+    /// `MUL`: multiplication.
     Mul,
+    /// `DIV`: division.
     Div,
+    /// `MOD`: integer remainder.
     Mod,
+    /// `GT`: CR > operand.
     Gt,
+    /// `GE`: CR >= operand.
     Ge,
+    /// `EQ`: CR = operand.
     Eq,
+    /// `NE`: CR <> operand.
     Ne,
+    /// `LE`: CR <= operand.
     Le,
+    /// `LT`: CR < operand.
     Lt,
 }
 
 impl ExprOp {
+    /// The IL operator name without the `N` modifier (`AND`, `ADD`, `GT`).
     pub fn name(self) -> &'static str {
         match self {
             ExprOp::And => "AND",
@@ -388,15 +513,18 @@ impl ExprOp {
             ExprOp::Lt => "LT",
         }
     }
+    /// `AND`, `OR`, `XOR`: BOOL or bit-string operands.
     pub fn is_logic(self) -> bool {
         matches!(self, ExprOp::And | ExprOp::Or | ExprOp::Xor)
     }
+    /// `ADD`, `SUB`, `MUL`, `DIV`, `MOD`: numeric operands.
     pub fn is_arith(self) -> bool {
         matches!(
             self,
             ExprOp::Add | ExprOp::Sub | ExprOp::Mul | ExprOp::Div | ExprOp::Mod
         )
     }
+    /// `GT`, `GE`, `EQ`, `NE`, `LE`, `LT`: the result is BOOL.
     pub fn is_compare(self) -> bool {
         matches!(
             self,
@@ -410,13 +538,21 @@ impl ExprOp {
 /// and [`InstrKind::Load`]; the checker decides from the operand's type).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum FbInputOp {
+    /// `S1 ff`: the set input of an SR.
     S1,
+    /// `R1 ff`: the reset input of an RS.
     R1,
+    /// `CLK trig`: the clock input of R_TRIG / F_TRIG.
     Clk,
+    /// `CU c`: the count-up input of CTU / CTUD.
     Cu,
+    /// `CD c`: the count-down input of CTD / CTUD.
     Cd,
+    /// `PV c`: the preset value of a counter.
     Pv,
+    /// `IN t`: the input of a timer (TON, TOF, TP).
     In,
+    /// `PT t`: the preset time of a timer.
     Pt,
 }
 
@@ -436,50 +572,95 @@ impl FbInputOp {
     }
 }
 
+/// What an instruction does, with its operands.
 #[derive(Clone, Debug, PartialEq)]
 pub enum InstrKind {
     /// `LD x` / `LDN x`
-    Load { negate: bool, operand: Operand },
+    Load {
+        /// `LDN`: load the complement.
+        negate: bool,
+        /// The value loaded into the CR.
+        operand: Operand,
+    },
     /// `ST x` / `STN x`
-    Store { negate: bool, target: Operand },
+    Store {
+        /// `STN`: store the complement.
+        negate: bool,
+        /// Where the CR is stored.
+        target: Operand,
+    },
     /// `S x`: set a BOOL, or the S input operator of an RS.
-    Set { target: Operand },
+    Set {
+        /// The BOOL set to TRUE when the CR is TRUE (or the RS instance).
+        target: Operand,
+    },
     /// `R x`: reset a BOOL, or the R input operator of SR/CTU/CTUD.
-    Reset { target: Operand },
+    Reset {
+        /// The BOOL set to FALSE when the CR is TRUE (or the SR/CTU/CTUD instance).
+        target: Operand,
+    },
     /// `NOT` — complements the CR.
     Not,
     /// `AND x`, `ANDN x`, `& x`, `&N x`, `ADD x`, `GT x` ...
     Expr {
+        /// The operator.
         op: ExprOp,
+        /// The `N` modifier: the operand is complemented (`ANDN`, `&N`).
         negate: bool,
+        /// The right-hand operand (the CR is the left-hand one).
         operand: Operand,
     },
     /// `AND( x` / `AND(` newline ... `)`: `first` is the operand of the short
     /// form (the inner CR's first load); `body` holds the inner instructions.
     Deferred {
+        /// The deferred operator.
         op: ExprOp,
+        /// The `N` modifier (`ANDN(`).
         negate: bool,
+        /// The operand after `(` on the same line, if any.
         first: Option<Operand>,
+        /// The instructions inside the parentheses.
         body: Vec<Stmt>,
         /// The closing `)`.
         close_span: Span,
     },
     /// `JMP l`, `JMPC l`, `JMPCN l`
-    Jump { cond: Cond, label: Ident },
+    Jump {
+        /// `C` / `CN` modifier.
+        cond: Cond,
+        /// The target label.
+        label: Ident,
+    },
     /// `CAL fb`, `CAL fb(...)`, `CALC`, `CALCN`; also `CAL LIMIT(...)` of a
     /// function with a formal list (3rd edition).
     Call {
+        /// `C` / `CN` modifier.
         cond: Cond,
+        /// The FB instance (or function) called.
         target: Operand,
+        /// The argument list, if any.
         args: Option<CallArgs>,
     },
     /// `RET`, `RETC`, `RETCN`
-    Return { cond: Cond },
+    Return {
+        /// `C` / `CN` modifier.
+        cond: Cond,
+    },
     /// A function as operator: `LIMIT 0, 100` (CR is the first argument),
     /// or a formal call `LIMIT(MN := 0, MX := 100)`.
-    FnCall { name: Ident, args: CallArgs },
+    FnCall {
+        /// The function's name.
+        name: Ident,
+        /// The arguments after the CR (non-formal) or all of them (formal).
+        args: CallArgs,
+    },
     /// `PV C10`, `IN T1`, `S1 ff` ...
-    FbInput { op: FbInputOp, instance: Operand },
+    FbInput {
+        /// The input operator.
+        op: FbInputOp,
+        /// The FB instance whose input is set from the CR.
+        instance: Operand,
+    },
 }
 
 /// An argument list.
@@ -494,26 +675,41 @@ pub enum CallArgs {
 /// `name := value`, `name => var`, `NOT name => var`
 #[derive(Clone, Debug, PartialEq)]
 pub struct ParamAssign {
+    /// The formal parameter's name.
     pub name: Ident,
+    /// Input or output assignment.
     pub kind: ParamKind,
+    /// The whole assignment.
     pub span: Span,
 }
 
+/// The direction of a [`ParamAssign`].
 #[derive(Clone, Debug, PartialEq)]
 pub enum ParamKind {
+    /// `name := value`: sets an input before the call.
     Input(Operand),
-    Output { negate: bool, target: Operand },
+    /// `name => var` (`NOT name => var` with negate): copies an output after the call.
+    Output {
+        /// `NOT name => var`: store the output's complement.
+        negate: bool,
+        /// The variable that receives the output.
+        target: Operand,
+    },
 }
 
 /// Something an instruction works on.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Operand {
+    /// A literal: `5`, `T#1s`, `'text'`.
     Lit(Literal),
+    /// A variable, possibly with fields, subscripts and bit access: `fb.Q`, `a[i]`.
     Var(VarRef),
+    /// A direct address: `%IX0.1`.
     Addr(DirectAddress),
 }
 
 impl Operand {
+    /// Where the operand is written.
     pub fn span(&self) -> Span {
         match self {
             Operand::Lit(l) => l.span,
@@ -526,13 +722,18 @@ impl Operand {
 /// `a`, `fb.Q`, `arr[i, 2].field`
 #[derive(Clone, Debug, PartialEq)]
 pub struct VarRef {
+    /// The variable's name.
     pub base: Ident,
+    /// Field, subscript and bit accesses after it, in order.
     pub path: Vec<Accessor>,
+    /// The whole reference.
     pub span: Span,
 }
 
+/// One step after a variable name in a [`VarRef`].
 #[derive(Clone, Debug, PartialEq)]
 pub enum Accessor {
+    /// `.name`: a field of a STRUCT or FB instance.
     Field(Ident),
     /// Subscripts: literals, variables or direct addresses.
     Index(Vec<Operand>, Span),
@@ -540,44 +741,61 @@ pub enum Accessor {
     Bit(u32, Span),
 }
 
+/// The memory area of a direct address.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Area {
+    /// `%I`: inputs of the process image.
     Input,
+    /// `%Q`: outputs of the process image.
     Output,
+    /// `%M`: memory (markers).
     Memory,
 }
 
+/// The size letter of a direct address.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum AddrSize {
     /// No size letter: a bit.
     Default,
+    /// `X`: a bit.
     X,
+    /// `B`: a byte (8 bits).
     B,
+    /// `W`: a word (16 bits).
     W,
+    /// `D`: a double word (32 bits).
     D,
+    /// `L`: a long word (64 bits).
     L,
 }
 
 /// `%IX1.0`, `%QW3`, `%MD10`, `%I*` (partly specified, only in declarations).
 #[derive(Clone, Debug, PartialEq)]
 pub struct DirectAddress {
+    /// `I`, `Q` or `M`.
     pub area: Area,
+    /// The size letter (none = bit).
     pub size: AddrSize,
     /// The dotted numbers; empty for `%I*`.
     pub path: Vec<u32>,
+    /// `%I*` / `%Q*`: the address is left to the configuration.
     pub partial: bool,
+    /// The address as written.
     pub span: Span,
 }
 
 /// A literal and, when written with a type prefix (`INT#5`, `T#1s`), that type.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Literal {
+    /// The value.
     pub kind: LitKind,
     /// `INT#`, `UINT#`, `BOOL#` ... (not for T#/D#/TOD#/DT#, whose kind says it).
     pub type_prefix: Option<Ident>,
+    /// The literal as written, prefix included.
     pub span: Span,
 }
 
+/// The value of a [`Literal`].
 #[derive(Clone, Debug, PartialEq)]
 pub enum LitKind {
     /// Integer value, sign included (`-1`, `16#FF`).
@@ -585,13 +803,18 @@ pub enum LitKind {
     /// The value and its source text (REAL is parsed from the text as f32 to
     /// avoid double rounding).
     Real {
+        /// The value.
         value: f64,
+        /// The number as written after any type prefix (sign, digits, `_`, exponent).
         text: String,
     },
+    /// `TRUE` / `FALSE` (also `BOOL#1`, `BOOL#0`).
     Bool(bool),
     /// `T#` / `TIME#` in nanoseconds; `long` for `LT#` / `LTIME#`.
     Time {
+        /// The duration in nanoseconds (may be negative).
         nanos: i64,
+        /// `LT#` / `LTIME#` (LTIME) rather than `T#` (TIME).
         long: bool,
     },
     /// `D#`: days since 1970-01-01.
@@ -602,12 +825,16 @@ pub enum LitKind {
     Dt(i64),
     /// `'...'` (wide = false) or `"..."` (wide = true), escapes resolved.
     String {
+        /// The characters.
         value: String,
+        /// `"..."` (WSTRING) rather than `'...'` (STRING).
         wide: bool,
     },
     /// `Color#Red`
     Enum {
+        /// The enumeration type.
         ty: Ident,
+        /// The value's name.
         value: Ident,
     },
 }

@@ -6,6 +6,8 @@
 //! the `il!` macro, the build-script [`Builder`] and the `ilc` command.
 //! [`plcopen`] reads PLCopen TC6 XML projects; [`Input`] mixes them with IL.
 
+#![warn(missing_docs)]
+
 pub mod ast;
 mod builder;
 pub mod check;

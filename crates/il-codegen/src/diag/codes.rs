@@ -4,6 +4,7 @@
 /// A diagnostic code and its explanation.
 #[derive(Clone, Copy, Debug)]
 pub struct CodeInfo {
+    /// The code as shown in messages: `IL` and four digits.
     pub code: &'static str,
     /// One line.
     pub title: &'static str,

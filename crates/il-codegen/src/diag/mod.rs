@@ -18,11 +18,13 @@ pub use render::{render, render_short};
 pub struct SourceFile {
     /// The name shown in messages (a path as the user gave it).
     pub name: String,
+    /// The whole text.
     pub text: String,
     line_starts: Vec<usize>,
 }
 
 impl SourceFile {
+    /// A file from its name and text (builds the line table).
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> Self {
         let text = text.into();
         let mut line_starts = vec![0];
@@ -68,13 +70,17 @@ impl SourceFile {
     }
 }
 
+/// How bad a [`Diagnostic`] is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Severity {
+    /// The input is refused: no code is generated.
     Error,
+    /// Code is generated, but something looks wrong.
     Warning,
 }
 
 impl Severity {
+    /// `"error"` / `"warning"`, as rendered and in JSON.
     pub fn as_str(self) -> &'static str {
         match self {
             Severity::Error => "error",
@@ -88,6 +94,7 @@ impl Severity {
 pub struct Diagnostic {
     /// Stable code, `IL0001` ...; see [`codes`].
     pub code: &'static str,
+    /// Error or warning.
     pub severity: Severity,
     /// What is wrong, in a PLC engineer's words.
     pub message: String,
@@ -104,6 +111,7 @@ pub struct Diagnostic {
 }
 
 impl Diagnostic {
+    /// An error with a code, a place and a message (no label, notes or help).
     pub fn error(code: &'static str, span: Span, message: impl Into<String>) -> Self {
         Diagnostic {
             code,
@@ -116,24 +124,29 @@ impl Diagnostic {
             help: None,
         }
     }
+    /// A warning with a code, a place and a message.
     pub fn warning(code: &'static str, span: Span, message: impl Into<String>) -> Self {
         Diagnostic {
             severity: Severity::Warning,
             ..Self::error(code, span, message)
         }
     }
+    /// With the text under the caret.
     pub fn with_label(mut self, label: impl Into<String>) -> Self {
         self.label = label.into();
         self
     }
+    /// With another place and its label.
     pub fn with_secondary(mut self, span: Span, label: impl Into<String>) -> Self {
         self.secondary.push((span, label.into()));
         self
     }
+    /// With a `= note:` line.
     pub fn with_note(mut self, note: impl Into<String>) -> Self {
         self.notes.push(note.into());
         self
     }
+    /// With a `= help:` suggestion.
     pub fn with_help(mut self, help: impl Into<String>) -> Self {
         self.help = Some(help.into());
         self
@@ -143,18 +156,22 @@ impl Diagnostic {
         self.secondary.push((span, label.into()));
         self
     }
+    /// Replace the text under the caret.
     pub fn set_label(&mut self, label: impl Into<String>) -> &mut Self {
         self.label = label.into();
         self
     }
+    /// Replace the suggestion.
     pub fn set_help(&mut self, help: impl Into<String>) -> &mut Self {
         self.help = Some(help.into());
         self
     }
+    /// Add a `= note:` line.
     pub fn add_note(&mut self, note: impl Into<String>) -> &mut Self {
         self.notes.push(note.into());
         self
     }
+    /// Whether it is an error (refuses the input) rather than a warning.
     pub fn is_error(&self) -> bool {
         self.severity == Severity::Error
     }

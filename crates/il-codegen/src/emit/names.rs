@@ -74,10 +74,6 @@ pub fn rust_ident(name: &str) -> Ident {
     }
 }
 
-/// The Rust name of a local binding (a FUNCTION's parameters and locals, VAR_TEMP).
-/// Locals are not part of the host's API, so they get a prefix that keeps
-/// them apart from everything in the user's scope: a `let` cannot bind a name
-/// that is a constant or unit struct there (`None`, a user `const SPEED`).
 /// The struct of references to the globals a POU uses (`Motor__Ext`): IEC
 /// names have no `__`, so it never collides with a user's item.
 pub fn ext_ident(pou: &str) -> Ident {
@@ -89,6 +85,10 @@ pub fn retain_ident(pou: &str) -> Ident {
     rust_ident(&format!("{pou}__Retain"))
 }
 
+/// The Rust name of a local binding (a FUNCTION's parameters and locals, VAR_TEMP).
+/// Locals are not part of the host's API, so they get a prefix that keeps
+/// them apart from everything in the user's scope: a `let` cannot bind a name
+/// that is a constant or unit struct there (`None`, a user `const SPEED`).
 pub fn local_ident(name: &str) -> Ident {
     if !is_ident(name) {
         return rust_ident(name);

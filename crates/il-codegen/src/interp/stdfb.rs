@@ -63,7 +63,7 @@ macro_rules! std_fbs {
         #[allow(non_camel_case_types, clippy::upper_case_acronyms)]
         #[derive(Clone, Debug, PartialEq)]
         pub enum StdFb {
-            $($name(il_std::$name),)*
+            $(#[doc = concat!("An [`il_std::", stringify!($name), "`] instance.")] $name(il_std::$name),)*
         }
 
         impl StdFb {
@@ -75,12 +75,14 @@ macro_rules! std_fbs {
                 }
             }
 
+            /// Run the block once (one `CAL`) with its current inputs; `ctx` supplies the time.
             pub fn call(&mut self, ctx: &mut Cycle) {
                 match self {
                     $(StdFb::$name(b) => b.call(ctx),)*
                 }
             }
 
+            /// Read an input or output by name (case-insensitive); `None` if the block has none such.
             pub fn get(&self, field: &str) -> Option<Value> {
                 match self {
                     $(StdFb::$name(_b) => {
@@ -92,6 +94,8 @@ macro_rules! std_fbs {
                 }
             }
 
+            /// Set an input (or output) by name (case-insensitive); false if there is no such
+            /// field or the value is of another kind.
             pub fn set(&mut self, field: &str, v: &Value) -> bool {
                 match self {
                     $(StdFb::$name(_b) => {

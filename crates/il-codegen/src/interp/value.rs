@@ -8,16 +8,21 @@ use crate::sema::types::Elem;
 /// A runtime value.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Value {
+    /// `BOOL`.
     Bool(bool),
     /// An integer or bit string, always inside its type's range.
     Int(i128, Elem),
+    /// `REAL`.
     Real(f32),
+    /// `LREAL`.
     LReal(f64),
     /// TIME/LTIME (ns), DATE (days), TOD (ns), DT (ns): the il-std inner value.
     Time(i64, Elem),
     /// STRING (bytes) or WSTRING (UTF-16 units).
     Str {
+        /// Bytes (as `u16`) of a STRING, or UTF-16 units of a WSTRING, already cut to the declared length.
         units: Vec<u16>,
+        /// WSTRING rather than STRING.
         wide: bool,
     },
     /// Array elements, row-major over all dimensions.
@@ -89,6 +94,7 @@ pub fn str_units(s: &str, wide: bool, len: u32) -> Vec<u16> {
 }
 
 impl Value {
+    /// The runtime value of a checked constant (STRING/WSTRING cut to the declared length).
     pub fn from_const(c: &Const) -> Value {
         match c {
             Const::Bool(b) => Value::Bool(*b),
@@ -109,6 +115,7 @@ impl Value {
         }
     }
 
+    /// The value as a condition: TRUE, or a non-zero integer; anything else is FALSE.
     pub fn as_bool(&self) -> bool {
         match self {
             Value::Bool(b) => *b,
@@ -129,6 +136,7 @@ impl Value {
         }
     }
 
+    /// The value as the emitter's `x as f64` (numbers, and the inner value of times).
     pub fn as_f64(&self) -> f64 {
         match self {
             Value::Int(v, _) => *v as f64,

@@ -4,7 +4,7 @@ use crate::diag::codes::CodeInfo;
 
 macro_rules! codes {
     ($($id:ident = $code:literal, $title:literal, $expl:literal;)*) => {
-        $(pub const $id: &str = $code;)*
+        $(#[doc = concat!("`", $code, "`: ", $title, ".")] pub const $id: &str = $code;)*
         /// Every checker code with its explanation.
         pub static CODES: &[CodeInfo] = &[$(CodeInfo { code: $code, title: $title, explanation: $expl },)*];
     };

@@ -7,10 +7,12 @@ use super::types::{Elem, Ty};
 pub use crate::ast::ExprOp as BinOp;
 use crate::ast::{PouKind, VarKind};
 
+/// A checked compilation unit: what the emitter and the interpreter consume.
 #[derive(Clone, Debug, Default)]
 pub struct Program {
     /// User types declared in this file (TYPE ... END_TYPE).
     pub types: Vec<TypeDef>,
+    /// The POUs, in source order.
     pub pous: Vec<CheckedPou>,
     /// CONFIGURATIONs declared in this file.
     pub configs: Vec<ConfigDef>,
@@ -20,10 +22,12 @@ pub struct Program {
 /// program instances. It becomes a struct the host drives with the time.
 #[derive(Clone, Debug)]
 pub struct ConfigDef {
+    /// As declared (the generated struct keeps this spelling).
     pub name: String,
-    /// VAR_GLOBAL of the configuration (kind `Var`; located ones live in the
+    /// VAR_GLOBAL of the configuration (kind `Global`; located ones live in the
     /// process image and are not fields).
     pub globals: Vec<Var>,
+    /// Its resources (at least one: the implicit one if it declares none).
     pub resources: Vec<ResourceDef>,
 }
 
@@ -32,17 +36,22 @@ pub struct ConfigDef {
 pub struct ResourceDef {
     /// `None`: the configuration declares its tasks and programs directly.
     pub name: Option<String>,
+    /// VAR_GLOBAL of the resource (kind `Global`; located ones live in the process image).
     pub globals: Vec<Var>,
+    /// Its tasks; [`ProgramInst::task`] indexes into this list.
     pub tasks: Vec<TaskDef>,
+    /// Its program instances, in declaration order.
     pub programs: Vec<ProgramInst>,
 }
 
 /// `TASK t (INTERVAL := T#10ms, PRIORITY := 1)`.
 #[derive(Clone, Debug)]
 pub struct TaskDef {
+    /// As declared.
     pub name: String,
     /// Nanoseconds; 0 = no periodic release.
     pub interval: i64,
+    /// PRIORITY: 0 is the highest; orders tasks released in the same cycle.
     pub priority: u32,
     /// SINGLE: released on a rising edge of this BOOL global.
     pub single: Option<GlobalRef>,
@@ -51,13 +60,16 @@ pub struct TaskDef {
 /// A global of a configuration: `resource` None = the configuration's own.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GlobalRef {
+    /// Index into [`ConfigDef::resources`]; `None`: [`ConfigDef::globals`].
     pub resource: Option<usize>,
+    /// Index into that list of globals.
     pub index: usize,
 }
 
 /// `PROGRAM p WITH t : P (a := g, b => h)`.
 #[derive(Clone, Debug)]
 pub struct ProgramInst {
+    /// The instance's name (a field of the configuration struct).
     pub name: String,
     /// The PROGRAM type.
     pub program: String,
@@ -77,21 +89,29 @@ pub struct ProgramInst {
 /// The value given to a program input in a configuration.
 #[derive(Clone, Debug)]
 pub enum ProgArg {
+    /// `a := g`: the value of a global, read before every run.
     Global(GlobalRef),
+    /// `a := 5`: a constant.
     Const(Const),
 }
 
 /// A user type that becomes a Rust item.
 #[derive(Clone, Debug, PartialEq)]
 pub enum TypeDef {
+    /// `STRUCT ... END_STRUCT`: a Rust struct with a `Default` that applies the initial values.
     Struct {
+        /// As declared.
         name: String,
+        /// The fields, in declaration order.
         fields: Vec<Field>,
     },
     /// Values with their explicit discriminants, and the default value's index.
     Enum {
+        /// As declared.
         name: String,
+        /// Each value's name and its `:= n`, if given.
         values: Vec<(String, Option<i128>)>,
+        /// Index into `values` of the default value.
         default: usize,
     },
 }
@@ -99,22 +119,30 @@ pub enum TypeDef {
 /// A field of a user STRUCT.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Field {
+    /// As declared.
     pub name: String,
+    /// The field's type.
     pub ty: Ty,
+    /// Its initial value (`None`: the type's default).
     pub init: Option<Init>,
     /// Subrange bounds of an integer field.
     pub range: Option<(i128, i128)>,
 }
 
+/// A checked FUNCTION, FUNCTION_BLOCK or PROGRAM, ready for emission.
 #[derive(Clone, Debug)]
 pub struct CheckedPou {
+    /// FUNCTION, FUNCTION_BLOCK or PROGRAM.
     pub kind: PouKind,
     /// As declared (the Rust item keeps this spelling).
     pub name: String,
+    /// Every variable of every VAR block, in declaration order ([`Root::Var`] indexes into this).
     pub vars: Vec<Var>,
     /// FUNCTION result type.
     pub ret: Option<Ty>,
+    /// The instructions, lowered to operations on typed CR locals.
     pub body: Vec<Stmt>,
+    /// Number of labels: [`Op::Label`] and [`Op::Jump`] use indices below it.
     pub label_count: usize,
     /// Direct addresses used in the body (for `ADDRESSES`).
     pub addresses: Vec<Loc>,
@@ -136,6 +164,7 @@ pub enum Retained {
     Nested,
 }
 
+/// A declared variable of a POU or configuration, after type resolution.
 #[derive(Clone, Debug)]
 pub struct Var {
     /// As declared.
@@ -146,9 +175,13 @@ pub struct Var {
     pub edge: Option<crate::ast::Edge>,
     /// Subrange bounds of an integer variable.
     pub range: Option<(i128, i128)>,
+    /// The section it was declared in.
     pub kind: VarKind,
+    /// The resolved type.
     pub ty: Ty,
+    /// Its initial value (`None`: the type's default).
     pub init: Option<Init>,
+    /// Declared CONSTANT: the checker refuses every write.
     pub constant: bool,
     /// Declared in a RETAIN section: part of the snapshot the host saves.
     pub retain: bool,
@@ -159,6 +192,7 @@ pub struct Var {
 /// Initial values.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Init {
+    /// A single value.
     Const(Const),
     /// Row-major elements of an array (already expanded to its full length).
     Array(Vec<Const>),
@@ -171,25 +205,34 @@ pub enum Init {
 /// A typed constant.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Const {
+    /// `TRUE` / `FALSE`.
     Bool(bool),
     /// Integer or bit string of the given type, value in range.
     Int(i128, Elem),
+    /// REAL or LREAL (held as f64; the emitter narrows it to f32 for REAL).
     Real(f64, Elem),
     /// TIME/LTIME (ns), DATE (days), TOD (ns), DT (ns).
     Time(i64, Elem),
+    /// A STRING or WSTRING literal.
     Str {
+        /// The characters.
         value: String,
+        /// WSTRING rather than STRING.
         wide: bool,
+        /// The declared maximum length in characters.
         len: u32,
     },
     /// A value of a user enumeration.
     Enum {
+        /// The enumeration type, as declared.
         ty: String,
+        /// The value's name, as declared.
         value: String,
     },
 }
 
 impl Const {
+    /// The constant's type.
     pub fn ty(&self) -> Ty {
         match self {
             Const::Bool(_) => Ty::BOOL,
@@ -206,13 +249,17 @@ impl Const {
 /// A variable, or a part of one.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Place {
+    /// The variable the place starts from.
     pub root: Root,
+    /// Field and subscript steps from the root, in order.
     pub path: Vec<PathElem>,
+    /// The type of the place itself (after the path).
     pub ty: Ty,
     /// Subrange bounds to check on stores.
     pub range: Option<(i128, i128)>,
 }
 
+/// Where a [`Place`] starts.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Root {
     /// Index into `CheckedPou::vars`.
@@ -226,6 +273,7 @@ pub enum Root {
 /// A resolved direct address.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Loc {
+    /// `%I`, `%Q` or `%M`.
     pub area: crate::ast::Area,
     /// Byte offset in the area.
     pub byte: usize,
@@ -237,13 +285,16 @@ pub struct Loc {
     pub text: String,
 }
 
+/// One step from a variable to a part of it.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PathElem {
     /// A member of an FB instance, as declared in the FB.
     Field(String),
     /// Subscripts of an array with these bounds.
     Index {
+        /// `(lo, hi)` per dimension, inclusive.
         dims: Vec<(i64, i64)>,
+        /// One subscript per dimension; the emitter checks them against `dims`.
         subs: Vec<Value>,
     },
 }
@@ -253,7 +304,9 @@ pub enum PathElem {
 pub enum Value {
     /// The CR local of that type.
     Cr(Ty),
+    /// A typed constant.
     Const(Const),
+    /// The current value of a variable or part of one.
     Read(Place),
     /// A saved outer CR of a deferred parenthesis.
     Saved(usize, Ty),
@@ -262,24 +315,35 @@ pub enum Value {
 /// A computation whose result becomes the CR.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Expr {
+    /// Just the value (`LD x`).
     Value(Value),
     /// Logical/bitwise complement.
     Not(Value),
     /// `lhs op rhs`; `ty` is the operands' type (rhs is already complemented
     /// for ANDN etc. via `negate_rhs`). Comparisons yield BOOL.
     Bin {
+        /// The operator.
         op: BinOp,
+        /// The operands' type (the checker made both sides have it).
         ty: Ty,
+        /// The left operand (usually the CR).
         lhs: Value,
+        /// The right operand.
         rhs: Value,
+        /// The right operand is complemented first (`ANDN`, `ORN`, `XORN`).
         negate_rhs: bool,
     },
     /// TIME/LTIME scaled by a number: `MUL`/`DIV` with a numeric operand.
     TimeScale {
+        /// `DIV` rather than `MUL`.
         div: bool,
+        /// TIME or LTIME: the type of `lhs` and of the result.
         time: Elem,
+        /// The duration.
         lhs: Value,
+        /// The numeric type of `rhs`.
         num: Elem,
+        /// The factor or divisor.
         rhs: Value,
     },
     /// A call of a user FUNCTION: arguments in declaration order of its
@@ -292,17 +356,26 @@ pub enum Expr {
         inouts: Vec<Place>,
         /// Index of the implicit ENO among the outputs, if the function sets ENO.
         eno: Option<usize>,
+        /// The FUNCTION's result type.
         ret: Ty,
+        /// The FUNCTION's name, as declared.
         name: String,
+        /// The input arguments, in declaration order of its inputs.
         args: Vec<Value>,
+        /// The types of all its VAR_OUTPUTs, in declaration order.
         out_types: Vec<Ty>,
+        /// The outputs read with `=>`: (index into `out_types`, target, complemented).
         outputs: Vec<(usize, Place, bool)>,
     },
     /// A call of an il-std function.
     CallStd {
+        /// Which il-std function, and how to call it.
         call: StdCall,
+        /// The arguments, CR first for the operator form.
         args: Vec<Value>,
+        /// Their types, one per argument.
         arg_types: Vec<Ty>,
+        /// The result type.
         ret: Ty,
     },
 }
@@ -320,8 +393,10 @@ pub enum StdCall {
     Mux,
 }
 
+/// One operation, with the IL line it comes from.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Stmt {
+    /// The operation.
     pub op: Op,
     /// IL source line (1-based), carried into a comment.
     pub line: u32,
@@ -330,34 +405,48 @@ pub struct Stmt {
 /// `Some((value, when))`: act when the BOOL value equals `when`.
 pub type Condition = Option<(Value, bool)>;
 
+/// What one IL instruction (or part of one) becomes.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Op {
     /// `__cr_<ty> = expr`
     SetCr {
+        /// The CR's type after the instruction (BOOL for comparisons).
         ty: Ty,
+        /// The computation.
         expr: Expr,
     },
     /// `__save_n = value`
     Save {
+        /// The save slot: index into [`CheckedPou::save_types`] (the `__save_n` local).
         slot: usize,
+        /// The outer CR to keep.
         value: Value,
     },
     /// `place = value` (complemented for STN).
     Store {
+        /// The target.
         place: Place,
+        /// The value stored (usually the CR).
         value: Value,
+        /// `STN`: store the complement.
         negate: bool,
     },
     /// S / R on a BOOL: `if cond { place = value }`.
     SetIf {
+        /// The BOOL target.
         place: Place,
+        /// TRUE for `S`, FALSE for `R`.
         value: bool,
+        /// The BOOL condition (the CR).
         cond: Value,
     },
     /// Call an FB instance after setting inputs; then copy outputs.
     CallFb {
+        /// The instance.
         inst: Place,
+        /// Inputs set before the call: (input name, value).
         inputs: Vec<(String, Value)>,
+        /// Outputs copied after the call: (output name, target, complemented).
         outputs: Vec<(String, Place, bool)>,
         /// Places bound to the FB's VAR_IN_OUTs, in their declaration order.
         inouts: Vec<Place>,
@@ -365,14 +454,21 @@ pub enum Op {
         /// caller passes its own externals of the same names. `true`: the
         /// FB declares it CONSTANT (a shared reference suffices).
         externals: Vec<(String, bool)>,
+        /// `CALC` / `CALCN`: call only when the condition holds.
         cond: Condition,
     },
+    /// `JMP`, `JMPC`, `JMPCN`: go to a label of the same POU.
     Jump {
+        /// Index of the label (below [`CheckedPou::label_count`]).
         label: usize,
+        /// `None` for `JMP`; the CR and the value that jumps otherwise.
         cond: Condition,
     },
+    /// `name:`: a jump target (the label's index).
     Label(usize),
+    /// `RET`, `RETC`, `RETCN`: leave the POU.
     Return {
+        /// `None` for `RET`; the CR and the value that returns otherwise.
         cond: Condition,
     },
     /// Nothing to do (an instruction whose effect is only on the checker's

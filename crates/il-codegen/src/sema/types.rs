@@ -8,36 +8,58 @@ use std::fmt;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[allow(clippy::upper_case_acronyms)]
 pub enum Elem {
+    /// `BOOL`: `bool`.
     BOOL,
+    /// `SINT`: 8-bit signed integer (`i8`).
     SINT,
+    /// `INT`: 16-bit signed integer (`i16`).
     INT,
+    /// `DINT`: 32-bit signed integer (`i32`).
     DINT,
+    /// `LINT`: 64-bit signed integer (`i64`).
     LINT,
+    /// `USINT`: 8-bit unsigned integer (`u8`).
     USINT,
+    /// `UINT`: 16-bit unsigned integer (`u16`).
     UINT,
+    /// `UDINT`: 32-bit unsigned integer (`u32`).
     UDINT,
+    /// `ULINT`: 64-bit unsigned integer (`u64`).
     ULINT,
+    /// `BYTE`: 8-bit bit string (`u8`).
     BYTE,
+    /// `WORD`: 16-bit bit string (`u16`).
     WORD,
+    /// `DWORD`: 32-bit bit string (`u32`).
     DWORD,
+    /// `LWORD`: 64-bit bit string (`u64`).
     LWORD,
+    /// `REAL`: 32-bit float (`f32`).
     REAL,
+    /// `LREAL`: 64-bit float (`f64`).
     LREAL,
+    /// `TIME`: a duration (`il_std::TIME`, nanoseconds).
     TIME,
+    /// `LTIME`: a long duration (`il_std::LTIME`, nanoseconds).
     LTIME,
+    /// `DATE`: a calendar date (`il_std::DATE`, days since 1970-01-01).
     DATE,
+    /// `TIME_OF_DAY` / `TOD`: nanoseconds since midnight (`il_std::TOD`).
     TOD,
+    /// `DATE_AND_TIME` / `DT`: nanoseconds since 1970-01-01T00:00:00 (`il_std::DT`).
     DT,
 }
 
 use Elem::*;
 
+/// Every elementary type, in declaration order.
 pub const ALL_ELEMS: &[Elem] = &[
     BOOL, SINT, INT, DINT, LINT, USINT, UINT, UDINT, ULINT, BYTE, WORD, DWORD, LWORD, REAL, LREAL,
     TIME, LTIME, DATE, TOD, DT,
 ];
 
 impl Elem {
+    /// The IEC name (the long form for `TIME_OF_DAY` and `DATE_AND_TIME`).
     pub fn name(self) -> &'static str {
         match self {
             BOOL => "BOOL",
@@ -63,6 +85,7 @@ impl Elem {
         }
     }
 
+    /// Look a type name up, case-insensitively (`TOD` and `DT` also in their long forms).
     pub fn from_name(name: &str) -> Option<Elem> {
         let up = name.to_ascii_uppercase();
         Some(match up.as_str() {
@@ -72,18 +95,22 @@ impl Elem {
         })
     }
 
+    /// Signed or unsigned integer (not a bit string).
     pub fn is_int(self) -> bool {
         matches!(
             self,
             SINT | INT | DINT | LINT | USINT | UINT | UDINT | ULINT
         )
     }
+    /// SINT, INT, DINT or LINT.
     pub fn is_signed_int(self) -> bool {
         matches!(self, SINT | INT | DINT | LINT)
     }
+    /// REAL or LREAL.
     pub fn is_real(self) -> bool {
         matches!(self, REAL | LREAL)
     }
+    /// Integer or real: what ADD..DIV and the numeric comparisons accept.
     pub fn is_num(self) -> bool {
         self.is_int() || self.is_real()
     }
@@ -91,9 +118,11 @@ impl Elem {
     pub fn is_bitstring(self) -> bool {
         matches!(self, BYTE | WORD | DWORD | LWORD)
     }
+    /// TIME or LTIME.
     pub fn is_duration(self) -> bool {
         matches!(self, TIME | LTIME)
     }
+    /// DATE, TIME_OF_DAY or DATE_AND_TIME.
     pub fn is_date(self) -> bool {
         matches!(self, DATE | TOD | DT)
     }
@@ -166,15 +195,20 @@ impl Elem {
 /// A type of a variable or of the current result.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Ty {
+    /// An elementary type.
     Elem(Elem),
     /// `STRING[len]` / `WSTRING[len]`
     Str {
+        /// WSTRING (UTF-16) rather than STRING (bytes).
         wide: bool,
+        /// Maximum length in characters.
         len: u32,
     },
     /// ARRAY[lo..hi, ...] OF elem
     Array {
+        /// `(lo, hi)` per dimension, inclusive.
         dims: Vec<(i64, i64)>,
+        /// The element type.
         elem: Box<Ty>,
     },
     /// An instance of a standard or user function block (name as declared).
@@ -189,14 +223,17 @@ pub enum Ty {
 pub const DEFAULT_STRING_LEN: u32 = 80;
 
 impl Ty {
+    /// The type of conditions and comparison results.
     pub const BOOL: Ty = Ty::Elem(BOOL);
 
+    /// The elementary type, if it is one.
     pub fn elem(&self) -> Option<Elem> {
         match self {
             Ty::Elem(e) => Some(*e),
             _ => None,
         }
     }
+    /// Exactly BOOL (not a bit string).
     pub fn is_bool(&self) -> bool {
         *self == Ty::BOOL
     }

@@ -10,36 +10,67 @@ use crate::diag::{Diagnostic, SourceFile};
 
 /// The front end's codes.
 pub mod code {
+    /// `IL0001`: a character that has no meaning in IL.
     pub const BAD_CHAR: &str = "IL0001";
+    /// `IL0002`: a comment that is never closed.
     pub const UNTERMINATED_COMMENT: &str = "IL0002";
+    /// `IL0003`: an operator without its operand.
     pub const MISSING_OPERAND: &str = "IL0003";
+    /// `IL0004`: an operator that takes no operand was given one.
     pub const NO_OPERAND: &str = "IL0004";
+    /// `IL0005`: an instruction line that cannot be read.
     pub const SYNTAX: &str = "IL0005";
+    /// `IL0006`: a jump without a label.
     pub const MISSING_LABEL: &str = "IL0006";
+    /// `IL0007`: CAL without a function block instance.
     pub const MISSING_CAL_TARGET: &str = "IL0007";
+    /// `IL0008`: a `;` comment (not IEC).
     pub const SEMI_COMMENT: &str = "IL0008";
+    /// `IL0009`: Structured Text code in an IL file.
     pub const ST_CODE: &str = "IL0009";
+    /// `IL0010`: Sequential Function Chart elements.
     pub const SFC_CODE: &str = "IL0010";
+    /// `IL0011`: instructions outside a PROGRAM, FUNCTION or FUNCTION_BLOCK.
     pub const ORPHAN: &str = "IL0011";
+    /// `IL0012`: declarations after the instructions.
     pub const DECL_AFTER_CODE: &str = "IL0012";
+    /// `IL0013`: a VAR block without END_VAR.
     pub const MISSING_END_VAR: &str = "IL0013";
+    /// `IL0014`: a missing or wrong END_ keyword.
     pub const MISSING_END: &str = "IL0014";
+    /// `IL0015`: an unbalanced parenthesis.
     pub const PAREN: &str = "IL0015";
+    /// `IL0016`: a label, jump, CAL or RET inside parentheses.
     pub const IN_PARENS: &str = "IL0016";
+    /// `IL0017`: parentheses nested too deep.
     pub const TOO_DEEP: &str = "IL0017";
+    /// `IL0018`: a malformed number or typed literal.
     pub const BAD_NUMBER: &str = "IL0018";
+    /// `IL0019`: a malformed duration.
     pub const BAD_DURATION: &str = "IL0019";
+    /// `IL0020`: a malformed date or time of day.
     pub const BAD_DATE: &str = "IL0020";
+    /// `IL0021`: a malformed string.
     pub const BAD_STRING: &str = "IL0021";
+    /// `IL0022`: a malformed direct address.
     pub const BAD_ADDRESS: &str = "IL0022";
+    /// `IL0023`: a declaration that cannot be read.
     pub const DECL_SYNTAX: &str = "IL0023";
+    /// `IL0024`: a CONFIGURATION element that cannot be read.
     pub const CONFIG_SYNTAX: &str = "IL0024";
+    /// `IL0025`: a pragma `{ ... }`.
     pub const PRAGMA: &str = "IL0025";
+    /// `IL0026`: a source file over 4 GiB.
     pub const TOO_LARGE: &str = "IL0026";
+    /// `IL0027`: a missing or misplaced result type.
     pub const RESULT_TYPE: &str = "IL0027";
+    /// `IL0028`: BEGIN_IL / END_IL out of place.
     pub const BEGIN_IL: &str = "IL0028";
+    /// `IL0029`: the file ends in the middle of something.
     pub const UNEXPECTED_EOF: &str = "IL0029";
+    /// `IL0030`: text after a complete instruction.
     pub const EXTRA_TOKENS: &str = "IL0030";
+    /// `IL0031`: a line that does not start with an operator.
     pub const EXPECTED_INSTRUCTION: &str = "IL0031";
 }
 
@@ -53,6 +84,7 @@ macro_rules! info {
     };
 }
 
+/// Every code of the lexer and parser, with its title and explanation.
 pub static CODES: &[CodeInfo] = &[
     info!(
         code::BAD_CHAR,

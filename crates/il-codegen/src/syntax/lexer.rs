@@ -30,69 +30,123 @@ pub enum LexError {}
 /// `AND`, `ANDN`, `&`, `&N`, `ADD` ...
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ExprTok {
+    /// The operator.
     pub op: ExprOp,
+    /// The `N` modifier (`ANDN`, `&N`).
     pub negate: bool,
 }
 
+/// A token of IL text; which ones appear depends on the lexer's mode.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Tok {
     /// End of an instruction line (body mode only).
     Nl,
     /// `name:` at the start of a body line (the span covers the name).
     Label(String),
+    /// A name (spelling as written); also an operator word in operand position.
     Ident(String),
+    /// A literal: `5`, `16#FF`, `T#1s`, `'abc'`, `TRUE`.
     Lit(Literal),
+    /// A direct address: `%IX0.1`, `%MW10`.
     Addr(DirectAddress),
     // Operators (operator field of a body line).
+    /// `LD` (false) / `LDN` (true).
     Ld(bool),
+    /// `ST` (false) / `STN` (true).
     St(bool),
+    /// `S`.
     Set,
+    /// `R`.
     Reset,
+    /// `NOT`: the operator, or the complement of an output in `NOT Q => x`.
     Not,
+    /// `AND`, `ANDN`, `&`, `ADD`, `GT` ...
     Expr(ExprTok),
+    /// `JMP`, `JMPC`, `JMPCN` / `JMPNC`.
     Jmp(Cond),
+    /// `CAL`, `CALC`, `CALCN` / `CALNC`.
     Cal(Cond),
+    /// `RET`, `RETC`, `RETCN` / `RETNC`.
     Ret(Cond),
+    /// `S1`, `R1`, `CLK`, `CU`, `CD`, `PV`, `IN`, `PT`.
     FbIn(FbInputOp),
+    /// KAS-IDE `BEGIN_IL`.
     BeginIl,
+    /// KAS-IDE `END_IL`.
     EndIl,
     // Punctuation.
+    /// `(`
     LParen,
+    /// `)`
     RParen,
+    /// `[`
     LBracket,
+    /// `]`
     RBracket,
+    /// `,`
     Comma,
+    /// `;`
     Semi,
+    /// `:`
     Colon,
+    /// `:=`
     Assign,
+    /// `=>`
     Arrow,
+    /// `.`
     Dot,
+    /// `..`
     DotDot,
     // Declaration keywords.
+    /// `VAR`, `VAR_INPUT`, `VAR_OUTPUT`, `VAR_IN_OUT`, `VAR_EXTERNAL`, `VAR_GLOBAL`, `VAR_TEMP`.
     Var(VarKind),
+    /// `END_VAR`
     EndVar,
+    /// `CONSTANT`
     Constant,
+    /// `RETAIN`
     Retain,
+    /// `NON_RETAIN`
     NonRetain,
+    /// `AT`
     At,
+    /// `ARRAY`
     Array,
+    /// `OF`
     Of,
+    /// `STRUCT`
     Struct,
+    /// `END_STRUCT`
     EndStruct,
+    /// `TYPE`
     Type,
+    /// `END_TYPE`
     EndType,
+    /// `STRING`
     StringKw,
+    /// `WSTRING`
     WStringKw,
+    /// `R_EDGE`
     REdge,
+    /// `F_EDGE`
     FEdge,
+    /// `FUNCTION`, `FUNCTION_BLOCK`, `PROGRAM`.
     Pou(PouKind),
+    /// `END_FUNCTION`, `END_FUNCTION_BLOCK`, `END_PROGRAM`.
     EndPou(PouKind),
+    /// `CONFIGURATION`
     Configuration,
+    /// `END_CONFIGURATION`
     EndConfiguration,
+    /// `RESOURCE`
     Resource,
+    /// `END_RESOURCE`
     EndResource,
+    /// `ON`
     On,
+    /// `TASK`
     Task,
+    /// `WITH`
     With,
     // Synthetic tokens.
     /// Instructions at top level, outside any POU (zero width).
@@ -121,6 +175,7 @@ enum Mode {
 /// the stack when dropped).
 pub const MAX_DEFER_DEPTH: usize = 256;
 
+/// The mode-driven lexer; [`lex`] runs it over a whole file.
 pub struct Lexer<'a> {
     src: &'a str,
     b: &'a [u8],
@@ -190,6 +245,7 @@ const CLEAR_OPERATORS: &[&str] = &[
     "GT", "GE", "EQ", "NE", "LE", "LT", "AND", "OR", "XOR", "NOT",
 ];
 
+/// The operator token for an upper-cased word in the operator field, if it is one.
 pub fn operator(up: &str) -> Option<Tok> {
     use ExprOp::*;
     let e = |op, negate| Some(Tok::Expr(ExprTok { op, negate }));
