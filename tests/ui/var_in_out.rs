@@ -1,13 +1,14 @@
-// Declarations: a VAR_IN_OUT block (check the message if it is not supported).
+// Declarations: VAR_IN_OUT of a PROGRAM is not supported (IL0121): share the
+// variable through VAR_GLOBAL / VAR_EXTERNAL instead.
 il_macros::il!(r#"
-FUNCTION_BLOCK Fb
+PROGRAM Main
 VAR_IN_OUT
     n : INT;
 END_VAR
     LD n
     ADD 1
     ST n
-END_FUNCTION_BLOCK
+END_PROGRAM
 "#);
 
 fn main() {}
