@@ -381,7 +381,77 @@ impl Walk<'_, '_> {
         }
     }
 
+    /// One instruction. Deferred parentheses recurse (one level per nesting
+    /// level, up to the parser's limit of 256), so the recursion path is kept
+    /// to two small frames: this dispatcher and [`Walk::deferred`]. Every
+    /// other instruction is checked in [`Walk::simple_instr`], whose frame is
+    /// large in debug builds (tens of KiB); with it on the recursion path,
+    /// 256 levels overflowed a 2 MiB thread (a debug `cargo test` thread)
+    /// and aborted the process.
     fn instr(&mut self, i: &ast::Instr, cr: Cr, in_parens: bool) -> Cr {
+        match &i.kind {
+            InstrKind::Deferred {
+                op,
+                negate,
+                first,
+                body,
+                close_span,
+            } => self.deferred(i, cr, (*op, *negate), first.as_ref(), body, *close_span),
+            _ => self.simple_instr(i, cr, in_parens),
+        }
+    }
+
+    /// `OP( operand` / `OP(` ... `)`: see [`Walk::instr`].
+    #[inline(never)]
+    fn deferred(
+        &mut self,
+        i: &ast::Instr,
+        cr: Cr,
+        (op, negate): (ExprOp, bool),
+        first: Option<&Operand>,
+        body: &[ast::Stmt],
+        close_span: Span,
+    ) -> Cr {
+        let span = i.span;
+        // A pending call is emitted before the inner instructions,
+        // which reuse the CR locals its arguments may read.
+        let Some(lhs) = self.use_cr(&cr, span).and_then(|a| self.settle(a)) else {
+            return Cr::Undef(Why::Error);
+        };
+        let lhs = match lhs {
+            Arg::Typed(v, t) => {
+                let slot = self.save_types.len();
+                self.save_types.push(t.clone());
+                self.push(Op::Save { slot, value: v });
+                Arg::Typed(Value::Saved(slot, t.clone()), t)
+            }
+            lit => lit,
+        };
+        let mut inner = match first {
+            Some(o) => self.load(false, o, span),
+            None => Cr::Undef(Why::Start),
+        };
+        for s in body {
+            match s {
+                ast::Stmt::Label(id) => {
+                    self.err(
+                        IN_PARENS,
+                        id.span,
+                        "a label is not allowed inside parentheses",
+                    );
+                }
+                ast::Stmt::Instr(ii) => inner = self.instr(ii, inner, true),
+            }
+        }
+        let Some(rhs) = self.use_cr(&inner, close_span) else {
+            return Cr::Undef(Why::Error);
+        };
+        self.binary(op, negate, lhs, rhs, i.op_span)
+    }
+
+    /// Every instruction but deferred parentheses (see [`Walk::instr`]).
+    #[inline(never)]
+    fn simple_instr(&mut self, i: &ast::Instr, cr: Cr, in_parens: bool) -> Cr {
         let span = i.span;
         match &i.kind {
             InstrKind::Load { negate, operand } => {
@@ -531,48 +601,8 @@ impl Walk<'_, '_> {
                 };
                 self.binary(*op, *negate, lhs, rhs, i.op_span)
             }
-            InstrKind::Deferred {
-                op,
-                negate,
-                first,
-                body,
-                close_span,
-            } => {
-                // A pending call is emitted before the inner instructions,
-                // which reuse the CR locals its arguments may read.
-                let Some(lhs) = self.use_cr(&cr, span).and_then(|a| self.settle(a)) else {
-                    return Cr::Undef(Why::Error);
-                };
-                let lhs = match lhs {
-                    Arg::Typed(v, t) => {
-                        let slot = self.save_types.len();
-                        self.save_types.push(t.clone());
-                        self.push(Op::Save { slot, value: v });
-                        Arg::Typed(Value::Saved(slot, t.clone()), t)
-                    }
-                    lit => lit,
-                };
-                let mut inner = match first {
-                    Some(o) => self.load(false, o, span),
-                    None => Cr::Undef(Why::Start),
-                };
-                for s in body {
-                    match s {
-                        ast::Stmt::Label(id) => {
-                            self.err(
-                                IN_PARENS,
-                                id.span,
-                                "a label is not allowed inside parentheses",
-                            );
-                        }
-                        ast::Stmt::Instr(ii) => inner = self.instr(ii, inner, true),
-                    }
-                }
-                let Some(rhs) = self.use_cr(&inner, *close_span) else {
-                    return Cr::Undef(Why::Error);
-                };
-                self.binary(*op, *negate, lhs, rhs, i.op_span)
-            }
+            // Handled by `instr`.
+            InstrKind::Deferred { .. } => cr,
             InstrKind::Jump { cond, label } => {
                 if in_parens {
                     self.err(IN_PARENS, span, "a jump is not allowed inside parentheses");
