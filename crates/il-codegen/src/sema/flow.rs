@@ -609,7 +609,12 @@ impl Walk<'_, '_> {
                     return cr;
                 }
                 let Some(&l) = self.labels.get(&label.key()) else {
-                    let names: Vec<String> = self.labels.keys().cloned().collect();
+                    // In label order: `suggest` keeps the first of equally
+                    // close names, and a hash map's order changes from run
+                    // to run (fuzzing found `l0` suggesting `L2` or `L3`).
+                    let mut labels: Vec<(&String, &usize)> = self.labels.iter().collect();
+                    labels.sort_by_key(|&(_, &i)| i);
+                    let names: Vec<String> = labels.into_iter().map(|(n, _)| n.clone()).collect();
                     let hint = suggest(&label.name, names.iter().map(String::as_str))
                         .map(|s| format!("did you mean `{s}`?"));
                     if let Some(d) = self.err(
@@ -1641,6 +1646,9 @@ impl Walk<'_, '_> {
             .filter(|s| s.kind == PouKind::Function)
             .map(|s| s.name.clone())
             .collect();
+        // A hash map's order: sorted, so that the suggestion is the same on
+        // every run.
+        cands.sort();
         cands.extend(stdfn::names().map(String::from));
         // A mistyped IL operator (`LDD`) lands here too.
         cands.extend(
