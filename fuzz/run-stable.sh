@@ -28,7 +28,7 @@ export RUSTFLAGS="-Cpasses=sancov-module -Cllvm-args=-sanitizer-coverage-level=4
 # --target keeps RUSTFLAGS off build scripts.
 cargo build --release --target "$target" --target-dir target/stable-cov --bin "$name"
 mkdir -p "corpus/$name" "artifacts/$name"
-seeds=(regressions ../tests/plc)
+seeds=(regressions ../tests/plc ../tests/plc-hostile)
 if [ -d ../../shared/corpus ]; then seeds+=(../../shared/corpus); fi
 exec "target/stable-cov/$target/release/$name" "corpus/$name" "${seeds[@]}" \
   "$limit_opt" -max_len=4096 -rss_limit_mb=2048 -timeout=10 -print_final_stats=1 \

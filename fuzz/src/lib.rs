@@ -7,8 +7,11 @@
 
 use il_codegen::diag::{SourceFile, has_errors, render, render_short, to_json};
 
+/// A fuzz target: arbitrary bytes in, a panic on a bug.
+pub type Target = fn(&[u8]);
+
 /// Every target, by name.
-pub const TARGETS: &[(&str, fn(&[u8]))] = &[
+pub const TARGETS: &[(&str, Target)] = &[
     ("front_end", front_end),
     ("check", check),
     ("pipeline", pipeline),

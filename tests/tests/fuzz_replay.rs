@@ -1,5 +1,6 @@
 //! Replays every fuzz target (`fuzz/src/lib.rs`) over the checked-in seeds
-//! and regressions (`fuzz/regressions`), our IL programs (`tests/plc`) and the
+//! and regressions (`fuzz/regressions`), our IL programs (`tests/plc`,
+//! `tests/plc-hostile`) and the
 //! shared real-world corpus when it is present. A crash found by fuzzing is
 //! fixed and its input kept in `fuzz/regressions`, so this test keeps it fixed
 //! on stable Rust, in CI, without libFuzzer.
@@ -32,6 +33,7 @@ fn every_target_over_the_seed_and_regression_corpus() {
     );
     let mut inputs = regressions;
     inputs.extend(files(&root.join("tests/plc")));
+    inputs.extend(files(&root.join("tests/plc-hostile")));
     inputs.extend(files(&root.join("../shared/corpus")));
     let mut runs = 0;
     for path in &inputs {

@@ -1,7 +1,7 @@
 //! Hostile input: IL names that collide with Rust keywords, prelude and
 //! primitive names and the emitter's own helper names, and comments and
 //! strings that try to close a Rust string or comment or to inject items.
-//! `plc/hostile.il` is compiled through build.rs and `il!(file = ...)` (so
+//! `plc-hostile/hostile.il` is compiled through build.rs and `il!(file = ...)` (so
 //! the crate builds only if the generated code does, under
 //! `#![deny(warnings)]`) and run here; the same sources go through the file
 //! writer, whose output must hold exactly the expected items.
@@ -9,7 +9,7 @@
 use il_codegen::diag::{SourceFile, has_errors};
 use il_std::{Cycle, STRING, WSTRING};
 
-const HOSTILE: &str = include_str!("../plc/hostile.il");
+const HOSTILE: &str = include_str!("../plc-hostile/hostile.il");
 
 macro_rules! hostile_tests {
     ($m:ident) => {
@@ -66,8 +66,8 @@ macro_rules! hostile_tests {
     };
 }
 
-hostile_tests!(via_build);
-hostile_tests!(via_macro);
+hostile_tests!(hostile_build);
+hostile_tests!(hostile_macro);
 
 /// Inline `il!` with hostile comments (a raw string needs `r##"` here: the
 /// IL holds `"#`).
@@ -87,8 +87,10 @@ END_FUNCTION_BLOCK
     #[test]
     fn runs() {
         let mut ctx = il_std::Cycle::new();
-        let mut b = r::default();
-        b.in0 = 41;
+        let mut b = r {
+            in0: 41,
+            ..Default::default()
+        };
         b.call(&mut ctx);
         assert_eq!(b.out, 42);
     }
