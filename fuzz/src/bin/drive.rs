@@ -25,12 +25,17 @@ impl Rng {
         x.wrapping_mul(0x2545_F491_4F6C_DD1D)
     }
     fn below(&mut self, n: usize) -> usize {
-        if n == 0 { 0 } else { (self.next() % n as u64) as usize }
+        if n == 0 {
+            0
+        } else {
+            (self.next() % n as u64) as usize
+        }
     }
 }
 
 /// IL tokens to insert: keywords, operators, literals, punctuation and the
 /// characters that stress the writer and the renderers.
+#[rustfmt::skip]
 const DICT: &[&str] = &[
     "LD ", "LDN ", "ST ", "STN ", "S ", "R ", "AND ", "ANDN ", "OR ", "XOR ", "NOT", "ADD ", "SUB ",
     "MUL ", "DIV ", "MOD ", "GT ", "GE ", "EQ ", "NE ", "LE ", "LT ", "JMP ", "JMPC ", "JMPCN ",
@@ -73,7 +78,7 @@ fn mutate(rng: &mut Rng, seeds: &[Vec<u8>], data: &mut Vec<u8>) {
                 let at = rng.below(len + 1);
                 data.splice(at..at, copy);
             }
-            4 | 5 | 6 => {
+            4..=6 => {
                 let t = DICT[rng.below(DICT.len())].as_bytes();
                 let at = rng.below(len + 1);
                 data.splice(at..at, t.iter().copied());
@@ -125,14 +130,21 @@ fn main() {
     let dirs: Vec<PathBuf> = if args.len() > 4 {
         args[4..].iter().map(PathBuf::from).collect()
     } else {
-        ["regressions", "../tests/plc", "../tests/plc-hostile", "../../shared/corpus"]
-            .iter()
-            .map(PathBuf::from)
-            .collect()
+        [
+            "regressions",
+            "../tests/plc",
+            "../tests/plc-hostile",
+            "../../shared/corpus",
+        ]
+        .iter()
+        .map(PathBuf::from)
+        .collect()
     };
     let mut seeds = Vec::new();
     for d in &dirs {
-        let Ok(rd) = std::fs::read_dir(d) else { continue };
+        let Ok(rd) = std::fs::read_dir(d) else {
+            continue;
+        };
         let mut files: Vec<PathBuf> = rd.filter_map(|e| e.ok().map(|e| e.path())).collect();
         files.sort();
         for f in files {
