@@ -96,6 +96,14 @@ pub fn pipeline(data: &[u8]) {
         prettyplease::unparse(&parsed) == prettyplease::unparse(&emitted),
         "the written file is not the emitted code:\n{text}"
     );
+    // rustc refuses bidirectional text controls even in comments
+    // (`text_direction_codepoint_in_comment`, deny by default).
+    assert!(
+        !text
+            .chars()
+            .any(|c| matches!(c, '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')),
+        "the written file holds a bidirectional control:\n{text}"
+    );
     for line in text.lines() {
         let t = line.trim_start();
         assert!(
