@@ -38,6 +38,16 @@ fn main() {
     std::fs::write(out.join("generated_index.rs"), by_build).expect("write index");
     std::fs::write(out.join("macro_index.rs"), by_macro).expect("write index");
 
+    // Hostile names (tests/hostile.rs) in a program of their own: POUs named
+    // `Some`, `Option`, `Default`, `Result` would shadow the prelude in test
+    // files that glob-import the modules of the other programs.
+    println!("cargo:rerun-if-changed=plc-hostile");
+    il_codegen::Builder::new()
+        .file("plc-hostile/hostile.il")
+        .out_dir(out.join("hostile"))
+        .compile()
+        .unwrap_or_else(|e| panic!("\n{e}"));
+
     let corpus = Path::new("../../shared/corpus");
     let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));
     if corpus.join("beremiz_matiec_cmd_monitor_il.txt").exists() {

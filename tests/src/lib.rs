@@ -13,6 +13,19 @@ pub mod via_macro {
     include!(concat!(env!("OUT_DIR"), "/macro_index.rs"));
 }
 
+/// Hostile names, comments and strings (`tests/plc-hostile/hostile.il`)
+/// through build.rs, apart from the other programs: its POUs named like the
+/// prelude (`Some`, `Option`, `Default`, `Result`) would shadow it in test
+/// files that glob-import `via_build` or `via_macro`.
+pub mod hostile_build {
+    include!(concat!(env!("OUT_DIR"), "/hostile/hostile.rs"));
+}
+
+/// The same through `il!(file = ...)`.
+pub mod hostile_macro {
+    il_macros::il!(file = "plc-hostile/hostile.il");
+}
+
 /// The Annex F programs of IEC 61131-3, from `../shared/corpus`.
 #[cfg(il_corpus)]
 pub mod annex_f {

@@ -1,4 +1,4 @@
-//! Standard functions called from IL (plc/std_funcs.il).
+//! Standard functions called from IL (plc/std_funcs.il, plc/string_funcs.il).
 
 use il_std::Cycle;
 
@@ -6,7 +6,7 @@ macro_rules! std_func_tests {
     ($m:ident) => {
         mod $m {
             use super::*;
-            use il_tests::$m::StdFuncs;
+            use il_tests::$m::{StdFuncs, StrFuncs};
 
             fn run(setup: impl FnOnce(&mut StdFuncs)) -> StdFuncs {
                 let mut ctx = Cycle::new();
@@ -93,6 +93,35 @@ macro_rules! std_func_tests {
                 assert_eq!(f.bcd, 0x1234);
                 assert_eq!(f.to_int, -4);
                 assert_eq!(f.tr, -3);
+            }
+
+            #[test]
+            fn string_functions_clamp_and_truncate() {
+                use il_std::{FaultKind, STRING, WSTRING};
+                let st = |x: &str| STRING::<10>::from_str_truncating(x).0;
+                let ws = |x: &str| WSTRING::<8>::from_str_truncating(x).0;
+                let mut ctx = Cycle::new();
+                let mut f = StrFuncs::default();
+                f.call(&mut ctx);
+                assert_eq!(f.left, st("He"));
+                assert_eq!(f.right, st("lo"));
+                assert_eq!(f.mid, st("ll"));
+                assert_eq!(f.cat, st("HelloWorld"));
+                assert_eq!(f.cat3, st("HelloWorld"));
+                assert_eq!(f.ins, st("HelWorldlo"));
+                assert_eq!(f.del, st("Heo"));
+                assert_eq!(f.rep, st("HeWorldo"));
+                assert_eq!(f.left_neg, st(""));
+                assert_eq!(f.mid_far, st(""));
+                assert_eq!(f.del_far, st("Hello"));
+                assert_eq!(f.ins_far, st("HelloWorld"));
+                assert_eq!((f.find_l, f.find_none, f.find_w), (3, 0, 4));
+                assert_eq!(f.wleft, ws("äb"));
+                assert_eq!(f.wmid, ws("c€"));
+                assert_eq!(f.wcat, ws("äbc€dxyz"));
+                assert_eq!(f.wrep, ws("ÖÖÖÖÖbc€"));
+                let faults: Vec<_> = ctx.faults().map(|x| (x.kind, x.pou, x.line)).collect();
+                assert_eq!(faults, [(FaultKind::StringOverflow, "StrFuncs", 33)]);
             }
         }
     };

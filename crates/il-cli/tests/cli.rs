@@ -301,3 +301,44 @@ fn files_are_checked_together() {
     );
     assert!(err.contains("did you mean `Q1`?"), "{err}");
 }
+
+/// `ilc emit` on hostile input (tests/plc-hostile/hostile.il: comments and
+/// strings that try to close a Rust comment or string or inject items, bidi
+/// controls, line separators): it prints the file writer's text, in which
+/// every `// N:` comment stays one harmless line (tests/hostile.rs checks the
+/// items of that text with syn, and compiles and runs it).
+#[test]
+fn emit_of_hostile_comments_and_strings() {
+    let src = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../tests/plc-hostile/hostile.il"
+    ))
+    .unwrap();
+    let path = temp_file("hostile.il", src.as_bytes());
+    let o = ilc(&["emit", &path]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let text = stdout(&o);
+    let file = il_codegen::diag::SourceFile::new(path.clone(), src);
+    let (written, _) = il_codegen::compile_to_file(&file).expect("compiles");
+    assert_eq!(text, written);
+    for bad in [
+        '\r', '\u{85}', '\u{2028}', '\u{2029}', '\u{202e}', '\u{2066}',
+    ] {
+        assert!(!text.contains(bad), "{bad:?} in the emitted text");
+    }
+    // The injection attempts are comments or string literals, nothing else.
+    let injected = text.lines().filter(|l| l.contains("fn injected")).count();
+    let as_comment = text
+        .lines()
+        .filter(|l| l.contains("fn injected") && l.trim_start().starts_with("// "))
+        .count();
+    let as_string = text
+        .lines()
+        .filter(|l| {
+            l.contains("from_str_truncating(\"*/ fn injected() {} /*\")")
+                || l.contains("from_str_truncating(\"} } fn injected2() {\")")
+        })
+        .count();
+    assert_eq!(injected, as_comment + as_string, "{text}");
+    assert_eq!((as_comment, as_string), (4, 2));
+}

@@ -163,9 +163,39 @@ pub(crate) fn format_file_with<'a>(
     out
 }
 
-/// A line comment cannot be escaped from, but keep control characters out.
+/// The text of a `//` comment. A line comment cannot be escaped from (only
+/// `\n` ends it, and control characters, `\r` included, become spaces), but
+/// rustc refuses some characters even inside comments: the bidirectional
+/// text controls (lint `text_direction_codepoint_in_comment`, deny by
+/// default), so an IL comment holding U+202E made the generated file fail to
+/// build. Those, and the other invisible format characters and line/paragraph
+/// separators (U+2028/U+2029, which editors may show as line breaks), are
+/// written as `\u{...}` escapes.
 fn sanitize_comment(s: &str) -> String {
-    s.chars()
-        .map(|c| if c.is_control() { ' ' } else { c })
-        .collect()
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        if c.is_control() {
+            out.push(' ');
+        } else if is_invisible_format(c) {
+            out.push_str(&format!("\\u{{{:x}}}", c as u32));
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// Bidirectional controls (U+061C, U+200E/F, U+202A-E, U+2066-9), zero-width
+/// and other invisible format characters, line and paragraph separators.
+fn is_invisible_format(c: char) -> bool {
+    matches!(
+        c,
+        '\u{061C}'
+            | '\u{180E}'
+            | '\u{200B}'..='\u{200F}'
+            | '\u{2028}'..='\u{202E}'
+            | '\u{2060}'..='\u{206F}'
+            | '\u{FEFF}'
+            | '\u{FFF9}'..='\u{FFFB}'
+    )
 }

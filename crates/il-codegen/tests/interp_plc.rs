@@ -466,4 +466,85 @@ fn in_outs_and_externals() {
     assert!(boolean(&m, "swapped"));
     // lamp is located through the configuration: it is the process image.
     assert!(ctx.io.bit(il_std::Area::Output, 0, 0));
+
+/// plc/string_funcs.il: what tests/std_funcs.rs asserts for the generated code.
+#[test]
+fn string_functions_clamp_and_truncate() {
+    let st = |x: &str| Value::Str {
+        units: x.bytes().map(u16::from).collect(),
+        wide: false,
+    };
+    let ws = |x: &str| Value::Str {
+        units: x.encode_utf16().collect(),
+        wide: true,
+    };
+    let mut ctx = Cycle::new();
+    let mut f = machine("string_funcs.il", "StrFuncs");
+    scan(&mut f, &mut ctx);
+    for (var, want) in [
+        ("left", st("He")),
+        ("right", st("lo")),
+        ("mid", st("ll")),
+        ("cat", st("HelloWorld")),
+        ("cat3", st("HelloWorld")),
+        ("ins", st("HelWorldlo")),
+        ("del", st("Heo")),
+        ("rep", st("HeWorldo")),
+        ("left_neg", st("")),
+        ("mid_far", st("")),
+        ("del_far", st("Hello")),
+        ("ins_far", st("HelloWorld")),
+        ("wleft", ws("äb")),
+        ("wmid", ws("c€")),
+        ("wcat", ws("äbc€dxyz")),
+        ("wrep", ws("ÖÖÖÖÖbc€")),
+    ] {
+        assert_eq!(f.get(var), Some(want), "{var}");
+    }
+    assert_eq!(
+        (int(&f, "find_l"), int(&f, "find_none"), int(&f, "find_w")),
+        (3, 0, 4)
+    );
+    let faults: Vec<_> = ctx.faults().map(|x| (x.kind, x.pou, x.line)).collect();
+    assert_eq!(faults, [(FaultKind::StringOverflow, "StrFuncs", 33)]);
+    // Lengths and positions from variables, a second scan.
+    f.set("n", i(-1, Elem::INT)).unwrap();
+    f.set("p", i(0, Elem::INT)).unwrap();
+    scan(&mut f, &mut ctx);
+    assert_eq!(f.get("left"), Some(st("")));
+    assert_eq!(f.get("mid"), Some(st("")));
+    assert_eq!(f.get("ins"), Some(st("WorldHello")));
+    assert_eq!(f.get("rep"), Some(st("WorldHello")));
+}
+
+/// plc/runtime_faults.il: the interpreter records the faults the generated
+/// code records (tests/runtime_faults.rs), at the same lines.
+#[test]
+fn runtime_faults_as_the_generated_code() {
+    let mut ctx = Cycle::new();
+    let mut f = machine("runtime_faults.il", "RtFaults");
+    scan(&mut f, &mut ctx);
+    let faults: Vec<_> = ctx.faults().map(|x| (x.kind, x.pou, x.line)).collect();
+    use FaultKind::*;
+    assert_eq!(
+        faults,
+        [
+            (DivisionByZero, "RtFaults", 69),
+            (DivisionByZero, "RtFaults", 72),
+            (DivisionByZero, "RtDiv", 11),
+            (IndexOutOfRange, "RtFaults", 77),
+            (IndexOutOfRange, "RtFaults", 80),
+            (IndexOutOfRange, "RtFaults", 81),
+            (IndexOutOfRange, "RtFaults", 84),
+            (SubrangeViolation, "RtFaults", 86),
+            (StringOverflow, "RtFaults", 88),
+            (IndexOutOfRange, "RtGrid", 19),
+            (IndexOutOfRange, "RtGrid", 22),
+        ]
+    );
+    assert_eq!(int(&f, "sum_wrap"), -32768);
+    assert_eq!(int(&f, "udiff"), 65535);
+    assert_eq!(int(&f, "pct"), 42);
+    assert_eq!(int(&f, "after"), 1);
+    assert!(boolean(&f, "reached"));
 }

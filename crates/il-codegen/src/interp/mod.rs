@@ -814,6 +814,14 @@ impl Machine {
                     if *negate {
                         v = stdfn::not(&v);
                     }
+                    // As the emitter: a store outside a subrange (an inline
+                    // `INT (0..100)`) is skipped and recorded.
+                    if let (Some((lo, hi)), Value::Int(x, _)) = (place.range, &v)
+                        && !(lo..=hi).contains(x)
+                    {
+                        self.fault(ctx, f, FaultKind::SubrangeViolation, line);
+                        continue;
+                    }
                     self.write(f, place, v, ctx, line)?;
                 }
                 Op::SetIf { place, value, cond } => {

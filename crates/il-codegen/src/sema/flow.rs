@@ -382,7 +382,77 @@ impl Walk<'_, '_> {
         }
     }
 
+    /// One instruction. Deferred parentheses recurse (one level per nesting
+    /// level, up to the parser's limit of 256), so the recursion path is kept
+    /// to two small frames: this dispatcher and [`Walk::deferred`]. Every
+    /// other instruction is checked in [`Walk::simple_instr`], whose frame is
+    /// large in debug builds (tens of KiB); with it on the recursion path,
+    /// 256 levels overflowed a 2 MiB thread (a debug `cargo test` thread)
+    /// and aborted the process.
     fn instr(&mut self, i: &ast::Instr, cr: Cr, in_parens: bool) -> Cr {
+        match &i.kind {
+            InstrKind::Deferred {
+                op,
+                negate,
+                first,
+                body,
+                close_span,
+            } => self.deferred(i, cr, (*op, *negate), first.as_ref(), body, *close_span),
+            _ => self.simple_instr(i, cr, in_parens),
+        }
+    }
+
+    /// `OP( operand` / `OP(` ... `)`: see [`Walk::instr`].
+    #[inline(never)]
+    fn deferred(
+        &mut self,
+        i: &ast::Instr,
+        cr: Cr,
+        (op, negate): (ExprOp, bool),
+        first: Option<&Operand>,
+        body: &[ast::Stmt],
+        close_span: Span,
+    ) -> Cr {
+        let span = i.span;
+        // A pending call is emitted before the inner instructions,
+        // which reuse the CR locals its arguments may read.
+        let Some(lhs) = self.use_cr(&cr, span).and_then(|a| self.settle(a)) else {
+            return Cr::Undef(Why::Error);
+        };
+        let lhs = match lhs {
+            Arg::Typed(v, t) => {
+                let slot = self.save_types.len();
+                self.save_types.push(t.clone());
+                self.push(Op::Save { slot, value: v });
+                Arg::Typed(Value::Saved(slot, t.clone()), t)
+            }
+            lit => lit,
+        };
+        let mut inner = match first {
+            Some(o) => self.load(false, o, span),
+            None => Cr::Undef(Why::Start),
+        };
+        for s in body {
+            match s {
+                ast::Stmt::Label(id) => {
+                    self.err(
+                        IN_PARENS,
+                        id.span,
+                        "a label is not allowed inside parentheses",
+                    );
+                }
+                ast::Stmt::Instr(ii) => inner = self.instr(ii, inner, true),
+            }
+        }
+        let Some(rhs) = self.use_cr(&inner, close_span) else {
+            return Cr::Undef(Why::Error);
+        };
+        self.binary(op, negate, lhs, rhs, i.op_span)
+    }
+
+    /// Every instruction but deferred parentheses (see [`Walk::instr`]).
+    #[inline(never)]
+    fn simple_instr(&mut self, i: &ast::Instr, cr: Cr, in_parens: bool) -> Cr {
         let span = i.span;
         match &i.kind {
             InstrKind::Load { negate, operand } => {
@@ -532,55 +602,20 @@ impl Walk<'_, '_> {
                 };
                 self.binary(*op, *negate, lhs, rhs, i.op_span)
             }
-            InstrKind::Deferred {
-                op,
-                negate,
-                first,
-                body,
-                close_span,
-            } => {
-                // A pending call is emitted before the inner instructions,
-                // which reuse the CR locals its arguments may read.
-                let Some(lhs) = self.use_cr(&cr, span).and_then(|a| self.settle(a)) else {
-                    return Cr::Undef(Why::Error);
-                };
-                let lhs = match lhs {
-                    Arg::Typed(v, t) => {
-                        let slot = self.save_types.len();
-                        self.save_types.push(t.clone());
-                        self.push(Op::Save { slot, value: v });
-                        Arg::Typed(Value::Saved(slot, t.clone()), t)
-                    }
-                    lit => lit,
-                };
-                let mut inner = match first {
-                    Some(o) => self.load(false, o, span),
-                    None => Cr::Undef(Why::Start),
-                };
-                for s in body {
-                    match s {
-                        ast::Stmt::Label(id) => {
-                            self.err(
-                                IN_PARENS,
-                                id.span,
-                                "a label is not allowed inside parentheses",
-                            );
-                        }
-                        ast::Stmt::Instr(ii) => inner = self.instr(ii, inner, true),
-                    }
-                }
-                let Some(rhs) = self.use_cr(&inner, *close_span) else {
-                    return Cr::Undef(Why::Error);
-                };
-                self.binary(*op, *negate, lhs, rhs, i.op_span)
-            }
+            // Handled by `instr`.
+            InstrKind::Deferred { .. } => cr,
             InstrKind::Jump { cond, label } => {
                 if in_parens {
                     self.err(IN_PARENS, span, "a jump is not allowed inside parentheses");
                     return cr;
                 }
                 let Some(&l) = self.labels.get(&label.key()) else {
-                    let names: Vec<String> = self.labels.keys().cloned().collect();
+                    // In label order: `suggest` keeps the first of equally
+                    // close names, and a hash map's order changes from run
+                    // to run (fuzzing found `l0` suggesting `L2` or `L3`).
+                    let mut labels: Vec<(&String, &usize)> = self.labels.iter().collect();
+                    labels.sort_by_key(|&(_, &i)| i);
+                    let names: Vec<String> = labels.into_iter().map(|(n, _)| n.clone()).collect();
                     let hint = suggest(&label.name, names.iter().map(String::as_str))
                         .map(|s| format!("did you mean `{s}`?"));
                     if let Some(d) = self.err(
@@ -1814,6 +1849,9 @@ impl Walk<'_, '_> {
             .filter(|s| s.kind == PouKind::Function)
             .map(|s| s.name.clone())
             .collect();
+        // A hash map's order: sorted, so that the suggestion is the same on
+        // every run.
+        cands.sort();
         cands.extend(stdfn::names().map(String::from));
         // A mistyped IL operator (`LDD`) lands here too.
         cands.extend(

@@ -299,6 +299,7 @@ pub(crate) fn order_formal<A>(
     };
     let mut slots: Vec<Option<(A, Span)>> = Vec::new();
     let extensible = !matches!(s.ext, Ext::Fixed);
+    let count = named.len();
     for (name, a, sp) in named {
         let pos = s.params.iter().position(|p| name.is(p.name)).or_else(|| {
             // IN1, IN2, ... beyond the listed ones for extensible functions.
@@ -308,7 +309,13 @@ pub(crate) fn order_formal<A>(
                 .params
                 .iter()
                 .position(|p| p.name.eq_ignore_ascii_case("IN1"))?;
-            (extensible && n >= 1).then_some(first + n - 1)
+            // `IN0` does not exist (`then_some` computed `first + n - 1`
+            // even then, and `IN0 := x` underflowed: found by fuzzing), and
+            // `INn` beyond the number of arguments given leaves a gap (some
+            // IN below it is missing): no such parameter. Bounding `n` also
+            // keeps `slots` from being resized to `n` (`IN99999999999 := x`
+            // asked for terabytes).
+            (extensible && (1..=count).contains(&n)).then(|| first + n - 1)
         });
         let Some(pos) = pos else {
             let names: Vec<&str> = s.params.iter().map(|p| p.name).collect();

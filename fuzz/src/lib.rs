@@ -1,0 +1,189 @@
+//! The fuzz targets as plain functions, shared by the cargo-fuzz/libFuzzer
+//! binaries (`fuzz_targets/*.rs`) and the replay test that CI runs
+//! (`tests/tests/fuzz_replay.rs`, which includes this file with `#[path]`).
+//!
+//! Each target takes arbitrary bytes and panics only on a bug: a panic inside
+//! the compiler, or a broken invariant asserted here.
+
+use il_codegen::diag::{SourceFile, has_errors, render, render_short, to_json};
+
+/// A fuzz target: arbitrary bytes in, a panic on a bug.
+pub type Target = fn(&[u8]);
+
+/// Every target, by name.
+pub const TARGETS: &[(&str, Target)] = &[
+    ("front_end", front_end),
+    ("check", check),
+    ("pipeline", pipeline),
+];
+
+/// Sources are text: the CLI refuses non-UTF-8 files before parsing, so feed
+/// the lossy decoding, which still holds every odd character.
+fn source(data: &[u8]) -> SourceFile {
+    SourceFile::new("fuzz.il", String::from_utf8_lossy(data).into_owned())
+}
+
+/// Render the first diagnostics through every renderer. Rendering dominates
+/// the cost: the first ones are enough to reach every rendering path.
+fn render_all(file: &SourceFile, diags: &[il_codegen::diag::Diagnostic]) {
+    let shown = &diags[..diags.len().min(16)];
+    let _ = render(file, shown, false);
+    let _ = render(file, shown, true);
+    for d in shown {
+        let _ = render_short(file, d);
+        let j = to_json(file, d);
+        assert!(!j.contains('\n'), "JSON diagnostic spans lines: {j}");
+    }
+}
+
+/// The parser and every diagnostic renderer.
+pub fn front_end(data: &[u8]) {
+    let file = source(data);
+    let (_unit, diags) = il_codegen::syntax::parse(&file);
+    render_all(&file, &diags);
+}
+
+/// Parser and checker (`check_source`, what `ilc check` runs), and the
+/// multi-file entry point on the same single file, which must agree.
+pub fn check(data: &[u8]) {
+    let file = source(data);
+    let diags = il_codegen::check_source(&file);
+    render_all(&file, &diags);
+    let many = il_codegen::check_sources(std::slice::from_ref(&file));
+    assert_eq!(many.len(), 1, "check_sources returns one list per file");
+    assert!(many[0] == diags, "check_source and check_sources disagree");
+}
+
+/// The whole pipeline: parse, check, emit, format. The emitted Rust must
+/// parse, contain no `unsafe` and no item that is not generated for a POU or
+/// type, and the compiler must agree with the checker (no error from
+/// `check_source` ⇔ `compile` succeeds).
+pub fn pipeline(data: &[u8]) {
+    let file = source(data);
+    macro_expansion(&file.text);
+    let checked = il_codegen::check_source(&file);
+    let compiled = il_codegen::compile(&file, il_codegen::emit::Options { line_markers: true });
+    let c = match compiled {
+        Err(diags) => {
+            assert!(
+                has_errors(&checked),
+                "compile failed but check_source reported no error"
+            );
+            assert!(has_errors(&diags), "compile failed without an error");
+            return;
+        }
+        Ok(c) => c,
+    };
+    assert!(
+        !has_errors(&checked),
+        "compile succeeded but check_source reported errors"
+    );
+    assert!(!has_errors(&c.warnings), "compile succeeded with an error");
+    let tokens = syn::parse2::<syn::File>(c.tokens.clone())
+        .unwrap_or_else(|e| panic!("emitted tokens do not parse: {e}\n{}", c.tokens));
+    assert_items(&tokens, &c.pous);
+    assert_no_unsafe(c.tokens.clone());
+    // The file writer: formatted, with `// N: <IL line>` comments.
+    let text = il_codegen::format_file(&file, &c.tokens);
+    let parsed = syn::parse_file(&text)
+        .unwrap_or_else(|e| panic!("the written file does not parse: {e}\n{text}"));
+    // The comments must not have changed the code: the file holds exactly
+    // the emitted tokens less the line markers (which became comments), as
+    // the formatter prints them.
+    let emitted = syn::parse2::<syn::File>(strip_markers(c.tokens))
+        .unwrap_or_else(|e| panic!("emitted tokens without markers do not parse: {e}"));
+    assert!(
+        prettyplease::unparse(&parsed) == prettyplease::unparse(&emitted),
+        "the written file is not the emitted code:\n{text}"
+    );
+    // rustc refuses bidirectional text controls even in comments
+    // (`text_direction_codepoint_in_comment`, deny by default).
+    assert!(
+        !text
+            .chars()
+            .any(|c| matches!(c, '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')),
+        "the written file holds a bidirectional control:\n{text}"
+    );
+    for line in text.lines() {
+        let t = line.trim_start();
+        assert!(
+            !t.starts_with("__il_line!"),
+            "a line marker was left in the file: {line}"
+        );
+    }
+}
+
+/// `il!(r#"..."#)`: the generated items, or `compile_error!`s and stubs of
+/// the POUs. Either way the expansion parses as items, and it is never the
+/// message of a caught compiler panic.
+fn macro_expansion(text: &str) {
+    let lit = proc_macro2::Literal::string(text);
+    let out = il_codegen::expand::expand(quote::quote!(#lit));
+    let s = out.to_string();
+    assert!(
+        !s.contains("internal error in the IL compiler"),
+        "il! caught a compiler panic: {s}"
+    );
+    syn::parse2::<syn::File>(out).unwrap_or_else(|e| panic!("il! expansion does not parse: {e}"));
+}
+
+/// The tokens without the `__il_line!(N);` markers.
+fn strip_markers(ts: proc_macro2::TokenStream) -> proc_macro2::TokenStream {
+    use proc_macro2::TokenTree;
+    let tts: Vec<TokenTree> = ts.into_iter().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < tts.len() {
+        if matches!(&tts[i], TokenTree::Ident(id) if id == "__il_line") {
+            i += 4; // `__il_line` `!` `(N)` `;`
+            continue;
+        }
+        out.push(match &tts[i] {
+            TokenTree::Group(g) => {
+                let mut ng = proc_macro2::Group::new(g.delimiter(), strip_markers(g.stream()));
+                ng.set_span(g.span());
+                TokenTree::Group(ng)
+            }
+            t => t.clone(),
+        });
+        i += 1;
+    }
+    out.into_iter().collect()
+}
+
+/// Every top-level item is a struct, enum, fn or impl, and every struct,
+/// enum and fn is named after a POU or a user type (the POU list does not
+/// hold types, so only count them).
+fn assert_items(f: &syn::File, pous: &[String]) {
+    let mut named = 0;
+    for item in &f.items {
+        match item {
+            syn::Item::Struct(_) | syn::Item::Enum(_) | syn::Item::Fn(_) => named += 1,
+            syn::Item::Impl(_) => {}
+            other => panic!("unexpected top-level item: {}", quote_item(other)),
+        }
+    }
+    assert!(
+        named >= pous.len(),
+        "{named} named items for {} POUs",
+        pous.len()
+    );
+}
+
+fn quote_item(i: &syn::Item) -> String {
+    use quote::ToTokens;
+    i.to_token_stream().to_string()
+}
+
+/// Generated code never contains `unsafe` (a raw `r#unsafe` is a name).
+fn assert_no_unsafe(ts: proc_macro2::TokenStream) {
+    for tt in ts {
+        match tt {
+            proc_macro2::TokenTree::Ident(i) => {
+                assert!(i != "unsafe", "emitted code contains `unsafe`")
+            }
+            proc_macro2::TokenTree::Group(g) => assert_no_unsafe(g.stream()),
+            _ => {}
+        }
+    }
+}
