@@ -9,7 +9,7 @@
 
 use super::Pou;
 use crate::ast::PouKind;
-use crate::sema::ir::{Op, Stmt};
+use crate::sema::ir::{Op, PathElem, Stmt, Value};
 use proc_macro2::{Ident, Punct, Spacing, Span, TokenStream};
 use quote::{format_ident, quote};
 
@@ -234,6 +234,30 @@ impl Pou<'_> {
                 outputs,
                 cond,
             } => {
+                // An instance that is a plain path, with inputs that do not
+                // read it: set the inputs in place, call, copy the outputs.
+                if !inst.path.iter().any(|e| matches!(e, PathElem::Index { .. }))
+                    && !inputs
+                        .iter()
+                        .any(|(_, v)| matches!(v, Value::Read(q) if q.root == inst.root))
+                {
+                    let path = self.simple_path(inst);
+                    let sets = inputs.iter().map(|(n, v)| {
+                        let f = super::rust_ident(n);
+                        let v = self.value(v, line);
+                        quote!(#path.#f = #v;)
+                    });
+                    let outs = outputs.iter().map(|(n, target, neg)| {
+                        let f = super::rust_ident(n);
+                        let v = quote!(#path.#f);
+                        self.write(target, if *neg { quote!(!#v) } else { v }, line)
+                    });
+                    return self.cond(
+                        cond,
+                        line,
+                        quote!({ #(#sets)* #path.call(__ctx); #(#outs)* }),
+                    );
+                }
                 // Inputs are evaluated before the instance is borrowed.
                 let ids: Vec<_> = (0..inputs.len())
                     .map(|k| format_ident!("__in{}", k))
