@@ -60,6 +60,18 @@ impl Pou<'_> {
         let v = &self.pou.vars[i];
         self.pou.kind != PouKind::Function && v.kind != VarKind::Temp && v.location.is_none()
     }
+
+    /// Whether variable `i` (an elementary value in `self`) is copied into a
+    /// local for the duration of the call and written back at its end, so
+    /// that it can live in a register: nothing else can see `self` meanwhile.
+    fn cached(&self, i: usize) -> bool {
+        let v = &self.pou.vars[i];
+        self.in_self(i) && v.edge.is_none() && matches!(v.ty, Ty::Elem(_))
+    }
+
+    fn has_cached(&self) -> bool {
+        (0..self.pou.vars.len()).any(|i| self.cached(i))
+    }
 }
 
 fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
@@ -197,6 +209,31 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                     }
                 }
             });
+            let cached: Vec<_> = (0..pou.vars.len())
+                .filter(|i| p.cached(*i))
+                .map(|i| &pou.vars[i])
+                .collect();
+            let loads = cached.iter().map(|v| {
+                let (id, l) = (rust_ident(&v.name), names::cache_ident(&v.name));
+                let ty = rust_ty(&v.ty);
+                quote!(let mut #l: #ty = self.#id;)
+            });
+            let stores = cached.iter().map(|v| {
+                let (id, l) = (rust_ident(&v.name), names::cache_ident(&v.name));
+                quote!(self.#id = #l;)
+            });
+            // RET leaves the labelled block, so the values are written back.
+            let body = if cached.is_empty() {
+                body
+            } else {
+                let mut t = quote!('__body:);
+                t.extend([proc_macro2::TokenTree::Group(proc_macro2::Group::new(
+                    proc_macro2::Delimiter::Brace,
+                    body,
+                ))]);
+                t.extend(quote!(#(#stores)*));
+                t
+            };
             let addresses = addresses(pou);
             let method_doc = if pou.kind == PouKind::Program {
                 " Run one scan."
@@ -228,6 +265,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                     #allow
                     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
                         #(#edge_lets)*
+                        #(#loads)*
                         #locals
                         #body
                     }

@@ -190,7 +190,10 @@ impl Pou<'_> {
                     let id = rust_ident(&format!("__edge_{}", v.name));
                     return quote!(#id);
                 }
-                if self.in_self(*i) {
+                if self.cached(*i) {
+                    let id = super::names::cache_ident(&v.name);
+                    quote!(#id)
+                } else if self.in_self(*i) {
                     let id = rust_ident(&v.name);
                     quote!(self.#id)
                 } else if self.pou.kind == PouKind::Function && v.kind == VarKind::Output {
