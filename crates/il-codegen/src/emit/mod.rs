@@ -27,9 +27,19 @@ pub struct Options {
 
 /// Emit every POU of a checked program.
 pub fn program(p: &Program, opts: Options) -> TokenStream {
-    let types = p.types.iter().map(emit_type);
-    let items = p.pous.iter().map(|pou| emit_pou(pou, opts));
-    quote!(#(#types)* #(#items)*)
+    // Streams are moved into the result, never interpolated: `quote!`'s
+    // `#stream` copies every token (and, in proc-macro2's fallback, every
+    // identifier's string), which for large POUs dominated emit time.
+    let mut out = TokenStream::new();
+    out.extend(p.types.iter().map(emit_type));
+    out.extend(p.pous.iter().map(|pou| emit_pou(pou, opts)));
+    out
+}
+
+/// `{ tokens }` as one token tree: interpolating it clones a reference to
+/// the inner stream, not the tokens.
+pub(crate) fn braced(tokens: TokenStream) -> proc_macro2::Group {
+    proc_macro2::Group::new(proc_macro2::Delimiter::Brace, tokens)
 }
 
 /// The Rust type of an IEC type; user FBs are items beside the generated code.
@@ -151,16 +161,18 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                     let init = values::init_value(&v.ty, v.init.as_ref());
                     quote!(*#id = #init;)
                 });
+            let mut inner = quote! {
+                let mut __ret: #ret_ty = #ret_default;
+                #(#out_inits)*
+                #locals
+            };
+            inner.extend(body);
+            inner.extend(quote!(__ret));
+            let block = braced(inner);
             quote! {
                 #[doc = #doc]
                 #allow
-                pub fn #name(__ctx: &mut ::il_std::Cycle, #(#params,)* #(#outs,)*) -> #ret_ty {
-                    let mut __ret: #ret_ty = #ret_default;
-                    #(#out_inits)*
-                    #locals
-                    #body
-                    __ret
-                }
+                pub fn #name(__ctx: &mut ::il_std::Cycle, #(#params,)* #(#outs,)*) -> #ret_ty #block
             }
         }
         PouKind::FunctionBlock | PouKind::Program => {
@@ -234,6 +246,9 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 t.extend(quote!(#(#stores)*));
                 t
             };
+            let mut inner = quote!(#(#edge_lets)* #(#loads)* #locals);
+            inner.extend(body);
+            let block = braced(inner);
             let addresses = addresses(pou);
             let method_doc = if pou.kind == PouKind::Program {
                 " Run one scan."
@@ -263,12 +278,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
 
                     #[doc = #method_doc]
                     #allow
-                    pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
-                        #(#edge_lets)*
-                        #(#loads)*
-                        #locals
-                        #body
-                    }
+                    pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) #block
                 }
 
                 impl ::il_std::FunctionBlock for #name {
