@@ -9,7 +9,12 @@ use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
 pub(crate) fn cr_ident(t: &Ty) -> proc_macro2::Ident {
-    format_ident!("__cr_{}", t.mangle())
+    // One of the most frequent identifiers: no `format_ident!` machinery.
+    let name = match t {
+        Ty::Elem(e) => ["__cr_", e.mangle()].concat(),
+        _ => format!("__cr_{}", t.mangle()),
+    };
+    proc_macro2::Ident::new(&name, proc_macro2::Span::call_site())
 }
 
 /// A typed constant.
