@@ -23,8 +23,12 @@ enum Mode {
     Straight,
     /// Labelled blocks and loops (see [`structure`]); `label_pos` is the
     /// position of each label in the body.
-    Structured { label_pos: Vec<Option<usize>> },
-    Dispatch { block_of_label: Vec<usize> },
+    Structured {
+        label_pos: Vec<Option<usize>>,
+    },
+    Dispatch {
+        block_of_label: Vec<usize>,
+    },
 }
 
 /// A region of the body `[lo, hi)` that becomes a labelled block (forward
@@ -343,7 +347,10 @@ impl Pou<'_> {
             } => {
                 // An instance that is a plain path, with inputs that do not
                 // read it: set the inputs in place, call, copy the outputs.
-                if !inst.path.iter().any(|e| matches!(e, PathElem::Index { .. }))
+                if !inst
+                    .path
+                    .iter()
+                    .any(|e| matches!(e, PathElem::Index { .. }))
                     && !inputs
                         .iter()
                         .any(|(_, v)| matches!(v, Value::Read(q) if q.root == inst.root))

@@ -300,11 +300,13 @@ impl Pou<'_> {
     /// Whether some subscript of the place is checked at run time (not a
     /// literal inside the bounds).
     fn checked_index(p: &Place) -> bool {
-        p.path.iter().any(|e| match e {
+        p.path.iter().any(|e| {
+            match e {
             PathElem::Index { dims, subs } => subs.iter().zip(dims).any(|(s, &(lo, hi))| {
                 !matches!(s, Value::Const(Const::Int(n, _)) if *n >= lo as i128 && *n <= hi as i128)
             }),
             PathElem::Field(_) => false,
+        }
         })
     }
 
@@ -315,7 +317,9 @@ impl Pou<'_> {
         match s {
             Value::Cr(_) | Value::Const(_) | Value::Saved(..) => true,
             Value::Read(q) => {
-                !Self::has_index(q) && (first || q.root != p.root) && !matches!(q.root, Root::Addr(_))
+                !Self::has_index(q)
+                    && (first || q.root != p.root)
+                    && !matches!(q.root, Root::Addr(_))
             }
         }
     }
@@ -354,7 +358,13 @@ impl Pou<'_> {
         }
         let fault = self.fault("IndexOutOfRange", line);
         let access = |v: TokenStream| {
-            self.access(p, true, line, |place| quote!({ #place = #v; }), quote!({ #fault; }))
+            self.access(
+                p,
+                true,
+                line,
+                |place| quote!({ #place = #v; }),
+                quote!({ #fault; }),
+            )
         };
         // A value of one or two plain tokens (`__cr_int`, `!__cr_bool`, a
         // literal) goes straight into the slot; anything else is evaluated
@@ -698,7 +708,10 @@ fn value_elem(v: &Value) -> Option<Elem> {
 /// negative 8/16-bit value sign-extends to a huge `usize`; wider values go
 /// through `try_from`, so no truncation on 16/32-bit targets).
 fn index_usize(v: TokenStream, elem: Option<Elem>, lo: i64) -> TokenStream {
-    let small = matches!(elem, Some(Elem::SINT | Elem::INT | Elem::USINT | Elem::UINT));
+    let small = matches!(
+        elem,
+        Some(Elem::SINT | Elem::INT | Elem::USINT | Elem::UINT)
+    );
     let wide = matches!(elem, Some(Elem::LINT | Elem::ULINT) | None);
     if lo == 0 && small {
         return quote!(#v as usize);
