@@ -45,6 +45,7 @@ struct Progs {
     ha: h::ArithLoop,
     gb: g::Blocks,
     hb: h::Blocks,
+    gl: g::BlocksLoop,
     gp: g::ArrayProc,
     hp: h::ArrayProc,
 }
@@ -59,6 +60,7 @@ impl Progs {
             ha: h::ArithLoop::default(),
             gb: g::Blocks::default(),
             hb: h::Blocks::default(),
+            gl: g::BlocksLoop::default(),
             gp: g::ArrayProc::default(),
             hp: h::ArrayProc::default(),
         };
@@ -66,6 +68,7 @@ impl Progs {
         p.hi.x = p.gi.x;
         p.gb.go = go();
         p.hb.go = p.gb.go;
+        p.gl.go = p.gb.go;
         p.gp.samples = samples();
         p.hp.samples = p.gp.samples;
         p
@@ -108,6 +111,26 @@ mod blocks {
         b.bench_local(|| {
             p.ctx.advance(TICK);
             black_box(&mut p.gb).call(black_box(&mut p.ctx))
+        });
+    }
+    #[divan::bench]
+    fn hand(b: Bencher) {
+        let mut p = Progs::new();
+        b.bench_local(|| {
+            p.ctx.advance(TICK);
+            black_box(&mut p.hb).call(black_box(&mut p.ctx))
+        });
+    }
+}
+
+mod blocks_loop {
+    use super::*;
+    #[divan::bench]
+    fn generated(b: Bencher) {
+        let mut p = Progs::new();
+        b.bench_local(|| {
+            p.ctx.advance(TICK);
+            black_box(&mut p.gl).call(black_box(&mut p.ctx))
         });
     }
     #[divan::bench]
@@ -200,6 +223,20 @@ fn ratios() {
         || {
             ctx2.advance(TICK);
             black_box(&mut pb.hb).call(black_box(&mut ctx2))
+        },
+    );
+    let mut pl = Progs::new();
+    let mut ctx3 = Cycle::new();
+    ab(
+        "blocks_loop",
+        500,
+        || {
+            pl.ctx.advance(TICK);
+            black_box(&mut pl.gl).call(black_box(&mut pl.ctx))
+        },
+        || {
+            ctx3.advance(TICK);
+            black_box(&mut pl.hb).call(black_box(&mut ctx3))
         },
     );
     ab(

@@ -17,5 +17,6 @@ pub mod generated {
     include!(concat!(env!("OUT_DIR"), "/arith_loop.rs"));
     include!(concat!(env!("OUT_DIR"), "/array_proc.rs"));
     include!(concat!(env!("OUT_DIR"), "/blocks.rs"));
+    include!(concat!(env!("OUT_DIR"), "/blocks_loop.rs"));
     include!(concat!(env!("OUT_DIR"), "/interlock.rs"));
 }

@@ -101,3 +101,27 @@ fn blocks_same_outputs() {
     }
     assert!(counted > 1000, "the counters count: {counted}");
 }
+
+#[test]
+fn blocks_loop_same_outputs() {
+    let mut rng = XorShift::new(3);
+    let (mut ca, mut cb) = (Cycle::new(), Cycle::new());
+    let (mut a, mut b) = (g::BlocksLoop::default(), h::Blocks::default());
+    let mut counted = 0;
+    for scan in 0..300 {
+        for k in 0..100 {
+            let v = rng.below(4) != 0;
+            a.go[k] = v;
+            b.go[k] = v;
+        }
+        a.reset = scan % 97 == 96;
+        b.reset = a.reset;
+        a.call(&mut ca);
+        b.call(&mut cb);
+        assert_eq!((a.done, a.count), (b.done, b.count), "scan {scan}");
+        counted += b.count.iter().filter(|&&c| c > 0).count();
+        ca.advance(TIME::from_ms(10));
+        cb.advance(TIME::from_ms(10));
+    }
+    assert!(counted > 1000, "the counters count: {counted}");
+}

@@ -36,6 +36,13 @@ impl SourceFile {
         }
     }
 
+    /// The 1-based line of a byte offset (what `line_col` gives, without
+    /// counting the column's characters).
+    pub fn line_of(&self, offset: u32) -> usize {
+        let offset = (offset as usize).min(self.text.len());
+        self.line_starts.partition_point(|&s| s <= offset)
+    }
+
     /// 1-based line and 1-based column (in characters) of a byte offset.
     pub fn line_col(&self, offset: u32) -> (usize, usize) {
         let offset = (offset as usize).min(self.text.len());

@@ -1,17 +1,19 @@
 //! Control flow: IL labels and jumps as structured Rust where possible.
 //!
 //! - No labels: straight-line code.
-//! - Only forward jumps: each jumped-to label closes a labelled block that
-//!   starts at the top of the body, so `JMP L` is `break 'L` from anywhere
-//!   before `L` (blocks nest because they all start at the top).
-//! - Any other pattern (backward jumps): a dispatcher loop over the code
-//!   between labels, `__pc` holding the next block.
+//! - Jumps that nest (see `structure`): a label reached by backward jumps
+//!   opens a labelled `loop` that ends after the last of them (`JMP L` is
+//!   `continue 'L`); a label reached by forward jumps closes a labelled block
+//!   that starts at the top of the innermost loop holding the jumps and the
+//!   label, or at the top of the body (`JMP L` is `break 'L`).
+//! - Any other pattern (a jump into a loop, overlapping loops): a dispatcher
+//!   loop over the code between labels, `__pc` holding the next block.
 
 use super::Pou;
 use crate::ast::PouKind;
-use crate::sema::ir::{Op, Stmt};
+use crate::sema::ir::{Op, PathElem, Stmt, Value};
 use crate::sema::types::Ty;
-use proc_macro2::{Ident, Punct, Spacing, Span, TokenStream};
+use proc_macro2::{Delimiter, Group, Ident, Punct, Spacing, Span, TokenStream, TokenTree};
 use quote::{format_ident, quote};
 
 /// Deeper nesting than this falls back to the dispatcher (rustc and
@@ -20,20 +22,109 @@ const MAX_NESTED_LABELS: usize = 128;
 
 enum Mode {
     Straight,
-    Blocks,
-    Dispatch { block_of_label: Vec<usize> },
+    /// Labelled blocks and loops (see [`structure`]); `label_pos` is the
+    /// position of each label in the body.
+    Structured {
+        label_pos: Vec<Option<usize>>,
+    },
+    Dispatch {
+        block_of_label: Vec<usize>,
+    },
+}
+
+/// A region of the body `[lo, hi)` that becomes a labelled block (forward
+/// jumps to the label at `hi` break out of it) or a labelled loop (backward
+/// jumps to the label at `lo` continue it).
+#[derive(Clone, Copy, Debug)]
+struct Region {
+    lo: usize,
+    hi: usize,
+    label: usize,
+    is_loop: bool,
+}
+
+/// The regions of a body, if jumps allow structured code: every loop runs
+/// from its label to the last backward jump to it; every forward jump's
+/// block starts at the start of the innermost loop that holds both the
+/// jump and its label (or at the top); all regions must nest. `None`: the
+/// dispatcher is needed (a jump into a loop, overlapping loops, too deep).
+fn structure(stmts: &[Stmt], label_pos: &[Option<usize>]) -> Option<Vec<Region>> {
+    let n_labels = label_pos.len();
+    let mut loop_end: Vec<Option<usize>> = vec![None; n_labels];
+    let mut fwd: Vec<Vec<usize>> = vec![Vec::new(); n_labels];
+    for (j, s) in stmts.iter().enumerate() {
+        if let Op::Jump { label, .. } = s.op {
+            let p = label_pos.get(label).copied().flatten()?;
+            if p < j {
+                loop_end[label] = Some(j + 1);
+            } else {
+                fwd[label].push(j);
+            }
+        }
+    }
+    let mut regions: Vec<Region> = Vec::new();
+    for (l, end) in loop_end.iter().enumerate() {
+        if let (Some(hi), Some(lo)) = (end, label_pos[l]) {
+            regions.push(Region {
+                lo,
+                hi: *hi,
+                label: l,
+                is_loop: true,
+            });
+        }
+    }
+    let loops = regions.clone();
+    for (l, js) in fwd.iter().enumerate() {
+        let (Some(&first), Some(hi)) = (js.iter().min(), label_pos[l]) else {
+            continue;
+        };
+        // The innermost loop holding every jump to `l` and `l` itself.
+        let lo = loops
+            .iter()
+            .filter(|r| r.lo <= first && hi < r.hi)
+            .map(|r| r.lo)
+            .max()
+            .unwrap_or(0);
+        regions.push(Region {
+            lo,
+            hi,
+            label: l,
+            is_loop: false,
+        });
+    }
+    // Outer regions first; of two equal ranges, the block is outside.
+    regions.sort_by_key(|r| (r.lo, std::cmp::Reverse(r.hi), r.is_loop));
+    // Nesting: each region lies inside or after the ones opened before it.
+    let mut open: Vec<usize> = Vec::new();
+    for r in &regions {
+        while open.last().is_some_and(|&hi| hi <= r.lo) {
+            open.pop();
+        }
+        if open.last().is_some_and(|&hi| r.hi > hi) {
+            return None;
+        }
+        open.push(r.hi);
+        if open.len() > MAX_NESTED_LABELS {
+            return None;
+        }
+    }
+    Some(regions)
 }
 
 fn label_lifetime(l: usize) -> TokenStream {
+    lifetime(&format!("__l{l}"))
+}
+
+fn loop_lifetime(l: usize) -> TokenStream {
+    lifetime(&format!("__c{l}"))
+}
+
+fn lifetime(name: &str) -> TokenStream {
     let mut t = TokenStream::new();
-    t.extend([proc_macro2::TokenTree::Punct(Punct::new(
-        '\'',
-        Spacing::Joint,
-    ))]);
-    t.extend([proc_macro2::TokenTree::Ident(Ident::new(
-        &format!("__l{l}"),
-        Span::call_site(),
-    ))]);
+    t.extend([
+        TokenTree::Punct(Punct::new('\'', Spacing::Joint)),
+        TokenTree::Ident(Ident::new(name, Span::call_site())),
+    ]);
     t
 }
 
@@ -58,21 +149,17 @@ impl Pou<'_> {
             v
         };
         let has_labels = label_pos.iter().any(Option::is_some);
-        let targets = stmts.iter().filter_map(|s| {
-            if let Op::Jump { label, .. } = s.op {
-                Some(label)
-            } else {
-                None
-            }
-        });
-        let forward_only = stmts.iter().enumerate().all(|(i, s)| match s.op {
-            Op::Jump { label, .. } => label_pos[label].is_some_and(|p| p > i),
-            _ => true,
-        });
+        let regions = if has_labels {
+            structure(stmts, &label_pos)
+        } else {
+            None
+        };
         let mode = if !has_labels {
             Mode::Straight
-        } else if forward_only && targets.count() <= MAX_NESTED_LABELS {
-            Mode::Blocks
+        } else if regions.is_some() {
+            Mode::Structured {
+                label_pos: label_pos.clone(),
+            }
         } else {
             let mut block_of_label = vec![0; self.pou.label_count];
             let mut b = 0;
@@ -84,44 +171,19 @@ impl Pou<'_> {
             }
             Mode::Dispatch { block_of_label }
         };
-        match &mode {
-            Mode::Straight => self.seq(stmts, &mode),
-            Mode::Blocks => {
-                let jumped: Vec<bool> = {
-                    let mut v = vec![false; self.pou.label_count];
-                    for s in stmts {
-                        if let Op::Jump { label, .. } = s.op {
-                            v[label] = true;
-                        }
-                    }
-                    v
-                };
-                let mut segments = stmts.split(|s| matches!(s.op, Op::Label(_)));
-                let mut acc = self.seq(segments.next().unwrap_or_default(), &mode);
-                let labels = stmts.iter().filter_map(|s| {
-                    if let Op::Label(l) = s.op {
-                        Some(l)
-                    } else {
-                        None
-                    }
-                });
-                for (l, seg) in labels.zip(segments) {
-                    let seg = self.seq(seg, &mode);
-                    acc = if jumped[l] {
-                        let lt = label_lifetime(l);
-                        quote!(#lt: { #acc } #seg)
-                    } else {
-                        quote!(#acc #seg)
-                    };
-                }
-                acc
+        match (&mode, regions) {
+            (Mode::Structured { .. }, Some(regions)) => {
+                let mut next = 0;
+                self.nested(stmts, 0, stmts.len(), &regions, &mut next, &mode)
             }
-            Mode::Dispatch { .. } => {
+            (Mode::Dispatch { .. }, _) => {
                 let segments: Vec<&[Stmt]> =
                     stmts.split(|s| matches!(s.op, Op::Label(_))).collect();
                 let last = segments.len() - 1;
+                let mut base = 0;
                 let arms = segments.iter().enumerate().map(|(k, seg)| {
-                    let code = self.seq(seg, &mode);
+                    let code = self.seq(seg, base, &mode);
+                    base += seg.len() + 1;
                     let ends = matches!(
                         seg.last(),
                         Some(Stmt {
@@ -139,6 +201,7 @@ impl Pou<'_> {
                     };
                     quote!(#k => { #code #tail })
                 });
+                let arms: Vec<_> = arms.collect();
                 quote! {
                     let mut __pc: usize = 0;
                     '__dispatch: loop {
@@ -149,19 +212,67 @@ impl Pou<'_> {
                     }
                 }
             }
+            _ => self.seq(stmts, 0, &mode),
         }
     }
 
-    fn seq(&self, stmts: &[Stmt], mode: &Mode) -> TokenStream {
+    /// Statements `[lo, hi)` with the regions that start at or after
+    /// `regions[*next]` and lie inside `[lo, hi)`, as nested blocks/loops.
+    fn nested(
+        &self,
+        stmts: &[Stmt],
+        lo: usize,
+        hi: usize,
+        regions: &[Region],
+        next: &mut usize,
+        mode: &Mode,
+    ) -> TokenStream {
+        let mut out = TokenStream::new();
+        let mut at = lo;
+        while let Some(r) = regions.get(*next).copied().filter(|r| r.lo < hi) {
+            *next += 1;
+            out.extend(self.seq(&stmts[at..r.lo], at, mode));
+            let inner = self.nested(stmts, r.lo, r.hi, regions, next, mode);
+            if r.is_loop {
+                let lt = loop_lifetime(r.label);
+                let mut body = inner;
+                // Falling off the end of the region leaves the loop.
+                if !matches!(
+                    stmts[r.hi - 1].op,
+                    Op::Jump { cond: None, .. } | Op::Return { cond: None }
+                ) {
+                    body.extend(quote!(break #lt;));
+                }
+                out.extend(lt);
+                out.extend([
+                    TokenTree::Punct(Punct::new(':', Spacing::Alone)),
+                    TokenTree::Ident(Ident::new("loop", Span::call_site())),
+                    TokenTree::Group(Group::new(Delimiter::Brace, body)),
+                ]);
+            } else {
+                out.extend(label_lifetime(r.label));
+                out.extend([
+                    TokenTree::Punct(Punct::new(':', Spacing::Alone)),
+                    TokenTree::Group(Group::new(Delimiter::Brace, inner)),
+                ]);
+            }
+            at = r.hi;
+        }
+        out.extend(self.seq(&stmts[at..hi], at, mode));
+        out
+    }
+
+    /// Straight-line statements; `base` is the position of the first in the body.
+    fn seq(&self, stmts: &[Stmt], base: usize, mode: &Mode) -> TokenStream {
         let mut out = TokenStream::new();
         let mut last_line = 0;
-        for s in stmts {
+        for (k, s) in stmts.iter().enumerate() {
             if self.opts.line_markers && s.line != last_line && s.line != 0 {
                 let n = proc_macro2::Literal::u32_unsuffixed(s.line);
                 out.extend(quote!(__il_line!(#n);));
                 last_line = s.line;
             }
-            out.extend(self.stmt(s, mode));
+            out.extend(self.stmt(s, base + k, mode));
         }
         out
     }
@@ -185,7 +296,7 @@ impl Pou<'_> {
         }
     }
 
-    fn stmt(&self, s: &Stmt, mode: &Mode) -> TokenStream {
+    fn stmt(&self, s: &Stmt, pos: usize, mode: &Mode) -> TokenStream {
         let line = s.line;
         match &s.op {
             Op::SetCr { ty, expr } => {
@@ -237,6 +348,33 @@ impl Pou<'_> {
                 externals,
                 cond,
             } => {
+                // An instance that is a plain path, with inputs that do not
+                // read it: set the inputs in place, call, copy the outputs.
+                if !inst
+                    .path
+                    .iter()
+                    .any(|e| matches!(e, PathElem::Index { .. }))
+                    && !inputs
+                        .iter()
+                        .any(|(_, v)| matches!(v, Value::Read(q) if q.root == inst.root))
+                {
+                    let path = self.simple_path(inst);
+                    let sets = inputs.iter().map(|(n, v)| {
+                        let f = super::rust_ident(n);
+                        let v = self.value(v, line);
+                        quote!(#path.#f = #v;)
+                    });
+                    let outs = outputs.iter().map(|(n, target, neg)| {
+                        let f = super::rust_ident(n);
+                        let v = quote!(#path.#f);
+                        self.write(target, if *neg { quote!(!#v) } else { v }, line)
+                    });
+                    return self.cond(
+                        cond,
+                        line,
+                        quote!({ #(#sets)* #path.call(__ctx); #(#outs)* }),
+                    );
+                }
                 // Inputs are evaluated before the instance is borrowed.
                 let ids: Vec<_> = (0..inputs.len())
                     .map(|k| format_ident!("__in{}", k))
@@ -286,16 +424,24 @@ impl Pou<'_> {
                         let b = block_of_label[*label];
                         quote!(__pc = #b; continue '__dispatch;)
                     }
-                    _ => {
-                        let lt = label_lifetime(*label);
-                        quote!(break #lt;)
+                    Mode::Structured { label_pos } => {
+                        if label_pos[*label].is_some_and(|p| p < pos) {
+                            let lt = loop_lifetime(*label);
+                            quote!(continue #lt;)
+                        } else {
+                            let lt = label_lifetime(*label);
+                            quote!(break #lt;)
+                        }
                     }
+                    Mode::Straight => quote!(),
                 };
                 self.cond(cond, line, go)
             }
             Op::Return { cond } => {
                 let r = if self.pou.kind == PouKind::Function {
                     quote!(return __ret;)
+                } else if self.has_cached() {
+                    quote!(break '__body;)
                 } else {
                     quote!(return;)
                 };

@@ -54,10 +54,20 @@ pub(crate) fn serde_field(t: &Ty, opts: Options) -> TokenStream {
 
 /// Emit every POU of a checked program.
 pub fn program(p: &Program, opts: Options) -> TokenStream {
-    let types = p.types.iter().map(|t| emit_type(t, opts));
-    let items = p.pous.iter().map(|pou| emit_pou(pou, opts));
-    let configs = p.configs.iter().map(|c| config::emit_config(c, opts));
-    quote!(#(#types)* #(#items)* #(#configs)*)
+    // Streams are moved into the result, never interpolated: `quote!`'s
+    // `#stream` copies every token (and, in proc-macro2's fallback, every
+    // identifier's string), which for large POUs dominated emit time.
+    let mut out = TokenStream::new();
+    out.extend(p.types.iter().map(|t| emit_type(t, opts)));
+    out.extend(p.pous.iter().map(|pou| emit_pou(pou, opts)));
+    out.extend(p.configs.iter().map(|c| config::emit_config(c, opts)));
+    out
+}
+
+/// `{ tokens }` as one token tree: interpolating it clones a reference to
+/// the inner stream, not the tokens.
+pub(crate) fn braced(tokens: TokenStream) -> proc_macro2::Group {
+    proc_macro2::Group::new(proc_macro2::Delimiter::Brace, tokens)
 }
 
 /// The Rust type of an IEC type; user FBs are items beside the generated code.
@@ -89,6 +99,18 @@ impl Pou<'_> {
         self.pou.kind != PouKind::Function
             && !matches!(v.kind, VarKind::Temp | VarKind::InOut | VarKind::External)
             && v.location.is_none()
+    }
+
+    /// Whether variable `i` (an elementary value in `self`) is copied into a
+    /// local for the duration of the call and written back at its end, so
+    /// that it can live in a register: nothing else can see `self` meanwhile.
+    fn cached(&self, i: usize) -> bool {
+        let v = &self.pou.vars[i];
+        self.in_self(i) && v.edge.is_none() && matches!(v.ty, Ty::Elem(_))
+    }
+
+    fn has_cached(&self) -> bool {
+        (0..self.pou.vars.len()).any(|i| self.cached(i))
     }
 }
 
@@ -171,16 +193,18 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                     let init = values::init_value(&v.ty, v.init.as_ref());
                     quote!(*#id = #init;)
                 });
+            let mut inner = quote! {
+                let mut __ret: #ret_ty = #ret_default;
+                #(#out_inits)*
+                #locals
+            };
+            inner.extend(body);
+            inner.extend(quote!(__ret));
+            let block = braced(inner);
             quote! {
                 #[doc = #doc]
                 #allow
-                pub fn #name(__ctx: &mut ::il_std::Cycle, #(#params,)* #(#inouts,)* #(#outs,)*) -> #ret_ty {
-                    let mut __ret: #ret_ty = #ret_default;
-                    #(#out_inits)*
-                    #locals
-                    #body
-                    __ret
-                }
+                pub fn #name(__ctx: &mut ::il_std::Cycle, #(#params,)* #(#inouts,)* #(#outs,)*) -> #ret_ty #block
             }
         }
         PouKind::FunctionBlock | PouKind::Program => {
@@ -230,6 +254,34 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                     }
                 }
             });
+            let cached: Vec<_> = (0..pou.vars.len())
+                .filter(|i| p.cached(*i))
+                .map(|i| &pou.vars[i])
+                .collect();
+            let loads = cached.iter().map(|v| {
+                let (id, l) = (rust_ident(&v.name), names::cache_ident(&v.name));
+                let ty = rust_ty(&v.ty);
+                quote!(let mut #l: #ty = self.#id;)
+            });
+            let stores = cached.iter().map(|v| {
+                let (id, l) = (rust_ident(&v.name), names::cache_ident(&v.name));
+                quote!(self.#id = #l;)
+            });
+            // RET leaves the labelled block, so the values are written back.
+            let body = if cached.is_empty() {
+                body
+            } else {
+                let mut t = quote!('__body:);
+                t.extend([proc_macro2::TokenTree::Group(proc_macro2::Group::new(
+                    proc_macro2::Delimiter::Brace,
+                    body,
+                ))]);
+                t.extend(quote!(#(#stores)*));
+                t
+            };
+            let mut inner = quote!(#(#edge_lets)* #(#loads)* #locals);
+            inner.extend(body);
+            let block = braced(inner);
             let addresses = addresses(pou);
             let method_doc = if pou.kind == PouKind::Program {
                 " Run one scan."
@@ -306,11 +358,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
 
                     #[doc = #method_doc]
                     #allow
-                    pub fn call(&mut self, __ctx: &mut ::il_std::Cycle, #(#inouts,)* #ext_param) {
-                        #(#edge_lets)*
-                        #locals
-                        #body
-                    }
+                    pub fn call(&mut self, __ctx: &mut ::il_std::Cycle, #(#inouts,)* #ext_param) #block
                 }
 
                 #trait_impl

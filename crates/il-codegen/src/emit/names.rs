@@ -96,6 +96,14 @@ pub fn local_ident(name: &str) -> Ident {
     Ident::new(&format!("__v_{name}"), Span::call_site())
 }
 
+/// The local that holds an FB/PROGRAM variable during a call.
+pub fn cache_ident(name: &str) -> Ident {
+    if !is_ident(name) {
+        return rust_ident(name);
+    }
+    Ident::new(&format!("__s_{name}"), Span::call_site())
+}
+
 /// `[A-Za-z_][A-Za-z0-9_]*`, not `_` alone.
 fn is_ident(name: &str) -> bool {
     let mut chars = name.chars();

@@ -9,7 +9,12 @@ use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
 pub(crate) fn cr_ident(t: &Ty) -> proc_macro2::Ident {
-    format_ident!("__cr_{}", t.mangle())
+    // One of the most frequent identifiers: no `format_ident!` machinery.
+    let name = match t {
+        Ty::Elem(e) => ["__cr_", e.mangle()].concat(),
+        _ => format!("__cr_{}", t.mangle()),
+    };
+    proc_macro2::Ident::new(&name, proc_macro2::Span::call_site())
 }
 
 /// A typed constant.
@@ -190,7 +195,10 @@ impl Pou<'_> {
                     let id = rust_ident(&format!("__edge_{}", v.name));
                     return quote!(#id);
                 }
-                if self.in_self(*i) {
+                if self.cached(*i) {
+                    let id = super::names::cache_ident(&v.name);
+                    quote!(#id)
+                } else if self.in_self(*i) {
                     let id = rust_ident(&v.name);
                     quote!(self.#id)
                 } else if v.kind == VarKind::External {
@@ -214,59 +222,115 @@ impl Pou<'_> {
         p.path.iter().any(|e| matches!(e, PathElem::Index { .. }))
     }
 
-    /// `let __ix_k = ...;` for every subscript, evaluated before any borrow.
-    fn subscripts(&self, p: &Place, line: u32) -> (TokenStream, Vec<proc_macro2::Ident>) {
+    /// Walk an indexed place: `on_place` gets the Rust place expression at
+    /// the end of the path (the reference bound by the innermost `match` is
+    /// `*__pK`); `on_fault` is what each out-of-range branch evaluates to.
+    ///
+    /// A literal subscript inside the bounds (checked here, whatever the
+    /// checker did) is a plain `[k]`, which cannot fail. Any other subscript
+    /// becomes `match place.get(i) { Some(__pK) => ..., None => fault }`, with
+    /// `i` a `usize` that is out of range for every value outside the bounds.
+    /// Subscripts that could conflict with the borrow are evaluated first
+    /// into `let`s (they may read the same variable or record a fault).
+    fn access(
+        &self,
+        p: &Place,
+        mutable: bool,
+        line: u32,
+        on_place: impl FnOnce(TokenStream) -> TokenStream,
+        on_fault: TokenStream,
+    ) -> TokenStream {
         let mut lets = TokenStream::new();
-        let mut ids = Vec::new();
-        for e in &p.path {
-            if let PathElem::Index { dims, subs } = e {
-                for (s, (lo, _)) in subs.iter().zip(dims) {
-                    let id = format_ident!("__ix{}", ids.len());
-                    let v = self.value(s, line);
-                    lets.extend(quote!(let #id: ::core::option::Option<usize> = usize::try_from((#v as i64).wrapping_sub(#lo)).ok();));
-                    ids.push(id);
-                }
-            }
-        }
-        (lets, ids)
-    }
-
-    /// An `Option<&T>` / `Option<&mut T>` chain down an indexed path.
-    fn chain(&self, p: &Place, ids: &[proc_macro2::Ident], mutable: bool) -> TokenStream {
-        let root = self.root(&p.root);
-        let mut chain = if mutable {
-            quote!(::core::option::Option::Some(&mut #root))
-        } else {
-            quote!(::core::option::Option::Some(&#root))
-        };
-        let mut k = 0;
+        // (binding, scrutinee) of each `match`, outermost first.
+        let mut matches: Vec<(proc_macro2::Ident, TokenStream)> = Vec::new();
+        let mut cur = self.root(&p.root);
+        // Whether `cur` is exactly the innermost binding (a reference).
+        let mut at_binding = false;
+        let mut n_lets: usize = 0;
         for e in &p.path {
             match e {
                 PathElem::Field(f) => {
                     let f = rust_ident(f);
-                    chain = if mutable {
-                        quote!(#chain.map(|__x| &mut __x.#f))
-                    } else {
-                        quote!(#chain.map(|__x| &__x.#f))
-                    };
+                    cur = quote!(#cur.#f);
+                    at_binding = false;
                 }
-                PathElem::Index { subs, .. } => {
-                    for _ in subs {
-                        let id = &ids[k];
-                        k += 1;
-                        chain = if mutable {
-                            quote!(#chain.and_then(|__x| #id.and_then(|__i| __x.get_mut(__i))))
+                PathElem::Index { dims, subs } => {
+                    for (s, &(lo, hi)) in subs.iter().zip(dims) {
+                        if let Value::Const(Const::Int(n, _)) = s
+                            && *n >= lo as i128
+                            && *n <= hi as i128
+                        {
+                            let k = (*n - lo as i128) as usize;
+                            cur = quote!(#cur[#k]);
+                            at_binding = false;
+                            continue;
+                        }
+                        let ix = if self.inline_subscript(s, p, matches.is_empty()) {
+                            index_usize(self.value(s, line), value_elem(s), lo)
                         } else {
-                            quote!(#chain.and_then(|__x| #id.and_then(|__i| __x.get(__i))))
+                            let id = format_ident!("__ix{}", n_lets);
+                            n_lets += 1;
+                            let v = index_usize(self.value(s, line), value_elem(s), lo);
+                            lets.extend(quote!(let #id: usize = #v;));
+                            quote!(#id)
                         };
+                        let b = format_ident!("__p{}", matches.len());
+                        let scrutinee = if mutable {
+                            quote!(#cur.get_mut(#ix))
+                        } else {
+                            quote!(#cur.get(#ix))
+                        };
+                        matches.push((b.clone(), scrutinee));
+                        cur = quote!(#b);
+                        at_binding = true;
                     }
                 }
             }
         }
-        chain
+        // `__pK` alone is a reference; with a path after it, auto-deref applies.
+        let place = if at_binding { quote!(*#cur) } else { cur };
+        let mut out = on_place(place);
+        for (b, scrutinee) in matches.into_iter().rev() {
+            out = quote!(match #scrutinee {
+                ::core::option::Option::Some(#b) => #out,
+                ::core::option::Option::None => #on_fault,
+            });
+        }
+        if lets.is_empty() {
+            out
+        } else {
+            quote!({ #lets #out })
+        }
     }
 
-    fn simple_path(&self, p: &Place) -> TokenStream {
+    /// Whether some subscript of the place is checked at run time (not a
+    /// literal inside the bounds).
+    fn checked_index(p: &Place) -> bool {
+        p.path.iter().any(|e| {
+            match e {
+            PathElem::Index { dims, subs } => subs.iter().zip(dims).any(|(s, &(lo, hi))| {
+                !matches!(s, Value::Const(Const::Int(n, _)) if *n >= lo as i128 && *n <= hi as i128)
+            }),
+            PathElem::Field(_) => false,
+        }
+        })
+    }
+
+    /// Whether a subscript can be evaluated inside the `match` scrutinee:
+    /// it records no fault and reads nothing that the borrow of the place
+    /// (at the first level: a two-phase borrow, so any read is fine) holds.
+    fn inline_subscript(&self, s: &Value, p: &Place, first: bool) -> bool {
+        match s {
+            Value::Cr(_) | Value::Const(_) | Value::Saved(..) => true,
+            Value::Read(q) => {
+                !Self::has_index(q)
+                    && (first || q.root != p.root)
+                    && !matches!(q.root, Root::Addr(_))
+            }
+        }
+    }
+
+    pub(crate) fn simple_path(&self, p: &Place) -> TokenStream {
         let mut t = self.root(&p.root);
         for e in &p.path {
             if let PathElem::Field(f) = e {
@@ -284,17 +348,9 @@ impl Pou<'_> {
         if !Self::has_index(p) {
             return self.simple_path(p);
         }
-        let (lets, ids) = self.subscripts(p, line);
-        let chain = self.chain(p, &ids, false);
         let fault = self.fault("IndexOutOfRange", line);
         let d = default_value(&p.ty);
-        quote!({
-            #lets
-            match #chain {
-                ::core::option::Option::Some(__v) => *__v,
-                ::core::option::Option::None => { #fault; #d }
-            }
-        })
+        self.access(p, false, line, |place| place, quote!({ #fault; #d }))
     }
 
     /// Store `value` (already evaluated tokens) into a place.
@@ -306,17 +362,32 @@ impl Pou<'_> {
             let path = self.simple_path(p);
             return quote!(#path = #value;);
         }
-        let (lets, ids) = self.subscripts(p, line);
-        let chain = self.chain(p, &ids, true);
         let fault = self.fault("IndexOutOfRange", line);
-        quote!({
-            let __v = #value;
-            #lets
-            match #chain {
-                ::core::option::Option::Some(__slot) => *__slot = __v,
-                ::core::option::Option::None => #fault,
-            }
-        })
+        let access = |v: TokenStream| {
+            self.access(
+                p,
+                true,
+                line,
+                |place| quote!({ #place = #v; }),
+                quote!({ #fault; }),
+            )
+        };
+        // A value of one or two plain tokens (`__cr_int`, `!__cr_bool`, a
+        // literal) goes straight into the slot; anything else is evaluated
+        // before the place is borrowed.
+        let plain = {
+            let mut n = 0;
+            value.clone().into_iter().all(|t| {
+                n += 1;
+                n <= 2 && !matches!(t, proc_macro2::TokenTree::Group(_))
+            })
+        };
+        if plain || !Self::checked_index(p) {
+            access(value)
+        } else {
+            let a = access(quote!(__v));
+            quote!({ let __v = #value; #a })
+        }
     }
 
     /// Run `f` on the FB instance at `p` (`__fb` in the tokens of `f`).
@@ -325,16 +396,14 @@ impl Pou<'_> {
             let path = self.simple_path(p);
             return quote!({ let __fb = &mut #path; #body });
         }
-        let (lets, ids) = self.subscripts(p, line);
-        let chain = self.chain(p, &ids, true);
         let fault = self.fault("IndexOutOfRange", line);
-        quote!({
-            #lets
-            match #chain {
-                ::core::option::Option::Some(__fb) => { #body }
-                ::core::option::Option::None => #fault,
-            }
-        })
+        self.access(
+            p,
+            true,
+            line,
+            |place| quote!({ let __fb = &mut #place; #body }),
+            quote!({ #fault; }),
+        )
     }
 
     pub(crate) fn expr(&self, e: &Expr, line: u32) -> TokenStream {
@@ -356,7 +425,10 @@ impl Pou<'_> {
                 if *negate_rhs {
                     r = quote!(!#r);
                 }
-                self.binary(*op, ty, l, r, line)
+                // A literal divisor other than 0 needs no zero check.
+                let nonzero =
+                    !*negate_rhs && matches!(rhs, Value::Const(Const::Int(n, _)) if *n != 0);
+                self.binary(*op, ty, l, r, nonzero, line)
             }
             Expr::TimeScale {
                 div,
@@ -619,7 +691,15 @@ impl Pou<'_> {
         (lets, args, back)
     }
 
-    fn binary(&self, op: BinOp, ty: &Ty, l: TokenStream, r: TokenStream, line: u32) -> TokenStream {
+    fn binary(
+        &self,
+        op: BinOp,
+        ty: &Ty,
+        l: TokenStream,
+        r: TokenStream,
+        nonzero: bool,
+        line: u32,
+    ) -> TokenStream {
         let e = ty.elem();
         let int = e.is_some_and(|e| e.is_int() || e.is_bitstring());
         let dur = e.filter(|e| e.is_duration()).map(Elem::rust);
@@ -644,6 +724,8 @@ impl Pou<'_> {
             BinOp::Add if int => quote!(#l.wrapping_add(#r)),
             BinOp::Sub if int => quote!(#l.wrapping_sub(#r)),
             BinOp::Mul if int => quote!(#l.wrapping_mul(#r)),
+            BinOp::Div if int && nonzero => quote!(#l.wrapping_div(#r)),
+            BinOp::Mod if int && nonzero => quote!(#l.wrapping_rem(#r)),
             BinOp::Div | BinOp::Mod if int => {
                 let fault = self.fault("DivisionByZero", line);
                 let f = if op == BinOp::Div {
@@ -663,6 +745,39 @@ impl Pou<'_> {
             BinOp::Mod => quote!(#l % #r),
         }
     }
+}
+
+/// The element type of a subscript value.
+fn value_elem(v: &Value) -> Option<Elem> {
+    match v {
+        Value::Cr(t) | Value::Saved(_, t) => t.elem(),
+        Value::Const(c) => c.ty().elem(),
+        Value::Read(p) => p.ty.elem(),
+    }
+}
+
+/// A subscript as a `usize` position in an array whose first index is `lo`:
+/// every value outside the array maps to a position past its end (a
+/// negative 8/16-bit value sign-extends to a huge `usize`; wider values go
+/// through `try_from`, so no truncation on 16/32-bit targets).
+fn index_usize(v: TokenStream, elem: Option<Elem>, lo: i64) -> TokenStream {
+    let small = matches!(
+        elem,
+        Some(Elem::SINT | Elem::INT | Elem::USINT | Elem::UINT)
+    );
+    let wide = matches!(elem, Some(Elem::LINT | Elem::ULINT) | None);
+    if lo == 0 && small {
+        return quote!(#v as usize);
+    }
+    let off = if lo == 0 {
+        v
+    } else if wide {
+        let lo = lo as i128;
+        quote!((#v as i128 - #lo))
+    } else {
+        quote!((#v as i64).wrapping_sub(#lo))
+    };
+    quote!(usize::try_from(#off).unwrap_or(usize::MAX))
 }
 
 fn area(l: &Loc) -> TokenStream {

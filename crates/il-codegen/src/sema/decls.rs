@@ -138,7 +138,17 @@ pub(crate) struct PouSig {
 
 impl PouSig {
     pub fn var(&self, name: &str) -> Option<(usize, &Var)> {
-        let i = *self.index.get(&name.to_ascii_uppercase())?;
+        // Called for every variable reference: upper-case short names on
+        // the stack instead of allocating a String per lookup.
+        let mut buf = [0u8; 64];
+        let i = match buf.get_mut(..name.len()) {
+            Some(b) => {
+                b.copy_from_slice(name.as_bytes());
+                b.make_ascii_uppercase();
+                *self.index.get(std::str::from_utf8(b).ok()?)?
+            }
+            None => *self.index.get(&name.to_ascii_uppercase())?,
+        };
         Some((i, &self.vars[i]))
     }
     /// Inputs in declaration order (what a non-formal call fills).

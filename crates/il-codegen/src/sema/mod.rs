@@ -85,7 +85,7 @@ pub(crate) struct Cx<'a> {
 
 impl Cx<'_> {
     pub fn line(&self, span: Span) -> u32 {
-        self.file.line_col(span.lo).0 as u32
+        self.file.line_of(span.lo) as u32
     }
     pub fn err(
         &mut self,

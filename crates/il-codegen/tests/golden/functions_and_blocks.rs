@@ -24,15 +24,7 @@ pub fn Scale(__ctx: &mut ::il_std::Cycle, mut __v_raw: i16, mut __v_span: i16) -
     __cr_int = __cr_int.wrapping_add(1i16);
     __cr_int = __save_0.wrapping_mul(__cr_int);
     // 9: DIV  100
-    __cr_int = {
-        let __d = 100i16;
-        if __d == 0 {
-            __ctx.fault(::il_std::FaultKind::DivisionByZero, "Scale", 9u32);
-            0
-        } else {
-            __cr_int.wrapping_div(__d)
-        }
-    };
+    __cr_int = __cr_int.wrapping_div(100i16);
     // 10: ST   Scale
     __ret = __cr_int;
     __ret
@@ -84,51 +76,55 @@ impl Filler {
         clippy::all
     )]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
+        let mut __s_level: i16 = self.level;
+        let mut __s_start: bool = self.start;
+        let mut __s_valve: bool = self.valve;
+        let mut __s_slot: i16 = self.slot;
         let mut __cr_int: i16 = 0i16;
         let mut __cr_bool: bool = false;
-        // 17: CAL  delay(IN := start, PT := T#2s)
-        {
-            let __in0 = self.start;
-            let __in1 = ::il_std::TIME(2000000000i64);
+        '__body: {
+            // 17: CAL  delay(IN := start, PT := T#2s)
             {
-                let __fb = &mut self.delay;
-                __fb.IN = __in0;
-                __fb.PT = __in1;
-                __fb.call(__ctx);
+                self.delay.IN = __s_start;
+                self.delay.PT = ::il_std::TIME(2000000000i64);
+                self.delay.call(__ctx);
             }
-        }
-        // 18: LD   level
-        __cr_int = self.level;
-        // 19: Scale 10
-        __cr_int = {
-            let __a0 = __cr_int;
-            let __a1 = 10i16;
-            Scale(__ctx, __a0, __a1)
-        };
-        // 20: LIMIT 0, 100
-        __cr_int = ::il_std::func::LIMIT(__cr_int, 0i16, 100i16);
-        // 21: ST   history[slot]
-        {
-            let __v = __cr_int;
-            let __ix0: ::core::option::Option<usize> = usize::try_from(
-                    (self.slot as i64).wrapping_sub(1i64),
+            // 18: LD   level
+            __cr_int = __s_level;
+            // 19: Scale 10
+            __cr_int = {
+                let __a0 = __cr_int;
+                let __a1 = 10i16;
+                Scale(__ctx, __a0, __a1)
+            };
+            // 20: LIMIT 0, 100
+            __cr_int = ::il_std::func::LIMIT(__cr_int, 0i16, 100i16);
+            // 21: ST   history[slot]
+            match self
+                .history
+                .get_mut(
+                    usize::try_from((__s_slot as i64).wrapping_sub(1i64))
+                        .unwrap_or(usize::MAX),
                 )
-                .ok();
-            match ::core::option::Option::Some(&mut self.history)
-                .and_then(|__x| __ix0.and_then(|__i| __x.get_mut(__i)))
             {
-                ::core::option::Option::Some(__slot) => *__slot = __v,
+                ::core::option::Option::Some(__p0) => {
+                    *__p0 = __cr_int;
+                }
                 ::core::option::Option::None => {
-                    __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Filler", 21u32)
+                    __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Filler", 21u32);
                 }
             }
+            // 22: LT   80
+            __cr_bool = __cr_int < 80i16;
+            // 23: AND  delay.Q
+            __cr_bool = __cr_bool & self.delay.Q;
+            // 24: ST   valve
+            __s_valve = __cr_bool;
         }
-        // 22: LT   80
-        __cr_bool = __cr_int < 80i16;
-        // 23: AND  delay.Q
-        __cr_bool = __cr_bool & self.delay.Q;
-        // 24: ST   valve
-        self.valve = __cr_bool;
+        self.level = __s_level;
+        self.start = __s_start;
+        self.valve = __s_valve;
+        self.slot = __s_slot;
     }
 }
 impl ::il_std::FunctionBlock for Filler {

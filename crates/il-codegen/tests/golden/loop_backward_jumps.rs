@@ -18,51 +18,39 @@ pub fn SumTo(__ctx: &mut ::il_std::Cycle, mut __v_n: i32) -> i32 {
     let mut __cr_bool: bool = false;
     let mut __v_i: i32 = 0i32;
     let mut __v_acc: i32 = 0i32;
-    let mut __pc: usize = 0;
-    '__dispatch: loop {
-        match __pc {
-            0usize => {
-                // 5: LD   0
-                // 6: ST   acc
-                __v_acc = 0i32;
-                // 7: ST   i
-                __v_i = 0i32;
-                __cr_dint = 0i32;
-                __pc = 1usize;
+    '__l1: {
+        // 5: LD   0
+        // 6: ST   acc
+        __v_acc = 0i32;
+        // 7: ST   i
+        __v_i = 0i32;
+        __cr_dint = 0i32;
+        '__c0: loop {
+            // 8: next:   LD   i
+            __cr_dint = __v_i;
+            // 9: GE   n
+            __cr_bool = __cr_dint >= __v_n;
+            // 10: JMPC done
+            if __cr_bool {
+                break '__l1;
             }
-            1usize => {
-                // 8: next:   LD   i
-                __cr_dint = __v_i;
-                // 9: GE   n
-                __cr_bool = __cr_dint >= __v_n;
-                // 10: JMPC done
-                if __cr_bool {
-                    __pc = 2usize;
-                    continue '__dispatch;
-                }
-                // 11: LD   i
-                __cr_dint = __v_i;
-                // 12: ADD  1
-                __cr_dint = __cr_dint.wrapping_add(1i32);
-                // 13: ST   i
-                __v_i = __cr_dint;
-                // 14: ADD  acc
-                __cr_dint = __cr_dint.wrapping_add(__v_acc);
-                // 15: ST   acc
-                __v_acc = __cr_dint;
-                // 16: JMP  next
-                __pc = 1usize;
-                continue '__dispatch;
-            }
-            2usize => {
-                // 17: done:   LD   acc
-                __cr_dint = __v_acc;
-                // 18: ST   SumTo
-                __ret = __cr_dint;
-                break '__dispatch;
-            }
-            _ => break '__dispatch,
+            // 11: LD   i
+            __cr_dint = __v_i;
+            // 12: ADD  1
+            __cr_dint = __cr_dint.wrapping_add(1i32);
+            // 13: ST   i
+            __v_i = __cr_dint;
+            // 14: ADD  acc
+            __cr_dint = __cr_dint.wrapping_add(__v_acc);
+            // 15: ST   acc
+            __v_acc = __cr_dint;
+            // 16: JMP  next
+            continue '__c0;
         }
     }
+    // 17: done:   LD   acc
+    __cr_dint = __v_acc;
+    // 18: ST   SumTo
+    __ret = __cr_dint;
     __ret
 }

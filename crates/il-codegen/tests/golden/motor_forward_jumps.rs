@@ -44,39 +44,46 @@ impl Motor {
         clippy::all
     )]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
+        let mut __s_start: bool = self.start;
+        let mut __s_stop: bool = self.stop;
+        let mut __s_run: bool = self.run;
+        let mut __s_starts: i16 = self.starts;
         let mut __cr_bool: bool = false;
         let mut __cr_int: i16 = 0i16;
-        '__l0: {
-            // 14: LD   start
-            __cr_bool = self.start;
-            // 15: OR   run
-            __cr_bool = __cr_bool | self.run;
-            // 16: ANDN stop
-            __cr_bool = __cr_bool & !self.stop;
-            // 17: ST   run
-            self.run = __cr_bool;
-            // 18: CLK  edge       (* count rising edges of run *)
-            {
-                let __in0 = __cr_bool;
+        '__body: {
+            '__l0: {
+                // 14: LD   start
+                __cr_bool = __s_start;
+                // 15: OR   run
+                __cr_bool = __cr_bool | __s_run;
+                // 16: ANDN stop
+                __cr_bool = __cr_bool & !__s_stop;
+                // 17: ST   run
+                __s_run = __cr_bool;
+                // 18: CLK  edge       (* count rising edges of run *)
                 {
-                    let __fb = &mut self.edge;
-                    __fb.CLK = __in0;
-                    __fb.call(__ctx);
+                    self.edge.CLK = __cr_bool;
+                    self.edge.call(__ctx);
                 }
+                // 19: LD   edge.Q
+                __cr_bool = self.edge.Q;
+                // 20: JMPCN done
+                if !__cr_bool {
+                    break '__l0;
+                }
+                // 21: LD   starts
+                __cr_int = __s_starts;
+                // 22: ADD  1
+                __cr_int = __cr_int.wrapping_add(1i16);
+                // 23: ST   starts
+                __s_starts = __cr_int;
             }
-            // 19: LD   edge.Q
-            __cr_bool = self.edge.Q;
-            // 20: JMPCN done
-            if !__cr_bool {
-                break '__l0;
-            }
-            // 21: LD   starts
-            __cr_int = self.starts;
-            // 22: ADD  1
-            __cr_int = __cr_int.wrapping_add(1i16);
-            // 23: ST   starts
-            self.starts = __cr_int;
+            // 24: done:
         }
+        self.start = __s_start;
+        self.stop = __s_stop;
+        self.run = __s_run;
+        self.starts = __s_starts;
     }
 }
 impl ::il_std::FunctionBlock for Motor {
