@@ -348,6 +348,22 @@ impl Pou<'_> {
                 externals,
                 cond,
             } => {
+                let (io_lets, io_args, io_back) = self.bind_inouts(inouts, Some(inst), line);
+                let ext = (!externals.is_empty()).then(|| {
+                    let Ty::Fb(fb) = &inst.ty else {
+                        return quote!();
+                    };
+                    let st = super::names::ext_ident(fb);
+                    let fields = externals.iter().map(|(e, constant)| {
+                        let id = super::rust_ident(e);
+                        if *constant {
+                            quote!(#id: &*__ext.#id)
+                        } else {
+                            quote!(#id: &mut *__ext.#id)
+                        }
+                    });
+                    quote!(#st { #(#fields,)* })
+                });
                 // An instance that is a plain path, with inputs that do not
                 // read it: set the inputs in place, call, copy the outputs.
                 if !inst
@@ -372,7 +388,13 @@ impl Pou<'_> {
                     return self.cond(
                         cond,
                         line,
-                        quote!({ #(#sets)* #path.call(__ctx); #(#outs)* }),
+                        quote!({
+                            #(#sets)*
+                            #io_lets
+                            #path.call(__ctx, #(#io_args,)* #ext);
+                            #io_back
+                            #(#outs)*
+                        }),
                     );
                 }
                 // Inputs are evaluated before the instance is borrowed.
@@ -386,22 +408,6 @@ impl Pou<'_> {
                 let sets = inputs.iter().zip(&ids).map(|((n, _), id)| {
                     let f = super::rust_ident(n);
                     quote!(__fb.#f = #id;)
-                });
-                let (io_lets, io_args, io_back) = self.bind_inouts(inouts, Some(inst), line);
-                let ext = (!externals.is_empty()).then(|| {
-                    let Ty::Fb(fb) = &inst.ty else {
-                        return quote!();
-                    };
-                    let st = super::names::ext_ident(fb);
-                    let fields = externals.iter().map(|(e, constant)| {
-                        let id = super::rust_ident(e);
-                        if *constant {
-                            quote!(#id: &*__ext.#id)
-                        } else {
-                            quote!(#id: &mut *__ext.#id)
-                        }
-                    });
-                    quote!(#st { #(#fields,)* })
                 });
                 let call = self.with_fb(
                     inst,
