@@ -95,23 +95,26 @@ pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
     match (init, t) {
         (Some(Init::Const(c)), _) => constant(c),
         (Some(Init::Array(items)), Ty::Array { dims, elem }) => {
-            // A `match` on the flat index, with runs of equal values merged,
-            // keeps `[1000(0)]` small.
+            // A `match` on the flat index, one arm per run of equal values
+            // (neighbouring runs of one value merged), keeps `[1000(0)]` small.
             let mut arms = Vec::new();
-            let mut i = 0;
-            while i < items.len() {
-                let mut j = i;
-                while j + 1 < items.len() && items[j + 1] == items[i] {
-                    j += 1;
+            let mut start = 0usize;
+            let mut k = 0;
+            while k < items.len() {
+                let (mut n, v) = (items[k].0, &items[k].1);
+                while k + 1 < items.len() && items[k + 1].1 == *v {
+                    k += 1;
+                    n += items[k].0;
                 }
-                let v = constant(&items[i]);
-                let (a, b) = (i, j);
+                let (a, b) = (start, start + n - 1);
+                let v = constant(v);
                 arms.push(if a == b {
                     quote!(#a => #v,)
                 } else {
                     quote!(#a..=#b => #v,)
                 });
-                i = j + 1;
+                start += n;
+                k += 1;
             }
             let d = default_value(elem);
             let sizes: Vec<usize> = dims.iter().map(|(lo, hi)| (hi - lo + 1) as usize).collect();

@@ -400,8 +400,12 @@ impl Machine {
                 let mut v = self.default_of(t)?;
                 if let Value::Array(slots) = &mut v {
                     let d = self.default_of(elem)?;
-                    for (k, s) in slots.iter_mut().enumerate() {
-                        *s = items.get(k).map(Value::from_const).unwrap_or(d.clone());
+                    let mut values = items
+                        .iter()
+                        .flat_map(|(n, c)| std::iter::repeat_n(c, *n))
+                        .map(Value::from_const);
+                    for s in slots.iter_mut() {
+                        *s = values.next().unwrap_or_else(|| d.clone());
                     }
                 }
                 Ok(v)

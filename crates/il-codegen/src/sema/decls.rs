@@ -948,6 +948,9 @@ pub(crate) fn init_value(
         (Initializer::Array { elems, span }, Ty::Array { dims, elem }) => {
             let total: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
             let mut out = Vec::new();
+            // Each count is at most `total` (16 million): their sum over any
+            // source text fits an i64.
+            let mut len: i64 = 0;
             for (count, e) in elems {
                 let n = match count {
                     None => 1,
@@ -970,18 +973,16 @@ pub(crate) fn init_value(
                     }
                     return None;
                 };
-                for _ in 0..n {
-                    out.push(c.clone());
+                len += n;
+                if n > 0 {
+                    out.push((n as usize, c));
                 }
             }
-            if out.len() as i64 > total {
+            if len > total {
                 cx.err(
                     BAD_INIT,
                     *span,
-                    format!(
-                        "{} initial values for an array of {total} elements",
-                        out.len()
-                    ),
+                    format!("{len} initial values for an array of {total} elements"),
                 );
                 return None;
             }

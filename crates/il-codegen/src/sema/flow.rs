@@ -351,11 +351,15 @@ impl Walk<'_, '_> {
             Cr::Undef(Why::Start) => Class::Undef("no value loaded".into()),
             Cr::Undef(Why::Error) => Class::Error,
             Cr::Undef(Why::AfterCal(line)) => Class::Undef(format!("after CAL on line {line}")),
-            Cr::Undef(Why::Mixed(m)) => Class::Undef(
-                m.split_once('\u{0}')
-                    .map_or(m.as_str(), |x| x.1)
-                    .to_string(),
-            ),
+            // Only the label's name, not its own list of paths: that list
+            // may hold the lists of earlier labels, and with a label repeated
+            // (an error, but checked on) the text doubled at every join, to
+            // gigabytes for a 600-byte input (found by fuzzing the `il!`
+            // expansion, which checks sources with errors for its stubs).
+            Cr::Undef(Why::Mixed(m)) => Class::Undef(match m.split_once('\u{0}') {
+                Some((label, _)) => format!("the paths into `{label}` disagree"),
+                None => m.clone(),
+            }),
             Cr::Lit(LitClass::Int(v), _) => Class::LitInt(*v),
             Cr::Lit(LitClass::Real(..), _) => Class::LitReal,
             Cr::Lit(LitClass::Str(_, w), _) => Class::LitStr(*w),
