@@ -466,6 +466,7 @@ fn in_outs_and_externals() {
     assert!(boolean(&m, "swapped"));
     // lamp is located through the configuration: it is the process image.
     assert!(ctx.io.bit(il_std::Area::Output, 0, 0));
+}
 
 /// plc/string_funcs.il: what tests/std_funcs.rs asserts for the generated code.
 #[test]
