@@ -62,7 +62,13 @@ pub fn pipeline(data: &[u8]) {
     let file = source(data);
     macro_expansion(&file.text);
     let checked = il_codegen::check_source(&file);
-    let compiled = il_codegen::compile(&file, il_codegen::emit::Options { line_markers: true, ..Default::default() });
+    let compiled = il_codegen::compile(
+        &file,
+        il_codegen::emit::Options {
+            line_markers: true,
+            ..Default::default()
+        },
+    );
     let c = match compiled {
         Err(diags) => {
             assert!(
