@@ -307,26 +307,7 @@ fn retain_items(c: &ConfigDef, name: &proc_macro2::Ident, opts: super::Options) 
         " The RETAIN state of CONFIGURATION `{}`: what a host saves before power-off and restores at a warm start.",
         c.name
     );
-    let serde = super::serde_derive(opts);
-    quote! {
-        #[doc = #doc]
-        #[derive(Clone, Debug, PartialEq)]
-        #serde
-        #[allow(non_snake_case, non_camel_case_types)]
-        pub struct #st { #(#fields)* }
-
-        #[allow(clippy::all)]
-        impl #name {
-            /// A snapshot of every RETAIN variable of the configuration.
-            pub fn retain(&self) -> #st {
-                #st { #(#takes)* }
-            }
-            /// Puts a snapshot back (a warm start); other variables keep their values.
-            pub fn restore(&mut self, s: &#st) {
-                #(#puts)*
-            }
-        }
-    }
+    super::snapshot_item(name, &st, &doc, (fields, takes, puts), opts)
 }
 
 /// Fields and initialisers for globals (not located: those are in the

@@ -422,6 +422,18 @@ fn retain_items(pou: &CheckedPou, opts: Options) -> TokenStream {
         " The RETAIN variables of `{}` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.",
         pou.name
     );
+    snapshot_item(&name, &st, &doc, (fields, takes, puts), opts)
+}
+
+/// A RETAIN snapshot struct `st` and `retain()`/`restore()` on `owner`, from
+/// the fields, their `retain()` initialisers and their `restore()` statements.
+pub(crate) fn snapshot_item(
+    owner: &proc_macro2::Ident,
+    st: &proc_macro2::Ident,
+    doc: &str,
+    (fields, takes, puts): (Vec<TokenStream>, Vec<TokenStream>, Vec<TokenStream>),
+    opts: Options,
+) -> TokenStream {
     let serde = serde_derive(opts);
     quote! {
         #[doc = #doc]
@@ -431,7 +443,7 @@ fn retain_items(pou: &CheckedPou, opts: Options) -> TokenStream {
         pub struct #st { #(#fields)* }
 
         #[allow(clippy::all)]
-        impl #name {
+        impl #owner {
             /// A snapshot of the RETAIN variables.
             pub fn retain(&self) -> #st {
                 #st { #(#takes)* }
