@@ -1949,16 +1949,8 @@ impl Walk<'_, '_> {
             };
             values.push(v);
         }
-        self.push(Op::SetCr {
-            ty: res.ret.clone(),
-            expr: Expr::CallStd {
-                call: res.call,
-                args: values,
-                arg_types: res.params,
-                ret: res.ret.clone(),
-            },
-        });
-        Some((Value::Cr(res.ret.clone()), res.ret))
+        let ret = self.push_std_call(res, values);
+        Some((Value::Cr(ret.clone()), ret))
     }
 
     /// A literal (or pending call) as a value of type `ty`.
@@ -1979,6 +1971,21 @@ impl Walk<'_, '_> {
                 None
             }
         }
+    }
+
+    /// `CR := F(values)` for a resolved standard function; the CR's type.
+    fn push_std_call(&mut self, res: stdfn::Resolved, values: Vec<Value>) -> Ty {
+        let ret = res.ret.clone();
+        self.push(Op::SetCr {
+            ty: ret.clone(),
+            expr: Expr::CallStd {
+                call: res.call,
+                args: values,
+                arg_types: res.params,
+                ret: res.ret,
+            },
+        });
+        ret
     }
 
     fn std_call(&mut self, key: &str, argv: Vec<(Arg, Span)>, span: Span) -> Cr {
@@ -2020,16 +2027,7 @@ impl Walk<'_, '_> {
                     };
                     values.push(v);
                 }
-                self.push(Op::SetCr {
-                    ty: res.ret.clone(),
-                    expr: Expr::CallStd {
-                        call: res.call,
-                        args: values,
-                        arg_types: res.params,
-                        ret: res.ret.clone(),
-                    },
-                });
-                Cr::Val(res.ret)
+                Cr::Val(self.push_std_call(res, values))
             }
             Err(e) => {
                 let code = if e.count { ARG_COUNT } else { TYPE_MISMATCH };
