@@ -21,7 +21,7 @@ edition = "2024"
 publish = false
 [workspace]
 [dependencies]
-il-std = { path = "$repo/crates/il-std" }
+il-std = { path = "$repo/il-std" }
 $2
 [build-dependencies]
 $3
@@ -45,9 +45,9 @@ impl Motor {
     }
 }
 EOT
-mk with_macro "il-macros = { path = \"$repo/crates/il-macros\" }" ""
+mk with_macro "il-macros = { path = \"$repo/il-macros\" }" ""
 echo 'il_macros::il!(file = "plc/motor.il");' > "$work/with_macro/src/lib.rs"
-mk with_buildrs "" "il-codegen = { path = \"$repo/crates/il-codegen\" }"
+mk with_buildrs "" "il-codegen = { path = \"$repo/il-codegen\" }"
 echo 'include!(concat!(env!("OUT_DIR"), "/motor.rs"));' > "$work/with_buildrs/src/lib.rs"
 cat > "$work/with_buildrs/build.rs" <<'EOT'
 fn main() -> Result<(), il_codegen::Error> {

@@ -5,7 +5,7 @@
 //! `cargo bench -p il-bench --bench memory`
 //!
 //! The field lists of the il-std blocks mirror their declarations in
-//! `crates/il-std/src/fb` (private state included); `size_of` is measured.
+//! `il-std/src/fb` (private state included); `size_of` is measured.
 
 use il_bench::{generated as g, generator};
 use il_std::*;

@@ -173,7 +173,7 @@ fn build_and_run(dir: &Path, cases: &[Case]) -> Vec<Vec<String>> {
     let target = dir.parent().unwrap().join("differential-target");
     std::fs::create_dir_all(&src).unwrap();
     let il_std = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../crates/il-std")
+        .join("../il-std")
         .canonicalize()
         .unwrap();
     std::fs::write(

@@ -162,7 +162,7 @@ fn run_simulates_an_il_program_of_the_project() {
 fn the_corpus_project_checks_with_warnings_only() {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/corpus/beremiz_beremiz_first_steps_plc.xml"
+        "/../../shared/corpus/beremiz_beremiz_first_steps_plc.xml"
     );
     if !std::path::Path::new(path).is_file() {
         eprintln!("SKIPPED: ../shared/corpus/beremiz_beremiz_first_steps_plc.xml not found");

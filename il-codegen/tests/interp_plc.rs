@@ -7,7 +7,7 @@ use il_codegen::sema::types::Elem;
 use il_std::{Cycle, FaultKind, TIME};
 
 fn program(file: &str) -> il_codegen::sema::ir::Program {
-    let path = format!("{}/../../tests/plc/{file}", env!("CARGO_MANIFEST_DIR"));
+    let path = format!("{}/../tests/plc/{file}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).expect("read IL");
     load(&SourceFile::new(file, text)).unwrap_or_else(|e| panic!("{file}: {e}"))
 }

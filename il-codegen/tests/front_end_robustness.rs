@@ -78,7 +78,7 @@ const VALID: &[&str] = &[
 fn corpus() -> Vec<String> {
     let dir = PathBuf::from(concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/corpus"
+        "/../../shared/corpus"
     ));
     let Ok(entries) = std::fs::read_dir(&dir) else {
         println!(

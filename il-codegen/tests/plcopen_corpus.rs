@@ -10,7 +10,7 @@ use il_std::Cycle;
 
 const FILE: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
-    "/../../../shared/corpus/beremiz_beremiz_first_steps_plc.xml"
+    "/../../shared/corpus/beremiz_beremiz_first_steps_plc.xml"
 );
 
 fn read() -> Option<SourceFile> {

@@ -13,7 +13,7 @@ fn prog(name: &str, text: &str) -> il_codegen::sema::ir::Program {
 
 #[test]
 fn every_plc_program_runs() {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../tests/plc");
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/plc");
     let mut files: Vec<_> = std::fs::read_dir(dir)
         .unwrap()
         .filter_map(|e| e.ok().map(|e| e.path()))

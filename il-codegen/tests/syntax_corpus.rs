@@ -5,7 +5,7 @@ use il_codegen::ast::*;
 use il_codegen::diag::{Diagnostic, SourceFile};
 use il_codegen::syntax::parse;
 
-const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/corpus");
+const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/corpus");
 
 fn load(name: &str) -> Option<(SourceFile, CompilationUnit, Vec<Diagnostic>)> {
     let dir = std::path::Path::new(CORPUS);

@@ -177,7 +177,7 @@ const EXPECTED: &[Entry] = &[
 fn corpus_dir() -> PathBuf {
     PathBuf::from(concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../../../shared/corpus"
+        "/../../shared/corpus"
     ))
 }
 

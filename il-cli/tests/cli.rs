@@ -279,7 +279,7 @@ fn every_file_is_checked_and_reported() {
 /// another file, and the only error left is the standard's own `FWD_REV_FF.Q`.
 #[test]
 fn files_are_checked_together() {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/corpus/");
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/corpus/");
     let (a, b) = (
         format!("{dir}beremiz_matiec_cmd_monitor_il.txt"),
         format!("{dir}beremiz_matiec_fwd_rev_mon_il.txt"),
@@ -311,7 +311,7 @@ fn files_are_checked_together() {
 fn emit_of_hostile_comments_and_strings() {
     let src = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../../tests/plc-hostile/hostile.il"
+        "/../tests/plc-hostile/hostile.il"
     ))
     .unwrap();
     let path = temp_file("hostile.il", src.as_bytes());

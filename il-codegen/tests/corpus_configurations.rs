@@ -1,13 +1,13 @@
 //! The echidna corpus files end with a CONFIGURATION. Their bodies use
 //! echidna built-ins (`dbg`, `_exit`, `piface_write`), which are not IEC and
-//! are refused (see crates/il-cli/tests/corpus.rs); here those lines are
+//! are refused (see il-cli/tests/corpus.rs); here those lines are
 //! dropped, and the configurations must be accepted: no diagnostic at or
 //! after the CONFIGURATION line. The blink program, which has nothing else
 //! non-standard, then compiles whole, configuration included.
 
 use il_codegen::diag::{Severity, SourceFile};
 
-const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../../shared/corpus");
+const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/corpus");
 
 fn without_builtins(text: &str) -> String {
     text.lines()
