@@ -18,6 +18,7 @@ pub mod expand;
 pub mod input;
 pub mod interp;
 pub mod plcopen;
+pub mod read;
 pub mod sema;
 pub mod syntax;
 

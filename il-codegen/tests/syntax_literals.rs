@@ -109,6 +109,32 @@ fn dates_and_times_of_day() {
 }
 
 #[test]
+fn date_and_time_covers_the_whole_range_of_dt() {
+    // DT counts i64 nanoseconds from 1970: its first day starts before
+    // i64::MIN, but its later times of day fit and are accepted.
+    assert_eq!(
+        kind("DT#1677-09-21-00:12:45"),
+        LitKind::Dt((-106_752i128 * 86_400_000_000_000 + 765_000_000_000) as i64)
+    );
+    assert_eq!(
+        kind("DT#2262-04-11-23:47:16"),
+        LitKind::Dt(106_751 * 86_400_000_000_000 + 85_636_000_000_000)
+    );
+    for out in ["DT#1677-09-21-00:12:43", "DT#2262-04-11-23:47:17"] {
+        let m = err1(
+            &format!("PROGRAM p\n  LD {out}\nEND_PROGRAM\n"),
+            "IL0020",
+            2,
+            6,
+        );
+        assert!(
+            m.contains("out of range") && m.contains("DT#1677-09-21-00:12:44"),
+            "{m}"
+        );
+    }
+}
+
+#[test]
 fn strings() {
     assert_eq!(
         kind("'abc'"),

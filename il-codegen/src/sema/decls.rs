@@ -15,6 +15,10 @@ pub(crate) struct Env {
     pub types: TypeTables,
     /// Checked configurations, with the index of the declaring file.
     pub configs: Vec<(usize, super::ir::ConfigDef)>,
+    /// Whether an FB (upper-case name) holds anything RETAIN, directly or in
+    /// a nested instance: memoised, because instance trees share subtrees and
+    /// an unmemoised walk is exponential in the nesting depth.
+    pub holds_retain: std::cell::RefCell<HashMap<String, bool>>,
 }
 
 /// Resolved user types.
@@ -170,6 +174,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
     let mut env = Env {
         pous: HashMap::new(),
         types: TypeTables::default(),
+        holds_retain: Default::default(),
         configs: Vec::new(),
     };
     let mut seen: HashMap<String, (usize, Span)> = HashMap::new();
@@ -349,7 +354,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
     // A STRUCT that contains itself has no finite size.
     for (f, d) in &type_file {
         if matches!(d.spec, TypeSpec::Struct { .. })
-            && struct_contains(&env.types, &d.name.key(), &d.name.key(), 0)
+            && struct_contains(&env.types, &d.name.key(), &d.name.key())
         {
             cxs[*f].err(
                 RECURSION,
@@ -686,18 +691,34 @@ fn check_ident(cx: &mut Cx, id: &ast::Ident) {
     }
 }
 
-fn struct_contains(t: &TypeTables, key: &str, target: &str, depth: u32) -> bool {
-    let Some(fields) = t.structs.get(key) else {
-        return false;
-    };
-    depth < 64
-        && fields.iter().any(|f| {
+/// Whether STRUCT `key` reaches STRUCT `target` through its fields (arrays
+/// included). A walk over the field graph that visits each struct once, so
+/// shared and cyclic types stay linear (an unmemoised walk is exponential:
+/// four fields of the same type per level double the work at every level).
+fn struct_contains(t: &TypeTables, key: &str, target: &str) -> bool {
+    let mut seen: HashSet<String> = HashSet::new();
+    let mut todo = vec![key.to_string()];
+    while let Some(k) = todo.pop() {
+        let Some(fields) = t.structs.get(&k) else {
+            continue;
+        };
+        for f in fields {
             let mut ty = &f.ty;
             while let Ty::Array { elem, .. } = ty {
                 ty = elem;
             }
-            matches!(ty, Ty::Struct(n) if n.eq_ignore_ascii_case(target) || struct_contains(t, &n.to_ascii_uppercase(), target, depth + 1))
-        })
+            if let Ty::Struct(n) = ty {
+                if n.eq_ignore_ascii_case(target) {
+                    return true;
+                }
+                let n = n.to_ascii_uppercase();
+                if seen.insert(n.clone()) {
+                    todo.push(n);
+                }
+            }
+        }
+    }
+    false
 }
 
 pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Option<Ty> {

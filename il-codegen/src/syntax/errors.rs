@@ -72,6 +72,8 @@ pub mod code {
     pub const EXTRA_TOKENS: &str = "IL0030";
     /// `IL0031`: a line that does not start with an operator.
     pub const EXPECTED_INSTRUCTION: &str = "IL0031";
+    /// `IL0032`: more diagnostics in one file than are shown.
+    pub const TOO_MANY: &str = "IL0032";
 }
 
 macro_rules! info {
@@ -215,6 +217,11 @@ pub static CODES: &[CodeInfo] = &[
         code::TOO_LARGE,
         "a source file over 4 GiB",
         "Source files are limited to 4 GiB. Split the program into several files."
+    ),
+    info!(
+        code::TOO_MANY,
+        "more diagnostics in one file than are shown",
+        "A file with very many errors (often not IL at all, or IL damaged by a bad copy) gets its first 200 diagnostics, by position, and this one, which says how many more there are.\n\n    LD x # # # # # # # # ...   (* thousands of stray characters *)\n\nFix the first ones: many of the rest usually follow from them."
     ),
     info!(
         code::RESULT_TYPE,
@@ -653,6 +660,6 @@ mod tests {
             assert!(!c.title.is_empty() && !c.title.contains('\n'));
             assert!(c.explanation.len() > 40, "{}", c.code);
         }
-        assert_eq!(CODES.len(), 31);
+        assert_eq!(CODES.len(), 32);
     }
 }

@@ -50,5 +50,6 @@ pub fn parse(file: &SourceFile) -> (CompilationUnit, Vec<Diagnostic>) {
     diags.extend(ctx.diags);
     diags.sort_by_key(|d| (d.span.lo, d.span.hi));
     diags.dedup_by(|a, b| a.span == b.span && a.code == b.code);
+    crate::diag::limit(&mut diags);
     (unit, diags)
 }
