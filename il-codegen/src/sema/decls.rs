@@ -1197,7 +1197,12 @@ pub(crate) fn check_recursion(cxs: &mut [Cx], env: &Env, units: &[&ast::Compilat
             let out = edges.entry(me.clone()).or_default();
             if let Some(sig) = env.pou(&me) {
                 for v in &sig.vars {
-                    if let Ty::Fb(t) = &v.ty
+                    // An array of instances holds them too (`ARRAY OF Self`).
+                    let mut ty = &v.ty;
+                    while let Ty::Array { elem, .. } = ty {
+                        ty = elem;
+                    }
+                    if let Ty::Fb(t) = ty
                         && env.pou(t).is_some()
                     {
                         out.push((t.to_ascii_uppercase(), f, p.name.span));
