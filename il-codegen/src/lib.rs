@@ -11,6 +11,7 @@
 pub mod ast;
 mod builder;
 pub mod check;
+pub mod codes;
 pub mod compile;
 pub mod diag;
 pub mod emit;

@@ -237,7 +237,7 @@ pub const MAX_PER_FILE: usize = 200;
 /// error stays an error so that a cut list never turns a failed check into
 /// a passed one.
 pub fn limit(diags: &mut Vec<Diagnostic>) {
-    let too_many = crate::syntax::code::TOO_MANY;
+    let too_many = codes::TOO_MANY;
     if diags.len() <= MAX_PER_FILE && !diags.iter().any(|d| d.code == too_many) {
         return;
     }

@@ -371,8 +371,8 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
         sig.file = *f;
         env.pous.insert(p.name.key(), sig);
     }
-    env.configs = super::config::collect(cxs, units, &fb_names, &mut env);
-    super::config::check_fb_externals(cxs, &pous, &env);
+    env.configs = super::configuration::collect(cxs, units, &fb_names, &mut env);
+    super::configuration::check_fb_externals(cxs, &pous, &env);
     env
 }
 

@@ -1,9 +1,7 @@
 //! Instructions: every operator of Table 52 and its modifiers, deferred
 //! parentheses, labels, calls (Table 53) and FB input operators (Table 54).
 
-#[path = "syntax/common.rs"]
-mod common;
-use common::*;
+use crate::syntax_common::*;
 
 #[test]
 fn load_store_set_reset() {

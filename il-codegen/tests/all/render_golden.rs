@@ -1,11 +1,9 @@
 //! Golden snapshots of the diagnostic renderings (`tests/diag/*.txt`).
-//! Re-bless with `IL_BLESS=1 cargo test -p il-codegen --test render_golden`.
+//! Re-bless with `IL_BLESS=1 cargo test -p il-codegen --test all render_golden`.
 
-mod common;
-
-use common::golden::{assert_golden, assert_no_stale, golden_dir};
 use il_codegen::ast::Span;
 use il_codegen::diag::{Diagnostic, SourceFile, render, render_short, to_json};
+use il_testkit::golden::{assert_golden, assert_no_stale, golden_dir};
 
 const PROG: &str = "\
 FUNCTION_BLOCK Motor

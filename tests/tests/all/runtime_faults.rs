@@ -1,6 +1,6 @@
 //! Runtime faults through generated code (plc/runtime_faults.il), in debug
 //! builds (`cargo test`) and release builds (`.ci/run` runs this file with
-//! `cargo test --release -p il-tests --test runtime_faults`): integer
+//! `cargo test --release -p il-tests --test all runtime_faults`): integer
 //! overflow wraps without a fault; DIV/MOD by zero give 0; array reads out of
 //! range give the default value and stores out of range are skipped (one and
 //! two dimensions); a store outside a subrange is skipped; CONCAT beyond the

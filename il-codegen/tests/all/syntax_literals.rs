@@ -1,8 +1,6 @@
 //! Every literal and direct-address form of IL-SEMANTICS.md.
 
-#[path = "syntax/common.rs"]
-mod common;
-use common::*;
+use crate::syntax_common::*;
 
 fn kind(text: &str) -> LitKind {
     ld_lit(text).kind

@@ -1,10 +1,5 @@
 //! Golden-file snapshots for tests: compare a rendering with a checked-in
 //! `.txt`; with `IL_BLESS=1` in the environment, (re)write the file instead.
-//!
-//! Use from a test file with `mod common;` (this folder's `mod.rs`) or
-//! `#[path = "common/golden.rs"] mod golden;`.
-
-#![allow(dead_code)]
 
 use std::path::{Path, PathBuf};
 

@@ -9,7 +9,7 @@
 use il_codegen::diag::{SourceFile, has_errors};
 use il_std::{Cycle, STRING, WSTRING};
 
-const HOSTILE: &str = include_str!("../plc-hostile/hostile.il");
+const HOSTILE: &str = include_str!("../../plc-hostile/hostile.il");
 
 macro_rules! hostile_tests {
     ($m:ident) => {

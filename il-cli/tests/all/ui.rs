@@ -1,9 +1,8 @@
 //! `ilc check` end to end on small programs in `tests/ui/*.il`: the exit
 //! status and the full output (human and JSON) are compared with
-//! `tests/ui/*.txt`. Re-bless with `IL_BLESS=1 cargo test -p il-cli --test ui`.
+//! `tests/ui/*.txt`. Re-bless with `IL_BLESS=1 cargo test -p il-cli --test all ui`.
 
-#[path = "../../il-codegen/tests/common/golden.rs"]
-mod golden;
+use il_testkit::golden;
 
 use std::path::Path;
 use std::process::Command;

@@ -5,7 +5,7 @@
 //!
 //! One `TestCases` run, so trybuild builds every case in a single batch.
 //! Regenerate the expectations with
-//! `TRYBUILD=overwrite cargo test -p il-tests --test ui`.
+//! `TRYBUILD=overwrite cargo test -p il-tests --test all ui`.
 
 #[test]
 fn ui() {

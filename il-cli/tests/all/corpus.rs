@@ -9,8 +9,7 @@
 //! prints it instead of failing, and fails once the gap is closed so that the
 //! note is removed.
 
-#[path = "../../il-codegen/tests/common/json.rs"]
-mod json;
+use il_testkit::json;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -1,8 +1,7 @@
 //! `ilc check`, `ilc emit` and `ilc run` on PLCopen TC6 XML files (detected by
 //! the `.xml` extension): diagnostics in XML lines, JSON output, exit status.
 
-#[path = "../../il-codegen/tests/common/json.rs"]
-mod json;
+use il_testkit::json;
 
 use std::path::PathBuf;
 use std::process::{Command, Output};

@@ -30,6 +30,6 @@ fn grammar_rs_is_up_to_date() {
     }
     assert!(
         current == fresh,
-        "src/syntax/grammar.rs is out of date with grammar.lalrpop: run `IL_BLESS=1 cargo test -p il-codegen --test syntax_grammar_up_to_date`"
+        "src/syntax/grammar.rs is out of date with grammar.lalrpop: run `IL_BLESS=1 cargo test -p il-codegen --test all syntax_grammar_up_to_date`"
     );
 }

@@ -1,7 +1,6 @@
 //! `ilc` as a user runs it: exit status, what goes to stdout and stderr.
 
-#[path = "../../il-codegen/tests/common/json.rs"]
-mod json;
+use il_testkit::json;
 
 use std::io::Write;
 use std::path::PathBuf;

@@ -1,9 +1,7 @@
 //! Declarations: VAR sections and qualifiers, AT, lists, initial values,
 //! TYPE ... END_TYPE, CONFIGURATION / RESOURCE / TASK / PROGRAM ... WITH.
 
-#[path = "syntax/common.rs"]
-mod common;
-use common::*;
+use crate::syntax_common::*;
 
 #[test]
 fn every_var_section_and_qualifier() {

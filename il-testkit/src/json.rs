@@ -1,8 +1,5 @@
 //! A minimal JSON reader for tests: enough to check that output is well
 //! formed and to read fields back. Panics on malformed input.
-//!
-//! Shared with other test crates through `#[path = ".../tests/common/json.rs"]`.
-#![allow(dead_code)]
 
 /// A minimal JSON reader, enough to check that the output is well formed
 /// and round-trips strings.

@@ -11,7 +11,7 @@
 //! one long line) took minutes, and a run over budget fails the test with its
 //! input named instead of hanging CI.
 
-#[path = "../../fuzz/src/lib.rs"]
+#[path = "../../../fuzz/src/lib.rs"]
 #[allow(dead_code)]
 mod targets;
 

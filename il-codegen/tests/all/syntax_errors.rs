@@ -1,9 +1,7 @@
 //! Refused input: every kind of syntax error, its code, place and message;
 //! recovery at the next line; robustness against pathological input.
 
-#[path = "syntax/common.rs"]
-mod common;
-use common::*;
+use crate::syntax_common::*;
 
 fn prog(lines: &str) -> String {
     format!("PROGRAM p\nVAR x, y : BOOL; END_VAR\n{lines}\nEND_PROGRAM\n")
@@ -497,7 +495,7 @@ fn every_emitted_code_is_documented() {
     for src in srcs {
         let (_, d) = parse(&SourceFile::new("t", src));
         for d in d {
-            let info = il_codegen::diag::codes::lookup(d.code)
+            let info = il_codegen::codes::lookup(d.code)
                 .unwrap_or_else(|| panic!("{} is not in CODES", d.code));
             assert!(!info.explanation.is_empty());
         }

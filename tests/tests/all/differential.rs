@@ -6,7 +6,7 @@
 //! CI: a fixed seed and 500 programs. The long run:
 //!
 //! ```sh
-//! IL_DIFF_COUNT=10000 IL_DIFF_SEED=7 cargo test -p il-tests --test differential -- --nocapture
+//! IL_DIFF_COUNT=10000 IL_DIFF_SEED=7 cargo test -p il-tests --test all differential -- --nocapture
 //! ```
 //!
 //! (`IL_DIFF_BATCH` programs per crate build, default 500.)
@@ -17,7 +17,7 @@
 //! `tests/differential/compiler-bugs/` holds reproducers of compiler bugs the
 //! generator found (and now avoids).
 
-#[path = "../differential/gen.rs"]
+#[path = "../../differential/gen.rs"]
 mod generator;
 
 use generator::{Lit, Program, T};
