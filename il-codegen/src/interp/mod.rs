@@ -1,6 +1,6 @@
 //! The reference interpreter: runs the checked program (after semantic
-//! analysis, before emission) directly, following IL-SEMANTICS.md and giving
-//! the same results as the generated Rust: wrapping integers, DIV/MOD by zero
+//! analysis, before emission) directly, following `docs/semantics.md` and
+//! giving the same results as the generated Rust: wrapping integers, DIV/MOD by zero
 //! → 0 with a `DivisionByZero` fault, index out of range → default value with
 //! an `IndexOutOfRange` fault, the real il-std blocks, R_EDGE/F_EDGE memory,
 //! FUNCTION outputs as out-parameters, EN/ENO.

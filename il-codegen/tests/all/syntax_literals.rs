@@ -1,4 +1,5 @@
-//! Every literal and direct-address form of IL-SEMANTICS.md.
+//! Every literal and direct-address form of `docs/semantics.md` (sections
+//! "Literals" and "Direct addresses and the process image").
 
 use crate::syntax_common::*;
 

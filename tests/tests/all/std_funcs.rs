@@ -18,7 +18,8 @@ macro_rules! std_func_tests {
 
             #[test]
             fn limit_takes_the_cr_as_mn() {
-                // IL-SEMANTICS.md: `LIMIT 0, 100` = LIMIT(CR, 0, 100); here
+                // docs/semantics.md, "Calling functions": `LIMIT 0, 100` =
+                // LIMIT(CR, 0, 100); here
                 // LD 10 / LIMIT v, 20 = LIMIT(MN := 10, IN := v, MX := 20).
                 for (v, want) in [(5, 10), (15, 15), (25, 20)] {
                     let f = run(|f| f.v = v);
