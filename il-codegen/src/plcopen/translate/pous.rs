@@ -1,0 +1,128 @@
+//! POUs: the header, the interface and the IL body.
+
+use super::*;
+impl Tr<'_, '_> {
+    pub(super) fn pou(&mut self, p: Node) {
+        let name = p.attribute("name").unwrap_or("").to_string();
+        let name_span = self.attr_span(p, "name");
+        let keyword = match p.attribute("pouType") {
+            Some("program") => "PROGRAM",
+            Some("functionBlock") => "FUNCTION_BLOCK",
+            Some("function") => "FUNCTION",
+            other => {
+                let what =
+                    other.map_or("no `pouType`".to_string(), |o| format!("`pouType=\"{o}\"`"));
+                self.diags.push(
+                    Diagnostic::error(
+                        BAD_PROJECT,
+                        self.attr_span(p, "pouType"),
+                        format!(
+                            "POU `{name}` has {what}: expected program, functionBlock or function"
+                        ),
+                    )
+                    .with_label("unknown POU type"),
+                );
+                return;
+            }
+        };
+        let body = kid(p, "body");
+        let lang = body.and_then(|b| {
+            b.children()
+                .find(|c| c.is_element() && BODY_LANGUAGES.contains(&c.tag_name().name()))
+        });
+        let Some(lang) = lang else {
+            self.diags.push(
+                Diagnostic::error(
+                    BAD_PROJECT,
+                    name_span,
+                    format!("POU `{name}` has no body in IL, ST, FBD, LD or SFC"),
+                )
+                .with_label("no `<body>`"),
+            );
+            return;
+        };
+        let language = lang.tag_name().name().to_string();
+        if name.is_empty() {
+            self.attr(p, "name");
+            return;
+        }
+        if language != "IL" {
+            self.diags.push(
+                Diagnostic::warning(
+                    NOT_IL,
+                    name_span,
+                    format!(
+                        "POU `{name}` is not translated: its body is {} ({language}); only IL bodies are",
+                        language_name(&language)
+                    ),
+                )
+                .with_label(format!("{language} body"))
+                .with_secondary(self.tag(lang), format!("the {language} body")),
+            );
+            self.pous.push(PouInfo {
+                name,
+                kind: keyword,
+                language,
+                translated: false,
+            });
+            return;
+        }
+        for extra in ["actions", "transitions"] {
+            if let Some(a) = kid(p, extra).filter(|a| a.children().any(|c| c.is_element())) {
+                let at = self.tag(a);
+                self.diags.push(
+                    Diagnostic::warning(
+                        NOT_TRANSLATED,
+                        at,
+                        format!("the {extra} of POU `{name}` are not translated"),
+                    )
+                    .with_label("skipped"),
+                );
+            }
+        }
+        self.put(keyword, p);
+        self.put(" ", p);
+        self.attr(p, "name");
+        let iface = kid(p, "interface");
+        if keyword == "FUNCTION" {
+            match iface.and_then(|i| kid(i, "returnType")) {
+                Some(r) => {
+                    self.put(" : ", r);
+                    self.ty(r);
+                }
+                None => {
+                    self.diags.push(
+                        Diagnostic::error(
+                            BAD_PROJECT,
+                            name_span,
+                            format!("FUNCTION `{name}` has no `<returnType>`"),
+                        )
+                        .with_label("no result type"),
+                    );
+                }
+            }
+        }
+        self.put("\n", p);
+        if let Some(i) = iface {
+            for b in i.children().filter(|c| c.is_element()) {
+                self.block(b);
+            }
+        }
+        // The body starts on a line of its own, so its lines stay whole.
+        self.put("\n", lang);
+        decode_content(&mut self.w, self.xml, content_range(self.xml, lang.range()));
+        let end = lang.range().end;
+        let end_tag = self
+            .xml
+            .get(..end)
+            .and_then(|s| s.rfind("</"))
+            .unwrap_or(lang.range().start);
+        self.w.gen_at(&format!("\nEND_{keyword}\n\n"), end_tag..end);
+        self.pous.push(PouInfo {
+            name,
+            kind: keyword,
+            language,
+            translated: true,
+        });
+    }
+}

@@ -1,0 +1,163 @@
+//! Initial values, variable declarations and variable blocks.
+
+use super::*;
+impl Tr<'_, '_> {
+    /// Write the value held by `holder` (`<initialValue>` or an array's or
+    /// structure's `<value>`).
+    pub(super) fn value(&mut self, holder: Node) -> bool {
+        let Some(v) = first_element(holder) else {
+            return self.missing(holder, "simpleValue");
+        };
+        match v.tag_name().name() {
+            "simpleValue" => self.attr(v, "value"),
+            "arrayValue" => {
+                self.put("[", v);
+                let mut ok = true;
+                for (k, e) in kids(v, "value").enumerate() {
+                    if k > 0 {
+                        self.put(", ", e);
+                    }
+                    if e.attribute("repetitionValue").is_some() {
+                        self.attr(e, "repetitionValue");
+                        self.put("(", e);
+                        ok &= self.value(e);
+                        self.put(")", e);
+                    } else {
+                        ok &= self.value(e);
+                    }
+                }
+                self.put("]", v);
+                ok
+            }
+            "structValue" => {
+                self.put("(", v);
+                let mut ok = true;
+                for (k, e) in kids(v, "value").enumerate() {
+                    if k > 0 {
+                        self.put(", ", e);
+                    }
+                    ok &= self.attr(e, "member");
+                    self.put(" := ", e);
+                    ok &= self.value(e);
+                }
+                self.put(")", v);
+                ok
+            }
+            other => {
+                let msg = format!("the initial value `<{other}>` cannot be translated");
+                self.untranslatable(v, &msg)
+            }
+        }
+    }
+
+    /// `name AT %IX0.0 : TYPE := value;` — `init` replaces the variable's
+    /// own initial value (for a lowered external constant).
+    pub(super) fn var_decl(&mut self, v: Node, init: Option<Node>) -> bool {
+        self.put("    ", v);
+        let mut ok = self.attr(v, "name");
+        if v.attribute("address").is_some() {
+            self.put(" AT ", v);
+            self.attr(v, "address");
+        }
+        self.put(" : ", v);
+        ok &= match kid(v, "type") {
+            Some(t) => self.ty(t),
+            None => self.missing(v, "type"),
+        };
+        if let Some(iv) = init.or_else(|| kid(v, "initialValue")) {
+            self.put(" := ", iv);
+            ok &= self.value(iv);
+        }
+        self.put(";\n", v);
+        ok
+    }
+
+    pub(super) fn var_block(
+        &mut self,
+        b: Node,
+        keyword: &str,
+        constant: bool,
+        vars: &[(Node, Option<Node>)],
+    ) {
+        if vars.is_empty() {
+            return;
+        }
+        self.put(keyword, b);
+        if constant {
+            self.put(" CONSTANT", b);
+        }
+        if flag(b, "retain") {
+            self.put(" RETAIN", b);
+        }
+        if flag(b, "nonretain") {
+            self.put(" NON_RETAIN", b);
+        }
+        self.put("\n", b);
+        for (v, init) in vars {
+            self.var_decl(*v, *init);
+        }
+        self.put("END_VAR\n", b);
+    }
+
+    /// A variable block of an interface or a configuration.
+    pub(super) fn block(&mut self, b: Node) {
+        let keyword = match b.tag_name().name() {
+            "inputVars" => "VAR_INPUT",
+            "outputVars" => "VAR_OUTPUT",
+            "inOutVars" => "VAR_IN_OUT",
+            "localVars" => "VAR",
+            "tempVars" => "VAR_TEMP",
+            "externalVars" => "VAR_EXTERNAL",
+            "globalVars" => "VAR_GLOBAL",
+            "returnType" | "documentation" | "addData" => return,
+            other => {
+                let at = self.tag(b);
+                self.diags.push(
+                    Diagnostic::warning(
+                        NOT_TRANSLATED,
+                        at,
+                        format!("`<{other}>` is not translated"),
+                    )
+                    .with_label("skipped"),
+                );
+                return;
+            }
+        };
+        let constant = flag(b, "constant");
+        let vars: Vec<Node> = kids(b, "variable").collect();
+        if keyword != "VAR_EXTERNAL" || !constant {
+            let vars: Vec<_> = vars.into_iter().map(|v| (v, None)).collect();
+            self.var_block(b, keyword, constant, &vars);
+            return;
+        }
+        // VAR_EXTERNAL CONSTANT naming exactly one VAR_GLOBAL CONSTANT of the
+        // project: a local constant with the global's value (the same thing,
+        // since neither can change).
+        let mut lowered = Vec::new();
+        let mut kept = Vec::new();
+        for v in vars {
+            let key = v.attribute("name").unwrap_or("").to_ascii_lowercase();
+            match self.globals.get(&key).map(Vec::as_slice) {
+                Some([g]) if g.constant => {
+                    lowered.push((v, kid(g.var, "initialValue"), g.configuration.clone()))
+                }
+                _ => kept.push((v, None)),
+            }
+        }
+        if !lowered.is_empty() {
+            let configs: Vec<&str> = lowered.iter().map(|(_, _, c)| c.as_str()).collect();
+            let mut configs = configs;
+            configs.dedup();
+            self.put(
+                &format!(
+                    "(* VAR_EXTERNAL CONSTANT: the values of VAR_GLOBAL CONSTANT of CONFIGURATION {} *)\n",
+                    configs.join(", ")
+                ),
+                b,
+            );
+            let vars: Vec<_> = lowered.iter().map(|(v, i, _)| (*v, *i)).collect();
+            self.var_block(b, "VAR", true, &vars);
+        }
+        self.var_block(b, "VAR_EXTERNAL", true, &kept);
+    }
+}
