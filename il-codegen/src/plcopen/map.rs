@@ -62,6 +62,18 @@ impl Writer {
         self.text.push_str(s);
     }
 
+    /// Where the text ends now, for [`Writer::rollback`].
+    pub(crate) fn mark(&self) -> (usize, usize) {
+        (self.text.len(), self.pieces.len())
+    }
+
+    /// Drop everything written since `mark`: an element found invalid
+    /// half-way is left out whole.
+    pub(crate) fn rollback(&mut self, mark: (usize, usize)) {
+        self.text.truncate(mark.0);
+        self.pieces.truncate(mark.1);
+    }
+
     /// Finish: the IL text and its map.
     pub(crate) fn finish(self) -> (String, SpanMap) {
         let end = u(self.text.len());

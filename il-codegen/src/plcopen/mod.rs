@@ -19,6 +19,7 @@
 mod map;
 mod text;
 mod translate;
+mod validate;
 
 pub use map::SpanMap;
 
@@ -51,6 +52,10 @@ codes! {
         "A part of the project is left out, with this warning: actions and transitions of a POU, access variables, and a configuration whose program instance runs a POU that was not translated (because its body is not IL).\n\n    <task name=\"main\" priority=\"1\" interval=\"T#10ms\">\n      <pouInstance name=\"prg\" typeName=\"MainFBD\"/>   <!-- MainFBD's body is FBD -->";
     UNTRANSLATABLE = "IL0205", "PLCopen element cannot be translated",
         "The project uses something IL has no equivalent for, e.g. a `<pointer>` type.\n\n    <variable name=\"p\"><type><pointer><baseType><INT/></baseType></pointer></type></variable>";
+    BAD_ATTRIBUTE = "IL0206", "invalid attribute value",
+        "An attribute that becomes part of the IL text holds something it cannot: a name that is not an IEC identifier (letters, digits and single `_`, not starting with a digit, not a keyword, at most 255 characters), an initial value that is not one literal or name, a bound, length or priority that is not a number, an address that is not a direct address, a task interval that is not a duration. The element (a variable, type, POU, task ...) is left out; nothing of the value reaches the IL text.\n\n    <variable name=\"x; END_VAR\"><type><INT/></type></variable>\n    <pou name=\"\" pouType=\"program\">   <!-- empty name -->";
+    TOO_DEEP = "IL0207", "PLCopen element nested too deep",
+        "Types and values nest at most 64 levels deep (`<array>` in `<array>`, `<struct>` in `<struct>`, `<arrayValue>` in `<arrayValue>` ...). Declare the inner levels as named data types and refer to them with `<derived>`.\n\n    <type><array><dimension lower=\"0\" upper=\"1\"/><baseType><array> ... (65 levels)";
 }
 
 use codes::MALFORMED_XML;

@@ -1,9 +1,15 @@
 //! Configurations, resources, tasks and program instances.
 
 use super::*;
+
 impl Tr<'_, '_> {
     pub(super) fn configuration(&mut self, c: Node) {
-        let name = c.attribute("name").unwrap_or("").to_string();
+        // Without a valid name the configuration is left out: the name is
+        // written into the IL text and quoted in messages.
+        let Some(name) = self.checked(c, "name", Kind::Name) else {
+            return;
+        };
+        let name = name.value().to_string();
         let resources: Vec<Node> = kids(c, "resource").collect();
         // Program instances of POUs that were not translated: the
         // configuration cannot be compiled, say so once.
@@ -19,7 +25,7 @@ impl Tr<'_, '_> {
                 {
                     let msg = format!(
                         "CONFIGURATION `{name}` is not translated: its instance `{}` runs POU `{}`, whose body is {} ({})",
-                        i.attribute("name").unwrap_or(""),
+                        shown(i.attribute("name").unwrap_or("")),
                         p.name,
                         language_name(&p.language),
                         p.language
@@ -50,66 +56,91 @@ impl Tr<'_, '_> {
             );
         }
         self.put("CONFIGURATION ", c);
-        self.attr(c, "name");
+        self.attr(c, "name", Kind::Name);
         self.put("\n", c);
         for b in kids(c, "globalVars") {
             self.block(b);
         }
         for r in resources {
-            self.put("RESOURCE ", r);
-            self.attr(r, "name");
-            self.put(" ON PLC\n", r);
-            for b in kids(r, "globalVars") {
-                self.block(b);
-            }
-            let tasks: Vec<Node> = kids(r, "task").collect();
-            for t in &tasks {
-                self.put("    TASK ", *t);
-                self.attr(*t, "name");
-                self.put(" (", *t);
-                let mut first = true;
-                for (attr, param) in [
-                    ("single", "SINGLE"),
-                    ("interval", "INTERVAL"),
-                    ("priority", "PRIORITY"),
-                ] {
-                    if t.attribute(attr).is_some() {
-                        if !first {
-                            self.put(", ", *t);
-                        }
-                        first = false;
-                        self.put(&format!("{param} := "), *t);
-                        self.attr(*t, attr);
-                    }
-                }
-                if first {
-                    // TC6 requires a priority; IL needs at least one parameter.
-                    self.put("PRIORITY := 0", *t);
-                }
-                self.put(");\n", *t);
-            }
-            for t in &tasks {
-                for i in kids(*t, "pouInstance") {
-                    self.program_instance(i, Some(*t));
-                }
-            }
-            for i in kids(r, "pouInstance") {
-                self.program_instance(i, None);
-            }
-            self.put("END_RESOURCE\n", r);
+            self.resource(r);
         }
         self.put("END_CONFIGURATION\n\n", c);
     }
 
-    pub(super) fn program_instance(&mut self, i: Node, task: Option<Node>) {
+    /// A resource, left out whole when its name is invalid.
+    fn resource(&mut self, r: Node) {
+        let start = self.w.mark();
+        self.put("RESOURCE ", r);
+        if !self.attr(r, "name", Kind::Name) {
+            self.w.rollback(start);
+            return;
+        }
+        self.put(" ON PLC\n", r);
+        for b in kids(r, "globalVars") {
+            self.block(b);
+        }
+        let tasks: Vec<Node> = kids(r, "task").filter(|t| self.task(*t)).collect();
+        for t in &tasks {
+            for i in kids(*t, "pouInstance") {
+                self.program_instance(i, Some(*t));
+            }
+        }
+        // The instances of a task that was left out are left out with it
+        // (the task's error says why).
+        for i in kids(r, "pouInstance") {
+            self.program_instance(i, None);
+        }
+        self.put("END_RESOURCE\n", r);
+    }
+
+    /// `TASK name (SINGLE := s, INTERVAL := t, PRIORITY := p);`, or nothing
+    /// (false) when an attribute is invalid.
+    fn task(&mut self, t: Node) -> bool {
+        let start = self.w.mark();
+        self.put("    TASK ", t);
+        let mut ok = self.attr(t, "name", Kind::Name);
+        self.put(" (", t);
+        let mut first = true;
+        for (attr, param, kind) in [
+            ("single", "SINGLE", Kind::Trigger),
+            ("interval", "INTERVAL", Kind::Duration),
+            ("priority", "PRIORITY", Kind::Count),
+        ] {
+            if t.attribute(attr).is_some() {
+                if !first {
+                    self.put(", ", t);
+                }
+                first = false;
+                self.put(&format!("{param} := "), t);
+                ok &= self.attr(t, attr, kind);
+            }
+        }
+        if first {
+            // TC6 requires a priority; IL needs at least one parameter.
+            self.put("PRIORITY := 0", t);
+        }
+        self.put(");\n", t);
+        if !ok {
+            self.w.rollback(start);
+        }
+        ok
+    }
+
+    /// `PROGRAM name WITH task : type;`, left out when invalid.
+    fn program_instance(&mut self, i: Node, task: Option<Node>) {
+        let start = self.w.mark();
         self.put("    PROGRAM ", i);
-        self.attr(i, "name");
+        let mut ok = self.attr(i, "name", Kind::Name);
         if let Some(t) = task {
             self.put(" WITH ", i);
-            self.attr(t, "name");
+            // Checked with the task; valid here.
+            ok &= self.attr(t, "name", Kind::Name);
         }
         self.put(" : ", i);
-        self.attr(i, "typeName");
+        ok &= self.attr(i, "typeName", Kind::Name);
         self.put(";\n", i);
+        if !ok {
+            self.w.rollback(start);
+        }
     }
 }

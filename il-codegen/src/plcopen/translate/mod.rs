@@ -11,9 +11,10 @@ use std::ops::Range;
 
 use roxmltree::Node;
 
-use super::codes::{BAD_PROJECT, NOT_IL, NOT_TRANSLATED, UNTRANSLATABLE};
+use super::codes::{BAD_ATTRIBUTE, BAD_PROJECT, NOT_IL, NOT_TRANSLATED, TOO_DEEP, UNTRANSLATABLE};
 use super::map::{SpanMap, Writer};
 use super::text::{attr_into, content_range, decode_content, start_tag};
+use super::validate::{self, Kind, shown};
 use super::{PouInfo, language_name};
 use crate::ast::Span;
 use crate::diag::Diagnostic;
@@ -53,6 +54,11 @@ const ELEMENTARY: &[(&str, &str)] = &[
     ("CHAR", "CHAR"),
     ("WCHAR", "WCHAR"),
 ];
+
+/// Types and values nest at most this deep in the XML (`<array>` in
+/// `<array>`, `<arrayValue>` in `<arrayValue>` ...): the translation recurses
+/// once per level, and no real project comes near.
+pub(crate) const MAX_DEPTH: usize = 64;
 
 const BODY_LANGUAGES: &[&str] = &["IL", "ST", "FBD", "LD", "SFC"];
 
@@ -178,44 +184,112 @@ impl<'a, 'i> Tr<'a, 'i> {
         self.w.gen_at(s, at);
     }
 
-    /// Write attribute `name` of `n`; report and return false when missing.
-    fn attr(&mut self, n: Node, name: &str) -> bool {
-        match n.attributes().find(|a| a.name() == name) {
-            Some(a) => {
-                attr_into(&mut self.w, self.xml, a.range_value(), a.value());
-                true
-            }
-            None => {
-                let at = self.tag(n);
-                self.diags.push(
-                    Diagnostic::error(
-                        BAD_PROJECT,
-                        at,
-                        format!("`<{}>` has no `{name}` attribute", n.tag_name().name()),
-                    )
-                    .with_label(format!("`{name}` missing")),
-                );
-                false
-            }
+    /// Attribute `name` of `n` when it holds a `kind`; reported (and `None`)
+    /// when it is missing or holds anything else.
+    fn checked<'n, 'x>(
+        &mut self,
+        n: Node<'n, 'x>,
+        name: &str,
+        kind: Kind,
+    ) -> Option<roxmltree::Attribute<'n, 'x>> {
+        let Some(a) = n.attributes().find(|a| a.name() == name) else {
+            let at = self.tag(n);
+            self.diags.push(
+                Diagnostic::error(
+                    BAD_PROJECT,
+                    at,
+                    format!("`<{}>` has no `{name}` attribute", n.tag_name().name()),
+                )
+                .with_label(format!("`{name}` missing")),
+            );
+            return None;
+        };
+        if let Err(why) = validate::check(kind, a.value()) {
+            // An empty value has an empty range: point at `name=""` instead.
+            let at = if a.value().is_empty() {
+                a.range()
+            } else {
+                a.range_value()
+            };
+            self.diags.push(
+                Diagnostic::error(
+                    BAD_ATTRIBUTE,
+                    self.span(at),
+                    format!(
+                        "`{name}=\"{}\"` of `<{}>` is not {}: {why}",
+                        shown(a.value()),
+                        n.tag_name().name(),
+                        kind.what()
+                    ),
+                )
+                .with_label(format!("expected {}", kind.what()))
+                .with_note(format!("the `<{}>` is left out", n.tag_name().name())),
+            );
+            return None;
         }
+        Some(a)
+    }
+
+    /// Write attribute `name` of `n` when it holds a `kind`; report and
+    /// return false (writing nothing) when it is missing or holds anything
+    /// else.
+    fn attr(&mut self, n: Node, name: &str, kind: Kind) -> bool {
+        let Some(a) = self.checked(n, name, kind) else {
+            return false;
+        };
+        attr_into(&mut self.w, self.xml, a.range_value(), a.value());
+        true
+    }
+
+    /// Whether attribute `name` of `n` holds a `kind` (no report).
+    fn attr_ok(n: Node, name: &str, kind: Kind) -> bool {
+        n.attribute(name)
+            .is_some_and(|v| validate::check(kind, v).is_ok())
+    }
+
+    /// Report `n` as nested deeper than [`MAX_DEPTH`] and return false.
+    fn too_deep(&mut self, n: Node) -> bool {
+        let at = self.tag(n);
+        self.diags.push(
+            Diagnostic::error(
+                TOO_DEEP,
+                at,
+                format!(
+                    "`<{}>` is nested more than {MAX_DEPTH} levels deep",
+                    n.tag_name().name()
+                ),
+            )
+            .with_label("too deep"),
+        );
+        false
     }
 
     fn collect_globals(&mut self, configurations: &[Node<'a, 'i>]) {
         for c in configurations {
-            let cname = c.attribute("name").unwrap_or("").to_string();
+            // Only names that are identifiers: the configuration's name is
+            // written into a comment, and a variable's is looked up by name.
+            let Some(cname) = c
+                .attribute("name")
+                .filter(|_| Self::attr_ok(*c, "name", Kind::Name))
+            else {
+                continue;
+            };
             let blocks = kids(*c, "globalVars")
                 .chain(kids(*c, "resource").flat_map(|r| kids(r, "globalVars")));
             for b in blocks {
                 let constant = flag(b, "constant");
                 for v in kids(b, "variable") {
-                    if let Some(name) = v.attribute("name") {
+                    if let Some(name) = v
+                        .attribute("name")
+                        .filter(|_| Self::attr_ok(v, "name", Kind::Name))
+                    {
                         self.globals
                             .entry(name.to_ascii_lowercase())
                             .or_default()
                             .push(Global {
                                 constant,
                                 var: v,
-                                configuration: cname.clone(),
+                                configuration: cname.to_string(),
                             });
                     }
                 }

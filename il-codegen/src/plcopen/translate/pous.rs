@@ -1,9 +1,15 @@
 //! POUs: the header, the interface and the IL body.
 
 use super::*;
+
 impl Tr<'_, '_> {
     pub(super) fn pou(&mut self, p: Node) {
-        let name = p.attribute("name").unwrap_or("").to_string();
+        // A POU without a valid name is left out, whatever its language:
+        // the name is written into the IL text and quoted in messages.
+        let Some(name) = self.checked(p, "name", Kind::Name) else {
+            return;
+        };
+        let name = name.value().to_string();
         let name_span = self.attr_span(p, "name");
         let keyword = match p.attribute("pouType") {
             Some("program") => "PROGRAM",
@@ -42,10 +48,6 @@ impl Tr<'_, '_> {
             return;
         };
         let language = lang.tag_name().name().to_string();
-        if name.is_empty() {
-            self.attr(p, "name");
-            return;
-        }
         if language != "IL" {
             self.diags.push(
                 Diagnostic::warning(
@@ -82,13 +84,17 @@ impl Tr<'_, '_> {
         }
         self.put(keyword, p);
         self.put(" ", p);
-        self.attr(p, "name");
+        self.attr(p, "name", Kind::Name);
         let iface = kid(p, "interface");
         if keyword == "FUNCTION" {
             match iface.and_then(|i| kid(i, "returnType")) {
                 Some(r) => {
+                    let start = self.w.mark();
                     self.put(" : ", r);
-                    self.ty(r);
+                    if !self.ty(r, 0) {
+                        // Reported; no half-written type.
+                        self.w.rollback(start);
+                    }
                 }
                 None => {
                     self.diags.push(

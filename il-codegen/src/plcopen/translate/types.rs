@@ -1,9 +1,15 @@
 //! Data types: `<dataTypes>` and the type of a variable.
 
 use super::*;
+
 impl Tr<'_, '_> {
-    /// Write the type held by `holder` (`<type>`, `<baseType>`, `<returnType>`).
-    pub(super) fn ty(&mut self, holder: Node) -> bool {
+    /// Write the type held by `holder` (`<type>`, `<baseType>`, `<returnType>`),
+    /// `depth` levels down in types; false when something was reported.
+    pub(super) fn ty(&mut self, holder: Node, depth: usize) -> bool {
+        // Checked before recursing: each level is a stack frame.
+        if depth >= MAX_DEPTH {
+            return self.too_deep(holder);
+        }
         let Some(t) = first_element(holder) else {
             let at = self.tag(holder);
             self.diags.push(
@@ -33,12 +39,14 @@ impl Tr<'_, '_> {
                 );
                 if t.attribute("length").is_some() {
                     self.put("[", t);
-                    self.attr(t, "length");
+                    if !self.attr(t, "length", Kind::Count) {
+                        return false;
+                    }
                     self.put("]", t);
                 }
                 true
             }
-            "derived" => self.attr(t, "name"),
+            "derived" => self.attr(t, "name", Kind::Name),
             "array" => {
                 self.put("ARRAY [", t);
                 let mut ok = true;
@@ -46,28 +54,28 @@ impl Tr<'_, '_> {
                     if k > 0 {
                         self.put(", ", d);
                     }
-                    ok &= self.attr(d, "lower");
+                    ok = ok && self.attr(d, "lower", Kind::Bound);
                     self.put("..", d);
-                    ok &= self.attr(d, "upper");
+                    ok = ok && self.attr(d, "upper", Kind::Bound);
                 }
                 self.put("] OF ", t);
                 match kid(t, "baseType") {
-                    Some(b) => ok && self.ty(b),
+                    Some(b) => ok && self.ty(b, depth + 1),
                     None => self.missing(t, "baseType"),
                 }
             }
             "subrangeSigned" | "subrangeUnsigned" => {
                 let ok = match kid(t, "baseType") {
-                    Some(b) => self.ty(b),
+                    Some(b) => self.ty(b, depth + 1),
                     None => self.missing(t, "baseType"),
                 };
                 let Some(r) = kid(t, "range") else {
                     return self.missing(t, "range");
                 };
                 self.put(" (", r);
-                let lo = self.attr(r, "lower");
+                let lo = ok && self.attr(r, "lower", Kind::Bound);
                 self.put("..", r);
-                let hi = self.attr(r, "upper");
+                let hi = lo && self.attr(r, "upper", Kind::Bound);
                 self.put(")", r);
                 ok && lo && hi
             }
@@ -79,10 +87,10 @@ impl Tr<'_, '_> {
                     if k > 0 {
                         self.put(", ", *v);
                     }
-                    ok &= self.attr(*v, "name");
-                    if v.attribute("value").is_some() {
+                    ok = ok && self.attr(*v, "name", Kind::Name);
+                    if ok && v.attribute("value").is_some() {
                         self.put(" := ", *v);
-                        self.attr(*v, "value");
+                        ok = self.attr(*v, "value", Kind::Integer);
                     }
                 }
                 self.put(")", t);
@@ -99,7 +107,7 @@ impl Tr<'_, '_> {
                 self.put("\n    STRUCT\n", t);
                 let mut ok = true;
                 for v in kids(t, "variable") {
-                    ok &= self.var_decl(v, None);
+                    ok &= self.var_decl(v, None, depth + 1);
                 }
                 self.put("    END_STRUCT", t);
                 ok
@@ -120,25 +128,35 @@ impl Tr<'_, '_> {
         if types.is_empty() {
             return;
         }
+        let block = self.w.mark();
         self.put("TYPE\n", dts);
+        let mut any = false;
         for d in types {
+            // A type with anything invalid is left out whole.
+            let start = self.w.mark();
             self.put("  ", d);
-            self.attr(d, "name");
+            let mut ok = self.attr(d, "name", Kind::Name);
             self.put(" : ", d);
-            match kid(d, "baseType") {
-                Some(b) => {
-                    self.ty(b);
-                }
-                None => {
-                    self.missing(d, "baseType");
-                }
-            }
-            if let Some(iv) = kid(d, "initialValue") {
+            ok = ok
+                && match kid(d, "baseType") {
+                    Some(b) => self.ty(b, 0),
+                    None => self.missing(d, "baseType"),
+                };
+            if let Some(iv) = kid(d, "initialValue").filter(|_| ok) {
                 self.put(" := ", iv);
-                self.value(iv);
+                ok = self.value(iv, 0);
             }
             self.put(";\n", d);
+            if ok {
+                any = true;
+            } else {
+                self.w.rollback(start);
+            }
         }
-        self.put("END_TYPE\n\n", dts);
+        if any {
+            self.put("END_TYPE\n\n", dts);
+        } else {
+            self.w.rollback(block);
+        }
     }
 }

@@ -1,29 +1,38 @@
 //! Initial values, variable declarations and variable blocks.
 
 use super::*;
+
 impl Tr<'_, '_> {
     /// Write the value held by `holder` (`<initialValue>` or an array's or
-    /// structure's `<value>`).
-    pub(super) fn value(&mut self, holder: Node) -> bool {
+    /// structure's `<value>`), `depth` levels down; false when something
+    /// was reported.
+    pub(super) fn value(&mut self, holder: Node, depth: usize) -> bool {
+        // Checked before recursing: each level is a stack frame.
+        if depth >= MAX_DEPTH {
+            return self.too_deep(holder);
+        }
         let Some(v) = first_element(holder) else {
             return self.missing(holder, "simpleValue");
         };
         match v.tag_name().name() {
-            "simpleValue" => self.attr(v, "value"),
+            "simpleValue" => self.attr(v, "value", Kind::Value),
             "arrayValue" => {
                 self.put("[", v);
                 let mut ok = true;
                 for (k, e) in kids(v, "value").enumerate() {
+                    if !ok {
+                        break;
+                    }
                     if k > 0 {
                         self.put(", ", e);
                     }
                     if e.attribute("repetitionValue").is_some() {
-                        self.attr(e, "repetitionValue");
+                        ok = self.attr(e, "repetitionValue", Kind::Count);
                         self.put("(", e);
-                        ok &= self.value(e);
+                        ok = ok && self.value(e, depth + 1);
                         self.put(")", e);
                     } else {
-                        ok &= self.value(e);
+                        ok = self.value(e, depth + 1);
                     }
                 }
                 self.put("]", v);
@@ -33,12 +42,15 @@ impl Tr<'_, '_> {
                 self.put("(", v);
                 let mut ok = true;
                 for (k, e) in kids(v, "value").enumerate() {
+                    if !ok {
+                        break;
+                    }
                     if k > 0 {
                         self.put(", ", e);
                     }
-                    ok &= self.attr(e, "member");
+                    ok = self.attr(e, "member", Kind::Name);
                     self.put(" := ", e);
-                    ok &= self.value(e);
+                    ok = ok && self.value(e, depth + 1);
                 }
                 self.put(")", v);
                 ok
@@ -51,24 +63,29 @@ impl Tr<'_, '_> {
     }
 
     /// `name AT %IX0.0 : TYPE := value;` — `init` replaces the variable's
-    /// own initial value (for a lowered external constant).
-    pub(super) fn var_decl(&mut self, v: Node, init: Option<Node>) -> bool {
+    /// own initial value (for a lowered external constant). A variable with
+    /// anything invalid is left out whole (false).
+    pub(super) fn var_decl(&mut self, v: Node, init: Option<Node>, depth: usize) -> bool {
+        let start = self.w.mark();
         self.put("    ", v);
-        let mut ok = self.attr(v, "name");
+        let mut ok = self.attr(v, "name", Kind::Name);
         if v.attribute("address").is_some() {
             self.put(" AT ", v);
-            self.attr(v, "address");
+            ok &= self.attr(v, "address", Kind::Address);
         }
         self.put(" : ", v);
         ok &= match kid(v, "type") {
-            Some(t) => self.ty(t),
+            Some(t) => self.ty(t, depth),
             None => self.missing(v, "type"),
         };
         if let Some(iv) = init.or_else(|| kid(v, "initialValue")) {
             self.put(" := ", iv);
-            ok &= self.value(iv);
+            ok &= self.value(iv, depth);
         }
         self.put(";\n", v);
+        if !ok {
+            self.w.rollback(start);
+        }
         ok
     }
 
@@ -78,10 +95,11 @@ impl Tr<'_, '_> {
         keyword: &str,
         constant: bool,
         vars: &[(Node, Option<Node>)],
-    ) {
+    ) -> bool {
         if vars.is_empty() {
-            return;
+            return false;
         }
+        let start = self.w.mark();
         self.put(keyword, b);
         if constant {
             self.put(" CONSTANT", b);
@@ -93,10 +111,17 @@ impl Tr<'_, '_> {
             self.put(" NON_RETAIN", b);
         }
         self.put("\n", b);
+        let mut any = false;
         for (v, init) in vars {
-            self.var_decl(*v, *init);
+            any |= self.var_decl(*v, *init, 0);
+        }
+        if !any {
+            // Every variable was left out: no empty block either.
+            self.w.rollback(start);
+            return false;
         }
         self.put("END_VAR\n", b);
+        true
     }
 
     /// A variable block of an interface or a configuration.
@@ -145,6 +170,7 @@ impl Tr<'_, '_> {
             }
         }
         if !lowered.is_empty() {
+            let start = self.w.mark();
             let configs: Vec<&str> = lowered.iter().map(|(_, _, c)| c.as_str()).collect();
             let mut configs = configs;
             configs.dedup();
@@ -156,7 +182,9 @@ impl Tr<'_, '_> {
                 b,
             );
             let vars: Vec<_> = lowered.iter().map(|(v, i, _)| (*v, *i)).collect();
-            self.var_block(b, "VAR", true, &vars);
+            if !self.var_block(b, "VAR", true, &vars) {
+                self.w.rollback(start);
+            }
         }
         self.var_block(b, "VAR_EXTERNAL", true, &kept);
     }

@@ -1,0 +1,338 @@
+//! What an XML attribute may hold before it is written into the IL text.
+//!
+//! Attribute values are copied into the IL text, so an unchecked one could
+//! end a section and start another (`name="x; END_VAR VAR evil"`). Each
+//! attribute that reaches the IL text is checked against the one token (or
+//! the few fixed shapes) it stands for; anything else is refused with the
+//! reason, and the import leaves its element out.
+
+use crate::ast::LitKind;
+use crate::syntax::lexer::{self, Tok};
+
+/// What an attribute stands for in the IL text.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Kind {
+    /// A name being declared or referred to: POU, variable, type, member,
+    /// enumeration value, configuration, resource, task, instance.
+    Name,
+    /// One literal or one name (an enumeration value, a constant): a
+    /// `<simpleValue value>`.
+    Value,
+    /// An integer literal (an enumeration's value).
+    Integer,
+    /// An integer literal or a constant's name (array and subrange bounds).
+    Bound,
+    /// A decimal count (a string length, a repetition, a priority).
+    Count,
+    /// A direct address: `%IX0.1`, `%QW4`, `%MD10.2`.
+    Address,
+    /// A duration literal: `T#10ms`, `TIME#1s`.
+    Duration,
+    /// A task's `single` input: a name or a direct address.
+    Trigger,
+}
+
+impl Kind {
+    /// What the attribute should be, for messages.
+    pub(crate) fn what(self) -> &'static str {
+        match self {
+            Kind::Name => "an IEC identifier",
+            Kind::Value => "one literal or name",
+            Kind::Integer => "an integer literal",
+            Kind::Bound => "an integer literal or a constant's name",
+            Kind::Count => "a decimal number",
+            Kind::Address => "a direct address such as `%IX0.1`",
+            Kind::Duration => "a duration literal such as `T#10ms`",
+            Kind::Trigger => "a variable name or a direct address",
+        }
+    }
+}
+
+/// Longest identifier accepted: far above any real project, small enough
+/// that quoting one in a message stays readable.
+pub(crate) const MAX_NAME: usize = 255;
+/// Longest literal accepted (a long STRING initial value is the largest).
+const MAX_VALUE: usize = 64 * 1024;
+
+/// Check `s` against `kind`: `Err` holds why it is refused.
+pub(crate) fn check(kind: Kind, s: &str) -> Result<(), String> {
+    if s.is_empty() {
+        return Err("it is empty".into());
+    }
+    if let Some(c) = s.chars().find(|&c| forbidden_char(c)) {
+        return Err(format!(
+            "it holds the control character U+{:04X}",
+            u32::from(c)
+        ));
+    }
+    match kind {
+        Kind::Name => identifier(s),
+        Kind::Value => value(s).map(|_| ()),
+        Kind::Integer => integer(s),
+        Kind::Bound => integer(s)
+            .or_else(|_| identifier(s))
+            .map_err(|_| "it is neither an integer literal nor an identifier".to_string()),
+        Kind::Count => count(s),
+        Kind::Address => address(s),
+        Kind::Duration => match value(s)? {
+            Some(LitKind::Time { .. }) => Ok(()),
+            _ => Err("it is not a duration literal".into()),
+        },
+        Kind::Trigger => identifier(s).or_else(|_| address(s)),
+    }
+}
+
+/// Characters no attribute may hold, even inside a string literal: C0 and
+/// C1 controls, line and paragraph separators, bidirectional controls.
+pub(crate) fn forbidden_char(c: char) -> bool {
+    c.is_control()
+        || matches!(
+            c,
+            '\u{2028}' | '\u{2029}' | '\u{200e}' | '\u{200f}' | '\u{061c}' | '\u{202a}'
+                ..='\u{202e}' | '\u{2066}'..='\u{2069}'
+        )
+}
+
+/// `s` as a message may quote it: control characters escaped (the
+/// renderer escapes them too) and cut after 60 characters.
+pub(crate) fn shown(s: &str) -> String {
+    let mut out = String::new();
+    for c in s.chars().take(60) {
+        if forbidden_char(c) {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    if s.chars().nth(60).is_some() {
+        out.push('…');
+    }
+    out
+}
+
+/// IEC 61131-3 identifier: a letter or `_`, then letters, digits and single
+/// underscores, not ending in `_`, and not a keyword that could end or
+/// start a section.
+fn identifier(s: &str) -> Result<(), String> {
+    if s.len() > MAX_NAME {
+        return Err(format!("it is longer than {MAX_NAME} characters"));
+    }
+    let b = s.as_bytes();
+    if !(b[0].is_ascii_alphabetic() || b[0] == b'_') {
+        return Err("an identifier starts with a letter or `_`".into());
+    }
+    if let Some(c) = s
+        .chars()
+        .find(|c| !(c.is_ascii_alphanumeric() || *c == '_'))
+    {
+        return Err(format!(
+            "`{}` is not allowed in an identifier (letters, digits and `_` only)",
+            c.escape_default()
+        ));
+    }
+    if s.contains("__") || s.ends_with('_') {
+        return Err("`_` may not be doubled or end an identifier".into());
+    }
+    let up = s.to_ascii_uppercase();
+    if lexer::is_decl_keyword(&up)
+        || matches!(up.as_str(), "TRUE" | "FALSE" | "BEGIN_IL" | "END_IL")
+    {
+        return Err(format!("`{s}` is a keyword"));
+    }
+    Ok(())
+}
+
+/// One literal or one name, as the project's own lexer reads it in a
+/// declaration: the whole text must be a single token. Returns the
+/// literal's kind (`None` for a name).
+fn value(s: &str) -> Result<Option<LitKind>, String> {
+    if s.len() > MAX_VALUE {
+        return Err(format!("it is longer than {MAX_VALUE} bytes"));
+    }
+    let t = s.trim_matches(' ');
+    if t.is_empty() {
+        return Err("it is blank".into());
+    }
+    const PRE: &str = "TYPE\n  T : INT := ";
+    let src = format!("{PRE}{t};\nEND_TYPE\n");
+    let (toks, diags) = lexer::lex(&src);
+    if let Some(d) = diags.first() {
+        return Err(d.message.clone());
+    }
+    let lo = PRE.len();
+    let hi = lo + t.len();
+    let inner: Vec<&(usize, Tok, usize)> = toks
+        .iter()
+        .filter(|(a, _, b)| *a >= lo && *b <= hi && b > a)
+        .collect();
+    let whole = toks
+        .iter()
+        .any(|(a, t, b)| *a == lo && *b == hi && matches!(t, Tok::Lit(_) | Tok::Ident(_)));
+    // The token after the value must be the `;` written here: nothing of
+    // the value may run past it, or be read as more than one token.
+    let next_is_semi = toks
+        .iter()
+        .find(|(a, _, _)| *a >= hi)
+        .is_some_and(|(a, t, _)| *a == hi && *t == Tok::Semi);
+    if !(whole && inner.len() == 1 && next_is_semi) {
+        return Err("it is not a single literal or name".into());
+    }
+    match &inner[0].1 {
+        Tok::Lit(l) => Ok(Some(l.kind.clone())),
+        Tok::Ident(name) => identifier(name).map(|_| None),
+        _ => Err("it is not a single literal or name".into()),
+    }
+}
+
+/// `5`, `-3`, `16#FF`, `2#1010`.
+fn integer(s: &str) -> Result<(), String> {
+    if s.len() > 80
+        || !s
+            .bytes()
+            .all(|c| c.is_ascii_alphanumeric() || b"#_+-".contains(&c))
+    {
+        return Err("it is not an integer literal".into());
+    }
+    crate::syntax::literal::parse_int(s).map(|_| ())
+}
+
+/// `0`, `16`, `250`: decimal digits only.
+fn count(s: &str) -> Result<(), String> {
+    if s.len() > 10 || !s.bytes().all(|c| c.is_ascii_digit()) {
+        return Err("it is not a decimal number of at most 10 digits".into());
+    }
+    Ok(())
+}
+
+/// `%` then I, Q or M, an optional size X, B, W, D or L, and digits
+/// separated by single dots.
+fn address(s: &str) -> Result<(), String> {
+    let bad = || Err("it is not a direct address such as `%IX0.1`".to_string());
+    let Some(rest) = s.strip_prefix('%') else {
+        return bad();
+    };
+    let mut it = rest.chars().peekable();
+    if !matches!(it.next(), Some('I' | 'Q' | 'M' | 'i' | 'q' | 'm')) {
+        return bad();
+    }
+    if it.peek().is_some_and(|c| "XBWDLxbwdl".contains(*c)) {
+        it.next();
+    }
+    let digits: String = it.collect();
+    if s.len() > 64
+        || digits
+            .split('.')
+            .any(|p| p.is_empty() || !p.bytes().all(|c| c.is_ascii_digit()))
+    {
+        return bad();
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names() {
+        for ok in ["x", "Main", "_a1", "a_b", "TON", "In", "PT"] {
+            assert_eq!(check(Kind::Name, ok), Ok(()), "{ok}");
+        }
+        let long = "a".repeat(MAX_NAME + 1);
+        for bad in [
+            "",
+            "1a",
+            "a__b",
+            "a_",
+            "a b",
+            "Main\nEND_PROGRAM\nPROGRAM Evil",
+            "x; END_VAR",
+            "END_VAR",
+            "end_program",
+            "VAR",
+            "TRUE",
+            "a(*",
+            "ä",
+            &long,
+        ] {
+            assert!(check(Kind::Name, bad).is_err(), "{bad:?}");
+        }
+    }
+
+    #[test]
+    fn values() {
+        for ok in [
+            "5",
+            "-3",
+            "1.5",
+            "16#FF",
+            "T#10ms",
+            "TIME#1h_2m",
+            "INT#7",
+            "TRUE",
+            "Green",
+            "'abc; END_VAR (* x *)'",
+            "'it$'s'",
+            "\"wide\"",
+            "D#2024-01-01",
+            "TOD#12:00:00",
+            "DT#2024-01-01-12:00:00",
+            " 5 ",
+        ] {
+            assert_eq!(check(Kind::Value, ok), Ok(()), "{ok}");
+        }
+        for bad in [
+            "",
+            "  ",
+            "5; END_VAR VAR evil : INT",
+            "5 (* c *)",
+            "1, 2",
+            "'unterminated",
+            "'a' 'b'",
+            "x.y",
+            "END_VAR",
+            "5\n",
+            "'a\u{202e}b'",
+            "T#END_VAR",
+            "(1)",
+            "[1]",
+            "5 // c",
+        ] {
+            assert!(check(Kind::Value, bad).is_err(), "{bad:?}");
+        }
+    }
+
+    #[test]
+    fn numbers_addresses_durations() {
+        for (k, ok) in [
+            (Kind::Integer, "-5"),
+            (Kind::Integer, "16#FF"),
+            (Kind::Bound, "MaxLen"),
+            (Kind::Count, "16"),
+            (Kind::Address, "%IX0.1"),
+            (Kind::Address, "%QW4"),
+            (Kind::Address, "%md10.2.3"),
+            (Kind::Duration, "T#10ms"),
+            (Kind::Trigger, "trig"),
+            (Kind::Trigger, "%IX1.0"),
+        ] {
+            assert_eq!(check(k, ok), Ok(()), "{ok}");
+        }
+        for (k, bad) in [
+            (Kind::Integer, "1.5"),
+            (Kind::Integer, "5;"),
+            (Kind::Bound, "1..2"),
+            (Kind::Count, "-1"),
+            (Kind::Count, "16#10"),
+            (Kind::Address, "%IX0.1 : INT; END_VAR"),
+            (Kind::Address, "%IX0..1"),
+            (Kind::Address, "%Z0"),
+            (Kind::Address, "IX0"),
+            (Kind::Duration, "5"),
+            (Kind::Duration, "T#1s); TASK x (PRIORITY := 1"),
+            (Kind::Trigger, "a; b"),
+        ] {
+            assert!(check(k, bad).is_err(), "{k:?} {bad:?}");
+        }
+    }
+}
