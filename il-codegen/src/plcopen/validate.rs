@@ -85,12 +85,7 @@ pub(crate) fn check(kind: Kind, s: &str) -> Result<(), String> {
 /// Characters no attribute may hold, even inside a string literal: C0 and
 /// C1 controls, line and paragraph separators, bidirectional controls.
 pub(crate) fn forbidden_char(c: char) -> bool {
-    c.is_control()
-        || matches!(
-            c,
-            '\u{2028}' | '\u{2029}' | '\u{200e}' | '\u{200f}' | '\u{061c}' | '\u{202a}'
-                ..='\u{202e}' | '\u{2066}'..='\u{2069}'
-        )
+    crate::diag::render::unsafe_char(c)
 }
 
 /// `s` as a message may quote it: control characters escaped (the
