@@ -208,3 +208,5 @@ impl Import {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_hostile;
