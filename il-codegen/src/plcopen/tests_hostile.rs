@@ -241,3 +241,175 @@ fn names_in_messages_cannot_forge_lines() {
     );
     assert!(out.contains(r"x\nerror[IL0000]: fake"), "{out}");
 }
+
+/// The stack the deep-nesting tests run on: 1 MiB, a quarter of the 4 MiB
+/// build scripts and test threads get by default here (debug build).
+const SMALL_STACK: usize = 1 << 20;
+
+/// Run the whole import and check of `xml` on [`SMALL_STACK`]; the
+/// diagnostics, or a failure if the thread died.
+fn on_small_stack(xml: String) -> (String, Vec<Diagnostic>) {
+    std::thread::Builder::new()
+        .stack_size(SMALL_STACK)
+        .spawn(move || {
+            let (input, d) = check(&xml);
+            let _ = crate::input::compile_inputs(std::slice::from_ref(&input));
+            (xml, d)
+        })
+        .expect("spawn")
+        .join()
+        .expect("the import ran out of stack or panicked")
+}
+
+/// `n` levels of `open` around `inner`, closed by `close`, one level a line.
+fn nest(n: usize, open: &str, inner: &str, close: &str) -> String {
+    let mut s = String::with_capacity(n * (open.len() + close.len() + 2) + inner.len());
+    for _ in 0..n {
+        s.push_str(open);
+        s.push('\n');
+    }
+    s.push_str(inner);
+    for _ in 0..n {
+        s.push_str(close);
+    }
+    s
+}
+
+fn in_var(ty: &str, init: &str) -> String {
+    let init = if init.is_empty() {
+        String::new()
+    } else {
+        format!("<initialValue>{init}</initialValue>")
+    };
+    let iface = format!(
+        "        <interface><localVars>\n<variable name=\"deep\"><type>{ty}</type>{init}</variable>\n<variable name=\"ok\"><type><BOOL/></type></variable>\n        </localVars></interface>\n"
+    );
+    project(
+        "",
+        &format!(
+            "      <pou name=\"P\" pouType=\"program\">\n{iface}        <body><IL><xhtml:p>LD ok\nST ok\n</xhtml:p></IL></body>\n      </pou>\n"
+        ),
+        "",
+    )
+}
+
+#[test]
+fn deep_nesting_is_an_error_not_a_stack_overflow() {
+    const ARRAY: &str = r#"<array><dimension lower="0" upper="1"/><baseType>"#;
+    let cases: Vec<(&str, String, &str)> = vec![
+        (
+            "array",
+            in_var(&nest(20_000, ARRAY, "<INT/>", "</baseType></array>"), ""),
+            "<baseType>",
+        ),
+        (
+            "subrange",
+            in_var(
+                &nest(
+                    20_000,
+                    r#"<subrangeSigned><range lower="0" upper="1"/><baseType>"#,
+                    "<INT/>",
+                    "</baseType></subrangeSigned>",
+                ),
+                "",
+            ),
+            "<baseType>",
+        ),
+        (
+            "struct",
+            in_var(
+                &nest(
+                    20_000,
+                    r#"<struct><variable name="m"><type>"#,
+                    "<INT/>",
+                    "</type></variable></struct>",
+                ),
+                "",
+            ),
+            "<type>",
+        ),
+        (
+            "arrayValue",
+            in_var(
+                "<derived name=\"T\"/>",
+                &nest(
+                    40_000,
+                    "<arrayValue><value>",
+                    "<simpleValue value=\"1\"/>",
+                    "</value></arrayValue>",
+                ),
+            ),
+            "<value>",
+        ),
+        (
+            "structValue",
+            in_var(
+                "<derived name=\"T\"/>",
+                &nest(
+                    40_000,
+                    r#"<structValue><value member="m">"#,
+                    "<simpleValue value=\"1\"/>",
+                    "</value></structValue>",
+                ),
+            ),
+            "<value member",
+        ),
+        (
+            "dataType",
+            project(
+                &format!(
+                    "<dataType name=\"T\"><baseType>{}</baseType></dataType>\n",
+                    nest(20_000, ARRAY, "<INT/>", "</baseType></array>")
+                ),
+                "",
+                "",
+            ),
+            "<baseType>",
+        ),
+    ];
+    for (what, xml, tag) in cases {
+        let (xml, d) = on_small_stack(xml);
+        let deep: Vec<&Diagnostic> = d.iter().filter(|d| d.code == "IL0207").collect();
+        assert_eq!(
+            deep.len(),
+            1,
+            "{what}: {:?}",
+            d.iter().map(|d| d.code).collect::<Vec<_>>()
+        );
+        // At the start tag of the element MAX_DEPTH levels down (the first
+        // one counts as level 0), on its own line.
+        let lo = deep[0].span.lo as usize;
+        assert!(
+            xml[lo..].starts_with(tag.trim_end_matches(" member")),
+            "{what}: {}",
+            &xml[lo..lo + 20]
+        );
+        let before = xml[..lo].matches(tag).count();
+        assert!(
+            (translate::MAX_DEPTH - 1..=translate::MAX_DEPTH).contains(&before),
+            "{what}: {before} levels before the error"
+        );
+        let (line, col) = SourceFile::new("x", xml.as_str()).line_col(lo as u32);
+        assert!(
+            line > translate::MAX_DEPTH && col >= 1,
+            "{what}: {line}:{col}"
+        );
+    }
+}
+
+/// Nesting up to the limit still translates.
+#[test]
+fn nesting_up_to_the_limit_translates() {
+    let ty = nest(
+        translate::MAX_DEPTH - 1,
+        r#"<array><dimension lower="0" upper="1"/><baseType>"#,
+        "<INT/>",
+        "</baseType></array>",
+    );
+    let imp = import(&in_var(&ty, ""));
+    assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
+    assert_eq!(
+        imp.il.text.matches("ARRAY [0..1] OF").count(),
+        translate::MAX_DEPTH - 1
+    );
+}
