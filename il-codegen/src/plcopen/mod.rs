@@ -16,6 +16,7 @@
 //! whose program instances run a POU that was not translated is left out
 //! with a warning (IL0204).
 
+mod limits;
 mod map;
 mod text;
 mod translate;
@@ -56,9 +57,11 @@ codes! {
         "An attribute that becomes part of the IL text holds something it cannot: a name that is not an IEC identifier (letters, digits and single `_`, not starting with a digit, not a keyword, at most 255 characters), an initial value that is not one literal or name, a bound, length or priority that is not a number, an address that is not a direct address, a task interval that is not a duration. The element (a variable, type, POU, task ...) is left out; nothing of the value reaches the IL text.\n\n    <variable name=\"x; END_VAR\"><type><INT/></type></variable>\n    <pou name=\"\" pouType=\"program\">   <!-- empty name -->";
     TOO_DEEP = "IL0207", "PLCopen element nested too deep",
         "Types and values nest at most 64 levels deep (`<array>` in `<array>`, `<struct>` in `<struct>`, `<arrayValue>` in `<arrayValue>` ...). Declare the inner levels as named data types and refer to them with `<derived>`.\n\n    <type><array><dimension lower=\"0\" upper=\"1\"/><baseType><array> ... (65 levels)";
+    TOO_COMPLEX = "IL0208", "XML element too complex",
+        "An element has more than 128 attributes, or more than 64 namespace declarations (`xmlns`, `xmlns:p`) are in scope at once. Reading such XML costs time that grows with the square of its size, so the file is refused before it is read; no PLCopen project needs this many.\n\n    <variable name=\"x\" a1=\"\" a2=\"\" ... a129=\"\">";
 }
 
-use codes::MALFORMED_XML;
+use codes::{MALFORMED_XML, TOO_COMPLEX};
 
 /// What happened to one POU of the project.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -127,9 +130,14 @@ impl Import {
             allow_dtd: false,
             ..roxmltree::ParsingOptions::default()
         };
-        let t = match roxmltree::Document::parse_with_options(&xml.text, opts) {
-            Ok(doc) => translate::translate(&doc, &xml.text),
-            Err(e) => {
+        let parsed = match limits::check(&xml.text) {
+            Some(e) => {
+                Err(
+                    Diagnostic::error(TOO_COMPLEX, Span::new(e.at.start, e.at.end), e.message)
+                        .with_label(e.label),
+                )
+            }
+            None => roxmltree::Document::parse_with_options(&xml.text, opts).map_err(|e| {
                 let pos = e.pos();
                 let at = offset_of(&xml.text, pos.row, pos.col);
                 let width = xml.text[at..].chars().next().map_or(0, char::len_utf8);
@@ -140,20 +148,22 @@ impl Import {
                     Some(k) if msg[k + 4..].contains(':') => msg[..k].to_string(),
                     _ => msg,
                 };
-                translate::Translation {
-                    text: String::new(),
-                    map: SpanMap::default(),
-                    diags: vec![
-                        Diagnostic::error(
-                            MALFORMED_XML,
-                            Span::new(at, at + width),
-                            format!("malformed XML: {msg}"),
-                        )
-                        .with_label("the XML parser stopped here"),
-                    ],
-                    pous: Vec::new(),
-                }
-            }
+                Diagnostic::error(
+                    MALFORMED_XML,
+                    Span::new(at, at + width),
+                    format!("malformed XML: {msg}"),
+                )
+                .with_label("the XML parser stopped here")
+            }),
+        };
+        let t = match parsed {
+            Ok(doc) => translate::translate(&doc, &xml.text),
+            Err(d) => translate::Translation {
+                text: String::new(),
+                map: SpanMap::default(),
+                diags: vec![d],
+                pous: Vec::new(),
+            },
         };
         let il = SourceFile::new(xml.name.clone(), t.text);
         Import {

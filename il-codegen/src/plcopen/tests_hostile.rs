@@ -413,3 +413,55 @@ fn nesting_up_to_the_limit_translates() {
         translate::MAX_DEPTH - 1
     );
 }
+
+/// `n` attributes on the variable `deep`.
+fn with_attributes(n: usize) -> String {
+    let attrs: String = (0..n).map(|k| format!(" a{k}=\"1\"")).collect();
+    in_var("<INT/>", "").replace(
+        "<variable name=\"deep\"",
+        &format!("<variable name=\"deep\"{attrs}"),
+    )
+}
+
+/// The fastest of five runs of `f` (the minimum resists a busy machine).
+fn fastest(f: impl Fn()) -> std::time::Duration {
+    (0..5)
+        .map(|_| {
+            let t = std::time::Instant::now();
+            f();
+            t.elapsed()
+        })
+        .min()
+        .expect("five runs")
+}
+
+#[test]
+fn thousands_of_attributes_are_refused_in_linear_time() {
+    // Was 4.4 s (release) at 30,000: roxmltree's duplicate check is quadratic.
+    let xml = with_attributes(30_000);
+    let imp = import(&xml);
+    assert_eq!(imp.diagnostics.len(), 1, "{:?}", imp.diagnostics);
+    let d = &imp.diagnostics[0];
+    assert_eq!(d.code, "IL0208");
+    assert_eq!(imp.xml.snippet(d.span), "<variable");
+    assert_eq!(
+        imp.xml.line_col(d.span.lo).0,
+        xml[..xml.find("<variable name=\"deep\"").unwrap()]
+            .lines()
+            .count()
+            + 1
+    );
+    // Work at n and 8n, measured in this run: linear is 8x, quadratic 64x.
+    let small = with_attributes(30_000);
+    let large = with_attributes(240_000);
+    let t1 = fastest(|| drop(import(&small)));
+    let t8 = fastest(|| drop(import(&large)));
+    let ratio = t8.as_secs_f64() / t1.as_secs_f64().max(1e-9);
+    assert!(
+        ratio < 24.0,
+        "8x the attributes took {ratio:.1}x the time ({t1:?} → {t8:?})"
+    );
+    // Up to the limit, the element is read as usual.
+    let imp = import(&with_attributes(limits::MAX_ATTRIBUTES - 1));
+    assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
+}
