@@ -24,6 +24,8 @@ mod validate;
 
 pub use map::SpanMap;
 
+use std::collections::HashMap;
+
 use crate::ast::Span;
 use crate::diag::codes::CodeInfo;
 use crate::diag::{Diagnostic, SourceFile};
@@ -90,6 +92,9 @@ pub struct Import {
     pub pous: Vec<PouInfo>,
     /// Where the bytes of `il` came from in `xml`.
     pub map: SpanMap,
+    /// The POUs left out, by lower-case name (index into `pous`): one look-up
+    /// per diagnostic, not a scan of every POU.
+    left_out: HashMap<String, usize>,
 }
 
 /// A readable name for a TC6 body language.
@@ -166,12 +171,17 @@ impl Import {
             },
         };
         let il = SourceFile::new(xml.name.clone(), t.text);
+        let mut left_out = HashMap::new();
+        for (k, p) in t.pous.iter().enumerate().filter(|(_, p)| !p.translated) {
+            left_out.entry(p.name.to_ascii_lowercase()).or_insert(k);
+        }
         Import {
             xml,
             il,
             diagnostics: t.diags,
             pous: t.pous,
             map: t.map,
+            left_out,
         }
     }
 
@@ -180,9 +190,10 @@ impl Import {
     pub fn to_xml(&self, mut d: Diagnostic) -> Diagnostic {
         let word = self.il.snippet(d.span).trim();
         if let Some(p) = self
-            .pous
-            .iter()
-            .find(|p| !p.translated && !word.is_empty() && p.name.eq_ignore_ascii_case(word))
+            .left_out
+            .get(&word.to_ascii_lowercase())
+            .filter(|_| word.len() <= validate::MAX_NAME)
+            .map(|&k| &self.pous[k])
         {
             d.notes.push(format!(
                 "`{}` is a {} of this project whose body is {} ({}); it was not translated",

@@ -465,3 +465,102 @@ fn thousands_of_attributes_are_refused_in_linear_time() {
     let imp = import(&with_attributes(limits::MAX_ATTRIBUTES - 1));
     assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
 }
+
+/// `n` data types, each a structure whose member is of the next type.
+fn struct_chain(n: usize) -> String {
+    let mut types = String::new();
+    for k in 0..n {
+        types.push_str(&format!(
+            "<dataType name=\"T{k}\"><baseType><struct><variable name=\"m\"><type><derived name=\"T{}\"/></type></variable></struct></baseType></dataType>\n",
+            k + 1
+        ));
+    }
+    types.push_str(&format!(
+        "<dataType name=\"T{n}\"><baseType><INT/></baseType></dataType>\n"
+    ));
+    project(&types, "", "")
+}
+
+/// A POU whose IL body is `bytes` long, escaped (`&lt;`, `&amp;`) or not.
+fn big_body(bytes: usize, escaped: bool) -> String {
+    let line = if escaped {
+        "LD ok (* a &lt; b &amp; c *)\nST ok\n"
+    } else {
+        "LD ok (* a b c *)\nST ok\n"
+    };
+    let body = line.repeat(bytes / line.len());
+    let iface = super::tests::block("localVars", "", &super::tests::var("ok", "<BOOL/>"));
+    let pou = format!(
+        "      <pou name=\"P\" pouType=\"program\"><interface>{iface}</interface><body><IL><xhtml:p>{body}</xhtml:p></IL></body></pou>\n"
+    );
+    project("", &pou, "")
+}
+
+/// Time at n and 8n, measured in this run: linear is 8x, quadratic 64x.
+fn assert_linear(what: &str, small: &str, large: &str, f: impl Fn(&str)) {
+    let t1 = fastest(|| f(small));
+    let t8 = fastest(|| f(large));
+    let ratio = t8.as_secs_f64() / t1.as_secs_f64().max(1e-9);
+    assert!(
+        ratio < 24.0,
+        "{what}: 8x the input took {ratio:.1}x the time ({t1:?} → {t8:?})"
+    );
+}
+
+#[test]
+fn chains_of_structure_types_check_in_linear_time() {
+    let (small, large) = (struct_chain(250), struct_chain(2000));
+    let (_, d) = check(&large);
+    assert!(d.is_empty(), "{d:?}");
+    assert_linear("structure chain", &small, &large, |x| drop(check(x)));
+}
+
+#[test]
+fn a_big_body_imports_in_linear_time_and_space() {
+    for escaped in [false, true] {
+        let (small, large) = (big_body(128 << 10, escaped), big_body(1 << 20, escaped));
+        let imp = import(&large);
+        assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
+        // The body is in the IL text once, not once per POU or per line.
+        assert!(
+            imp.il.text.len() < large.len(),
+            "{} > {}",
+            imp.il.text.len(),
+            large.len()
+        );
+        assert_linear("body", &small, &large, |x| drop(import(x)));
+    }
+}
+
+/// `n` POUs in ST and a configuration with `n` instances of an IL POU.
+fn many_instances(n: usize) -> String {
+    let mut pous: String = (0..n)
+        .map(|k| {
+            format!(
+                "      <pou name=\"Main{k:05}\" pouType=\"program\"><body><ST><xhtml:p>x := 1;</xhtml:p></ST></body></pou>\n"
+            )
+        })
+        .collect();
+    pous.push_str(&super::tests::il_pou(
+        "Main",
+        "program",
+        "",
+        "LD TRUE\nRET\n",
+    ));
+    let instances: String = (0..n)
+        .map(|k| format!("<pouInstance name=\"I{k}\" typeName=\"MainIL000\"/>\n"))
+        .collect();
+    let cfg = format!(
+        "<configuration name=\"C\"><resource name=\"R\">{instances}</resource></configuration>\n"
+    );
+    project("", &pous, &cfg)
+}
+
+#[test]
+fn instances_find_their_pou_in_linear_time() {
+    // Names of one length that differ late: a scan compares each in full.
+    let (small, large) = (many_instances(500), many_instances(4000));
+    let imp = import(&large);
+    assert_eq!(imp.il.text.matches(" : MainIL000;").count(), 4000);
+    assert_linear("instances", &small, &large, |x| drop(import(x)));
+}

@@ -19,9 +19,9 @@ impl Tr<'_, '_> {
             for i in instances {
                 let ty = i.attribute("typeName").unwrap_or("");
                 if let Some(p) = self
-                    .pous
-                    .iter()
-                    .find(|p| !p.translated && p.name.eq_ignore_ascii_case(ty))
+                    .left_out
+                    .get(&ty.to_ascii_lowercase())
+                    .map(|&k| &self.pous[k])
                 {
                     let msg = format!(
                         "CONFIGURATION `{name}` is not translated: its instance `{}` runs POU `{}`, whose body is {} ({})",

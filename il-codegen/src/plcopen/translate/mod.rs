@@ -76,6 +76,9 @@ struct Tr<'a, 'i> {
     pous: Vec<PouInfo>,
     /// Globals by lower-case name, for `VAR_EXTERNAL CONSTANT`.
     globals: HashMap<String, Vec<Global<'a, 'i>>>,
+    /// POUs left out (not IL) by lower-case name: index into `pous`, so
+    /// that program instances find theirs without a scan per instance.
+    left_out: HashMap<String, usize>,
 }
 
 fn is(n: &Node, name: &str) -> bool {
@@ -106,6 +109,7 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
         diags: Vec::new(),
         pous: Vec::new(),
         globals: HashMap::new(),
+        left_out: HashMap::new(),
     };
     let root = doc.root_element();
     if root.tag_name().name() != "project" {

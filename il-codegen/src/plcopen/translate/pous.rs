@@ -16,8 +16,9 @@ impl Tr<'_, '_> {
             Some("functionBlock") => "FUNCTION_BLOCK",
             Some("function") => "FUNCTION",
             other => {
-                let what =
-                    other.map_or("no `pouType`".to_string(), |o| format!("`pouType=\"{o}\"`"));
+                let what = other.map_or("no `pouType`".to_string(), |o| {
+                    format!("`pouType=\"{}\"`", shown(o))
+                });
                 self.diags.push(
                     Diagnostic::error(
                         BAD_PROJECT,
@@ -61,6 +62,9 @@ impl Tr<'_, '_> {
                 .with_label(format!("{language} body"))
                 .with_secondary(self.tag(lang), format!("the {language} body")),
             );
+            self.left_out
+                .entry(name.to_ascii_lowercase())
+                .or_insert(self.pous.len());
             self.pous.push(PouInfo {
                 name,
                 kind: keyword,
