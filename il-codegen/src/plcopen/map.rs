@@ -74,6 +74,21 @@ impl Writer {
         self.pieces.truncate(mark.1);
     }
 
+    /// The XML byte offset that IL byte `off` written so far came from (as
+    /// [`SpanMap::offset_to_xml`], before the map is finished).
+    pub(crate) fn xml_at(&self, off: usize) -> usize {
+        let off = u(off);
+        let i = self
+            .pieces
+            .partition_point(|p| p.il <= off)
+            .saturating_sub(1);
+        match self.pieces.get(i) {
+            Some(p) if p.linear => (p.xml_lo + (off - p.il.min(off))).min(p.xml_hi) as usize,
+            Some(p) => p.xml_lo as usize,
+            None => 0,
+        }
+    }
+
     /// Finish: the IL text and its map.
     pub(crate) fn finish(self) -> (String, SpanMap) {
         let end = u(self.text.len());

@@ -61,6 +61,8 @@ codes! {
         "Types and values nest at most 64 levels deep (`<array>` in `<array>`, `<struct>` in `<struct>`, `<arrayValue>` in `<arrayValue>` ...). Declare the inner levels as named data types and refer to them with `<derived>`.\n\n    <type><array><dimension lower=\"0\" upper=\"1\"/><baseType><array> ... (65 levels)";
     TOO_COMPLEX = "IL0208", "XML element too complex",
         "An element has more than 128 attributes, or more than 64 namespace declarations (`xmlns`, `xmlns:p`) are in scope at once. Reading such XML costs time that grows with the square of its size, so the file is refused before it is read; no PLCopen project needs this many.\n\n    <variable name=\"x\" a1=\"\" a2=\"\" ... a129=\"\">";
+    BODY_ESCAPES = "IL0209", "IL body reaches outside its POU",
+        "The text of an `<IL>` body is copied into the POU as it is, so it must not end the POU (`END_PROGRAM`, `END_FUNCTION_BLOCK` ...), start another POU, a `TYPE` or a `CONFIGURATION`, or open a comment `(*` that it does not close (which would swallow what follows). The POU is left out.\n\n    <IL><xhtml:p>LD a\n    END_PROGRAM\n    PROGRAM Other ...</xhtml:p></IL>";
 }
 
 use codes::{MALFORMED_XML, TOO_COMPLEX};

@@ -518,7 +518,7 @@ fn chains_of_structure_types_check_in_linear_time() {
 #[test]
 fn a_big_body_imports_in_linear_time_and_space() {
     for escaped in [false, true] {
-        let (small, large) = (big_body(128 << 10, escaped), big_body(1 << 20, escaped));
+        let (small, large) = (big_body(64 << 10, escaped), big_body(512 << 10, escaped));
         let imp = import(&large);
         assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
         // The body is in the IL text once, not once per POU or per line.
@@ -563,4 +563,43 @@ fn instances_find_their_pou_in_linear_time() {
     let imp = import(&large);
     assert_eq!(imp.il.text.matches(" : MainIL000;").count(), 4000);
     assert_linear("instances", &small, &large, |x| drop(import(x)));
+}
+
+#[test]
+fn a_body_cannot_end_its_pou_or_swallow_the_next() {
+    let iface = super::tests::block("localVars", "", &super::tests::var("ok", "<BOOL/>"));
+    let good = super::tests::il_pou("Good", "program", &iface, "LD ok\nST ok\n");
+    for (body, at) in [
+        (
+            "LD ok\nEND_PROGRAM\nPROGRAM Evil\nLD 1\n",
+            Some("END_PROGRAM"),
+        ),
+        (
+            "LD ok\nEND_PROGRAM\nFUNCTION_BLOCK Evil\n",
+            Some("END_PROGRAM"),
+        ),
+        ("LD ok\n(* open\n", None),
+    ] {
+        let bad = super::tests::il_pou("Bad", "program", &iface, body);
+        // The bad POU first: an open comment would swallow the good one.
+        let xml = project("", &(bad + &good), "");
+        let imp = import(&xml);
+        let e: Vec<&Diagnostic> = imp
+            .diagnostics
+            .iter()
+            .filter(|d| d.code == "IL0209")
+            .collect();
+        assert_eq!(e.len(), 1, "{body:?}: {:?}", imp.diagnostics);
+        match at {
+            Some(word) => assert_eq!(imp.xml.snippet(e[0].span), word, "{body:?}"),
+            None => assert!(imp.xml.snippet(e[0].span).starts_with("<IL"), "{body:?}"),
+        }
+        assert!(
+            !imp.il.text.contains("Evil") && !imp.il.text.contains("PROGRAM Bad"),
+            "{}",
+            imp.il.text
+        );
+        assert!(imp.il.text.contains("PROGRAM Good\n"), "{}", imp.il.text);
+        assert!(parses(&imp.il), "{}", imp.il.text);
+    }
 }

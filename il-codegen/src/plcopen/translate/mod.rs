@@ -11,13 +11,16 @@ use std::ops::Range;
 
 use roxmltree::Node;
 
-use super::codes::{BAD_ATTRIBUTE, BAD_PROJECT, NOT_IL, NOT_TRANSLATED, TOO_DEEP, UNTRANSLATABLE};
+use super::codes::{
+    BAD_ATTRIBUTE, BAD_PROJECT, BODY_ESCAPES, NOT_IL, NOT_TRANSLATED, TOO_DEEP, UNTRANSLATABLE,
+};
 use super::map::{SpanMap, Writer};
 use super::text::{attr_into, content_range, decode_content, start_tag};
 use super::validate::{self, Kind, shown};
 use super::{PouInfo, language_name};
 use crate::ast::Span;
 use crate::diag::Diagnostic;
+use crate::syntax::lexer::{self, Tok};
 
 /// What the translation of one document produced.
 pub(crate) struct Translation {

@@ -86,6 +86,7 @@ impl Tr<'_, '_> {
                 );
             }
         }
+        let pou_start = self.w.mark();
         self.put(keyword, p);
         self.put(" ", p);
         self.attr(p, "name", Kind::Name);
@@ -128,11 +129,66 @@ impl Tr<'_, '_> {
             .and_then(|s| s.rfind("</"))
             .unwrap_or(lang.range().start);
         self.w.gen_at(&format!("\nEND_{keyword}\n\n"), end_tag..end);
+        if !self.stays_in_its_pou(pou_start, &name, lang) {
+            self.w.rollback(pou_start);
+            return;
+        }
         self.pous.push(PouInfo {
             name,
             kind: keyword,
             language,
             translated: true,
         });
+    }
+
+    /// Whether the POU written since `start` lexes as one POU: its body
+    /// (which is copied as it is) must not end it early (`END_PROGRAM`
+    /// then another POU) or swallow what follows (an unclosed `(*`). When
+    /// it does, report it at the place in the body.
+    fn stays_in_its_pou(&mut self, start: (usize, usize), name: &str, lang: Node) -> bool {
+        let text = &self.w.text[start.0..];
+        let (toks, _) = lexer::lex(text);
+        let structural = |t: &Tok| {
+            matches!(
+                t,
+                Tok::Pou(_)
+                    | Tok::EndPou(_)
+                    | Tok::Type
+                    | Tok::EndType
+                    | Tok::Configuration
+                    | Tok::EndConfiguration
+                    | Tok::Orphan
+            )
+        };
+        let mut it = toks.iter().filter(|(_, t, _)| structural(t));
+        let first_ok = matches!(it.next(), Some((0, Tok::Pou(_), _)));
+        let end = it.next();
+        let extra = it.next();
+        let end_is_last = matches!(end, Some((_, Tok::EndPou(_), _)))
+            && toks.last().map(|(lo, _, _)| *lo) == end.map(|(lo, _, _)| *lo);
+        if first_ok && end_is_last && extra.is_none() {
+            return true;
+        }
+        // The first token that does not belong, else the body's tag.
+        let at = match (end_is_last, end, extra) {
+            (true, _, Some((lo, _, hi))) | (false, Some((lo, _, hi)), _) => {
+                let lo = self.w.xml_at(start.0 + lo);
+                let hi = self.w.xml_at(start.0 + hi).max(lo);
+                Span::new(lo, hi)
+            }
+            _ => self.tag(lang),
+        };
+        self.diags.push(
+            Diagnostic::error(
+                BODY_ESCAPES,
+                at,
+                format!(
+                    "the IL body of POU `{name}` reaches outside its POU: it ends the POU early or opens a comment it does not close"
+                ),
+            )
+            .with_label("the POU would end here")
+            .with_note(format!("POU `{name}` is left out")),
+        );
+        false
     }
 }
