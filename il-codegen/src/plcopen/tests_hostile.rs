@@ -85,6 +85,8 @@ const INJECTIONS: &[(&str, &str)] = &[
     ("{IV}", "5 (* Evil *)"),
     ("{IV}", "'a'; Evil : STRING := 'b'"),
     ("{IV}", "5&#10;END_VAR&#10;VAR Evil : INT;"),
+    ("{IV}", "[1, 2]; Evil : INT := [1"),
+    ("{IV}", "(x := 1) END_VAR VAR Evil : Pt := (x := 1)"),
     ("{AD}", "%IX0.0 : BOOL; Evil AT %IX0.1"),
     ("{SL}", "8]; Evil : STRING[8"),
     ("{AL}", "0..1] OF INT; Evil : ARRAY [0"),

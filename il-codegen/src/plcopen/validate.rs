@@ -37,7 +37,7 @@ impl Kind {
     pub(crate) fn what(self) -> &'static str {
         match self {
             Kind::Name => "an IEC identifier",
-            Kind::Value => "one literal or name",
+            Kind::Value => "a literal, a name or a `[...]` / `(...)` value of them",
             Kind::Integer => "an integer literal",
             Kind::Bound => "an integer literal or a constant's name",
             Kind::Count => "a decimal number",
@@ -137,10 +137,14 @@ fn identifier(s: &str) -> Result<(), String> {
     Ok(())
 }
 
-/// One literal or one name, as the project's own lexer reads it in a
-/// declaration: the whole text must be a single token. Returns the
-/// literal's kind (`None` for a name).
+/// One literal or one name, or the structured initial values built of
+/// them (`[1, 2(0)]`, `(x := 1, y := [TRUE])`), as the project's own lexer
+/// reads them in a declaration: every byte belongs to such a token or is a
+/// space between two (no comment), brackets balance, and the value ends
+/// where the `;` written after it starts. Returns the literal's kind when
+/// the value is one literal.
 fn value(s: &str) -> Result<Option<LitKind>, String> {
+    const PRE: &str = "TYPE\n  T : INT := ";
     if s.len() > MAX_VALUE {
         return Err(format!("it is longer than {MAX_VALUE} bytes"));
     }
@@ -148,36 +152,73 @@ fn value(s: &str) -> Result<Option<LitKind>, String> {
     if t.is_empty() {
         return Err("it is blank".into());
     }
-    const PRE: &str = "TYPE\n  T : INT := ";
     let src = format!("{PRE}{t};\nEND_TYPE\n");
     let (toks, diags) = lexer::lex(&src);
     if let Some(d) = diags.first() {
         return Err(d.message.clone());
     }
-    let lo = PRE.len();
-    let hi = lo + t.len();
-    let inner: Vec<&(usize, Tok, usize)> = toks
-        .iter()
-        .filter(|(a, _, b)| *a >= lo && *b <= hi && b > a)
-        .collect();
-    let whole = toks
-        .iter()
-        .any(|(a, t, b)| *a == lo && *b == hi && matches!(t, Tok::Lit(_) | Tok::Ident(_)));
-    // The token after the value must be the `;` written here: nothing of
-    // the value may run past it, or be read as more than one token.
-    let next_is_semi = toks
-        .iter()
-        .find(|(a, _, _)| *a >= hi)
-        .is_some_and(|(a, t, _)| *a == hi && *t == Tok::Semi);
-    if !(whole && inner.len() == 1 && next_is_semi) {
-        return Err("it is not a single literal or name".into());
+    let not =
+        || Err("it is not a literal, a name, or a `[...]` or `(...)` value of them".to_string());
+    let (lo, hi) = (PRE.len(), PRE.len() + t.len());
+    let mut pos = lo;
+    let mut open: Vec<&Tok> = Vec::new();
+    let mut only: Option<&Tok> = None;
+    let mut count = 0usize;
+    for (a, tok, b) in toks.iter().filter(|(a, _, _)| *a >= lo) {
+        if *a >= hi {
+            // Nothing of the value may run past the `;` written after it.
+            if !(*a == hi && *tok == Tok::Semi && pos == hi && open.is_empty()) {
+                return not();
+            }
+            return match (count, only) {
+                (1, Some(Tok::Lit(l))) => Ok(Some(l.kind.clone())),
+                _ => Ok(None),
+            };
+        }
+        if *b > hi || !src[pos..*a].bytes().all(|c| c == b' ') {
+            return not();
+        }
+        // One item at top level; inside brackets, items are separated by
+        // `,` or `:=`, and only a count may precede `(` (a repetition).
+        let ends = |t: &Tok| matches!(t, Tok::Lit(_) | Tok::Ident(_) | Tok::RBracket | Tok::RParen);
+        let sep = |t: &Tok| matches!(t, Tok::Comma | Tok::Assign);
+        let fits = match only {
+            None => !sep(tok) && !matches!(tok, Tok::RBracket | Tok::RParen),
+            _ if open.is_empty() => false,
+            Some(p) if ends(p) => {
+                sep(tok)
+                    || matches!(tok, Tok::RBracket | Tok::RParen)
+                    || (matches!(p, Tok::Lit(_)) && *tok == Tok::LParen)
+            }
+            // After `,`, `:=`, `[` or `(`: an item.
+            Some(_) => !sep(tok) && !matches!(tok, Tok::RBracket | Tok::RParen),
+        };
+        if !fits {
+            return not();
+        }
+        match tok {
+            Tok::Lit(_) | Tok::Comma | Tok::Assign => {}
+            Tok::Ident(name) => identifier(name)?,
+            Tok::LBracket | Tok::LParen => {
+                open.push(tok);
+                if open.len() > MAX_NEST {
+                    return Err(format!("it nests more than {MAX_NEST} brackets deep"));
+                }
+            }
+            Tok::RBracket if open.pop() == Some(&Tok::LBracket) => {}
+            Tok::RParen if open.pop() == Some(&Tok::LParen) => {}
+            _ => return not(),
+        }
+        count += 1;
+        only = Some(tok);
+        pos = *b;
     }
-    match &inner[0].1 {
-        Tok::Lit(l) => Ok(Some(l.kind.clone())),
-        Tok::Ident(name) => identifier(name).map(|_| None),
-        _ => Err("it is not a single literal or name".into()),
-    }
+    not()
 }
+
+/// Brackets in one initial value, at most (as deep as the import nests
+/// `<arrayValue>` and `<structValue>`).
+const MAX_NEST: usize = 64;
 
 /// `5`, `-3`, `16#FF`, `2#1010`.
 fn integer(s: &str) -> Result<(), String> {
@@ -273,6 +314,13 @@ mod tests {
             "TOD#12:00:00",
             "DT#2024-01-01-12:00:00",
             " 5 ",
+            "Colour#Green",
+            "WORD#16#FF",
+            "-1.5E-3",
+            "[1, 2, 3]",
+            "[2(0), 1]",
+            "(x := 1, y := [TRUE, FALSE])",
+            "(1)",
         ] {
             assert_eq!(check(Kind::Value, ok), Ok(()), "{ok}");
         }
@@ -289,9 +337,15 @@ mod tests {
             "5\n",
             "'a\u{202e}b'",
             "T#END_VAR",
-            "(1)",
-            "[1]",
             "5 // c",
+            "[1; END_VAR",
+            "[1] (* c *)",
+            "(x := 1))",
+            "[1, 2",
+            "[1, 2)",
+            "(x := END_VAR)",
+            "[x.y]",
+            "1 2",
         ] {
             assert!(check(Kind::Value, bad).is_err(), "{bad:?}");
         }
