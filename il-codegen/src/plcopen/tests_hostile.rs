@@ -605,3 +605,28 @@ fn a_body_cannot_end_its_pou_or_swallow_the_next() {
         assert!(parses(&imp.il), "{}", imp.il.text);
     }
 }
+
+#[test]
+fn a_bad_global_constant_taken_by_two_pous_is_reported_once() {
+    let ext = super::tests::block(
+        "externalVars",
+        r#" constant="true""#,
+        &super::tests::var("Limit", "<INT/>"),
+    );
+    let pous = super::tests::il_pou("A", "functionBlock", &ext, "LD Limit\nRET\n")
+        + &super::tests::il_pou("B", "functionBlock", &ext, "LD Limit\nRET\n");
+    let cfg = r#"      <configuration name="Cell">
+        <globalVars constant="true">
+          <variable name="Limit"><type><INT/></type><initialValue><simpleValue value="17; Evil : INT"/></initialValue></variable>
+        </globalVars>
+      </configuration>
+"#;
+    let imp = import(&project("", &pous, cfg));
+    assert!(!imp.il.text.contains("Evil"), "{}", imp.il.text);
+    let bad: Vec<_> = imp
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == "IL0206")
+        .collect();
+    assert_eq!(bad.len(), 1, "{bad:?}");
+}

@@ -154,7 +154,12 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
 }
 
 impl<'a, 'i> Tr<'a, 'i> {
-    fn finish(self) -> Translation {
+    fn finish(mut self) -> Translation {
+        // A global constant's value is written (and checked) once per
+        // VAR_EXTERNAL that takes it: report each problem once.
+        let mut seen = std::collections::HashSet::new();
+        self.diags
+            .retain(|d| seen.insert((d.code, d.span.lo, d.span.hi, d.message.clone())));
         let (text, map) = self.w.finish();
         Translation {
             text,
