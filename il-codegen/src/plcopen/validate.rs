@@ -163,8 +163,8 @@ fn value(s: &str) -> Result<Option<LitKind>, String> {
     let mut pos = lo;
     let mut open: Vec<&Tok> = Vec::new();
     let mut only: Option<&Tok> = None;
-    let mut count = 0usize;
-    for (a, tok, b) in toks.iter().filter(|(a, _, _)| *a >= lo) {
+    // `count`: the tokens of the value before this one.
+    for (count, (a, tok, b)) in toks.iter().filter(|(a, _, _)| *a >= lo).enumerate() {
         if *a >= hi {
             // Nothing of the value may run past the `;` written after it.
             if !(*a == hi && *tok == Tok::Semi && pos == hi && open.is_empty()) {
@@ -209,7 +209,6 @@ fn value(s: &str) -> Result<Option<LitKind>, String> {
             Tok::RParen if open.pop() == Some(&Tok::LParen) => {}
             _ => return not(),
         }
-        count += 1;
         only = Some(tok);
         pos = *b;
     }
