@@ -223,7 +223,9 @@ impl Import {
                 let lead = line.len() - line.trim_start().len();
                 let off = u32::try_from(start + lead).unwrap_or(u32::MAX);
                 start += line.len() + 1;
-                self.xml.line_col(self.map.offset_to_xml(off)).0
+                // Only the line: counting the column's characters would cost
+                // the XML line's length per IL line (a body on one XML line).
+                self.xml.line_of(self.map.offset_to_xml(off))
             })
             .collect()
     }

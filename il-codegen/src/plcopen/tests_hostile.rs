@@ -630,3 +630,33 @@ fn a_bad_global_constant_taken_by_two_pous_is_reported_once() {
         .collect();
     assert_eq!(bad.len(), 1, "{bad:?}");
 }
+
+/// A body on one XML line (line breaks written as `&#10;`), `bytes` long.
+fn one_line_body(bytes: usize) -> String {
+    let body = "LD ok&#10;ST ok&#10;".repeat(bytes / 20);
+    let iface = super::tests::block("localVars", "", &super::tests::var("ok", "<BOOL/>"));
+    let pou = format!(
+        "      <pou name=\"P\" pouType=\"program\"><interface>{iface}</interface><body><IL><xhtml:p>{body}</xhtml:p></IL></body></pou>\n"
+    );
+    project("", &pou, "")
+}
+
+#[test]
+fn xml_lines_of_a_body_on_one_line_take_linear_time() {
+    let (small, large) = (
+        import(&one_line_body(32 << 10)),
+        import(&one_line_body(256 << 10)),
+    );
+    let lines = large.xml_lines();
+    let body_line = large
+        .xml
+        .line_of(large.xml.text.find("LD ok").unwrap() as u32);
+    assert!(lines.iter().filter(|&&l| l == body_line).count() > 12000);
+    let t1 = fastest(|| drop(small.xml_lines()));
+    let t8 = fastest(|| drop(large.xml_lines()));
+    let ratio = t8.as_secs_f64() / t1.as_secs_f64().max(1e-9);
+    assert!(
+        ratio < 24.0,
+        "8x the body took {ratio:.1}x the time ({t1:?} → {t8:?})"
+    );
+}
