@@ -361,6 +361,9 @@ mod tests {
             (Kind::Address, "%QW4"),
             (Kind::Address, "%md10.2.3"),
             (Kind::Duration, "T#10ms"),
+            (Kind::Duration, "t#200ms"),
+            (Kind::Duration, "LTIME#1s"),
+            (Kind::Value, "16#FF_FF"),
             (Kind::Trigger, "trig"),
             (Kind::Trigger, "%IX1.0"),
         ] {
