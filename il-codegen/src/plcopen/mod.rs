@@ -235,3 +235,5 @@ impl Import {
 mod tests;
 #[cfg(test)]
 mod tests_hostile;
+#[cfg(test)]
+mod tests_limits;
