@@ -235,7 +235,9 @@ impl<'a, 'i> Tr<'a, 'i> {
                     ),
                 )
                 .with_label(format!("expected {}", kind.what()))
-                .with_note(format!("the `<{}>` is left out", n.tag_name().name())),
+                .with_note(
+                    "the variable, type, POU, task or configuration it belongs to is left out",
+                ),
             );
             return None;
         }
