@@ -123,7 +123,7 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
                 at,
                 format!(
                     "this is not a PLCopen TC6 project: the root element is `<{}>`, not `<project>`",
-                    root.tag_name().name()
+                    shown(root.tag_name().name())
                 ),
             )
             .with_label("expected `<project>`"),

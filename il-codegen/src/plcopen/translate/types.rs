@@ -117,7 +117,7 @@ impl Tr<'_, '_> {
                 "pointer types cannot be translated: IEC 61131-3 IL has no pointers",
             ),
             other => {
-                let msg = format!("the type `<{other}>` cannot be translated");
+                let msg = format!("the type `<{}>` cannot be translated", shown(other));
                 self.untranslatable(t, &msg)
             }
         }

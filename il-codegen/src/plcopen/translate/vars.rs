@@ -56,7 +56,10 @@ impl Tr<'_, '_> {
                 ok
             }
             other => {
-                let msg = format!("the initial value `<{other}>` cannot be translated");
+                let msg = format!(
+                    "the initial value `<{}>` cannot be translated",
+                    shown(other)
+                );
                 self.untranslatable(v, &msg)
             }
         }
@@ -141,7 +144,7 @@ impl Tr<'_, '_> {
                     Diagnostic::warning(
                         NOT_TRANSLATED,
                         at,
-                        format!("`<{other}>` is not translated"),
+                        format!("`<{}>` is not translated", shown(other)),
                     )
                     .with_label("skipped"),
                 );
