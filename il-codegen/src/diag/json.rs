@@ -27,8 +27,10 @@ pub fn write_json_string(out: &mut String, s: &str) {
             '\n' => out.push_str("\\n"),
             '\r' => out.push_str("\\r"),
             '\t' => out.push_str("\\t"),
-            // Other C0 controls, DEL, and the two separators JavaScript chokes on.
-            c if (c as u32) < 0x20 || c == '\u{7f}' || c == '\u{2028}' || c == '\u{2029}' => {
+            // Other C0 and C1 controls, DEL, the two separators JavaScript
+            // chokes on, and bidirectional controls (all below U+FFFF, so
+            // one `\uXXXX` each).
+            c if super::render::unsafe_char(c) => {
                 let _ = write!(out, "\\u{:04x}", c as u32);
             }
             c => out.push(c),

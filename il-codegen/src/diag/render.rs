@@ -5,6 +5,9 @@
 //! text, reversed spans, empty spans and spans that cut a UTF-8 character:
 //! they are clamped, never a panic.
 
+use std::borrow::Cow;
+use std::fmt::Write as _;
+
 use annotate_snippets::{AnnotationKind, Group, Level, Renderer, Snippet};
 
 pub use super::json::to_json;
@@ -92,6 +95,77 @@ fn ceil_char(text: &str, mut i: usize) -> usize {
     i
 }
 
+/// Characters that must not reach a terminal from a message: they start a
+/// new line, move the cursor, or reorder what is shown (C0 and C1 controls,
+/// DEL, line and paragraph separators, bidirectional controls).
+pub(crate) fn unsafe_char(c: char) -> bool {
+    c.is_control()
+        || matches!(
+            c,
+            '\u{2028}'
+                | '\u{2029}'
+                | '\u{200e}'
+                | '\u{200f}'
+                | '\u{061c}'
+                | '\u{202a}'..='\u{202e}'
+                | '\u{2066}'..='\u{2069}'
+        )
+}
+
+/// `s` on one line: every [`unsafe_char`] written as an escape (`\n`, `\t`,
+/// `\u{202e}`), so that text quoted from a file (a name holding
+/// `\nerror[IL0000]: fake`) can never forge a line of the report. No
+/// message, label, note or help is meant to span lines.
+pub fn one_line(s: &str) -> Cow<'_, str> {
+    if !s.chars().any(unsafe_char) {
+        return Cow::Borrowed(s);
+    }
+    let mut out = String::with_capacity(s.len() + 8);
+    for c in s.chars() {
+        match c {
+            '\n' => out.push_str("\\n"),
+            '\r' => out.push_str("\\r"),
+            '\t' => out.push_str("\\t"),
+            c if unsafe_char(c) => {
+                let _ = write!(out, "\\u{{{:x}}}", u32::from(c));
+            }
+            c => out.push(c),
+        }
+    }
+    Cow::Owned(out)
+}
+
+/// The source lines as shown: control characters other than tab, line
+/// breaks and the CR of a CRLF become U+FFFD (a lone CR or an escape
+/// sequence would redraw the terminal line). Returns the text and a map
+/// from byte offsets in `src` to offsets in it.
+fn shown_source(src: &str) -> (Cow<'_, str>, Vec<(usize, usize)>) {
+    let bad = |k: usize, c: char| {
+        unsafe_char(c) && c != '\t' && c != '\n' && !(c == '\r' && src[k + 1..].starts_with('\n'))
+    };
+    if !src.char_indices().any(|(k, c)| bad(k, c)) {
+        return (Cow::Borrowed(src), Vec::new());
+    }
+    let mut out = String::with_capacity(src.len() + 8);
+    // (offset in src after a replaced char, bytes added so far)
+    let mut shifts = Vec::new();
+    for (k, c) in src.char_indices() {
+        if bad(k, c) {
+            out.push('\u{FFFD}');
+            shifts.push((k + c.len_utf8(), out.len() - (k + c.len_utf8())));
+        } else {
+            out.push(c);
+        }
+    }
+    (Cow::Owned(out), shifts)
+}
+
+/// Offset `o` of the original source in [`shown_source`]'s text.
+fn shifted(shifts: &[(usize, usize)], o: usize) -> usize {
+    let i = shifts.partition_point(|(at, _)| *at <= o);
+    if i == 0 { o } else { o + shifts[i - 1].1 }
+}
+
 fn ordered<'d>(text: &str, diags: &'d [Diagnostic]) -> Vec<&'d Diagnostic> {
     let mut v: Vec<&'d Diagnostic> = diags.iter().collect();
     // Stable: equal positions keep the order in which the stages reported them.
@@ -146,6 +220,8 @@ fn render_one(renderer: &Renderer, file: &SourceFile, d: &Diagnostic) -> String 
         start = floor_char(text, lo.saturating_sub(CONTEXT).max(start));
         end = ceil_char(text, (hi + CONTEXT).min(end).min(start + 2 * LONG_LINE));
     }
+    let raw = &text[start..end];
+    let (shown_raw, shifts) = shown_source(raw);
     let (before, after) = match window {
         true => (
             if start > line_lo { "..." } else { "" },
@@ -153,45 +229,50 @@ fn render_one(renderer: &Renderer, file: &SourceFile, d: &Diagnostic) -> String 
         ),
         false => ("", ""),
     };
-    let owned;
-    let source = if window {
-        owned = format!("{before}{}{after}", &text[start..end]);
-        owned.as_str()
+    let source: Cow<'_, str> = if window {
+        Cow::Owned(format!("{before}{shown_raw}{after}"))
     } else {
-        &text[start..end]
+        shown_raw
     };
     let shift = before.len();
     // Spans that run past `end` (a span over a final line break) are cut there.
-    let max = source.len() - after.len();
     let rel = |(a, b): (usize, usize)| {
-        (a.saturating_sub(start) + shift).min(max)..(b.saturating_sub(start) + shift).min(max)
+        let a = a.saturating_sub(start).min(raw.len());
+        let b = b.saturating_sub(start).min(raw.len());
+        shifted(&shifts, a) + shift..shifted(&shifts, b) + shift
     };
-
+    // Everything quoted from the user goes through one_line.
+    let label = one_line(&d.label);
+    let path = one_line(&file.name);
+    let message = one_line(&d.message);
+    let secondary_labels: Vec<Cow<'_, str>> = secondary.iter().map(|(_, l)| one_line(l)).collect();
+    let notes: Vec<Cow<'_, str>> = d.notes.iter().map(|n| one_line(n)).collect();
+    let help = d.help.as_deref().map(one_line);
     let mut primary_ann = AnnotationKind::Primary.span(rel(primary));
-    if !d.label.is_empty() {
-        primary_ann = primary_ann.label(d.label.as_str());
+    if !label.is_empty() {
+        primary_ann = primary_ann.label(label.as_ref());
     }
-    let mut snippet = Snippet::source(source)
+    let mut snippet = Snippet::source(source.as_ref())
         .line_start(first_line)
-        .path(file.name.as_str())
+        .path(path.as_ref())
         .fold(true)
         .annotation(primary_ann);
-    for (span, label) in &secondary {
+    for ((span, _), label) in secondary.iter().zip(&secondary_labels) {
         let mut ann = AnnotationKind::Context.span(rel(*span));
         if !label.is_empty() {
-            ann = ann.label(*label);
+            ann = ann.label(label.as_ref());
         }
         snippet = snippet.annotation(ann);
     }
     let mut group: Group<'_> = level
-        .primary_title(d.message.as_str())
+        .primary_title(message.as_ref())
         .id(d.code)
         .element(snippet);
-    for note in &d.notes {
-        group = group.element(Level::NOTE.message(note.as_str()));
+    for note in &notes {
+        group = group.element(Level::NOTE.message(note.as_ref()));
     }
-    if let Some(help) = &d.help {
-        group = group.element(Level::HELP.message(help.as_str()));
+    if let Some(help) = &help {
+        group = group.element(Level::HELP.message(help.as_ref()));
     }
     let out = renderer.render(&[group]);
     if !window {
@@ -201,8 +282,8 @@ fn render_one(renderer: &Renderer, file: &SourceFile, d: &Diagnostic) -> String 
     let shown = source[..rel(primary).start].chars().count() + 1;
     let (line, col) = file.line_col(primary.0 as u32);
     out.replacen(
-        &format!("{}:{line}:{shown}", file.name),
-        &format!("{}:{line}:{col}", file.name),
+        &format!("{path}:{line}:{shown}"),
+        &format!("{path}:{line}:{col}"),
         1,
     )
 }
@@ -240,7 +321,7 @@ pub fn render_short_in(file: &SourceFile, d: &Diagnostic, first_line: Option<usi
         ),
         None => format!("at line {line}, column {col}"),
     };
-    out.push_str(&format!("{}: {} ({at})\n", d.code, d.message));
+    out.push_str(&format!("{}: {} ({at})\n", d.code, one_line(&d.message)));
 
     let src_line = file.line_text(line);
     let num = line.to_string();
@@ -264,29 +345,33 @@ pub fn render_short_in(file: &SourceFile, d: &Diagnostic, first_line: Option<usi
     ));
     if !d.label.is_empty() {
         out.push(' ');
-        out.push_str(&d.label);
+        out.push_str(&one_line(&d.label));
     }
     out.push('\n');
     for (span, label) in &d.secondary {
         let (l, c) = file.line_col(span.lo);
+        let label = one_line(label);
         out.push_str(&format!("{pad} = note: {label} (line {l}, column {c})\n"));
     }
     for note in &d.notes {
+        let note = one_line(note);
         out.push_str(&format!("{pad} = note: {note}\n"));
     }
     if let Some(help) = &d.help {
+        let help = one_line(help);
         out.push_str(&format!("{pad} = help: {help}\n"));
     }
     out.truncate(out.trim_end().len());
     out
 }
 
-/// Control characters other than tab shown as U+FFFD so that a message never
-/// carries terminal escapes or moves the cursor.
+/// Control characters other than tab (and bidirectional controls, line
+/// separators) shown as U+FFFD so that a message never carries terminal
+/// escapes, moves the cursor or reorders the line.
 fn printable(s: &str) -> String {
     s.chars()
         .map(|c| {
-            if c.is_control() && c != '\t' {
+            if unsafe_char(c) && c != '\t' {
                 '\u{FFFD}'
             } else {
                 c
@@ -408,5 +493,69 @@ mod tests {
             s,
             "IL0003: expected an operand after `LD` (at line 2, column 2)\n  |\n2 | \tLD\n  | \t^^ here\n  = help: write `LD x`"
         );
+    }
+
+    /// A name quoted from a file holding a line break, a lone CR, an escape
+    /// sequence or a bidi override: no renderer starts a line with it.
+    #[test]
+    fn quoted_text_cannot_forge_a_line() {
+        let evil = "x\nerror[IL0000]: fake\r\u{1b}[2K\u{85}\u{2028}\u{202e}y";
+        let f = SourceFile::new(format!("a{evil}.il"), "PROGRAM p\n    LD x\nEND_PROGRAM\n");
+        let d = Diagnostic::error("IL0003", Span::new(14, 18), format!("unknown `{evil}`"))
+            .with_label(evil)
+            .with_secondary(Span::new(0, 7), evil)
+            .with_note(evil)
+            .with_help(evil);
+        let forged = |out: &str| {
+            out.lines()
+                .any(|l| l.trim_start().starts_with("error[IL0000]") || l.starts_with("IL0000"))
+        };
+        for out in [
+            render(&f, std::slice::from_ref(&d), false),
+            render(&f, std::slice::from_ref(&d), true),
+            render_short(&f, &d),
+            super::super::json::to_json(&f, &d),
+        ] {
+            assert!(!forged(&out), "{out}");
+            assert!(
+                !out.chars()
+                    .any(|c| c == '\r' || c == '\u{85}' || c == '\u{2028}' || c == '\u{202e}'),
+                "{out:?}"
+            );
+            // ESC only in the styles of the coloured render, never from the text.
+            assert!(!out.contains("\u{1b}[2K"), "{out:?}");
+        }
+        let plain = render(&f, std::slice::from_ref(&d), false);
+        assert!(
+            plain.contains(r"unknown `x\nerror[IL0000]: fake\r\u{1b}[2K\u{85}\u{2028}\u{202e}y`"),
+            "{plain}"
+        );
+        assert!(plain.contains(r" --> ax\nerror[IL0000]"), "{plain}");
+        // The JSON stays one line and keeps the text, escaped.
+        let j = super::super::json::to_json(&f, &d);
+        assert!(!j.contains('\n') && j.contains(r"x\nerror[IL0000]"), "{j}");
+    }
+
+    /// Control characters in the source line itself are shown as U+FFFD and
+    /// the carets stay under the span; a CRLF file is shown unchanged.
+    #[test]
+    fn control_characters_in_the_source_are_neutralised() {
+        let f = file("PROGRAM p\n  \u{1b}[31m\r LD qq\nEND_PROGRAM\n");
+        let lo = f.text.find("qq").unwrap();
+        let d =
+            Diagnostic::error("IL0004", Span::new(lo, lo + 2), "unknown `qq`").with_label("here");
+        let r = render(&f, std::slice::from_ref(&d), false);
+        assert!(!r.contains('\u{1b}') && !r.contains('\r'), "{r:?}");
+        let line = r
+            .lines()
+            .find(|l| l.contains("LD qq"))
+            .expect("source line");
+        let carets = r.lines().find(|l| l.contains("^^")).expect("carets");
+        let col = |s: &str, pat: &str| s[..s.find(pat).unwrap()].chars().count();
+        assert_eq!(col(line, "qq"), col(carets, "^^"), "{r}");
+        let crlf = file("PROGRAM p\r\n  LD qq\r\nEND_PROGRAM\r\n");
+        let lo = crlf.text.find("qq").unwrap();
+        let d = Diagnostic::error("IL0004", Span::new(lo, lo + 2), "unknown `qq`");
+        assert!(!render(&crlf, &[d], false).contains('\u{FFFD}'));
     }
 }

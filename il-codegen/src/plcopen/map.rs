@@ -62,6 +62,33 @@ impl Writer {
         self.text.push_str(s);
     }
 
+    /// Where the text ends now, for [`Writer::rollback`].
+    pub(crate) fn mark(&self) -> (usize, usize) {
+        (self.text.len(), self.pieces.len())
+    }
+
+    /// Drop everything written since `mark`: an element found invalid
+    /// half-way is left out whole.
+    pub(crate) fn rollback(&mut self, mark: (usize, usize)) {
+        self.text.truncate(mark.0);
+        self.pieces.truncate(mark.1);
+    }
+
+    /// The XML byte offset that IL byte `off` written so far came from (as
+    /// [`SpanMap::offset_to_xml`], before the map is finished).
+    pub(crate) fn xml_at(&self, off: usize) -> usize {
+        let off = u(off);
+        let i = self
+            .pieces
+            .partition_point(|p| p.il <= off)
+            .saturating_sub(1);
+        match self.pieces.get(i) {
+            Some(p) if p.linear => (p.xml_lo + (off - p.il.min(off))).min(p.xml_hi) as usize,
+            Some(p) => p.xml_lo as usize,
+            None => 0,
+        }
+    }
+
     /// Finish: the IL text and its map.
     pub(crate) fn finish(self) -> (String, SpanMap) {
         let end = u(self.text.len());

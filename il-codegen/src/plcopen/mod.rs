@@ -16,11 +16,15 @@
 //! whose program instances run a POU that was not translated is left out
 //! with a warning (IL0204).
 
+mod limits;
 mod map;
 mod text;
 mod translate;
+mod validate;
 
 pub use map::SpanMap;
+
+use std::collections::HashMap;
 
 use crate::ast::Span;
 use crate::diag::{Diagnostic, SourceFile};
@@ -38,11 +42,19 @@ pub mod codes {
         "A part of the project is left out, with this warning: actions and transitions of a POU, access variables, and a configuration whose program instance runs a POU that was not translated (because its body is not IL).\n\n    <task name=\"main\" priority=\"1\" interval=\"T#10ms\">\n      <pouInstance name=\"prg\" typeName=\"MainFBD\"/>   <!-- MainFBD's body is FBD -->";
     UNTRANSLATABLE = "IL0205", "PLCopen element cannot be translated",
         "The project uses something IL has no equivalent for, e.g. a `<pointer>` type.\n\n    <variable name=\"p\"><type><pointer><baseType><INT/></baseType></pointer></type></variable>";
+    BAD_ATTRIBUTE = "IL0206", "invalid attribute value",
+        "An attribute that becomes part of the IL text holds something it cannot: a name that is not an IEC identifier (letters, digits and single `_`, not starting with a digit, not a keyword, at most 255 characters), an initial value that is not one literal or name, a bound, length or priority that is not a number, an address that is not a direct address, a task interval that is not a duration. The element (a variable, type, POU, task ...) is left out; nothing of the value reaches the IL text.\n\n    <variable name=\"x; END_VAR\"><type><INT/></type></variable>\n    <pou name=\"\" pouType=\"program\">   <!-- empty name -->";
+    TOO_DEEP = "IL0207", "PLCopen element nested too deep",
+        "Types and values nest at most 64 levels deep (`<array>` in `<array>`, `<struct>` in `<struct>`, `<arrayValue>` in `<arrayValue>` ...). Declare the inner levels as named data types and refer to them with `<derived>`.\n\n    <type><array><dimension lower=\"0\" upper=\"1\"/><baseType><array> ... (65 levels)";
+    TOO_COMPLEX = "IL0208", "XML element too complex",
+        "An element has more than 128 attributes, or more than 64 namespace declarations (`xmlns`, `xmlns:p`) are in scope at once. Reading such XML costs time that grows with the square of its size, so the file is refused before it is read; no PLCopen project needs this many.\n\n    <variable name=\"x\" a1=\"\" a2=\"\" ... a129=\"\">";
+    BODY_ESCAPES = "IL0209", "IL body reaches outside its POU",
+        "The text of an `<IL>` body is copied into the POU as it is, so it must not end the POU (`END_PROGRAM`, `END_FUNCTION_BLOCK` ...), start another POU, a `TYPE` or a `CONFIGURATION`, or open a comment `(*` that it does not close (which would swallow what follows). The POU is left out.\n\n    <IL><xhtml:p>LD a\n    END_PROGRAM\n    PROGRAM Other ...</xhtml:p></IL>";
     }
 }
 pub use codes::CODES;
 
-use codes::MALFORMED_XML;
+use codes::{MALFORMED_XML, TOO_COMPLEX};
 
 /// What happened to one POU of the project.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -71,6 +83,9 @@ pub struct Import {
     pub pous: Vec<PouInfo>,
     /// Where the bytes of `il` came from in `xml`.
     pub map: SpanMap,
+    /// The POUs left out, by lower-case name (index into `pous`): one look-up
+    /// per diagnostic, not a scan of every POU.
+    left_out: HashMap<String, usize>,
 }
 
 /// A readable name for a TC6 body language.
@@ -111,9 +126,14 @@ impl Import {
             allow_dtd: false,
             ..roxmltree::ParsingOptions::default()
         };
-        let t = match roxmltree::Document::parse_with_options(&xml.text, opts) {
-            Ok(doc) => translate::translate(&doc, &xml.text),
-            Err(e) => {
+        let parsed = match limits::check(&xml.text) {
+            Some(e) => {
+                Err(
+                    Diagnostic::error(TOO_COMPLEX, Span::new(e.at.start, e.at.end), e.message)
+                        .with_label(e.label),
+                )
+            }
+            None => roxmltree::Document::parse_with_options(&xml.text, opts).map_err(|e| {
                 let pos = e.pos();
                 let at = offset_of(&xml.text, pos.row, pos.col);
                 let width = xml.text[at..].chars().next().map_or(0, char::len_utf8);
@@ -124,28 +144,35 @@ impl Import {
                     Some(k) if msg[k + 4..].contains(':') => msg[..k].to_string(),
                     _ => msg,
                 };
-                translate::Translation {
-                    text: String::new(),
-                    map: SpanMap::default(),
-                    diags: vec![
-                        Diagnostic::error(
-                            MALFORMED_XML,
-                            Span::new(at, at + width),
-                            format!("malformed XML: {msg}"),
-                        )
-                        .with_label("the XML parser stopped here"),
-                    ],
-                    pous: Vec::new(),
-                }
-            }
+                Diagnostic::error(
+                    MALFORMED_XML,
+                    Span::new(at, at + width),
+                    format!("malformed XML: {msg}"),
+                )
+                .with_label("the XML parser stopped here")
+            }),
+        };
+        let t = match parsed {
+            Ok(doc) => translate::translate(&doc, &xml.text),
+            Err(d) => translate::Translation {
+                text: String::new(),
+                map: SpanMap::default(),
+                diags: vec![d],
+                pous: Vec::new(),
+            },
         };
         let il = SourceFile::new(xml.name.clone(), t.text);
+        let mut left_out = HashMap::new();
+        for (k, p) in t.pous.iter().enumerate().filter(|(_, p)| !p.translated) {
+            left_out.entry(p.name.to_ascii_lowercase()).or_insert(k);
+        }
         Import {
             xml,
             il,
             diagnostics: t.diags,
             pous: t.pous,
             map: t.map,
+            left_out,
         }
     }
 
@@ -154,9 +181,10 @@ impl Import {
     pub fn to_xml(&self, mut d: Diagnostic) -> Diagnostic {
         let word = self.il.snippet(d.span).trim();
         if let Some(p) = self
-            .pous
-            .iter()
-            .find(|p| !p.translated && !word.is_empty() && p.name.eq_ignore_ascii_case(word))
+            .left_out
+            .get(&word.to_ascii_lowercase())
+            .filter(|_| word.len() <= validate::MAX_NAME)
+            .map(|&k| &self.pous[k])
         {
             d.notes.push(format!(
                 "`{}` is a {} of this project whose body is {} ({}); it was not translated",
@@ -184,6 +212,8 @@ impl Import {
                 let lead = line.len() - line.trim_start().len();
                 let off = u32::try_from(start + lead).unwrap_or(u32::MAX);
                 start += line.len() + 1;
+                // Only the line: counting the column's characters would cost
+                // the XML line's length per IL line (a body on one XML line).
                 self.xml.line_of(self.map.offset_to_xml(off))
             })
             .collect()
@@ -192,3 +222,7 @@ impl Import {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_hostile;
+#[cfg(test)]
+mod tests_limits;

@@ -6,7 +6,7 @@ use super::*;
 use crate::diag::{Severity, render::render};
 use crate::input::{Input, check_inputs, compile_inputs};
 
-const HEAD: &str = r#"<?xml version="1.0" encoding="utf-8"?>
+pub(super) const HEAD: &str = r#"<?xml version="1.0" encoding="utf-8"?>
 <project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
   <fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
   <contentHeader name="t"/>
@@ -14,45 +14,45 @@ const HEAD: &str = r#"<?xml version="1.0" encoding="utf-8"?>
 
 /// A project with `data_types` inside `<dataTypes>`, `pous` inside
 /// `<pous>` and `instances` inside `<instances><configurations>`.
-fn project(data_types: &str, pous: &str, configurations: &str) -> String {
+pub(super) fn project(data_types: &str, pous: &str, configurations: &str) -> String {
     format!(
         "{HEAD}  <types>\n    <dataTypes>\n{data_types}    </dataTypes>\n    <pous>\n{pous}    </pous>\n  </types>\n  <instances>\n    <configurations>\n{configurations}    </configurations>\n  </instances>\n</project>\n"
     )
 }
 
 /// A POU with an IL body given as CDATA.
-fn il_pou(name: &str, kind: &str, interface: &str, body: &str) -> String {
+pub(super) fn il_pou(name: &str, kind: &str, interface: &str, body: &str) -> String {
     format!(
         "      <pou name=\"{name}\" pouType=\"{kind}\">\n        <interface>\n{interface}        </interface>\n        <body>\n          <IL>\n            <xhtml:p><![CDATA[{body}]]></xhtml:p>\n          </IL>\n        </body>\n      </pou>\n"
     )
 }
 
-fn var(name: &str, ty: &str) -> String {
+pub(super) fn var(name: &str, ty: &str) -> String {
     format!("            <variable name=\"{name}\"><type>{ty}</type></variable>\n")
 }
 
-fn var_init(name: &str, ty: &str, init: &str) -> String {
+pub(super) fn var_init(name: &str, ty: &str, init: &str) -> String {
     format!(
         "            <variable name=\"{name}\"><type>{ty}</type><initialValue>{init}</initialValue></variable>\n"
     )
 }
 
-fn block(kind: &str, attrs: &str, vars: &str) -> String {
+pub(super) fn block(kind: &str, attrs: &str, vars: &str) -> String {
     format!("          <{kind}{attrs}>\n{vars}          </{kind}>\n")
 }
 
-fn import(xml: &str) -> Import {
+pub(super) fn import(xml: &str) -> Import {
     Import::new(SourceFile::new("project.xml", xml))
 }
 
 /// All diagnostics of the project, in XML positions.
-fn check(xml: &str) -> (Input, Vec<Diagnostic>) {
+pub(super) fn check(xml: &str) -> (Input, Vec<Diagnostic>) {
     let input = Input::plcopen(SourceFile::new("project.xml", xml));
     let d = check_inputs(std::slice::from_ref(&input)).remove(0);
     (input, d)
 }
 
-fn errors(d: &[Diagnostic]) -> Vec<&Diagnostic> {
+pub(super) fn errors(d: &[Diagnostic]) -> Vec<&Diagnostic> {
     d.iter().filter(|d| d.severity == Severity::Error).collect()
 }
 
@@ -68,7 +68,7 @@ fn assert_clean(xml: &str) -> Input {
 }
 
 /// Line and column (1-based) of the primary span.
-fn at(input: &Input, d: &Diagnostic) -> (usize, usize) {
+pub(super) fn at(input: &Input, d: &Diagnostic) -> (usize, usize) {
     input.source().line_col(d.span.lo)
 }
 

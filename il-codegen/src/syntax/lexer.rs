@@ -328,6 +328,12 @@ fn end_pou_kind(up: &str) -> Option<PouKind> {
     })
 }
 
+/// Whether an upper-cased word is a declaration keyword (`END_VAR`,
+/// `PROGRAM`, `ON` ...): such a word can never be a name.
+pub(crate) fn is_decl_keyword(up: &str) -> bool {
+    decl_keyword(up).is_some()
+}
+
 fn decl_keyword(up: &str) -> Option<Tok> {
     if let Some(k) = var_kind(up) {
         return Some(Tok::Var(k));

@@ -1,0 +1,371 @@
+//! PLCopen import on large and deeply nested XML: depth limits proved on a
+//! small stack, and work at n and 8n compared in the same run (linear is
+//! 8x, quadratic 64x).
+
+use std::sync::{Mutex, MutexGuard};
+use std::time::Duration;
+
+use super::tests::{check, import, project};
+use super::*;
+
+/// Timing tests and heavy tests take this, so that no measurement runs
+/// beside another test's load.
+static TIMING: Mutex<()> = Mutex::new(());
+
+pub(super) fn quiet() -> MutexGuard<'static, ()> {
+    TIMING.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// The stack the deep-nesting tests run on: 1 MiB, a quarter of the 4 MiB
+/// build scripts and test threads get by default here (debug build).
+const SMALL_STACK: usize = 1 << 20;
+
+/// Run the whole import and check of `xml` on [`SMALL_STACK`]; the
+/// diagnostics, or a failure if the thread died.
+fn on_small_stack(xml: String) -> (String, Vec<Diagnostic>) {
+    std::thread::Builder::new()
+        .stack_size(SMALL_STACK)
+        .spawn(move || {
+            let (input, d) = check(&xml);
+            let _ = crate::input::compile_inputs(std::slice::from_ref(&input));
+            (xml, d)
+        })
+        .expect("spawn")
+        .join()
+        .expect("the import ran out of stack or panicked")
+}
+
+/// `n` levels of `open` around `inner`, closed by `close`, one level a line.
+fn nest(n: usize, open: &str, inner: &str, close: &str) -> String {
+    let mut s = String::with_capacity(n * (open.len() + close.len() + 2) + inner.len());
+    for _ in 0..n {
+        s.push_str(open);
+        s.push('\n');
+    }
+    s.push_str(inner);
+    for _ in 0..n {
+        s.push_str(close);
+    }
+    s
+}
+
+fn in_var(ty: &str, init: &str) -> String {
+    let init = if init.is_empty() {
+        String::new()
+    } else {
+        format!("<initialValue>{init}</initialValue>")
+    };
+    let iface = format!(
+        "        <interface><localVars>\n<variable name=\"deep\"><type>{ty}</type>{init}</variable>\n<variable name=\"ok\"><type><BOOL/></type></variable>\n        </localVars></interface>\n"
+    );
+    project(
+        "",
+        &format!(
+            "      <pou name=\"P\" pouType=\"program\">\n{iface}        <body><IL><xhtml:p>LD ok\nST ok\n</xhtml:p></IL></body>\n      </pou>\n"
+        ),
+        "",
+    )
+}
+
+#[test]
+fn deep_nesting_is_an_error_not_a_stack_overflow() {
+    let _quiet = quiet();
+    const ARRAY: &str = r#"<array><dimension lower="0" upper="1"/><baseType>"#;
+    let cases: Vec<(&str, String, &str)> = vec![
+        (
+            "array",
+            in_var(&nest(20_000, ARRAY, "<INT/>", "</baseType></array>"), ""),
+            "<baseType>",
+        ),
+        (
+            "subrange",
+            in_var(
+                &nest(
+                    20_000,
+                    r#"<subrangeSigned><range lower="0" upper="1"/><baseType>"#,
+                    "<INT/>",
+                    "</baseType></subrangeSigned>",
+                ),
+                "",
+            ),
+            "<baseType>",
+        ),
+        (
+            "struct",
+            in_var(
+                &nest(
+                    20_000,
+                    r#"<struct><variable name="m"><type>"#,
+                    "<INT/>",
+                    "</type></variable></struct>",
+                ),
+                "",
+            ),
+            "<type>",
+        ),
+        (
+            "arrayValue",
+            in_var(
+                "<derived name=\"T\"/>",
+                &nest(
+                    40_000,
+                    "<arrayValue><value>",
+                    "<simpleValue value=\"1\"/>",
+                    "</value></arrayValue>",
+                ),
+            ),
+            "<value>",
+        ),
+        (
+            "structValue",
+            in_var(
+                "<derived name=\"T\"/>",
+                &nest(
+                    40_000,
+                    r#"<structValue><value member="m">"#,
+                    "<simpleValue value=\"1\"/>",
+                    "</value></structValue>",
+                ),
+            ),
+            "<value member",
+        ),
+        (
+            "dataType",
+            project(
+                &format!(
+                    "<dataType name=\"T\"><baseType>{}</baseType></dataType>\n",
+                    nest(20_000, ARRAY, "<INT/>", "</baseType></array>")
+                ),
+                "",
+                "",
+            ),
+            "<baseType>",
+        ),
+    ];
+    for (what, xml, tag) in cases {
+        let (xml, d) = on_small_stack(xml);
+        let deep: Vec<&Diagnostic> = d.iter().filter(|d| d.code == "IL0207").collect();
+        assert_eq!(
+            deep.len(),
+            1,
+            "{what}: {:?}",
+            d.iter().map(|d| d.code).collect::<Vec<_>>()
+        );
+        // At the start tag of the element MAX_DEPTH levels down (the first
+        // one counts as level 0), on its own line.
+        let lo = deep[0].span.lo as usize;
+        assert!(
+            xml[lo..].starts_with(tag.trim_end_matches(" member")),
+            "{what}: {}",
+            &xml[lo..lo + 20]
+        );
+        let before = xml[..lo].matches(tag).count();
+        assert!(
+            (translate::MAX_DEPTH - 1..=translate::MAX_DEPTH).contains(&before),
+            "{what}: {before} levels before the error"
+        );
+        let (line, col) = SourceFile::new("x", xml.as_str()).line_col(lo as u32);
+        assert!(
+            line > translate::MAX_DEPTH && col >= 1,
+            "{what}: {line}:{col}"
+        );
+    }
+}
+
+/// Nesting up to the limit still translates.
+#[test]
+fn nesting_up_to_the_limit_translates() {
+    let ty = nest(
+        translate::MAX_DEPTH - 1,
+        r#"<array><dimension lower="0" upper="1"/><baseType>"#,
+        "<INT/>",
+        "</baseType></array>",
+    );
+    let imp = import(&in_var(&ty, ""));
+    assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
+    assert_eq!(
+        imp.il.text.matches("ARRAY [0..1] OF").count(),
+        translate::MAX_DEPTH - 1
+    );
+}
+
+/// `n` attributes on the variable `deep`.
+fn with_attributes(n: usize) -> String {
+    let attrs: String = (0..n).map(|k| format!(" a{k}=\"1\"")).collect();
+    in_var("<INT/>", "").replace(
+        "<variable name=\"deep\"",
+        &format!("<variable name=\"deep\"{attrs}"),
+    )
+}
+
+fn time(f: &impl Fn()) -> Duration {
+    let t = std::time::Instant::now();
+    f();
+    t.elapsed()
+}
+
+/// How much longer `large` (8x the input) takes than `small`: the fastest
+/// of five runs each, interleaved, with no other test measuring.
+fn ratio(small: impl Fn(), large: impl Fn()) -> (f64, Duration, Duration) {
+    let _quiet = quiet();
+    let (mut t1, mut t8) = (Duration::MAX, Duration::MAX);
+    for _ in 0..5 {
+        t1 = t1.min(time(&small));
+        t8 = t8.min(time(&large));
+    }
+    (t8.as_secs_f64() / t1.as_secs_f64().max(1e-9), t1, t8)
+}
+
+#[test]
+fn thousands_of_attributes_are_refused_in_linear_time() {
+    // Was 4.4 s (release) at 30,000: roxmltree's duplicate check is quadratic.
+    let xml = with_attributes(30_000);
+    let imp = import(&xml);
+    assert_eq!(imp.diagnostics.len(), 1, "{:?}", imp.diagnostics);
+    let d = &imp.diagnostics[0];
+    assert_eq!(d.code, "IL0208");
+    assert_eq!(imp.xml.snippet(d.span), "<variable");
+    assert_eq!(
+        imp.xml.line_col(d.span.lo).0,
+        xml[..xml.find("<variable name=\"deep\"").unwrap()]
+            .lines()
+            .count()
+            + 1
+    );
+    // Work at n and 8n, measured in this run: linear is 8x, quadratic 64x.
+    let small = with_attributes(30_000);
+    let large = with_attributes(240_000);
+    let (ratio, t1, t8) = ratio(|| drop(import(&small)), || drop(import(&large)));
+    assert!(
+        ratio < 24.0,
+        "8x the attributes took {ratio:.1}x the time ({t1:?} → {t8:?})"
+    );
+    // Up to the limit, the element is read as usual.
+    let imp = import(&with_attributes(limits::MAX_ATTRIBUTES - 1));
+    assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
+}
+
+/// `n` data types, each a structure whose member is of the next type.
+fn struct_chain(n: usize) -> String {
+    let mut types = String::new();
+    for k in 0..n {
+        types.push_str(&format!(
+            "<dataType name=\"T{k}\"><baseType><struct><variable name=\"m\"><type><derived name=\"T{}\"/></type></variable></struct></baseType></dataType>\n",
+            k + 1
+        ));
+    }
+    types.push_str(&format!(
+        "<dataType name=\"T{n}\"><baseType><INT/></baseType></dataType>\n"
+    ));
+    project(&types, "", "")
+}
+
+/// A POU whose IL body is `bytes` long, escaped (`&lt;`, `&amp;`) or not.
+fn big_body(bytes: usize, escaped: bool) -> String {
+    let line = if escaped {
+        "LD ok (* a &lt; b &amp; c *)\nST ok\n"
+    } else {
+        "LD ok (* a b c *)\nST ok\n"
+    };
+    let body = line.repeat(bytes / line.len());
+    let iface = super::tests::block("localVars", "", &super::tests::var("ok", "<BOOL/>"));
+    let pou = format!(
+        "      <pou name=\"P\" pouType=\"program\"><interface>{iface}</interface><body><IL><xhtml:p>{body}</xhtml:p></IL></body></pou>\n"
+    );
+    project("", &pou, "")
+}
+
+/// Time at n and 8n, measured in this run: linear is 8x, quadratic 64x.
+fn assert_linear(what: &str, small: &str, large: &str, f: impl Fn(&str)) {
+    let (ratio, t1, t8) = ratio(|| f(small), || f(large));
+    assert!(
+        ratio < 24.0,
+        "{what}: 8x the input took {ratio:.1}x the time ({t1:?} → {t8:?})"
+    );
+}
+
+#[test]
+fn chains_of_structure_types_check_in_linear_time() {
+    let (small, large) = (struct_chain(250), struct_chain(2000));
+    let (_, d) = check(&large);
+    assert!(d.is_empty(), "{d:?}");
+    assert_linear("structure chain", &small, &large, |x| drop(check(x)));
+}
+
+#[test]
+fn a_big_body_imports_in_linear_time_and_space() {
+    for escaped in [false, true] {
+        let (small, large) = (big_body(64 << 10, escaped), big_body(512 << 10, escaped));
+        let imp = import(&large);
+        assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
+        // The body is in the IL text once, not once per POU or per line.
+        assert!(
+            imp.il.text.len() < large.len(),
+            "{} > {}",
+            imp.il.text.len(),
+            large.len()
+        );
+        assert_linear("body", &small, &large, |x| drop(import(x)));
+    }
+}
+
+/// `n` POUs in ST and a configuration with `n` instances of an IL POU.
+fn many_instances(n: usize) -> String {
+    let mut pous: String = (0..n)
+        .map(|k| {
+            format!(
+                "      <pou name=\"Main{k:05}\" pouType=\"program\"><body><ST><xhtml:p>x := 1;</xhtml:p></ST></body></pou>\n"
+            )
+        })
+        .collect();
+    pous.push_str(&super::tests::il_pou(
+        "Main",
+        "program",
+        "",
+        "LD TRUE\nRET\n",
+    ));
+    let instances: String = (0..n)
+        .map(|k| format!("<pouInstance name=\"I{k}\" typeName=\"MainIL000\"/>\n"))
+        .collect();
+    let cfg = format!(
+        "<configuration name=\"C\"><resource name=\"R\">{instances}</resource></configuration>\n"
+    );
+    project("", &pous, &cfg)
+}
+
+#[test]
+fn instances_find_their_pou_in_linear_time() {
+    // Names of one length that differ late: a scan compares each in full.
+    let (small, large) = (many_instances(500), many_instances(4000));
+    let imp = import(&large);
+    assert_eq!(imp.il.text.matches(" : MainIL000;").count(), 4000);
+    assert_linear("instances", &small, &large, |x| drop(import(x)));
+}
+
+/// A body on one XML line (line breaks written as `&#10;`), `bytes` long.
+fn one_line_body(bytes: usize) -> String {
+    let body = "LD ok&#10;ST ok&#10;".repeat(bytes / 20);
+    let iface = super::tests::block("localVars", "", &super::tests::var("ok", "<BOOL/>"));
+    let pou = format!(
+        "      <pou name=\"P\" pouType=\"program\"><interface>{iface}</interface><body><IL><xhtml:p>{body}</xhtml:p></IL></body></pou>\n"
+    );
+    project("", &pou, "")
+}
+
+#[test]
+fn xml_lines_of_a_body_on_one_line_take_linear_time() {
+    let (small, large) = (
+        import(&one_line_body(32 << 10)),
+        import(&one_line_body(256 << 10)),
+    );
+    let lines = large.xml_lines();
+    let body_line = large
+        .xml
+        .line_of(large.xml.text.find("LD ok").unwrap() as u32);
+    assert!(lines.iter().filter(|&&l| l == body_line).count() > 12000);
+    let (ratio, t1, t8) = ratio(|| drop(small.xml_lines()), || drop(large.xml_lines()));
+    assert!(
+        ratio < 24.0,
+        "8x the body took {ratio:.1}x the time ({t1:?} → {t8:?})"
+    );
+}
