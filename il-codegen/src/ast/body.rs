@@ -1,0 +1,415 @@
+//! Instruction lists: statements, instructions, operators and operands.
+
+use super::*;
+
+/// One element of an instruction list.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Stmt {
+    /// `name:` — alone on its line or before an instruction.
+    Label(Ident),
+    /// An instruction, e.g. `LD x` or `JMPC next`.
+    Instr(Instr),
+}
+
+/// One IL instruction: an operator with its modifiers and operands.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Instr {
+    /// The operator and its operands.
+    pub kind: InstrKind,
+    /// The operator as written (`JMPNC`, `&N`, `ld`): for messages.
+    pub op_span: Span,
+    /// The whole instruction, operator to last operand (for a deferred group,
+    /// to its closing `)`).
+    pub span: Span,
+}
+
+/// The condition of JMP, CAL and RET.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Cond {
+    /// No modifier: unconditional.
+    Always,
+    /// `C`: when the CR is TRUE.
+    IfTrue,
+    /// `CN` (also KAS-IDE `NC`): when the CR is FALSE.
+    IfFalse,
+}
+
+/// Operators that take the CR on the left and an operand on the right, and so
+/// may be deferred with `(`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ExprOp {
+    /// `AND` / `&` (`ANDN` / `&N` with negate): Boolean or bitwise AND.
+    And,
+    /// `OR` (`ORN`): Boolean or bitwise OR.
+    Or,
+    /// `XOR` (`XORN`): Boolean or bitwise exclusive OR.
+    Xor,
+    /// `ADD`: addition.
+    Add,
+    /// `SUB`: subtraction.
+    Sub,
+    /// `MUL`: multiplication.
+    Mul,
+    /// `DIV`: division.
+    Div,
+    /// `MOD`: integer remainder.
+    Mod,
+    /// `GT`: CR > operand.
+    Gt,
+    /// `GE`: CR >= operand.
+    Ge,
+    /// `EQ`: CR = operand.
+    Eq,
+    /// `NE`: CR <> operand.
+    Ne,
+    /// `LE`: CR <= operand.
+    Le,
+    /// `LT`: CR < operand.
+    Lt,
+}
+
+impl ExprOp {
+    /// The IL operator name without the `N` modifier (`AND`, `ADD`, `GT`).
+    pub fn name(self) -> &'static str {
+        match self {
+            ExprOp::And => "AND",
+            ExprOp::Or => "OR",
+            ExprOp::Xor => "XOR",
+            ExprOp::Add => "ADD",
+            ExprOp::Sub => "SUB",
+            ExprOp::Mul => "MUL",
+            ExprOp::Div => "DIV",
+            ExprOp::Mod => "MOD",
+            ExprOp::Gt => "GT",
+            ExprOp::Ge => "GE",
+            ExprOp::Eq => "EQ",
+            ExprOp::Ne => "NE",
+            ExprOp::Le => "LE",
+            ExprOp::Lt => "LT",
+        }
+    }
+    /// `AND`, `OR`, `XOR`: BOOL or bit-string operands.
+    pub fn is_logic(self) -> bool {
+        matches!(self, ExprOp::And | ExprOp::Or | ExprOp::Xor)
+    }
+    /// `ADD`, `SUB`, `MUL`, `DIV`, `MOD`: numeric operands.
+    pub fn is_arith(self) -> bool {
+        matches!(
+            self,
+            ExprOp::Add | ExprOp::Sub | ExprOp::Mul | ExprOp::Div | ExprOp::Mod
+        )
+    }
+    /// `GT`, `GE`, `EQ`, `NE`, `LE`, `LT`: the result is BOOL.
+    pub fn is_compare(self) -> bool {
+        matches!(
+            self,
+            ExprOp::Gt | ExprOp::Ge | ExprOp::Eq | ExprOp::Ne | ExprOp::Le | ExprOp::Lt
+        )
+    }
+}
+
+/// The FB input operators of Table 54 that are not also other operators
+/// (`S`, `R` and `LD` are parsed as [`InstrKind::Set`], [`InstrKind::Reset`]
+/// and [`InstrKind::Load`]; the checker decides from the operand's type).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FbInputOp {
+    /// `S1 ff`: the set input of an SR.
+    S1,
+    /// `R1 ff`: the reset input of an RS.
+    R1,
+    /// `CLK trig`: the clock input of R_TRIG / F_TRIG.
+    Clk,
+    /// `CU c`: the count-up input of CTU / CTUD.
+    Cu,
+    /// `CD c`: the count-down input of CTD / CTUD.
+    Cd,
+    /// `PV c`: the preset value of a counter.
+    Pv,
+    /// `IN t`: the input of a timer (TON, TOF, TP).
+    In,
+    /// `PT t`: the preset time of a timer.
+    Pt,
+}
+
+impl FbInputOp {
+    /// The FB input this operator sets.
+    pub fn input_name(self) -> &'static str {
+        match self {
+            FbInputOp::S1 => "S1",
+            FbInputOp::R1 => "R1",
+            FbInputOp::Clk => "CLK",
+            FbInputOp::Cu => "CU",
+            FbInputOp::Cd => "CD",
+            FbInputOp::Pv => "PV",
+            FbInputOp::In => "IN",
+            FbInputOp::Pt => "PT",
+        }
+    }
+}
+
+/// What an instruction does, with its operands.
+#[derive(Clone, Debug, PartialEq)]
+pub enum InstrKind {
+    /// `LD x` / `LDN x`
+    Load {
+        /// `LDN`: load the complement.
+        negate: bool,
+        /// The value loaded into the CR.
+        operand: Operand,
+    },
+    /// `ST x` / `STN x`
+    Store {
+        /// `STN`: store the complement.
+        negate: bool,
+        /// Where the CR is stored.
+        target: Operand,
+    },
+    /// `S x`: set a BOOL, or the S input operator of an RS.
+    Set {
+        /// The BOOL set to TRUE when the CR is TRUE (or the RS instance).
+        target: Operand,
+    },
+    /// `R x`: reset a BOOL, or the R input operator of SR/CTU/CTUD.
+    Reset {
+        /// The BOOL set to FALSE when the CR is TRUE (or the SR/CTU/CTUD instance).
+        target: Operand,
+    },
+    /// `NOT` — complements the CR.
+    Not,
+    /// `AND x`, `ANDN x`, `& x`, `&N x`, `ADD x`, `GT x` ...
+    Expr {
+        /// The operator.
+        op: ExprOp,
+        /// The `N` modifier: the operand is complemented (`ANDN`, `&N`).
+        negate: bool,
+        /// The right-hand operand (the CR is the left-hand one).
+        operand: Operand,
+    },
+    /// `AND( x` / `AND(` newline ... `)`: `first` is the operand of the short
+    /// form (the inner CR's first load); `body` holds the inner instructions.
+    Deferred {
+        /// The deferred operator.
+        op: ExprOp,
+        /// The `N` modifier (`ANDN(`).
+        negate: bool,
+        /// The operand after `(` on the same line, if any.
+        first: Option<Operand>,
+        /// The instructions inside the parentheses.
+        body: Vec<Stmt>,
+        /// The closing `)`.
+        close_span: Span,
+    },
+    /// `JMP l`, `JMPC l`, `JMPCN l`
+    Jump {
+        /// `C` / `CN` modifier.
+        cond: Cond,
+        /// The target label.
+        label: Ident,
+    },
+    /// `CAL fb`, `CAL fb(...)`, `CALC`, `CALCN`; also `CAL LIMIT(...)` of a
+    /// function with a formal list (3rd edition).
+    Call {
+        /// `C` / `CN` modifier.
+        cond: Cond,
+        /// The FB instance (or function) called.
+        target: Operand,
+        /// The argument list, if any.
+        args: Option<CallArgs>,
+    },
+    /// `RET`, `RETC`, `RETCN`
+    Return {
+        /// `C` / `CN` modifier.
+        cond: Cond,
+    },
+    /// A function as operator: `LIMIT 0, 100` (CR is the first argument),
+    /// or a formal call `LIMIT(MN := 0, MX := 100)`.
+    FnCall {
+        /// The function's name.
+        name: Ident,
+        /// The arguments after the CR (non-formal) or all of them (formal).
+        args: CallArgs,
+    },
+    /// `PV C10`, `IN T1`, `S1 ff` ...
+    FbInput {
+        /// The input operator.
+        op: FbInputOp,
+        /// The FB instance whose input is set from the CR.
+        instance: Operand,
+    },
+}
+
+/// An argument list.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CallArgs {
+    /// `(IN := x, Q => y)` or the lines of a multi-line list.
+    Formal(Vec<ParamAssign>),
+    /// `a, b, c` after a function name, or `(a, b, c)` after CAL.
+    NonFormal(Vec<Operand>),
+}
+
+/// `name := value`, `name => var`, `NOT name => var`
+#[derive(Clone, Debug, PartialEq)]
+pub struct ParamAssign {
+    /// The formal parameter's name.
+    pub name: Ident,
+    /// Input or output assignment.
+    pub kind: ParamKind,
+    /// The whole assignment.
+    pub span: Span,
+}
+
+/// The direction of a [`ParamAssign`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum ParamKind {
+    /// `name := value`: sets an input before the call.
+    Input(Operand),
+    /// `name => var` (`NOT name => var` with negate): copies an output after the call.
+    Output {
+        /// `NOT name => var`: store the output's complement.
+        negate: bool,
+        /// The variable that receives the output.
+        target: Operand,
+    },
+}
+
+/// Something an instruction works on.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Operand {
+    /// A literal: `5`, `T#1s`, `'text'`.
+    Lit(Literal),
+    /// A variable, possibly with fields, subscripts and bit access: `fb.Q`, `a[i]`.
+    Var(VarRef),
+    /// A direct address: `%IX0.1`.
+    Addr(DirectAddress),
+}
+
+impl Operand {
+    /// Where the operand is written.
+    pub fn span(&self) -> Span {
+        match self {
+            Operand::Lit(l) => l.span,
+            Operand::Var(v) => v.span,
+            Operand::Addr(a) => a.span,
+        }
+    }
+}
+
+/// `a`, `fb.Q`, `arr[i, 2].field`
+#[derive(Clone, Debug, PartialEq)]
+pub struct VarRef {
+    /// The variable's name.
+    pub base: Ident,
+    /// Field, subscript and bit accesses after it, in order.
+    pub path: Vec<Accessor>,
+    /// The whole reference.
+    pub span: Span,
+}
+
+/// One step after a variable name in a [`VarRef`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum Accessor {
+    /// `.name`: a field of a STRUCT or FB instance.
+    Field(Ident),
+    /// Subscripts: literals, variables or direct addresses.
+    Index(Vec<Operand>, Span),
+    /// `.%X3` / `.3` bit access on a bit string (3rd edition).
+    Bit(u32, Span),
+}
+
+/// The memory area of a direct address.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Area {
+    /// `%I`: inputs of the process image.
+    Input,
+    /// `%Q`: outputs of the process image.
+    Output,
+    /// `%M`: memory (markers).
+    Memory,
+}
+
+/// The size letter of a direct address.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum AddrSize {
+    /// No size letter: a bit.
+    Default,
+    /// `X`: a bit.
+    X,
+    /// `B`: a byte (8 bits).
+    B,
+    /// `W`: a word (16 bits).
+    W,
+    /// `D`: a double word (32 bits).
+    D,
+    /// `L`: a long word (64 bits).
+    L,
+}
+
+/// `%IX1.0`, `%QW3`, `%MD10`, `%I*` (partly specified, only in declarations).
+#[derive(Clone, Debug, PartialEq)]
+pub struct DirectAddress {
+    /// `I`, `Q` or `M`.
+    pub area: Area,
+    /// The size letter (none = bit).
+    pub size: AddrSize,
+    /// The dotted numbers; empty for `%I*`.
+    pub path: Vec<u32>,
+    /// `%I*` / `%Q*`: the address is left to the configuration.
+    pub partial: bool,
+    /// The address as written.
+    pub span: Span,
+}
+
+/// A literal and, when written with a type prefix (`INT#5`, `T#1s`), that type.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Literal {
+    /// The value.
+    pub kind: LitKind,
+    /// `INT#`, `UINT#`, `BOOL#` ... (not for T#/D#/TOD#/DT#, whose kind says it).
+    pub type_prefix: Option<Ident>,
+    /// The literal as written, prefix included.
+    pub span: Span,
+}
+
+/// The value of a [`Literal`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum LitKind {
+    /// Integer value, sign included (`-1`, `16#FF`).
+    Int(i128),
+    /// The value and its source text (REAL is parsed from the text as f32 to
+    /// avoid double rounding).
+    Real {
+        /// The value.
+        value: f64,
+        /// The number as written after any type prefix (sign, digits, `_`, exponent).
+        text: String,
+    },
+    /// `TRUE` / `FALSE` (also `BOOL#1`, `BOOL#0`).
+    Bool(bool),
+    /// `T#` / `TIME#` in nanoseconds; `long` for `LT#` / `LTIME#`.
+    Time {
+        /// The duration in nanoseconds (may be negative).
+        nanos: i64,
+        /// `LT#` / `LTIME#` (LTIME) rather than `T#` (TIME).
+        long: bool,
+    },
+    /// `D#`: days since 1970-01-01.
+    Date(i64),
+    /// `TOD#`: nanoseconds since midnight.
+    Tod(i64),
+    /// `DT#`: nanoseconds since 1970-01-01T00:00:00.
+    Dt(i64),
+    /// `'...'` (wide = false) or `"..."` (wide = true), escapes resolved.
+    String {
+        /// The characters.
+        value: String,
+        /// `"..."` (WSTRING) rather than `'...'` (STRING).
+        wide: bool,
+    },
+    /// `Color#Red`
+    Enum {
+        /// The enumeration type.
+        ty: Ident,
+        /// The value's name.
+        value: Ident,
+    },
+}

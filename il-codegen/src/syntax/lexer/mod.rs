@@ -1,0 +1,601 @@
+//! The IL lexer. IL is position-sensitive: the first word of a body line is
+//! the operator field (`LD`, `ST`, a function name), words after it are
+//! operands (`LD IN` loads the variable `IN`). The lexer therefore runs in
+//! modes:
+//!
+//! * declaration modes (top level, header, `VAR..END_VAR`, `TYPE..END_TYPE`,
+//!   `CONFIGURATION`): no line breaks, declaration keywords;
+//! * body mode (between a POU header and its `END_` keyword, outside `VAR`
+//!   blocks): line breaks are [`Tok::Nl`], the operator field gives operator
+//!   tokens, `(` after an expression operator is a deferred parenthesis and
+//!   any other `(` opens an argument list (in which line breaks are ignored).
+//!
+//! The lexer never fails: malformed text becomes a diagnostic and, where the
+//! parser must not accept it, a [`Tok::Error`] token. It runs in linear time.
+
+use crate::ast::*;
+use crate::diag::Diagnostic;
+
+use super::errors::code;
+use super::literal;
+
+mod keywords;
+mod body;
+mod decls;
+mod literals;
+
+pub(crate) use keywords::is_decl_keyword;
+pub use keywords::operator;
+use keywords::*;
+
+/// A token with its byte span, in lalrpop's external-lexer shape.
+pub type Spanned = (usize, Tok, usize);
+
+/// The lexer never reports errors through lalrpop (that would stop the
+/// parse); this type only fills lalrpop's `Error` slot.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LexError {}
+
+/// `AND`, `ANDN`, `&`, `&N`, `ADD` ...
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ExprTok {
+    /// The operator.
+    pub op: ExprOp,
+    /// The `N` modifier (`ANDN`, `&N`).
+    pub negate: bool,
+}
+
+/// A token of IL text; which ones appear depends on the lexer's mode.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Tok {
+    /// End of an instruction line (body mode only).
+    Nl,
+    /// `name:` at the start of a body line (the span covers the name).
+    Label(String),
+    /// A name (spelling as written); also an operator word in operand position.
+    Ident(String),
+    /// A literal: `5`, `16#FF`, `T#1s`, `'abc'`, `TRUE`.
+    Lit(Literal),
+    /// A direct address: `%IX0.1`, `%MW10`.
+    Addr(DirectAddress),
+    // Operators (operator field of a body line).
+    /// `LD` (false) / `LDN` (true).
+    Ld(bool),
+    /// `ST` (false) / `STN` (true).
+    St(bool),
+    /// `S`.
+    Set,
+    /// `R`.
+    Reset,
+    /// `NOT`: the operator, or the complement of an output in `NOT Q => x`.
+    Not,
+    /// `AND`, `ANDN`, `&`, `ADD`, `GT` ...
+    Expr(ExprTok),
+    /// `JMP`, `JMPC`, `JMPCN` / `JMPNC`.
+    Jmp(Cond),
+    /// `CAL`, `CALC`, `CALCN` / `CALNC`.
+    Cal(Cond),
+    /// `RET`, `RETC`, `RETCN` / `RETNC`.
+    Ret(Cond),
+    /// `S1`, `R1`, `CLK`, `CU`, `CD`, `PV`, `IN`, `PT`.
+    FbIn(FbInputOp),
+    /// KAS-IDE `BEGIN_IL`.
+    BeginIl,
+    /// KAS-IDE `END_IL`.
+    EndIl,
+    // Punctuation.
+    /// `(`
+    LParen,
+    /// `)`
+    RParen,
+    /// `[`
+    LBracket,
+    /// `]`
+    RBracket,
+    /// `,`
+    Comma,
+    /// `;`
+    Semi,
+    /// `:`
+    Colon,
+    /// `:=`
+    Assign,
+    /// `=>`
+    Arrow,
+    /// `.`
+    Dot,
+    /// `..`
+    DotDot,
+    // Declaration keywords.
+    /// `VAR`, `VAR_INPUT`, `VAR_OUTPUT`, `VAR_IN_OUT`, `VAR_EXTERNAL`, `VAR_GLOBAL`, `VAR_TEMP`.
+    Var(VarKind),
+    /// `END_VAR`
+    EndVar,
+    /// `CONSTANT`
+    Constant,
+    /// `RETAIN`
+    Retain,
+    /// `NON_RETAIN`
+    NonRetain,
+    /// `AT`
+    At,
+    /// `ARRAY`
+    Array,
+    /// `OF`
+    Of,
+    /// `STRUCT`
+    Struct,
+    /// `END_STRUCT`
+    EndStruct,
+    /// `TYPE`
+    Type,
+    /// `END_TYPE`
+    EndType,
+    /// `STRING`
+    StringKw,
+    /// `WSTRING`
+    WStringKw,
+    /// `R_EDGE`
+    REdge,
+    /// `F_EDGE`
+    FEdge,
+    /// `FUNCTION`, `FUNCTION_BLOCK`, `PROGRAM`.
+    Pou(PouKind),
+    /// `END_FUNCTION`, `END_FUNCTION_BLOCK`, `END_PROGRAM`.
+    EndPou(PouKind),
+    /// `CONFIGURATION`
+    Configuration,
+    /// `END_CONFIGURATION`
+    EndConfiguration,
+    /// `RESOURCE`
+    Resource,
+    /// `END_RESOURCE`
+    EndResource,
+    /// `ON`
+    On,
+    /// `TASK`
+    Task,
+    /// `WITH`
+    With,
+    // Synthetic tokens.
+    /// Instructions at top level, outside any POU (zero width).
+    Orphan,
+    /// End of such instructions (zero width).
+    EndOrphan,
+    /// A VAR block that was never closed (zero width; already reported).
+    MissingEndVar,
+    /// Malformed text, already reported by the lexer.
+    Error,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Mode {
+    Top,
+    Header,
+    Body,
+    Var,
+    Type,
+    Config,
+    /// Skipping a body written in ST or SFC, up to its END_ keyword.
+    Skip,
+}
+
+/// Deferred parentheses deeper than this are refused (deep trees overflow
+/// the stack when dropped).
+pub const MAX_DEFER_DEPTH: usize = 256;
+
+/// The mode-driven lexer; [`lex`] runs it over a whole file.
+pub struct Lexer<'a> {
+    src: &'a str,
+    b: &'a [u8],
+    pos: usize,
+    mode: Mode,
+    var_ret: Mode,
+    orphan: bool,
+    op_field: bool,
+    dirty: bool,
+    line_start: bool,
+    header_toks: usize,
+    arg_depth: usize,
+    defer_stack: Vec<usize>,
+    excess: usize,
+    in_resource: bool,
+    /// Declarations: open `(`, `[` and STRUCT; ARRAY keywords in this declaration.
+    nest: usize,
+    arrays: usize,
+    nest_reported: bool,
+    out: Vec<Spanned>,
+    diags: Vec<Diagnostic>,
+}
+
+fn is_ident_start(c: u8) -> bool {
+    c.is_ascii_alphabetic() || c == b'_'
+}
+fn is_ident(c: u8) -> bool {
+    c.is_ascii_alphanumeric() || c == b'_'
+}
+
+fn span(lo: usize, hi: usize) -> Span {
+    Span::new(lo, hi)
+}
+
+/// Lex a whole file. Returns the tokens and the lexer's diagnostics.
+pub fn lex(src: &str) -> (Vec<Spanned>, Vec<Diagnostic>) {
+    let mut lx = Lexer {
+        src,
+        b: src.as_bytes(),
+        pos: 0,
+        mode: Mode::Top,
+        var_ret: Mode::Top,
+        orphan: false,
+        op_field: true,
+        dirty: false,
+        line_start: true,
+        header_toks: 0,
+        arg_depth: 0,
+        defer_stack: Vec::new(),
+        excess: 0,
+        in_resource: false,
+        nest: 0,
+        arrays: 0,
+        nest_reported: false,
+        out: Vec::new(),
+        diags: Vec::new(),
+    };
+    if src.starts_with('\u{feff}') {
+        lx.pos = 3;
+    }
+    lx.run();
+    (lx.out, lx.diags)
+}
+
+impl<'a> Lexer<'a> {
+    fn peek(&self, off: usize) -> u8 {
+        self.b.get(self.pos + off).copied().unwrap_or(0)
+    }
+
+    fn push(&mut self, lo: usize, t: Tok, hi: usize) {
+        self.out.push((lo, t, hi));
+        self.line_start = false;
+        if self.mode == Mode::Body && !matches!(self.out.last(), Some((_, Tok::Nl, _))) {
+            self.dirty = true;
+        }
+    }
+
+    fn diag(
+        &mut self,
+        code: &'static str,
+        lo: usize,
+        hi: usize,
+        msg: impl Into<String>,
+        label: &str,
+    ) -> &mut Diagnostic {
+        self.diags
+            .push(Diagnostic::error(code, span(lo, hi), msg).with_label(label));
+        self.diags.last_mut().expect("just pushed")
+    }
+
+    fn last_tok(&self) -> Option<&Tok> {
+        self.out.last().map(|(_, t, _)| t)
+    }
+
+    fn run(&mut self) {
+        loop {
+            if let Some(nl) = self.skip_trivia() {
+                self.on_newline(nl);
+            }
+            if self.pos >= self.b.len() {
+                self.finish();
+                return;
+            }
+            let before = (self.pos, self.out.len(), self.mode);
+            match self.mode {
+                Mode::Skip => self.skip_step(),
+                Mode::Body if self.arg_depth == 0 => self.body_token(),
+                Mode::Body => self.operand_token(),
+                _ => self.decl_token(),
+            }
+            // Progress guard: every step consumes input, emits a token or
+            // changes mode; anything else would loop forever.
+            if (self.pos, self.out.len(), self.mode) == before {
+                let c = self.char_len();
+                self.pos += c;
+            }
+        }
+    }
+
+    fn char_len(&self) -> usize {
+        self.src[self.pos..]
+            .chars()
+            .next()
+            .map_or(1, char::len_utf8)
+    }
+
+    /// Skip blanks and comments; return the position of the first line break
+    /// crossed, if any.
+    fn skip_trivia(&mut self) -> Option<usize> {
+        let mut nl = None;
+        loop {
+            match self.peek(0) {
+                b'\n' => {
+                    nl.get_or_insert(self.pos);
+                    self.pos += 1;
+                }
+                b' ' | b'\t' | b'\r' | 0x0B | 0x0C => self.pos += 1,
+                b'(' if self.peek(1) == b'*' => {
+                    let start = self.pos;
+                    match self.src[start + 2..].find("*)") {
+                        Some(end) => {
+                            let end = start + 2 + end + 2;
+                            if let Some(i) = self.src[start..end].find('\n') {
+                                nl.get_or_insert(start + i);
+                            }
+                            self.pos = end;
+                        }
+                        None => {
+                            self.diag(
+                                code::UNTERMINATED_COMMENT,
+                                start,
+                                start + 2,
+                                "this comment is never closed",
+                                "comment starts here",
+                            )
+                            .help = Some("close it with `*)`; IEC comments do not nest".into());
+                            if let Some(i) = self.src[start..].find('\n') {
+                                nl.get_or_insert(start + i);
+                            }
+                            self.pos = self.b.len();
+                        }
+                    }
+                }
+                b'/' if self.peek(1) == b'/' => {
+                    // 3rd-edition line comment.
+                    while self.pos < self.b.len() && self.b[self.pos] != b'\n' {
+                        self.pos += 1;
+                    }
+                }
+                b'{' => {
+                    let start = self.pos;
+                    let end = self.src[start..]
+                        .find('}')
+                        .map_or(self.b.len(), |e| start + e + 1);
+                    self.diag(
+                        code::PRAGMA,
+                        start,
+                        end,
+                        "pragmas `{ ... }` are not part of IEC 61131-3 Instruction List",
+                        "pragma ignored",
+                    );
+                    if let Some(i) = self.src[start..end].find('\n') {
+                        nl.get_or_insert(start + i);
+                    }
+                    self.pos = end;
+                }
+                b';' if self.mode == Mode::Body || self.mode == Mode::Skip => {
+                    let start = self.pos;
+                    let end = self.src[start..]
+                        .find('\n')
+                        .map_or(self.b.len(), |e| start + e);
+                    if self.mode == Mode::Body {
+                        self.diag(
+                            code::SEMI_COMMENT,
+                            start,
+                            end,
+                            "`;` comments are not IEC 61131-3; write (* ... *)",
+                            "non-IEC comment",
+                        )
+                        .help = Some("IEC 61131-3 comments are written (* like this *)".into());
+                    }
+                    self.pos = end;
+                }
+                _ => return nl,
+            }
+        }
+    }
+
+    fn on_newline(&mut self, at: usize) {
+        self.line_start = true;
+        match self.mode {
+            Mode::Body => {
+                if self.arg_depth > 0 && self.arglist_ended() {
+                    self.arg_depth = 0;
+                }
+                if self.arg_depth == 0 {
+                    self.nest = 0;
+                    self.nest_reported = false;
+                    if self.dirty {
+                        self.out.push((at, Tok::Nl, at + 1));
+                        self.dirty = false;
+                    }
+                    self.op_field = true;
+                }
+            }
+            Mode::Header => {
+                self.header_incomplete(at);
+                self.mode = Mode::Body;
+                self.op_field = true;
+                self.dirty = false;
+            }
+            _ => {}
+        }
+    }
+
+    /// Inside an argument list at the start of a line: does this line look
+    /// like the next instruction (so the list was never closed)?
+    fn arglist_ended(&self) -> bool {
+        let rest = &self.src[self.pos..];
+        let word_len = rest.bytes().take_while(|&c| is_ident(c)).count();
+        if word_len == 0 {
+            return false;
+        }
+        let up = rest[..word_len].to_ascii_uppercase();
+        let after = rest[word_len..].trim_start_matches([' ', '\t']);
+        if after.starts_with(":=")
+            || after.starts_with("=>")
+            || after.starts_with(',')
+            || after.starts_with(')')
+        {
+            return false;
+        }
+        if up == "NOT" {
+            return false;
+        }
+        end_pou_kind(&up).is_some()
+            || operator(&up).is_some()
+            || (after.starts_with(':') && !after.starts_with(":="))
+    }
+
+    fn finish(&mut self) {
+        let eof = self.b.len();
+        if self.mode == Mode::Var {
+            self.missing_end_var(eof);
+            self.mode = self.var_ret;
+        }
+        match self.mode {
+            Mode::Body | Mode::Skip => {
+                self.mode = Mode::Body;
+                self.close_deferred(eof);
+                if self.dirty {
+                    self.out.push((eof, Tok::Nl, eof));
+                    self.dirty = false;
+                }
+                if self.orphan {
+                    self.out.push((eof, Tok::EndOrphan, eof));
+                    self.orphan = false;
+                }
+            }
+            Mode::Type => {
+                self.diag(
+                    code::MISSING_END,
+                    eof,
+                    eof,
+                    "missing END_TYPE",
+                    "the file ends here",
+                );
+                self.out.push((eof, Tok::EndType, eof));
+            }
+            Mode::Config => {
+                if self.in_resource {
+                    self.out.push((eof, Tok::EndResource, eof));
+                }
+                self.diag(
+                    code::MISSING_END,
+                    eof,
+                    eof,
+                    "missing END_CONFIGURATION",
+                    "the file ends here",
+                );
+                self.out.push((eof, Tok::EndConfiguration, eof));
+            }
+            _ => {}
+        }
+    }
+
+    fn missing_end_var(&mut self, at: usize) {
+        let open = self
+            .out
+            .iter()
+            .rev()
+            .find(|(_, t, _)| matches!(t, Tok::Var(_)))
+            .map_or(span(at, at), |(l, _, h)| span(*l, *h));
+        self.diags.push(
+            Diagnostic::error(code::MISSING_END_VAR, span(at, at), "missing END_VAR")
+                .with_label("the declarations should end before this")
+                .with_secondary(open, "this block is not closed"),
+        );
+        self.out.push((at, Tok::MissingEndVar, at));
+    }
+
+    /// Close deferred parentheses left open at the end of a body.
+    fn close_deferred(&mut self, at: usize) {
+        if let Some(&first) = self.defer_stack.first() {
+            let n = self.defer_stack.len();
+            self.diag(
+                code::PAREN,
+                first,
+                first + 1,
+                if n == 1 {
+                    "this `(` is never closed".to_string()
+                } else {
+                    format!("{n} parentheses are never closed")
+                },
+                "opened here",
+            )
+            .help = Some("close a deferred operation with `)` on a line of its own".into());
+            if self.dirty {
+                self.out.push((at, Tok::Nl, at));
+            }
+            for _ in 0..n {
+                self.out.push((at, Tok::RParen, at));
+                self.out.push((at, Tok::Nl, at));
+            }
+            self.dirty = false;
+            self.defer_stack.clear();
+        }
+        self.excess = 0;
+        self.arg_depth = 0;
+    }
+
+    fn read_word(&mut self) -> (usize, usize) {
+        let start = self.pos;
+        while self.pos < self.b.len() && is_ident(self.b[self.pos]) {
+            self.pos += 1;
+        }
+        (start, self.pos)
+    }
+}
+
+fn floor_char(s: &str, mut i: usize) -> usize {
+    while !s.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn toks(src: &str) -> Vec<Tok> {
+        lex(src).0.into_iter().map(|(_, t, _)| t).collect()
+    }
+
+    #[test]
+    fn position_decides() {
+        let t = toks("PROGRAM p\nVAR R1 : BOOL; END_VAR\nLD R1\nR1 R1\nEND_PROGRAM");
+        assert!(t.contains(&Tok::Ld(false)));
+        assert!(t.contains(&Tok::FbIn(FbInputOp::R1)));
+        assert_eq!(
+            t.iter().filter(|t| **t == Tok::Ident("R1".into())).count(),
+            3
+        );
+    }
+
+    #[test]
+    fn deferred_vs_arglist() {
+        let t = toks("PROGRAM p\nAND( x\nCAL f(\n a := 1,\n b => c\n)\n)\nEND_PROGRAM");
+        let nls = t.iter().filter(|t| **t == Tok::Nl).count();
+        // header line break is not a token; AND( x / CAL...) / ) lines
+        assert_eq!(nls, 3, "{t:?}");
+    }
+
+    #[test]
+    fn never_loops() {
+        for src in [
+            "%",
+            "(*",
+            "'abc",
+            "PROGRAM",
+            "\u{0}\u{1}",
+            "T#",
+            "16#",
+            "&",
+            ")",
+            "x:",
+            "PROGRAM p\n(((",
+            "é",
+        ] {
+            let _ = lex(src);
+        }
+    }
+}
