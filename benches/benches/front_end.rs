@@ -57,8 +57,12 @@ fn bench_emit(b: Bencher, file: SourceFile) {
 
 fn bench_whole(b: Bencher, file: SourceFile) {
     b.counter(lines_of(&file)).bench_local(|| {
-        il_codegen::compile(black_box(&file), emit::Options::default())
-            .expect("generated IL compiles")
+        let program = il_codegen::Program::new().il(black_box(&file).clone());
+        let checked = program.check();
+        let emitted = checked
+            .emit(emit::Options::default())
+            .expect("generated IL compiles");
+        emitted.into_iter().map(|e| e.tokens).count()
     });
 }
 
@@ -66,7 +70,11 @@ fn bench_whole(b: Bencher, file: SourceFile) {
 /// `.rs` text with prettyplease.
 fn bench_to_file(b: Bencher, file: SourceFile) {
     b.counter(lines_of(&file)).bench_local(|| {
-        il_codegen::compile_to_file(black_box(&file)).expect("generated IL compiles")
+        il_codegen::Program::new()
+            .il(black_box(&file).clone())
+            .check()
+            .files(emit::Options::default())
+            .expect("generated IL compiles")
     });
 }
 

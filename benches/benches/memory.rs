@@ -88,9 +88,15 @@ fn main() {
     // Peak resident memory of the whole front end on the 100k-line POU.
     let file = il_codegen::diag::SourceFile::new("big.il", generator::big_pou(100_000, 1));
     let before = vm_hwm_kib();
-    let c = il_codegen::compile(&file, Default::default()).expect("compiles");
+    let program = il_codegen::Program::new().il(file.clone());
+    let checked = program.check();
+    let opts = il_codegen::emit::Options {
+        line_markers: true,
+        ..Default::default()
+    };
+    let c = checked.emit(opts).expect("compiles").remove(0);
     let after = vm_hwm_kib();
-    let text = il_codegen::format_file(&file, &c.tokens);
+    let text = c.file_text();
     let with_file = vm_hwm_kib();
     println!(
         "\npeak memory (VmHWM), 100k-line POU ({} KiB of IL): before compile {before} KiB, after compile {after} KiB (+{} KiB), after formatting the .rs ({} KiB) {with_file} KiB",

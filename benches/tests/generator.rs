@@ -7,7 +7,11 @@ use il_codegen::diag::SourceFile;
 
 fn assert_clean(name: &str, text: String) {
     let file = SourceFile::new(name, text);
-    let diags = il_codegen::check_source(&file);
+    let diags = il_codegen::Program::new()
+        .il(file)
+        .check()
+        .into_diagnostics()
+        .remove(0);
     assert!(diags.is_empty(), "{name}: {diags:#?}");
 }
 

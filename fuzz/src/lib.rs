@@ -79,54 +79,51 @@ pub fn front_end(data: &[u8]) {
     render_all(&file, &diags);
 }
 
-/// Parser and checker (`check_source`, what `ilc check` runs), and the
-/// multi-file entry point on the same single file, which must agree.
+/// Parser and checker (`Program::check`, what `ilc check` runs). Checking
+/// is deterministic: the same file checked again, and checked beside an
+/// empty second file, gives the same diagnostics (a "did you mean" that
+/// depended on hash-map order once differed).
 pub fn check(data: &[u8]) {
     let file = source(data);
-    let diags = il_codegen::check_source(&file);
-    render_all(&file, &diags);
-    let many = il_codegen::check_sources(std::slice::from_ref(&file));
-    assert_eq!(many.len(), 1, "check_sources returns one list per file");
-    assert!(many[0] == diags, "check_source and check_sources disagree");
+    let checked = il_codegen::Program::new().il(file.clone()).check();
+    let diags = &checked.diagnostics()[0];
+    render_all(&file, diags);
+    let again = il_codegen::Program::new()
+        .il(file.clone())
+        .il(SourceFile::new("empty.il", ""))
+        .check()
+        .into_diagnostics();
+    assert_eq!(again.len(), 2, "one list per input");
+    assert!(&again[0] == diags, "checking is not deterministic");
+    assert!(again[1].is_empty(), "an empty file has no diagnostics");
 }
 
 /// The whole pipeline: parse, check, emit, format. The emitted Rust must
 /// parse, contain no `unsafe` and no item that is not generated for a POU or
-/// type, and the compiler must agree with the checker (no error from
-/// `check_source` ⇔ `compile` succeeds).
+/// type, and code is emitted exactly when the check found no error.
 pub fn pipeline(data: &[u8]) {
     let file = source(data);
     macro_expansion(&file.text);
-    let checked = il_codegen::check_source(&file);
-    let compiled = il_codegen::compile(
-        &file,
-        il_codegen::emit::Options {
-            line_markers: true,
-            ..Default::default()
-        },
-    );
-    let c = match compiled {
-        Err(diags) => {
-            assert!(
-                has_errors(&checked),
-                "compile failed but check_source reported no error"
-            );
-            assert!(has_errors(&diags), "compile failed without an error");
-            return;
-        }
-        Ok(c) => c,
+    let program = il_codegen::Program::new().il(file.clone());
+    let checked = program.check();
+    let diags = &checked.diagnostics()[0];
+    let compiled = checked.emit(il_codegen::emit::Options {
+        line_markers: true,
+        ..Default::default()
+    });
+    let Some(mut compiled) = compiled else {
+        assert!(has_errors(diags), "nothing emitted without an error");
+        return;
     };
-    assert!(
-        !has_errors(&checked),
-        "compile succeeded but check_source reported errors"
-    );
+    assert!(!has_errors(diags), "code emitted despite errors");
+    let c = compiled.remove(0);
     assert!(!has_errors(&c.warnings), "compile succeeded with an error");
     let tokens = syn::parse2::<syn::File>(c.tokens.clone())
         .unwrap_or_else(|e| panic!("emitted tokens do not parse: {e}\n{}", c.tokens));
     assert_items(&tokens, &c.pous);
     assert_no_unsafe(c.tokens.clone());
     // The file writer: formatted, with `// N: <IL line>` comments.
-    let text = il_codegen::format_file(&file, &c.tokens);
+    let text = c.file_text();
     let parsed = syn::parse_file(&text)
         .unwrap_or_else(|e| panic!("the written file does not parse: {e}\n{text}"));
     // The comments must not have changed the code: the file holds exactly

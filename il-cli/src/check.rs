@@ -72,15 +72,14 @@ pub fn run(
     // Builder: a FUNCTION_BLOCK of one file may be used in another.
     // A `.xml` file is a PLCopen project: its IL is checked with the rest and
     // its diagnostics point into the XML.
-    let inputs: Vec<il_codegen::Input> = files
+    let program = files
         .into_iter()
-        .map(il_codegen::Input::by_extension)
-        .collect();
-    let checked = il_codegen::check_inputs(&inputs);
+        .fold(il_codegen::Program::new(), il_codegen::Program::source);
+    let checked = program.check();
     bar.clear(err);
-    for (input, diags) in inputs.iter().zip(checked) {
+    for (input, diags) in checked.reports() {
         let file = input.source();
-        for d in &diags {
+        for d in diags {
             match d.severity {
                 Severity::Error => totals.errors += 1,
                 Severity::Warning => totals.warnings += 1,
@@ -88,10 +87,10 @@ pub fn run(
         }
         match format {
             Format::Human => {
-                let _ = err.write_all(render(file, &diags, color).as_bytes());
+                let _ = err.write_all(render(file, diags, color).as_bytes());
             }
             Format::Json => {
-                for d in &diags {
+                for d in diags {
                     let _ = writeln!(out, "{}", to_json(file, d));
                 }
             }

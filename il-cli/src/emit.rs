@@ -21,7 +21,7 @@ pub fn run(
     for (k, f) in files.iter().enumerate() {
         bar.reading(k + 1, err);
         match crate::check::read_source(f) {
-            Ok(src) => sources.push(il_codegen::Input::by_extension(src)),
+            Ok(src) => sources.push(src),
             Err(e) => {
                 bar.clear(err);
                 let _ = writeln!(err, "{}", crate::check::error_line(color, &e));
@@ -34,22 +34,26 @@ pub fn run(
         return false;
     }
     bar.stage("Compiling", err);
-    let compiled = il_codegen::compile_inputs(&sources);
-    bar.clear(err);
-    let compiled = match compiled {
-        Ok(c) => c,
-        Err(per_file) => {
-            for (i, d) in per_file {
-                let _ = write!(err, "{}", render(sources[i].source(), &d, color));
-            }
-            return false;
-        }
+    let program = sources
+        .into_iter()
+        .fold(il_codegen::Program::new(), il_codegen::Program::source);
+    let checked = program.check();
+    let opts = il_codegen::emit::Options {
+        line_markers: true,
+        ..Default::default()
     };
-    for ((code, warnings), input) in compiled.iter().zip(&sources) {
-        let src = input.source();
-        if !warnings.is_empty() {
-            let _ = write!(err, "{}", render(src, warnings, color));
+    let compiled = checked.emit(opts);
+    bar.clear(err);
+    let Some(compiled) = compiled else {
+        let _ = write!(err, "{}", checked.render(color));
+        return false;
+    };
+    for unit in &compiled {
+        let src = unit.input().source();
+        if !unit.warnings.is_empty() {
+            let _ = write!(err, "{}", render(src, &unit.warnings, color));
         }
+        let code = &unit.file_text();
         match dir {
             None => {
                 let _ = out.write_all(code.as_bytes());

@@ -3,7 +3,6 @@
 
 use std::io::Write;
 
-use il_codegen::diag::{SourceFile, has_errors, render};
 use il_codegen::interp::il_std::{self, Cycle, TIME};
 use il_codegen::interp::{Machine, Value, fmt_dur};
 
@@ -102,22 +101,11 @@ pub fn run(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> u8 {
 
 fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), String> {
     // A `.xml` file is a PLCopen project: its IL POUs are run.
-    let input = il_codegen::Input::by_extension(crate::check::read_source(&o.file)?);
-    let file: &SourceFile = input.il_text();
-    let (unit, mut diags) = il_codegen::syntax::parse(file);
-    let mut prog = None;
-    if !has_errors(&diags) {
-        let (p, d) = il_codegen::sema::check(file, &unit);
-        diags.extend(d);
-        prog = Some(p);
-    }
-    let diags = input.finish(diags);
-    if !diags.is_empty() {
-        let _ = write!(err, "{}", render::render(input.source(), &diags, o.color));
-    }
-    let prog = match prog {
-        Some(p) if !has_errors(&diags) => p,
-        _ => return Err(format!("`{}` has errors; nothing was run", o.file)),
+    let program = il_codegen::Program::new().source(crate::check::read_source(&o.file)?);
+    let checked = program.check();
+    let _ = write!(err, "{}", checked.render(o.color));
+    let Some([prog]) = checked.ir() else {
+        return Err(format!("`{}` has errors; nothing was run", o.file));
     };
     let name = match &o.program {
         Some(n) => n.clone(),
@@ -146,7 +134,7 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
             }
         }
     };
-    let mut m = Machine::new(&prog, &name)?;
+    let mut m = Machine::new(prog, &name)?;
 
     // Every --set and --watch is checked before the first scan.
     let mut sets: Vec<(u64, String, Value)> = Vec::new();

@@ -14,7 +14,7 @@
 //! `.plcopen_file("plc/project.xml")` and becomes `$OUT_DIR/project.rs`.
 
 use crate::diag::render::render;
-use crate::input::{Input, compile_inputs_with};
+use crate::pipeline::{Input, Program};
 use std::fmt;
 use std::path::{Path, PathBuf};
 
@@ -130,31 +130,25 @@ impl Builder {
             return Err(Error { rendered: failed });
         }
         // All files form one program: a FUNCTION_BLOCK of one is usable in another.
-        let outputs = match compile_inputs_with(
-            &sources,
-            crate::emit::Options {
-                serde: self.serde,
-                ..Default::default()
-            },
-        ) {
-            Ok(o) => o,
-            Err(per_file) => {
-                let rendered = per_file
-                    .iter()
-                    .map(|(i, d)| render(sources[*i].source(), d, false))
-                    .collect::<String>();
-                return Err(Error { rendered });
-            }
+        let program = sources.into_iter().fold(Program::new(), Program::input);
+        let checked = program.check();
+        let opts = crate::emit::Options {
+            serde: self.serde,
+            line_markers: true,
+        };
+        let Some(outputs) = checked.emit(opts) else {
+            return Err(Error {
+                rendered: checked.render(false),
+            });
         };
         let mut planned = Vec::new();
-        for ((code, warnings), ((path, _), input)) in
-            outputs.into_iter().zip(self.files.iter().zip(&sources))
-        {
-            if cargo && !warnings.is_empty() {
-                for line in render(input.source(), &warnings, false).lines() {
+        for (out, (path, _)) in outputs.iter().zip(&self.files) {
+            if cargo && !out.warnings.is_empty() {
+                for line in render(out.input().source(), &out.warnings, false).lines() {
                     println!("cargo:warning={line}");
                 }
             }
+            let code = out.file_text();
             let stem = path
                 .file_stem()
                 .map(|s| s.to_string_lossy().into_owned())

@@ -5,8 +5,8 @@
 //! the crate being compiled; the file is tracked so edits rebuild), either
 //! followed by `, serde` to derive serde's traits on the generated types.
 
-use crate::compile::compile;
 use crate::diag::{SourceFile, has_errors, render::render_short_in};
+use crate::pipeline::Program;
 use crate::{emit, sema, syntax};
 use proc_macro2::{Span, TokenStream};
 use quote::{quote, quote_spanned};
@@ -127,20 +127,21 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
             }
         }
     };
-    match compile(&file, opts) {
-        Ok(c) => {
-            let items = c.tokens;
-            quote!(#track #items)
-        }
-        Err(diags) => {
-            let errors = diags.iter().filter(|d| d.is_error()).map(|d| {
-                let msg = render_short_in(&file, d, first_line);
-                quote_spanned!(lit_span=> ::core::compile_error!(#msg);)
-            });
-            let stubs = stubs(&file, opts);
-            quote!(#track #(#errors)* #stubs)
-        }
+    let checked = Program::new().il(file).check();
+    if let Some(mut emitted) = checked.emit(opts) {
+        let items = emitted.pop().map(|e| e.tokens).unwrap_or_default();
+        return quote!(#track #items);
     }
+    let file = checked.inputs()[0].source();
+    let errors = checked.diagnostics()[0]
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| {
+            let msg = render_short_in(file, d, first_line);
+            quote_spanned!(lit_span=> ::core::compile_error!(#msg);)
+        });
+    let stubs = stubs(file, opts);
+    quote!(#track #(#errors)* #stubs)
 }
 
 /// Items with the interfaces of every POU that could be checked, and empty

@@ -2,28 +2,27 @@
 //!
 //! Stages: [`syntax`] (text → [`ast`]), [`sema`] (names, types of the current
 //! result, flow → checked IR), [`emit`] (IR → Rust tokens). Every stage
-//! collects [`diag::Diagnostic`]s. [`compile()`] runs them for the front ends:
-//! the `il!` macro, the build-script [`Builder`] and the `ilc` command.
-//! [`plcopen`] reads PLCopen TC6 XML projects; [`Input`] mixes them with IL.
+//! collects [`diag::Diagnostic`]s. One pipeline runs them for every front end
+//! (the `il!` macro, the build-script [`Builder`], the `ilc` command):
+//! sources in ([`Program`]) → checked program ([`Checked`]) → emitted Rust
+//! ([`Emitted`]). [`plcopen`] reads PLCopen TC6 XML projects; [`Input`] mixes
+//! them with IL.
 
 #![warn(missing_docs)]
 
 pub mod ast;
 mod builder;
-pub mod check;
 pub mod codes;
-pub mod compile;
 pub mod diag;
 pub mod emit;
 pub mod expand;
-pub mod input;
 pub mod interp;
+pub mod pipeline;
 pub mod plcopen;
 pub mod read;
 pub mod sema;
 pub mod syntax;
 
 pub use builder::{Builder, Error, write_if_changed};
-pub use check::{check_source, check_sources};
-pub use compile::{Compiled, compile, compile_all_to_files, compile_to_file, format_file};
-pub use input::{Input, check_inputs, compile_inputs};
+pub use diag::{Diagnostic, SourceFile};
+pub use pipeline::{Checked, Emitted, Input, Program};

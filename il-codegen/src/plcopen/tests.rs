@@ -4,7 +4,32 @@
 
 use super::*;
 use crate::diag::{Severity, render::render};
-use crate::input::{Input, check_inputs, compile_inputs};
+use crate::pipeline::{Input, Program};
+
+/// Every diagnostic of the inputs checked as one program, per input.
+pub(crate) fn check_inputs(inputs: &[Input]) -> Vec<Vec<Diagnostic>> {
+    let program = inputs.iter().cloned().fold(Program::new(), Program::input);
+    program.check().into_diagnostics()
+}
+
+/// The `.rs` text and warnings per input, or every input's diagnostics.
+pub(crate) fn compile_inputs(
+    inputs: &[Input],
+) -> Result<Vec<(String, Vec<Diagnostic>)>, Vec<Vec<Diagnostic>>> {
+    let program = inputs.iter().cloned().fold(Program::new(), Program::input);
+    let checked = program.check();
+    let opts = crate::emit::Options {
+        line_markers: true,
+        ..Default::default()
+    };
+    match checked.emit(opts) {
+        Some(e) => Ok(e
+            .iter()
+            .map(|e| (e.file_text(), e.warnings.clone()))
+            .collect()),
+        None => Err(checked.into_diagnostics()),
+    }
+}
 
 pub(super) const HEAD: &str = r#"<?xml version="1.0" encoding="utf-8"?>
 <project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">

@@ -5,7 +5,7 @@
 use super::tests::{check, import, project};
 use super::*;
 use crate::diag::render::render;
-use crate::input::Input;
+use crate::pipeline::Input;
 
 /// The placeholders of [`template`] and their valid values.
 const DEFAULTS: &[(&str, &str)] = &[
@@ -175,7 +175,7 @@ fn attributes_cannot_add_il_text() {
         }
         // Nothing invalid is compiled either.
         let input = Input::plcopen(SourceFile::new("p.xml", xml.as_str()));
-        assert!(crate::input::compile_inputs(&[input]).is_err(), "{key}");
+        assert!(super::tests::compile_inputs(&[input]).is_err(), "{key}");
     }
 }
 

@@ -27,7 +27,7 @@ fn on_small_stack(xml: String) -> (String, Vec<Diagnostic>) {
         .stack_size(SMALL_STACK)
         .spawn(move || {
             let (input, d) = check(&xml);
-            let _ = crate::input::compile_inputs(std::slice::from_ref(&input));
+            let _ = super::tests::compile_inputs(std::slice::from_ref(&input));
             (xml, d)
         })
         .expect("spawn")

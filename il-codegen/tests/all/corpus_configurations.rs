@@ -54,8 +54,10 @@ fn echidna_configurations_are_accepted() {
             .unwrap_or_else(|| panic!("{name}: no CONFIGURATION"))
             + 1;
         let file = SourceFile::new(name.clone(), text);
-        let diags = il_codegen::check_source(&file);
-        for d in &diags {
+        let program = il_codegen::Program::new().il(file.clone());
+        let checked = program.check();
+        let diags = &checked.diagnostics()[0];
+        for d in diags {
             let (line, _) = file.line_col(d.span.lo);
             assert!(
                 line < config_line,
@@ -69,8 +71,10 @@ fn echidna_configurations_are_accepted() {
                 diags.iter().all(|d| d.severity != Severity::Error),
                 "{name}: {diags:?}"
             );
-            let out = il_codegen::compile(&file, Default::default())
-                .unwrap_or_else(|d| panic!("{name}: {d:?}"))
+            let out = checked
+                .emit(Default::default())
+                .unwrap_or_else(|| panic!("{name}: {diags:?}"))
+                .remove(0)
                 .tokens
                 .to_string();
             assert!(

@@ -1,7 +1,7 @@
 //! Golden files of the emitted Rust: `golden/*.il` → `golden/*.rs`.
 //! Refresh with `IL_BLESS=1 cargo test -p il-codegen --test all golden_emit`.
 
-use il_codegen::diag::{SourceFile, render::render};
+use il_codegen::diag::SourceFile;
 use std::path::Path;
 
 #[test]
@@ -19,9 +19,15 @@ fn emitted_rust_matches_golden_files() {
     for il in inputs {
         let name = format!("golden/{}", il.file_name().unwrap().to_string_lossy());
         let file = SourceFile::new(name, std::fs::read_to_string(&il).unwrap());
-        let code = match il_codegen::compile_to_file(&file) {
-            Ok((code, _)) => code,
-            Err(d) => panic!("{}", render(&file, &d, false)),
+        let program = il_codegen::Program::new().il(file);
+        let checked = program.check();
+        let opts = il_codegen::emit::Options {
+            line_markers: true,
+            ..Default::default()
+        };
+        let code = match checked.emit(opts) {
+            Some(e) => e[0].file_text(),
+            None => panic!("{}", checked.render(false)),
         };
         let expected = il.with_extension("rs");
         if bless {

@@ -2,10 +2,10 @@
 //! import says about it, and its `CounterIL` run by the reference
 //! interpreter. Skipped (with a message) when ../shared is absent.
 
+use il_codegen::Program;
 use il_codegen::diag::{Severity, SourceFile};
 use il_codegen::interp::{Machine, Value, load};
 use il_codegen::plcopen::Import;
-use il_codegen::{Input, check_inputs};
 use il_std::Cycle;
 
 const FILE: &str = concat!(
@@ -26,8 +26,9 @@ fn read() -> Option<SourceFile> {
 #[test]
 fn only_counter_il_is_translated_and_the_rest_is_named() {
     let Some(xml) = read() else { return };
-    let input = Input::plcopen(xml);
-    let diags = check_inputs(std::slice::from_ref(&input)).remove(0);
+    let checked = Program::new().plcopen(xml).check();
+    let input = &checked.inputs()[0];
+    let diags = checked.diagnostics()[0].clone();
     assert!(
         diags.iter().all(|d| d.severity == Severity::Warning),
         "{diags:?}"
@@ -103,8 +104,11 @@ fn damaged_copies_never_panic() {
         }
     }
     for v in &variants {
-        let input = Input::plcopen(SourceFile::new("v.xml", v.clone()));
-        for d in check_inputs(std::slice::from_ref(&input)).remove(0) {
+        let checked = Program::new()
+            .plcopen(SourceFile::new("v.xml", v.clone()))
+            .check();
+        let input = &checked.inputs()[0];
+        for d in checked.diagnostics()[0].iter().cloned() {
             assert!(
                 d.span.lo <= d.span.hi && d.span.hi as usize <= v.len(),
                 "{d:?}"
@@ -115,6 +119,6 @@ fn damaged_copies_never_panic() {
             let _ = il_codegen::diag::render(input.source(), std::slice::from_ref(&d), false);
             let _ = il_codegen::diag::to_json(input.source(), &d);
         }
-        let _ = il_codegen::compile_inputs(std::slice::from_ref(&input));
+        let _ = checked.emit(Default::default());
     }
 }

@@ -8,14 +8,11 @@ fn errors(body: &str) -> Vec<(String, String)> {
         "FUNCTION_BLOCK T\nVAR k : INT; s : SINT; b : BOOL; r : REAL; x : INT; END_VAR\n{body}\nEND_FUNCTION_BLOCK\n"
     );
     let f = SourceFile::new("t.il", src);
-    match il_codegen::compile(&f, Default::default()) {
-        Ok(_) => Vec::new(),
-        Err(d) => d
-            .iter()
-            .filter(|d| d.is_error())
-            .map(|d| (d.code.to_string(), d.message.clone()))
-            .collect(),
-    }
+    il_codegen::Program::new().il(f).check().diagnostics()[0]
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| (d.code.to_string(), d.message.clone()))
+        .collect()
 }
 
 #[test]
@@ -81,7 +78,12 @@ fn many_labels_settle_and_nothing_is_dropped() {
     body.push_str("back: LD n\nSUB 1\nST n\nGT 10\nJMPC back\n");
     let src = format!("FUNCTION_BLOCK T\nVAR n : INT; END_VAR\n{body}END_FUNCTION_BLOCK\n");
     let f = SourceFile::new("t.il", src);
-    let c = il_codegen::compile(&f, Default::default()).unwrap_or_else(|d| panic!("{d:?}"));
+    let program = il_codegen::Program::new().il(f);
+    let checked = program.check();
+    let c = checked
+        .emit(Default::default())
+        .unwrap_or_else(|| panic!("{:?}", checked.diagnostics()))
+        .remove(0);
     // Only `l0` (never jumped to) is worth a warning; no unreachable code.
     assert_eq!(c.warnings.len(), 1, "{:?}", c.warnings);
     assert_eq!(c.warnings[0].code, "IL0120");

@@ -4,14 +4,11 @@ use il_codegen::diag::SourceFile;
 
 fn codes(src: &str) -> Vec<(String, String)> {
     let f = SourceFile::new("t.il", src);
-    match il_codegen::compile(&f, Default::default()) {
-        Ok(_) => Vec::new(),
-        Err(d) => d
-            .iter()
-            .filter(|d| d.is_error())
-            .map(|d| (d.code.to_string(), d.message.clone()))
-            .collect(),
-    }
+    il_codegen::Program::new().il(f).check().diagnostics()[0]
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| (d.code.to_string(), d.message.clone()))
+        .collect()
 }
 
 const TYPES: &str =

@@ -310,10 +310,17 @@ fn fwd_rev_mon_as_published_is_refused_with_q1_suggested() {
         read("beremiz_matiec_cmd_monitor_il.txt"),
         read("beremiz_matiec_fwd_rev_mon_il.txt"),
     ];
-    let errors =
-        il_codegen::compile_all_to_files(&files).expect_err("FWD_REV_FF.Q must be refused");
-    let (index, diags) = &errors[0];
-    assert_eq!(*index, 1, "the error is in FWD_REV_MON, not CMD_MONITOR");
+    let program = files
+        .clone()
+        .into_iter()
+        .fold(il_codegen::Program::new(), il_codegen::Program::il);
+    let checked = program.check();
+    assert!(checked.has_errors(), "FWD_REV_FF.Q must be refused");
+    let with: Vec<usize> = (0..2)
+        .filter(|&i| !checked.diagnostics()[i].is_empty())
+        .collect();
+    assert_eq!(with, [1], "the error is in FWD_REV_MON, not CMD_MONITOR");
+    let diags = &checked.diagnostics()[1];
     let errs: Vec<_> = diags.iter().filter(|d| d.is_error()).collect();
     assert_eq!(errs.len(), 1, "{errs:#?}");
     let d = errs[0];

@@ -250,7 +250,12 @@ fn prepare(index: usize, seed: u64, program: Program) -> Result<Case, String> {
     let prog = load(&file).map_err(|e| format!("the checker refuses it:\n{e}"))?;
     let expected = interpret(&prog, &program).map_err(|e| format!("interpreter: {e}"))?;
     let names = watched(&Machine::new(&prog, "Main")?);
-    let (rust, _) = il_codegen::compile_to_file(&file).map_err(|d| format!("{d:?}"))?;
+    let rust = il_codegen::Program::new()
+        .il(file.clone())
+        .check()
+        .files(Default::default())
+        .ok_or("the compiler refuses what the checker accepts")?
+        .remove(0);
     Ok(Case {
         index,
         seed,

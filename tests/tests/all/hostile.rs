@@ -101,7 +101,12 @@ END_FUNCTION_BLOCK
 #[test]
 fn the_written_file_holds_exactly_the_expected_items() {
     let file = SourceFile::new("hostile.il", HOSTILE);
-    let (text, _warnings) = il_codegen::compile_to_file(&file).expect("compiles");
+    let text = il_codegen::Program::new()
+        .il(file.clone())
+        .check()
+        .files(Default::default())
+        .expect("compiles")
+        .remove(0);
     let parsed = syn::parse_file(&text).expect("the written file parses");
     let mut names = Vec::new();
     for item in &parsed.items {
@@ -165,13 +170,27 @@ fn the_written_file_holds_exactly_the_expected_items() {
     assert!(text.contains(r#"// 131: LD   n (* "); std::process::exit(1); // *)"#));
 }
 
-/// The same through the multi-file writer build.rs uses.
+/// The same file beside another source (as build.rs compiles several files
+/// into one program): the same text.
 #[test]
 fn the_builder_writer_agrees() {
-    let files = [SourceFile::new("hostile.il", HOSTILE)];
-    let out = il_codegen::compile_all_to_files(&files).expect("compiles");
-    let single = il_codegen::compile_to_file(&files[0]).expect("compiles").0;
-    assert_eq!(out[0].0, single);
+    let hostile = SourceFile::new("hostile.il", HOSTILE);
+    let other = SourceFile::new(
+        "other.il",
+        "FUNCTION_BLOCK Other\nVAR x : INT; END_VAR\n    LD x\n    ST x\nEND_FUNCTION_BLOCK\n",
+    );
+    let one = il_codegen::Program::new()
+        .il(hostile.clone())
+        .check()
+        .files(Default::default())
+        .expect("compiles");
+    let two = il_codegen::Program::new()
+        .il(hostile)
+        .il(other)
+        .check()
+        .files(Default::default())
+        .expect("compiles");
+    assert_eq!(one[0], two[0]);
 }
 
 /// The emitter's helper names are not IEC identifiers (`__` is refused):
@@ -201,7 +220,11 @@ fn helper_names_are_refused() {
         let src = format!(
             "PROGRAM P\nVAR {name} : INT; END_VAR\n    LD {name}\n    ST {name}\nEND_PROGRAM\n"
         );
-        let diags = il_codegen::check_source(&SourceFile::new("p.il", src));
+        let diags = il_codegen::Program::new()
+            .il(SourceFile::new("p.il", src))
+            .check()
+            .into_diagnostics()
+            .remove(0);
         assert!(has_errors(&diags), "{name}");
         assert_eq!(diags[0].code, "IL0126", "{name}: {}", diags[0].message);
     }

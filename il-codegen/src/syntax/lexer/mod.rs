@@ -19,9 +19,9 @@ use crate::diag::Diagnostic;
 use super::errors::code;
 use super::literal;
 
-mod keywords;
 mod body;
 mod decls;
+mod keywords;
 mod literals;
 
 pub(crate) use keywords::is_decl_keyword;

@@ -1,0 +1,213 @@
+//! The one pipeline every front end runs (`il!`, the build-script
+//! [`Builder`](crate::Builder), `ilc`, the interpreter, the fuzz targets):
+//! sources in ([`Program`]) → a checked program ([`Checked`]) → emitted Rust
+//! ([`Emitted`]: tokens for `il!`, formatted files for build.rs and `ilc
+//! emit`). The rules are decided here once: every file is parsed; the files
+//! without syntax errors are checked together (a FUNCTION_BLOCK of one is
+//! usable in another); diagnostics are moved into the file the user wrote
+//! (an XML project's lines), sorted by position and limited per file; code
+//! is emitted only when no input has an error.
+
+mod file;
+mod input;
+
+pub use input::{Input, is_xml_name};
+
+use crate::diag::{Diagnostic, SourceFile, has_errors, render};
+use crate::{emit, sema, syntax};
+use proc_macro2::TokenStream;
+
+/// The sources of one program: IL files and PLCopen XML projects.
+#[derive(Clone, Debug, Default)]
+pub struct Program {
+    inputs: Vec<Input>,
+}
+
+impl Program {
+    /// A program without sources.
+    pub fn new() -> Self {
+        Program::default()
+    }
+
+    /// With an IL source.
+    pub fn il(self, file: SourceFile) -> Self {
+        self.input(Input::il(file))
+    }
+
+    /// With a PLCopen TC6 XML project (translated to IL now).
+    pub fn plcopen(self, file: SourceFile) -> Self {
+        self.input(Input::plcopen(file))
+    }
+
+    /// With a source that is PLCopen XML when its name ends in `.xml`, IL
+    /// otherwise.
+    pub fn source(self, file: SourceFile) -> Self {
+        self.input(Input::by_extension(file))
+    }
+
+    /// With an input.
+    pub fn input(mut self, input: Input) -> Self {
+        self.inputs.push(input);
+        self
+    }
+
+    /// The inputs, in the order they were added.
+    pub fn inputs(&self) -> &[Input] {
+        &self.inputs
+    }
+
+    /// Parse and check every input.
+    pub fn check(self) -> Checked {
+        let files: Vec<&SourceFile> = self.inputs.iter().map(Input::il_text).collect();
+        let parsed: Vec<_> = files.iter().map(|f| syntax::parse(f)).collect();
+        let mut diags: Vec<Vec<Diagnostic>> = parsed.iter().map(|(_, d)| d.clone()).collect();
+        // Files with syntax errors stay out of the semantic check (it would
+        // mostly repeat them); the others are checked together.
+        let clean: Vec<usize> = (0..files.len())
+            .filter(|&i| !has_errors(&diags[i]))
+            .collect();
+        let pairs: Vec<_> = clean.iter().map(|&i| (files[i], &parsed[i].0)).collect();
+        let (programs, more) = sema::check_all(&pairs);
+        let mut ir: Vec<sema::ir::Program> = files.iter().map(|_| Default::default()).collect();
+        for ((&i, p), m) in clean.iter().zip(programs).zip(more) {
+            ir[i] = p;
+            diags[i].extend(m);
+        }
+        let diagnostics: Vec<Vec<Diagnostic>> = self
+            .inputs
+            .iter()
+            .zip(diags)
+            .map(|(input, d)| input.finish(d))
+            .collect();
+        let ok = !diagnostics.iter().any(|d| has_errors(d));
+        Checked {
+            inputs: self.inputs,
+            diagnostics,
+            ir,
+            ok,
+        }
+    }
+}
+
+/// A checked program: every diagnostic of every input, and the checked IR.
+#[derive(Debug)]
+pub struct Checked {
+    inputs: Vec<Input>,
+    diagnostics: Vec<Vec<Diagnostic>>,
+    ir: Vec<sema::ir::Program>,
+    ok: bool,
+}
+
+impl Checked {
+    /// Whether any input has an error (then nothing is emitted).
+    pub fn has_errors(&self) -> bool {
+        !self.ok
+    }
+
+    /// The diagnostics of each input (in the order of the inputs), in the
+    /// positions of the file the user wrote, sorted by position.
+    pub fn diagnostics(&self) -> &[Vec<Diagnostic>] {
+        &self.diagnostics
+    }
+
+    /// [`Checked::diagnostics`], owned.
+    pub fn into_diagnostics(self) -> Vec<Vec<Diagnostic>> {
+        self.diagnostics
+    }
+
+    /// The inputs, in the order they were added.
+    pub fn inputs(&self) -> &[Input] {
+        &self.inputs
+    }
+
+    /// Each input with its diagnostics.
+    pub fn reports(&self) -> impl Iterator<Item = (&Input, &[Diagnostic])> {
+        self.inputs
+            .iter()
+            .zip(self.diagnostics.iter().map(Vec::as_slice))
+    }
+
+    /// Every diagnostic rendered as rustc renders its own (`color` adds ANSI
+    /// styles), input by input.
+    pub fn render(&self, color: bool) -> String {
+        self.reports()
+            .filter(|(_, d)| !d.is_empty())
+            .map(|(i, d)| render(i.source(), d, color))
+            .collect()
+    }
+
+    /// The checked IR of each input (what the emitter and the interpreter
+    /// run on), or `None` when the program has errors.
+    pub fn ir(&self) -> Option<&[sema::ir::Program]> {
+        self.ok.then_some(self.ir.as_slice())
+    }
+
+    /// The Rust items of each input, or `None` when the program has errors.
+    pub fn emit(&self, opts: emit::Options) -> Option<Vec<Emitted<'_>>> {
+        let ir = self.ir()?;
+        Some(
+            self.inputs
+                .iter()
+                .zip(ir)
+                .zip(&self.diagnostics)
+                .map(|((input, p), d)| Emitted {
+                    input,
+                    tokens: emit::program(p, opts),
+                    warnings: d.clone(),
+                    pous: p.pous.iter().map(|p| p.name.clone()).collect(),
+                })
+                .collect(),
+        )
+    }
+}
+
+impl Checked {
+    /// The text of each input's `.rs` file, with its IL lines as comments
+    /// (what build.rs writes and `ilc emit` prints), or `None` when the
+    /// program has errors.
+    pub fn files(&self, opts: emit::Options) -> Option<Vec<String>> {
+        let opts = emit::Options {
+            line_markers: true,
+            ..opts
+        };
+        Some(self.emit(opts)?.iter().map(Emitted::file_text).collect())
+    }
+}
+
+/// The Rust generated from one input.
+#[derive(Debug)]
+pub struct Emitted<'c> {
+    input: &'c Input,
+    /// The items: user types, one struct and impl per POU, configurations.
+    pub tokens: TokenStream,
+    /// The input's warnings (there are no errors when code is emitted).
+    pub warnings: Vec<Diagnostic>,
+    /// The names of the POUs, as declared.
+    pub pous: Vec<String>,
+}
+
+impl Emitted<'_> {
+    /// The input this code was generated from.
+    pub fn input(&self) -> &Input {
+        self.input
+    }
+
+    /// The text of the `.rs` file: formatted, `@generated`, and, when the
+    /// tokens were emitted with [`emit::Options::line_markers`], each IL
+    /// line's source as a comment above the code it became (for an XML
+    /// project, numbered by its XML lines).
+    pub fn file_text(&self) -> String {
+        match self.input {
+            Input::Il(f) => {
+                file::format_file_with(&f.name, &self.tokens, None, |n| (n, f.line_text(n)))
+            }
+            Input::PlcOpen(i) => {
+                let lines = i.xml_lines();
+                file::format_file_with(&i.xml.name, &self.tokens, Some("XML"), |n| {
+                    let shown = lines.get(n.wrapping_sub(1)).copied().unwrap_or(0);
+                    (shown, i.il.line_text(n))
+                })
+            }
+        }
+    }
+}
