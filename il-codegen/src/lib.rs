@@ -10,19 +10,33 @@
 
 #![warn(missing_docs)]
 
-pub mod ast;
 mod builder;
 pub mod codes;
 pub mod diag;
-pub mod emit;
-pub mod expand;
-pub mod interp;
-pub mod pipeline;
 pub mod plcopen;
 pub mod read;
+
+// The stages and the front-end glue: public for the other crates of this
+// workspace (the macro crate, the interpreter, the benchmarks, the tests),
+// but not the documented API (as prost-build and cxx-build keep theirs):
+// their items change with the compiler. Users drive the compiler through
+// `Builder`, `Program` and `il!`.
+#[doc(hidden)]
+pub mod ast;
+#[doc(hidden)]
+pub mod emit;
+#[doc(hidden)]
+pub mod expand;
+#[doc(hidden)]
+pub mod interp;
+#[doc(hidden)]
+pub mod pipeline;
+#[doc(hidden)]
 pub mod sema;
+#[doc(hidden)]
 pub mod syntax;
 
 pub use builder::{Builder, Error, write_if_changed};
 pub use diag::{Diagnostic, SourceFile};
+pub use emit::Options as EmitOptions;
 pub use pipeline::{Checked, Emitted, Input, Program};

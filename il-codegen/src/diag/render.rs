@@ -112,7 +112,7 @@ pub(crate) fn unsafe_char(c: char) -> bool {
         )
 }
 
-/// `s` on one line: every [`unsafe_char`] written as an escape (`\n`, `\t`,
+/// `s` on one line: every character that could start a line or reorder text written as an escape (`\n`, `\t`,
 /// `\u{202e}`), so that text quoted from a file (a name holding
 /// `\nerror[IL0000]: fake`) can never forge a line of the report. No
 /// message, label, note or help is meant to span lines.

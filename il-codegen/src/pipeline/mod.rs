@@ -143,7 +143,7 @@ impl Checked {
     }
 
     /// The Rust items of each input, or `None` when the program has errors.
-    pub fn emit(&self, opts: emit::Options) -> Option<Vec<Emitted<'_>>> {
+    pub fn emit(&self, opts: crate::EmitOptions) -> Option<Vec<Emitted<'_>>> {
         let ir = self.ir()?;
         Some(
             self.inputs
@@ -165,7 +165,7 @@ impl Checked {
     /// The text of each input's `.rs` file, with its IL lines as comments
     /// (what build.rs writes and `ilc emit` prints), or `None` when the
     /// program has errors.
-    pub fn files(&self, opts: emit::Options) -> Option<Vec<String>> {
+    pub fn files(&self, opts: crate::EmitOptions) -> Option<Vec<String>> {
         let opts = emit::Options {
             line_markers: true,
             ..opts
@@ -193,7 +193,7 @@ impl Emitted<'_> {
     }
 
     /// The text of the `.rs` file: formatted, `@generated`, and, when the
-    /// tokens were emitted with [`emit::Options::line_markers`], each IL
+    /// tokens were emitted with [`EmitOptions::line_markers`](crate::EmitOptions), each IL
     /// line's source as a comment above the code it became (for an XML
     /// project, numbered by its XML lines).
     pub fn file_text(&self) -> String {
