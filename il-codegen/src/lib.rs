@@ -16,7 +16,6 @@ pub mod diag;
 pub mod emit;
 pub mod expand;
 pub mod input;
-pub mod interp;
 pub mod plcopen;
 pub mod sema;
 pub mod syntax;

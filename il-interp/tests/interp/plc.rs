@@ -2,8 +2,8 @@
 //! asserting what `tests/tests/*.rs` assert for the generated code.
 
 use il_codegen::diag::SourceFile;
-use il_codegen::interp::{Machine, Value, load};
 use il_codegen::sema::types::Elem;
+use il_interp::{Machine, Value, load};
 use il_std::{Cycle, FaultKind, TIME};
 
 fn program(file: &str) -> il_codegen::sema::ir::Program {
@@ -17,7 +17,7 @@ fn machine(file: &str, pou: &str) -> Machine {
 }
 
 fn i(v: i128, e: Elem) -> Value {
-    il_codegen::interp::int(v, e)
+    il_interp::int(v, e)
 }
 
 fn int(m: &Machine, n: &str) -> i128 {

@@ -1,8 +1,8 @@
 //! The standard function blocks, held as the real il-std blocks so that the
 //! interpreter and generated code share one implementation.
 
-use super::value::Value;
-use crate::sema::types::Elem;
+use crate::values::Value;
+use il_codegen::sema::types::Elem;
 use il_std::Cycle;
 
 /// Conversion between a block's Rust field type and a runtime value.

@@ -1,9 +1,9 @@
 //! Standard functions, dispatched by name on runtime values. Each computes
 //! what the il-std function the emitter calls computes (most call it).
 
-use super::value::{Value, wrap};
-use crate::sema::ir::StdCall;
-use crate::sema::types::{Elem, Ty};
+use crate::values::{Value, wrap};
+use il_codegen::sema::ir::StdCall;
+use il_codegen::sema::types::{Elem, Ty};
 use il_std::func as f;
 use std::cmp::Ordering;
 
@@ -211,7 +211,7 @@ fn shift(name: &str, v: &Value, n: &Value) -> Option<Value> {
     macro_rules! sh {
         ($c:expr) => {
             Value::Int(
-                match super::value::bits(e) {
+                match crate::values::bits(e) {
                     8 => op!(*x as u8, $c),
                     16 => op!(*x as u16, $c),
                     32 => op!(*x as u32, $c),
@@ -377,7 +377,7 @@ pub fn plain(name: &str, args: &[Value], ret: &Ty) -> Result<Value, String> {
             let r = if name.starts_with("BCD_TO_") || name.contains("_BCD_TO_") {
                 il_std::conv::bcd_decode_checked(*x as u64).0 as i128
             } else {
-                il_std::conv::bcd_encode_checked(*x, super::value::bits(to) / 4).0 as i128
+                il_std::conv::bcd_encode_checked(*x, crate::values::bits(to) / 4).0 as i128
             };
             Ok(Value::Int(wrap(r, to), to))
         }
