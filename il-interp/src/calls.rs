@@ -3,19 +3,17 @@
 
 use crate::places::self_root;
 use crate::values::{Instance, Value};
-use crate::{Frame, Machine, find_var, in_self, stdfn};
+use crate::{Frame, Machine, find_var, held, stdfn};
 use il_codegen::ast::{Edge, PouKind, VarKind};
-use il_codegen::sema::ir::{
-    CheckedPou, Expr, Op, PathElem, Place, Root, StdCall, Value as IrValue,
-};
+use il_codegen::sema::ir::{CheckedPou, Expr, Op, PathElem, Place, Root, Storage};
 use il_codegen::sema::types::Ty;
 use il_std::{Cycle, FaultKind};
 
-/// Names of the variables of `pou` of kind `kind` (located ones excluded).
-pub(crate) fn names_of(pou: &CheckedPou, kind: VarKind) -> Vec<String> {
+/// Names of the VAR_IN_OUTs of `pou`, in declaration order.
+fn inout_names(pou: &CheckedPou) -> Vec<String> {
     pou.vars
         .iter()
-        .filter(|v| v.kind == kind && v.location.is_none())
+        .filter(|v| v.storage == Storage::InOut)
         .map(|v| v.name.clone())
         .collect()
 }
@@ -88,18 +86,26 @@ impl Machine {
     pub(crate) fn call_std(
         &mut self,
         f: &mut Frame,
-        call: &StdCall,
-        args: &[IrValue],
-        ret: &Ty,
+        e: &Expr,
         ctx: &mut Cycle,
         line: u32,
     ) -> Result<Value, String> {
+        let Expr::CallStd {
+            call,
+            args,
+            ret,
+            fault,
+            arg_types: _,
+        } = e
+        else {
+            return Err("internal: not a standard function call".into());
+        };
         let mut vals = Vec::with_capacity(args.len());
         for a in args {
             vals.push(self.value(f, a, ctx, line)?);
         }
         let mut faults = Vec::new();
-        let r = stdfn::call(call, &vals, ret, &mut |k| faults.push(k))?;
+        let r = stdfn::call(call, &vals, ret, *fault, &mut |k| faults.push(k))?;
         for k in faults {
             self.fault(ctx, f, k, line);
         }
@@ -147,7 +153,7 @@ impl Machine {
                 .pous
                 .iter()
                 .find(|p| p.name.eq_ignore_ascii_case(fb))
-                .map(|p| names_of(p, VarKind::InOut))
+                .map(inout_names)
                 .unwrap_or_default(),
             _ => Vec::new(),
         };
@@ -238,7 +244,7 @@ impl Machine {
         let mut edges = vec![None; p.vars.len()];
         for (i, v) in p.vars.iter().enumerate() {
             if let Some(e) = v.edge
-                && in_self(p, i)
+                && held(v)
             {
                 let x = inst.vars[i].as_bool();
                 let m = inst.edge_mem[i];
@@ -256,7 +262,12 @@ impl Machine {
         }
         let mut vars = std::mem::take(&mut inst.vars);
         let temps: Vec<usize> = (0..p.vars.len())
-            .filter(|&i| !in_self(p, i) && p.vars[i].kind != VarKind::InOut)
+            .filter(|&i| {
+                !matches!(
+                    p.vars[i].storage,
+                    Storage::Instance | Storage::External | Storage::InOut
+                )
+            })
             .collect();
         for i in temps {
             let v = &self.prog.pous[pou].vars[i];

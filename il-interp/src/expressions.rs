@@ -104,9 +104,7 @@ impl Machine {
                 Ok(Value::Time(v, *time))
             }
             Expr::CallUser { .. } => self.call_user(f, e, ctx, line),
-            Expr::CallStd {
-                call, args, ret, ..
-            } => self.call_std(f, call, args, ret, ctx, line),
+            Expr::CallStd { .. } => self.call_std(f, e, ctx, line),
         }
     }
 

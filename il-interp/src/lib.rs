@@ -32,9 +32,9 @@ pub use il_std;
 pub use stdfb::StdFb;
 pub use values::{Instance, Value, fmt_dur};
 
-use il_codegen::ast::{PouKind, VarKind};
+use il_codegen::ast::PouKind;
 use il_codegen::diag::{SourceFile, has_errors};
-use il_codegen::sema::ir::{CheckedPou, Program};
+use il_codegen::sema::ir::{CheckedPou, Program, Storage, Var};
 use il_codegen::sema::types::{Elem, Ty};
 use il_std::Cycle;
 use places::Step;
@@ -91,14 +91,11 @@ fn find_var(pou: &CheckedPou, name: &str) -> Option<usize> {
     })
 }
 
-/// Whether variable `i` is memory of the instance. A VAR_EXTERNAL is too:
-/// a PROGRAM run alone keeps its own copy of the global, and a function
-/// block gets the caller's value copied in and out around every call.
-fn in_self(pou: &CheckedPou, i: usize) -> bool {
-    let v = &pou.vars[i];
-    pou.kind != PouKind::Function
-        && !matches!(v.kind, VarKind::Temp | VarKind::InOut)
-        && v.location.is_none()
+/// Whether the instance holds `v` between calls: its memory
+/// ([`Storage::Instance`]) and, unlike generated code, its VAR_EXTERNALs
+/// ([`Storage::External`] says why).
+fn held(v: &Var) -> bool {
+    matches!(v.storage, Storage::Instance | Storage::External)
 }
 
 impl Machine {
@@ -155,7 +152,7 @@ impl Machine {
     pub fn var_names(&self) -> Vec<String> {
         let pou = self.pou();
         (0..pou.vars.len())
-            .filter(|&i| in_self(pou, i))
+            .filter(|&i| held(&pou.vars[i]))
             .map(|i| pou.vars[i].name.clone())
             .collect()
     }
@@ -164,7 +161,7 @@ impl Machine {
     pub fn vars(&self) -> Vec<(String, Value)> {
         let pou = self.pou();
         (0..pou.vars.len())
-            .filter(|&i| in_self(pou, i))
+            .filter(|&i| held(&pou.vars[i]))
             .map(|i| (pou.vars[i].name.clone(), self.inst.vars[i].clone()))
             .collect()
     }
@@ -174,7 +171,7 @@ impl Machine {
         let mut parts = name.split('.');
         let pou = self.pou();
         let i = find_var(pou, parts.next()?)?;
-        if !in_self(pou, i) {
+        if !held(&pou.vars[i]) {
             return None;
         }
         let mut v = self.inst.vars[i].clone();

@@ -1983,6 +1983,7 @@ impl Walk<'_, '_> {
                 args: values,
                 arg_types: res.params,
                 ret: res.ret,
+                fault: res.fault,
             },
         });
         ret
