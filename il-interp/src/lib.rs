@@ -198,11 +198,13 @@ impl Machine {
                 pou = p;
                 ty = pou.vars[find_var(pou, f)?].ty.clone();
             } else {
-                ty = match StdFb::new(&fb.to_ascii_uppercase())?.get(f)? {
-                    Value::Bool(_) => Ty::BOOL,
-                    Value::Int(_, e) | Value::Time(_, e) => Ty::Elem(e),
-                    _ => return None,
-                };
+                let s = il_std::signature::lookup_fb(fb)?;
+                let p = s
+                    .inputs
+                    .iter()
+                    .chain(s.outputs)
+                    .find(|p| p.name.eq_ignore_ascii_case(f))?;
+                ty = Ty::Elem(Elem::from_name(p.ty.name())?);
             }
         }
         Some(ty)
