@@ -17,6 +17,39 @@ pub const TARGETS: &[(&str, Target)] = &[
     ("pipeline", pipeline),
 ];
 
+/// How one run of a target ended when run under a time budget.
+#[derive(Debug, PartialEq)]
+pub enum Outcome {
+    /// Returned within the budget.
+    Ok,
+    /// Panicked: a bug (the panic message is printed by the panic hook).
+    Panicked,
+    /// Still running when the budget ran out: a hang or a superlinear path,
+    /// which in a compiler that runs inside users' builds is a bug too.
+    TooSlow,
+}
+
+/// Run `target` on `data` in a thread of its own and wait at most `budget`.
+/// A run over budget is reported, not waited for: its thread is left behind
+/// (the caller stops soon after with the input saved).
+pub fn run_within(target: Target, data: Vec<u8>, budget: std::time::Duration) -> Outcome {
+    let (tx, rx) = std::sync::mpsc::channel();
+    let spawned = std::thread::Builder::new()
+        .name("fuzz-run".into())
+        .spawn(move || {
+            let r = std::panic::catch_unwind(|| target(&data));
+            let _ = tx.send(r.is_ok());
+        });
+    if spawned.is_err() {
+        return Outcome::Panicked;
+    }
+    match rx.recv_timeout(budget) {
+        Ok(true) => Outcome::Ok,
+        Ok(false) | Err(std::sync::mpsc::RecvTimeoutError::Disconnected) => Outcome::Panicked,
+        Err(std::sync::mpsc::RecvTimeoutError::Timeout) => Outcome::TooSlow,
+    }
+}
+
 /// Sources are text: the CLI refuses non-UTF-8 files before parsing, so feed
 /// the lossy decoding, which still holds every odd character.
 fn source(data: &[u8]) -> SourceFile {
@@ -26,8 +59,11 @@ fn source(data: &[u8]) -> SourceFile {
 /// Render the first diagnostics through every renderer. Rendering dominates
 /// the cost: the first ones are enough to reach every rendering path.
 fn render_all(file: &SourceFile, diags: &[il_codegen::diag::Diagnostic]) {
+    // Every diagnostic through the terminal renderer (a file has at most
+    // about 200, `diag::limit`): many reports on one long line were once
+    // quadratic there.
+    let _ = render(file, diags, false);
     let shown = &diags[..diags.len().min(16)];
-    let _ = render(file, shown, false);
     let _ = render(file, shown, true);
     for d in shown {
         let _ = render_short(file, d);

@@ -1,6 +1,6 @@
 //! `ilc check`: read, check, report.
 
-use std::io::{self, IsTerminal, Read, Write};
+use std::io::{self, IsTerminal, Write};
 use std::path::Path;
 
 use il_codegen::diag::{Severity, SourceFile, render, to_json};
@@ -33,54 +33,14 @@ pub fn use_color(when: &str) -> bool {
 }
 
 /// Read one source. `-` is standard input. The error names the path.
+/// (`il_codegen::read`: the same rules as the build script and `il!`.)
 pub fn read_source(path: &str) -> Result<SourceFile, String> {
-    let (name, bytes) = if path == "-" {
-        let mut buf = Vec::new();
-        io::stdin()
-            .read_to_end(&mut buf)
-            .map_err(|e| format!("cannot read standard input: {e}"))?;
-        ("<stdin>".to_string(), buf)
+    let read = if path == "-" {
+        il_codegen::read::read_stream(io::stdin().lock(), "<stdin>")
     } else {
-        let p = Path::new(path);
-        if p.is_dir() {
-            return Err(format!("cannot read `{path}`: it is a directory"));
-        }
-        let bytes =
-            std::fs::read(p).map_err(|e| format!("cannot read `{path}`: {}", io_reason(&e)))?;
-        (path.to_string(), bytes)
+        il_codegen::read::read_source(Path::new(path), path)
     };
-    // Spans are u32 byte offsets.
-    if bytes.len() > u32::MAX as usize {
-        return Err(format!(
-            "`{name}` is too large ({} bytes; at most 4 GiB)",
-            bytes.len()
-        ));
-    }
-    let text = String::from_utf8(bytes).map_err(|e| {
-        let at = e.utf8_error().valid_up_to();
-        let ok = &e.as_bytes()[..at];
-        let line = ok.iter().filter(|&&b| b == b'\n').count() + 1;
-        let col = ok.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
-        format!(
-            "`{name}` is not UTF-8 text (invalid byte 0x{:02X} at line {line}, byte {col} of the line); \
-             convert it to UTF-8 first, e.g. `iconv -f latin1 -t utf-8`",
-            e.as_bytes()[at]
-        )
-    })?;
-    // A UTF-8 byte order mark (Windows PLC tools write one) is not source text.
-    let text = match text.strip_prefix('\u{feff}') {
-        Some(rest) => rest.to_string(),
-        None => text,
-    };
-    Ok(SourceFile::new(name, text))
-}
-
-fn io_reason(e: &io::Error) -> String {
-    match e.kind() {
-        io::ErrorKind::NotFound => "no such file".to_string(),
-        io::ErrorKind::PermissionDenied => "permission denied".to_string(),
-        _ => e.to_string(),
-    }
+    read.map_err(|e| e.to_string())
 }
 
 /// Run `ilc check` over `paths`, writing JSON to `out` and everything else to

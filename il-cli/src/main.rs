@@ -95,7 +95,7 @@ fn main() -> ExitCode {
         }
         Some(("explain", m)) => {
             let code = m.get_one::<String>("code").map_or("", String::as_str);
-            match il_codegen::diag::codes::lookup(code) {
+            match il_codegen::codes::lookup(code) {
                 Some(info) => {
                     println!(
                         "{}: {}\n\n{}",

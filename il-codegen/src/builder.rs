@@ -13,7 +13,7 @@
 //! A PLCopen TC6 XML project joins the same program with
 //! `.plcopen_file("plc/project.xml")` and becomes `$OUT_DIR/project.rs`.
 
-use crate::diag::{SourceFile, render::render};
+use crate::diag::render::render;
 use crate::input::{Input, compile_inputs_with};
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -110,11 +110,8 @@ impl Builder {
             if cargo {
                 println!("cargo:rerun-if-changed={}", path.display());
             }
-            match std::fs::read_to_string(path) {
-                Ok(t) => {
-                    // Windows tools write a byte order mark; it is not text.
-                    let t = t.strip_prefix('\u{feff}').map(str::to_string).unwrap_or(t);
-                    let file = SourceFile::new(path.display().to_string(), t);
+            match crate::read::read_source(path, &path.display().to_string()) {
+                Ok(file) => {
                     sources.push(if *xml {
                         Input::plcopen(file)
                     } else {
@@ -122,9 +119,10 @@ impl Builder {
                     });
                 }
                 Err(e) => failed.push_str(&format!(
-                    "error: cannot read {} file `{}`: {e}\n",
+                    "error: cannot read {} file `{}`: {}\n",
                     if *xml { "PLCopen XML" } else { "IL" },
-                    path.display()
+                    e.path,
+                    e.reason
                 )),
             }
         }

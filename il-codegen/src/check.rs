@@ -17,6 +17,7 @@ pub fn check_sources(files: &[SourceFile]) -> Vec<Vec<Diagnostic>> {
     }
     for d in &mut all {
         d.sort_by_key(|d| (d.span.lo, d.span.hi));
+        crate::diag::limit(d);
     }
     all
 }
@@ -30,5 +31,6 @@ pub fn check_source(file: &SourceFile) -> Vec<Diagnostic> {
         diags.extend(crate::sema::check(file, &unit).1);
     }
     diags.sort_by_key(|d| (d.span.lo, d.span.hi));
+    crate::diag::limit(&mut diags);
     diags
 }

@@ -98,8 +98,9 @@ pub(crate) fn compile_all_tokens(
         .collect())
 }
 
-fn sort(diags: &mut [Diagnostic]) {
+fn sort(diags: &mut Vec<Diagnostic>) {
     diags.sort_by_key(|d| (d.span.lo, d.severity));
+    crate::diag::limit(diags);
 }
 
 /// Compile to the text of a `.rs` file: formatted, `@generated`, with each

@@ -108,12 +108,12 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
                 .map(std::path::PathBuf::from)
                 .unwrap_or_default();
             let path = base.join(&rel);
-            match std::fs::read_to_string(&path) {
-                Ok(text) => {
+            match crate::read::read_source(&path, &rel) {
+                Ok(file) => {
                     let abs = path.display().to_string();
                     // include_bytes! makes cargo rebuild when the file changes.
                     (
-                        SourceFile::new(rel, text),
+                        file,
                         lit.span(),
                         quote!(
                             const _: &[u8] = include_bytes!(#abs);
@@ -121,7 +121,7 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
                     )
                 }
                 Err(e) => {
-                    let msg = format!("cannot read IL file `{}`: {e}", path.display());
+                    let msg = format!("cannot read IL file `{}`: {}", path.display(), e.reason);
                     return quote_spanned!(lit.span()=> ::core::compile_error!(#msg););
                 }
             }

@@ -64,6 +64,7 @@ impl Input {
             }
         };
         out.sort_by_key(|d| (d.span.lo, d.span.hi));
+        crate::diag::limit(&mut out);
         out
     }
 

@@ -11,12 +11,14 @@
 pub mod ast;
 mod builder;
 pub mod check;
+pub mod codes;
 pub mod compile;
 pub mod diag;
 pub mod emit;
 pub mod expand;
 pub mod input;
 pub mod plcopen;
+pub mod read;
 pub mod sema;
 pub mod syntax;
 

@@ -456,6 +456,20 @@ mod tests {
             Ok(DATE::from_ymd(2001, 4, 9).unwrap())
         );
         assert_eq!(parse_date("2001-13-09"), Err("month must be 1..12"));
+        // The whole range of DT, whose first day starts before i64::MIN ns.
+        assert_eq!(
+            parse_dt("1677-09-21-00:12:45").map(|d| d.0 / 1_000_000_000),
+            Ok(-9_223_372_035)
+        );
+        assert_eq!(
+            parse_dt("1677-09-21-00:12:43"),
+            Err("date and time out of range")
+        );
+        assert!(parse_dt("2262-04-11-23:47:16").is_ok());
+        assert_eq!(
+            parse_dt("2262-04-11-23:47:17"),
+            Err("date and time out of range")
+        );
         assert_eq!(
             parse_date("2001-02-29"),
             Err("day out of range for the month")

@@ -328,7 +328,10 @@ impl DT {
     }
     /// `date` at `tod`, or `None` if not representable.
     pub fn checked_from_date_tod(date: DATE, tod: TOD) -> Option<DT> {
-        date.0.checked_mul(NS_PER_DAY)?.checked_add(tod.0).map(DT)
+        // In i128: the first day of the range starts before `i64::MIN` ns, but
+        // its later times of day fit (`DT#1677-09-21-00:12:45`).
+        let ns = i128::from(date.0) * i128::from(NS_PER_DAY) + i128::from(tod.0);
+        i64::try_from(ns).ok().map(DT)
     }
     /// `date` at `tod`, wrapping if not representable (IEC `CONCAT_DATE_TOD`).
     pub const fn from_date_tod(date: DATE, tod: TOD) -> DT {

@@ -8,7 +8,9 @@
 //! DIRs default to `regressions`, `../tests/plc`, `../tests/plc-hostile` and
 //! `../../shared/corpus`.
 //! Deterministic for a given SEED and seed files. A panic stops the run and
-//! leaves the input in `artifacts/TARGET/drive-crash-<run>`.
+//! leaves the input in `artifacts/TARGET/drive-crash-<run>`; a run longer than
+//! the budget (`IL_FUZZ_BUDGET_SECS`, default 10 s) stops it too, with the
+//! input in `artifacts/TARGET/drive-slow-<run>`, instead of waiting forever.
 
 use std::path::{Path, PathBuf};
 
@@ -154,6 +156,12 @@ fn main() {
         }
     }
     assert!(!seeds.is_empty(), "no seed files");
+    let budget = std::time::Duration::from_secs(
+        std::env::var("IL_FUZZ_BUDGET_SECS")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(10),
+    );
     let mut rng = Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
     let start = std::time::Instant::now();
     let mut data = Vec::new();
@@ -168,12 +176,20 @@ fn main() {
         }
         mutate(&mut rng, &seeds, &mut data);
         let input = data.clone();
-        if std::panic::catch_unwind(|| target(&input)).is_err() {
+        let outcome = il_fuzz::run_within(target, input.clone(), budget);
+        if outcome != il_fuzz::Outcome::Ok {
+            let what = match outcome {
+                il_fuzz::Outcome::TooSlow => "slow",
+                _ => "crash",
+            };
             let dir = Path::new("artifacts").join(name);
             let _ = std::fs::create_dir_all(&dir);
-            let path = dir.join(format!("drive-crash-{run}"));
+            let path = dir.join(format!("drive-{what}-{run}"));
             let _ = std::fs::write(&path, &input);
-            eprintln!("crash at run {run}: input in {}", path.display());
+            eprintln!(
+                "{what} at run {run} (budget {budget:?}): input in {}",
+                path.display()
+            );
             std::process::exit(1);
         }
         if run > 0 && run % 100_000 == 0 {

@@ -1,5 +1,7 @@
-//! The index of diagnostic codes: each stage keeps its own list next to the
-//! code that reports them; this module joins them for `ilc explain`.
+//! Diagnostic codes: what a code is ([`CodeInfo`]), the one macro every
+//! stage declares its table with, and the codes of the diagnostics layer
+//! itself. The index of every code (for `ilc explain` and the docs) is
+//! [`crate::codes`], outside the stages, so no stage imports another's.
 
 /// A diagnostic code and its explanation.
 #[derive(Clone, Copy, Debug)]
@@ -12,15 +14,26 @@ pub struct CodeInfo {
     pub explanation: &'static str,
 }
 
-/// Every code of every stage.
-pub fn all() -> impl Iterator<Item = &'static CodeInfo> {
-    crate::syntax::CODES
-        .iter()
-        .chain(crate::sema::CODES)
-        .chain(crate::plcopen::CODES)
+/// A stage's table of codes: one `const` per code (documented with its
+/// title) and `CODES`, the table with every explanation.
+///
+/// ```ignore
+/// codes! {
+///     UNKNOWN_NAME = "IL0101", "unknown variable", "The operand names ...";
+/// }
+/// ```
+macro_rules! codes {
+    ($($id:ident = $code:literal, $title:literal, $expl:literal;)*) => {
+        $(#[doc = concat!("`", $code, "`: ", $title, ".")] pub const $id: &str = $code;)*
+        /// Every code of this table with its explanation.
+        pub static CODES: &[$crate::diag::codes::CodeInfo] = &[$(
+            $crate::diag::codes::CodeInfo { code: $code, title: $title, explanation: $expl },
+        )*];
+    };
 }
+pub(crate) use codes;
 
-/// Look a code up (`IL0003`, case-insensitive).
-pub fn lookup(code: &str) -> Option<&'static CodeInfo> {
-    all().find(|c| c.code.eq_ignore_ascii_case(code))
+codes! {
+    TOO_MANY = "IL0032", "more diagnostics in one file than are shown",
+        "A file with very many errors (often not IL at all, or IL damaged by a bad copy) gets its first 200 diagnostics, by position, and this one, which says how many more there are.\n\n    LD x # # # # # # # # ...   (* thousands of stray characters *)\n\nFix the first ones: many of the rest usually follow from them.";
 }

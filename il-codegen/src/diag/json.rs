@@ -91,16 +91,11 @@ pub fn to_json(file: &SourceFile, d: &Diagnostic) -> String {
     out
 }
 
-/// The JSON reader of the integration tests, to read the output back.
-#[cfg(test)]
-#[path = "../../tests/common/json.rs"]
-mod test_reader;
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    use super::test_reader::{J, get, parse};
+    use il_testkit::json::{J, get, parse};
 
     #[test]
     fn escaping() {

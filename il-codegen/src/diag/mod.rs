@@ -21,6 +21,18 @@ pub struct SourceFile {
     /// The whole text.
     pub text: String,
     line_starts: Vec<usize>,
+    /// Characters before each `CHAR_BLOCK`-byte block of the text: a column
+    /// is then counted from the nearest block, not from the line start, so
+    /// many diagnostics on one long line stay linear in total.
+    block_chars: Vec<u32>,
+}
+
+/// Bytes per entry of [`SourceFile::block_chars`].
+const CHAR_BLOCK: usize = 256;
+
+/// Whether a byte starts a character (is not a UTF-8 continuation byte).
+fn starts_char(b: u8) -> bool {
+    b & 0xC0 != 0x80
 }
 
 impl SourceFile {
@@ -29,11 +41,27 @@ impl SourceFile {
         let text = text.into();
         let mut line_starts = vec![0];
         line_starts.extend(text.match_indices('\n').map(|(i, _)| i + 1));
+        let mut block_chars = Vec::with_capacity(text.len() / CHAR_BLOCK + 1);
+        let mut n = 0u32;
+        for block in text.as_bytes().chunks(CHAR_BLOCK) {
+            block_chars.push(n);
+            n += block.iter().filter(|&&b| starts_char(b)).count() as u32;
+        }
         SourceFile {
             name: name.into(),
             text,
             line_starts,
+            block_chars,
         }
+    }
+
+    /// Characters in `text[..offset]` (offset clamped to the text).
+    fn chars_before(&self, offset: usize) -> usize {
+        let offset = offset.min(self.text.len());
+        let block = offset / CHAR_BLOCK;
+        let base = self.block_chars.get(block).copied().unwrap_or(0) as usize;
+        let rest = &self.text.as_bytes()[block * CHAR_BLOCK..offset];
+        base + rest.iter().filter(|&&b| starts_char(b)).count()
     }
 
     /// The 1-based line of a byte offset (what `line_col` gives, without
@@ -48,11 +76,24 @@ impl SourceFile {
         let offset = (offset as usize).min(self.text.len());
         let line = self.line_starts.partition_point(|&s| s <= offset) - 1;
         let start = self.line_starts[line];
-        let col = self
-            .text
-            .get(start..offset)
-            .map_or(offset - start, |s| s.chars().count());
+        let col = self.chars_before(offset) - self.chars_before(start);
         (line + 1, col + 1)
+    }
+
+    /// The byte offset where a 1-based line starts (the text's end past the
+    /// last line).
+    pub fn line_start(&self, line: usize) -> usize {
+        self.line_starts
+            .get(line.wrapping_sub(1))
+            .copied()
+            .unwrap_or(self.text.len())
+    }
+
+    /// The byte offset where a 1-based line ends, before its `\n`.
+    pub fn line_end(&self, line: usize) -> usize {
+        self.line_starts
+            .get(line)
+            .map_or(self.text.len(), |&next| next - 1)
     }
 
     /// The text of a 1-based line, without its line break.
@@ -115,6 +156,8 @@ pub struct Diagnostic {
     pub notes: Vec<String>,
     /// `= help: ...` (a suggestion).
     pub help: Option<String>,
+    /// For `IL0032` only: how many diagnostics (and errors) it stands for.
+    cut: (usize, usize),
 }
 
 impl Diagnostic {
@@ -129,6 +172,7 @@ impl Diagnostic {
             secondary: Vec::new(),
             notes: Vec::new(),
             help: None,
+            cut: (0, 0),
         }
     }
     /// A warning with a code, a place and a message.
@@ -182,6 +226,51 @@ impl Diagnostic {
     pub fn is_error(&self) -> bool {
         self.severity == Severity::Error
     }
+}
+
+/// The most diagnostics kept for one file: beyond this a file is usually not
+/// IL at all, and rendering every message would cost more than it tells.
+pub const MAX_PER_FILE: usize = 200;
+
+/// Keep the first [`MAX_PER_FILE`] diagnostics of one file (sorted by
+/// position) and replace the rest with one `IL0032` that counts them; an
+/// error stays an error so that a cut list never turns a failed check into
+/// a passed one.
+pub fn limit(diags: &mut Vec<Diagnostic>) {
+    let too_many = codes::TOO_MANY;
+    if diags.len() <= MAX_PER_FILE && !diags.iter().any(|d| d.code == too_many) {
+        return;
+    }
+    // An earlier stage's count is carried over, so limiting twice counts once.
+    let (mut cut, mut cut_errors, mut at) = (0usize, 0usize, None);
+    diags.retain(|d| {
+        if d.code != too_many {
+            return true;
+        }
+        cut += d.cut.0;
+        cut_errors += d.cut.1;
+        at = Some(d.span);
+        false
+    });
+    if diags.len() > MAX_PER_FILE {
+        let rest = diags.split_off(MAX_PER_FILE);
+        at = Some(rest[0].span);
+        cut += rest.len();
+        cut_errors += rest.iter().filter(|d| d.is_error()).count();
+    }
+    let Some(at) = at else { return };
+    let message =
+        format!("{cut} more diagnostics in this file are not shown ({cut_errors} of them errors)");
+    let mut d = if cut_errors > 0 {
+        Diagnostic::error(too_many, at, message)
+    } else {
+        Diagnostic::warning(too_many, at, message)
+    }
+    .with_help(format!(
+        "only the first {MAX_PER_FILE} are listed; fix those first"
+    ));
+    d.cut = (cut, cut_errors);
+    diags.push(d);
 }
 
 /// True when any diagnostic is an error.

@@ -59,15 +59,37 @@ pub(crate) fn display_span(text: &str, span: Span) -> (usize, usize) {
     }
 }
 
-/// The byte range of the lines that `lo..hi` touches (without the final line break).
-fn line_range(text: &str, lo: usize, hi: usize) -> (usize, usize) {
-    let start = text[..lo].rfind('\n').map_or(0, |i| i + 1);
-    let mut end = text[hi..].find('\n').map_or(text.len(), |i| hi + i);
+/// The byte range of the lines that `lo..hi` touches (without the final line
+/// break). From the line table, so that many diagnostics on one long line do
+/// not each scan it.
+fn line_range(file: &SourceFile, lo: usize, hi: usize) -> (usize, usize) {
+    let text = file.text.as_str();
+    let start = file.line_start(file.line_of(lo as u32));
+    let mut end = file.line_end(file.line_of(hi as u32));
     // A CRLF line is shown without its CR.
     if end > hi && text.as_bytes()[end - 1] == b'\r' {
         end -= 1;
     }
     (start, end)
+}
+
+/// Lines longer than this (in bytes) are shown as a window around the spans.
+const LONG_LINE: usize = 480;
+/// Bytes shown on each side of the spans in such a window.
+const CONTEXT: usize = 80;
+
+fn floor_char(text: &str, mut i: usize) -> usize {
+    while !text.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+fn ceil_char(text: &str, mut i: usize) -> usize {
+    while !text.is_char_boundary(i) {
+        i += 1;
+    }
+    i
 }
 
 fn ordered<'d>(text: &str, diags: &'d [Diagnostic]) -> Vec<&'d Diagnostic> {
@@ -112,11 +134,38 @@ fn render_one(renderer: &Renderer, file: &SourceFile, d: &Diagnostic) -> String 
     // between them; it folds long unannotated stretches), not the whole file.
     let lo = secondary.iter().map(|s| s.0.0).fold(primary.0, usize::min);
     let hi = secondary.iter().map(|s| s.0.1).fold(primary.1, usize::max);
-    let (start, end) = line_range(text, lo, hi);
-    let source = &text[start..end];
-    let (first_line, _) = file.line_col(start as u32);
+    let (mut start, mut end) = line_range(file, lo, hi);
+    let first_line = file.line_of(start as u32);
+    // A long line (machine-written XML, a damaged file) is shown as a window
+    // around the spans, with the position given apart: annotate-snippets
+    // measures the whole line for every report, which on one line with many
+    // reports is quadratic.
+    let window = end - start > LONG_LINE && first_line == file.line_of(hi as u32);
+    let (line_lo, line_hi) = (start, end);
+    if window {
+        start = floor_char(text, lo.saturating_sub(CONTEXT).max(start));
+        end = ceil_char(text, (hi + CONTEXT).min(end).min(start + 2 * LONG_LINE));
+    }
+    let (before, after) = match window {
+        true => (
+            if start > line_lo { "..." } else { "" },
+            if end < line_hi { "..." } else { "" },
+        ),
+        false => ("", ""),
+    };
+    let owned;
+    let source = if window {
+        owned = format!("{before}{}{after}", &text[start..end]);
+        owned.as_str()
+    } else {
+        &text[start..end]
+    };
+    let shift = before.len();
     // Spans that run past `end` (a span over a final line break) are cut there.
-    let rel = |(a, b): (usize, usize)| (a - start).min(source.len())..(b - start).min(source.len());
+    let max = source.len() - after.len();
+    let rel = |(a, b): (usize, usize)| {
+        (a.saturating_sub(start) + shift).min(max)..(b.saturating_sub(start) + shift).min(max)
+    };
 
     let mut primary_ann = AnnotationKind::Primary.span(rel(primary));
     if !d.label.is_empty() {
@@ -144,7 +193,18 @@ fn render_one(renderer: &Renderer, file: &SourceFile, d: &Diagnostic) -> String 
     if let Some(help) = &d.help {
         group = group.element(Level::HELP.message(help.as_str()));
     }
-    renderer.render(&[group])
+    let out = renderer.render(&[group]);
+    if !window {
+        return out;
+    }
+    // annotate-snippets gave the column inside the window: name the real one.
+    let shown = source[..rel(primary).start].chars().count() + 1;
+    let (line, col) = file.line_col(primary.0 as u32);
+    out.replacen(
+        &format!("{}:{line}:{shown}", file.name),
+        &format!("{}:{line}:{col}", file.name),
+        1,
+    )
 }
 
 /// One compact, self-contained message for `compile_error!` inside `il!`, where

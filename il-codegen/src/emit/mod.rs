@@ -5,7 +5,7 @@
 //! DIV/MOD by zero yields 0 and records a fault in the cycle context, array
 //! accesses go through `get` and record a fault when out of range.
 
-mod config;
+mod configuration;
 mod flow;
 mod names;
 mod values;
@@ -60,7 +60,11 @@ pub fn program(p: &Program, opts: Options) -> TokenStream {
     let mut out = TokenStream::new();
     out.extend(p.types.iter().map(|t| emit_type(t, opts)));
     out.extend(p.pous.iter().map(|pou| emit_pou(pou, opts)));
-    out.extend(p.configs.iter().map(|c| config::emit_config(c, opts)));
+    out.extend(
+        p.configs
+            .iter()
+            .map(|c| configuration::emit_config(c, opts)),
+    );
     out
 }
 

@@ -23,24 +23,11 @@ mod translate;
 pub use map::SpanMap;
 
 use crate::ast::Span;
-use crate::diag::codes::CodeInfo;
 use crate::diag::{Diagnostic, SourceFile};
 
-macro_rules! codes {
-    ($($id:ident = $code:literal, $title:literal, $expl:literal;)*) => {
-        /// The codes of the PLCopen import.
-        pub mod codes {
-            $(
-                #[doc = $title]
-                pub const $id: &str = $code;
-            )*
-        }
-        /// Every code of the PLCopen import with its explanation.
-        pub static CODES: &[CodeInfo] = &[$(CodeInfo { code: $code, title: $title, explanation: $expl },)*];
-    };
-}
-
-codes! {
+/// The codes of the PLCopen import.
+pub mod codes {
+    crate::diag::codes::codes! {
     MALFORMED_XML = "IL0201", "malformed XML",
         "The file is not well-formed XML, so it cannot be read as a PLCopen project. The message gives the line and column where the XML parser stopped.\n\n    <pou name=\"Main\" pouType=\"program\">\n      <body><IL><xhtml:p>LD a</IL></body>   <!-- </xhtml:p> missing -->";
     BAD_PROJECT = "IL0202", "not a valid PLCopen project",
@@ -51,7 +38,9 @@ codes! {
         "A part of the project is left out, with this warning: actions and transitions of a POU, access variables, and a configuration whose program instance runs a POU that was not translated (because its body is not IL).\n\n    <task name=\"main\" priority=\"1\" interval=\"T#10ms\">\n      <pouInstance name=\"prg\" typeName=\"MainFBD\"/>   <!-- MainFBD's body is FBD -->";
     UNTRANSLATABLE = "IL0205", "PLCopen element cannot be translated",
         "The project uses something IL has no equivalent for, e.g. a `<pointer>` type.\n\n    <variable name=\"p\"><type><pointer><baseType><INT/></baseType></pointer></type></variable>";
+    }
 }
+pub use codes::CODES;
 
 use codes::MALFORMED_XML;
 
@@ -195,7 +184,7 @@ impl Import {
                 let lead = line.len() - line.trim_start().len();
                 let off = u32::try_from(start + lead).unwrap_or(u32::MAX);
                 start += line.len() + 1;
-                self.xml.line_col(self.map.offset_to_xml(off)).0
+                self.xml.line_of(self.map.offset_to_xml(off))
             })
             .collect()
     }

@@ -1,14 +1,6 @@
 //! Diagnostic codes of the checker (IL0100..IL0199).
 
-use crate::diag::codes::CodeInfo;
-
-macro_rules! codes {
-    ($($id:ident = $code:literal, $title:literal, $expl:literal;)*) => {
-        $(#[doc = concat!("`", $code, "`: ", $title, ".")] pub const $id: &str = $code;)*
-        /// Every checker code with its explanation.
-        pub static CODES: &[CodeInfo] = &[$(CodeInfo { code: $code, title: $title, explanation: $expl },)*];
-    };
-}
+use crate::diag::codes::codes;
 
 codes! {
     UNKNOWN_NAME = "IL0101", "unknown variable",

@@ -163,7 +163,7 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
         addresses: w.addresses,
         cr_types: w.cr_types,
         save_types: w.save_types,
-        retained: super::config::retained(env, sig),
+        retained: super::configuration::retained(env, sig),
     })
 }
 

@@ -2,7 +2,7 @@
 //! every instruction, and control flow. Produces the checked [`ir::Program`].
 
 pub mod codes;
-mod config;
+mod configuration;
 mod decls;
 mod flow;
 pub mod ir;
@@ -107,22 +107,35 @@ impl Cx<'_> {
     }
 }
 
+/// Names longer than this get no "did you mean" (IEC identifiers in real
+/// programs are far shorter).
+const MAX_SUGGEST_LEN: usize = 64;
+
 /// Case-insensitive "did you mean": the closest of `candidates` to `name`.
 pub(crate) fn suggest<'a>(
     name: &str,
     candidates: impl IntoIterator<Item = &'a str>,
 ) -> Option<&'a str> {
+    // Bounded: no suggestion for a name no one types (a damaged or hostile
+    // file), and no distance computed for a candidate whose length alone
+    // rules it out, so the search is linear in the candidates.
+    if name.len() > MAX_SUGGEST_LEN {
+        return None;
+    }
     let up = name.to_ascii_uppercase();
     // Rank by edit distance (a swap of two letters counts once), then prefer
     // a candidate that extends the name (`Q` → `Q1`), then the closest length.
     let mut best: Option<((usize, bool, usize), &str)> = None;
     for c in candidates {
+        let limit = (up.len().max(c.len()) / 3).max(1);
+        if up.len().abs_diff(c.len()) > limit || c.len() > MAX_SUGGEST_LEN {
+            continue;
+        }
         let cu = c.to_ascii_uppercase();
         if cu == up {
             continue;
         }
         let d = edit_distance(&up, &cu);
-        let limit = (up.len().max(cu.len()) / 3).max(1);
         let rank = (
             d,
             !(cu.starts_with(&up) || up.starts_with(&cu)),

@@ -1,9 +1,9 @@
 // auto-generated: "lalrpop 0.23.2"
-// sha3: 553509d8dd3eabb79d24560eb5f8d3d50779129a44fe5f419292a2e4bd60648e
+// sha3: 8174169a53fd58dacfbe040998cfba25f4e2f60fb50ee1d5d3ea1ab1b271aa71
 // features: 
 use crate::ast::*;
 use super::lexer::{Tok, LexError, ExprTok};
-use super::build::{self, Ctx, Elem, CfgElem, sp};
+use super::actions::{self as build, Ctx, Elem, CfgElem, sp};
 use lalrpop_util::ErrorRecovery;
 #[allow(unused_extern_crates)]
 extern crate lalrpop_util as __lalrpop_util;
@@ -18,7 +18,7 @@ mod __parse__Unit {
 
     use crate::ast::*;
     use super::super::lexer::{Tok, LexError, ExprTok};
-    use super::super::build::{self, Ctx, Elem, CfgElem, sp};
+    use super::super::actions::{self as build, Ctx, Elem, CfgElem, sp};
     use lalrpop_util::ErrorRecovery;
     #[allow(unused_extern_crates)]
     extern crate lalrpop_util as __lalrpop_util;

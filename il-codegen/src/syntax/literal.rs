@@ -240,9 +240,12 @@ pub fn parse_dt(text: &str) -> Result<i64, String> {
     })?;
     let days = parse_date(&text[..split])?;
     let tod = parse_tod(&text[split + 1..])?;
-    days.checked_mul(86_400_000_000_000)
-        .and_then(|v| v.checked_add(tod))
-        .ok_or_else(|| "this date and time is out of range".to_string())
+    // In i128: DT's first day starts before i64::MIN ns, its later times fit.
+    let ns = i128::from(days) * 86_400_000_000_000 + i128::from(tod);
+    i64::try_from(ns).map_err(|_| {
+        "this date and time is out of range (DT holds DT#1677-09-21-00:12:44 to DT#2262-04-11-23:47:16)"
+            .to_string()
+    })
 }
 
 /// The contents of a string literal (between the quotes), `$` escapes resolved.

@@ -7,7 +7,7 @@
 use crate::ast::{CompilationUnit, Span};
 use crate::diag::{Diagnostic, SourceFile, codes::CodeInfo};
 
-mod build;
+mod actions;
 pub mod errors;
 pub mod lexer;
 pub mod literal;
@@ -19,7 +19,7 @@ mod grammar;
 pub use errors::code;
 
 /// Diagnostic codes of the front end (IL0001..IL0099).
-pub static CODES: &[CodeInfo] = errors::CODES;
+pub static CODES: &[CodeInfo] = errors::code::CODES;
 
 /// Parse a whole file. Always returns a tree (possibly partial) and every
 /// syntax diagnostic of the file, sorted by position.
@@ -35,7 +35,7 @@ pub fn parse(file: &SourceFile) -> (CompilationUnit, Vec<Diagnostic>) {
         return (CompilationUnit::default(), vec![d]);
     }
     let (toks, mut diags) = lexer::lex(&file.text);
-    let mut ctx = build::Ctx::default();
+    let mut ctx = actions::Ctx::default();
     let result = grammar::UnitParser::new().parse(&mut ctx, toks.iter().cloned());
     let unit = match result {
         Ok(u) => u,
@@ -50,5 +50,6 @@ pub fn parse(file: &SourceFile) -> (CompilationUnit, Vec<Diagnostic>) {
     diags.extend(ctx.diags);
     diags.sort_by_key(|d| (d.span.lo, d.span.hi));
     diags.dedup_by(|a, b| a.span == b.span && a.code == b.code);
+    crate::diag::limit(&mut diags);
     (unit, diags)
 }

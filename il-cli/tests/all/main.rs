@@ -1,0 +1,10 @@
+//! The integration tests of `ilc`, one binary with a module per command or
+//! topic (they run the built `ilc` as a user would). `../ui` holds the
+//! golden outputs of the terminal UI.
+
+mod cli;
+mod corpus;
+mod explain;
+mod plcopen;
+mod run;
+mod ui;

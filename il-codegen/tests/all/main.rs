@@ -1,0 +1,19 @@
+//! The integration tests of il-codegen, one binary with a module per topic
+//! (one link instead of one per file). Data they read sits beside this folder:
+//! `../golden` (emitted code), `../diag` (rendered diagnostics).
+
+mod syntax_common;
+
+mod corpus_configurations;
+mod front_end_robustness;
+mod golden_emit;
+mod plcopen_corpus;
+mod render_golden;
+mod sema_literals;
+mod sema_types;
+mod syntax_corpus;
+mod syntax_declarations;
+mod syntax_errors;
+mod syntax_grammar_up_to_date;
+mod syntax_instructions;
+mod syntax_literals;

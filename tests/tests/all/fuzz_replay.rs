@@ -1,0 +1,65 @@
+//! Replays every fuzz target (`fuzz/src/lib.rs`) over the checked-in seeds
+//! and regressions (`fuzz/regressions`), our IL programs (`tests/plc`,
+//! `tests/plc-hostile`) and the
+//! shared real-world corpus when it is present. A crash found by fuzzing is
+//! fixed and its input kept in `fuzz/regressions`, so this test keeps it fixed
+//! on stable Rust, in CI, without libFuzzer.
+//!
+//! Each run has a time budget (`IL_FUZZ_BUDGET_SECS`, default 30 s in this
+//! debug build, far above the slowest input): the hang inputs of earlier
+//! defects (exponential instance trees and type graphs, many diagnostics on
+//! one long line) took minutes, and a run over budget fails the test with its
+//! input named instead of hanging CI.
+
+#[path = "../../../fuzz/src/lib.rs"]
+#[allow(dead_code)]
+mod targets;
+
+use std::path::{Path, PathBuf};
+
+fn files(dir: &Path) -> Vec<PathBuf> {
+    let Ok(rd) = std::fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let mut v: Vec<PathBuf> = rd
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.is_file())
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn every_target_over_the_seed_and_regression_corpus() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let regressions = files(&root.join("fuzz/regressions"));
+    assert!(
+        regressions.len() >= 10,
+        "fuzz/regressions holds the seeds and regressions"
+    );
+    let mut inputs = regressions;
+    inputs.extend(files(&root.join("tests/plc")));
+    inputs.extend(files(&root.join("tests/plc-hostile")));
+    inputs.extend(files(&root.join("../shared/corpus")));
+    let budget = std::time::Duration::from_secs(
+        std::env::var("IL_FUZZ_BUDGET_SECS")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(30),
+    );
+    let mut runs = 0;
+    for path in &inputs {
+        let data = std::fs::read(path).expect("read a corpus file");
+        for (name, target) in targets::TARGETS {
+            let outcome = targets::run_within(*target, data.clone(), budget);
+            assert_eq!(
+                outcome,
+                targets::Outcome::Ok,
+                "target `{name}` on {} (budget {budget:?})",
+                path.display()
+            );
+            runs += 1;
+        }
+    }
+    println!("{runs} runs over {} inputs", inputs.len());
+}

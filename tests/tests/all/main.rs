@@ -1,0 +1,33 @@
+//! The integration tests of generated code, one binary with a module per
+//! topic: programs from `../plc` compiled by this crate's build.rs and by
+//! `il!`, the trybuild cases of `../ui` (one batch), the differential test
+//! against the interpreter and the fuzz replay. One binary links the
+//! generated code once instead of once per file.
+
+mod addresses;
+mod annex_f;
+mod differential;
+mod edge_cases;
+mod edges_strings;
+mod fb_calls;
+mod functions;
+mod fuzz_replay;
+mod globals_tasks;
+mod hostile;
+mod jumps;
+mod labels_parens;
+mod misc_lang;
+mod motor;
+mod ops_arith;
+mod ops_bool;
+mod parens;
+mod plcopen;
+mod regressions;
+mod retain;
+mod rtc;
+mod runtime_faults;
+mod seeds;
+mod std_blocks;
+mod std_funcs;
+mod ui;
+mod user_types;
