@@ -70,9 +70,9 @@ fn main() -> ExitCode {
                 program: m.get_one::<String>("program").cloned(),
                 cycles: m.get_one::<u64>("cycles").copied().unwrap_or(10),
                 step: m
-                    .get_one::<il_codegen::interp::il_std::TIME>("step")
+                    .get_one::<il_interp::il_std::TIME>("step")
                     .copied()
-                    .unwrap_or(il_codegen::interp::il_std::TIME::from_ms(10)),
+                    .unwrap_or(il_interp::il_std::TIME::from_ms(10)),
                 sets: m
                     .get_many::<run::SetArg>("set")
                     .into_iter()

@@ -3,8 +3,8 @@
 
 use std::io::Write;
 
-use il_codegen::interp::il_std::{self, Cycle, TIME};
-use il_codegen::interp::{Machine, Value, fmt_dur};
+use il_interp::il_std::{self, Cycle, TIME};
+use il_interp::{Machine, Value, fmt_dur};
 
 pub const EXAMPLES: &str = "\
 Examples:

@@ -17,7 +17,7 @@ pub mod plcopen;
 pub mod read;
 
 // The stages and the front-end glue: public for the other crates of this
-// workspace (the macro crate, the interpreter, the benchmarks, the tests),
+// workspace (the macro crate, il-interp, the benchmarks, the tests),
 // but not the documented API (as prost-build and cxx-build keep theirs):
 // their items change with the compiler. Users drive the compiler through
 // `Builder`, `Program` and `il!`.
@@ -27,8 +27,6 @@ pub mod ast;
 pub mod emit;
 #[doc(hidden)]
 pub mod expand;
-#[doc(hidden)]
-pub mod interp;
 #[doc(hidden)]
 pub mod pipeline;
 #[doc(hidden)]

@@ -11,7 +11,7 @@ mod names;
 mod values;
 
 use crate::ast::{PouKind, VarKind};
-use crate::sema::ir::{CheckedPou, Program};
+use crate::sema::ir::{CheckedPou, Program, Storage};
 use crate::sema::types::Ty;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -97,12 +97,9 @@ struct Pou<'a> {
 }
 
 impl Pou<'_> {
-    /// Whether variable `i` lives in `self` (FB/PROGRAM memory) or is a local.
-    fn in_self(&self, i: usize) -> bool {
-        let v = &self.pou.vars[i];
-        self.pou.kind != PouKind::Function
-            && !matches!(v.kind, VarKind::Temp | VarKind::InOut | VarKind::External)
-            && v.location.is_none()
+    /// Whether variable `i` is a field of `self` (FB/PROGRAM memory).
+    fn field(&self, i: usize) -> bool {
+        self.pou.vars[i].storage == Storage::Instance
     }
 
     /// Whether variable `i` (an elementary value in `self`) is copied into a
@@ -110,7 +107,7 @@ impl Pou<'_> {
     /// that it can live in a register: nothing else can see `self` meanwhile.
     fn cached(&self, i: usize) -> bool {
         let v = &self.pou.vars[i];
-        self.in_self(i) && v.edge.is_none() && matches!(v.ty, Ty::Elem(_))
+        self.field(i) && v.edge.is_none() && matches!(v.ty, Ty::Elem(_))
     }
 
     fn has_cached(&self) -> bool {
@@ -134,14 +131,9 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
         let d = values::default_value(t);
         quote!(let mut #id: #ty = #d;)
     });
-    let temp_locals = pou.vars.iter().enumerate().filter(|(i, v)| {
-        // FUNCTION inputs and outputs are parameters, FB memory is in `self`.
-        let param = pou.kind == PouKind::Function
-            && matches!(v.kind, VarKind::Input | VarKind::Output)
-            || matches!(v.kind, VarKind::InOut | VarKind::External);
-        !(p.in_self(*i) || param || v.location.is_some())
-    });
-    let temp_locals = temp_locals.map(|(_, v)| {
+    // FUNCTION inputs and outputs are parameters, FB memory is in `self`.
+    let temp_locals = pou.vars.iter().filter(|v| v.storage == Storage::Temp);
+    let temp_locals = temp_locals.map(|v| {
         let id = local_ident(&v.name);
         let ty = rust_ty(&v.ty);
         let init = values::init_value(&v.ty, v.init.as_ref());
@@ -216,7 +208,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 .vars
                 .iter()
                 .enumerate()
-                .filter(|(i, _)| p.in_self(*i))
+                .filter(|(i, _)| p.field(*i))
                 .map(|(_, v)| v)
                 .collect();
             let decls = fields.iter().map(|v| {
@@ -296,7 +288,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
             let externals: Vec<_> = pou
                 .vars
                 .iter()
-                .filter(|v| v.kind == VarKind::External && v.location.is_none())
+                .filter(|v| v.storage == Storage::External)
                 .collect();
             let ext_id = names::ext_ident(&pou.name);
             let (ext_item, ext_param) = if externals.is_empty() {

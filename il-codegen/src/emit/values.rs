@@ -2,9 +2,11 @@
 
 use super::{Pou, item_ident, local_ident, rust_ident, rust_ty};
 use crate::ast::Area;
-use crate::ast::{PouKind, VarKind};
-use crate::sema::ir::{BinOp, Const, Expr, Init, Loc, PathElem, Place, Root, StdCall, Value};
+use crate::sema::ir::{
+    BinOp, Const, Expr, Init, Loc, PathElem, Place, Root, StdCall, Storage, Value,
+};
 use crate::sema::types::{Elem, Ty};
+use il_std::FaultKind;
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote};
 
@@ -154,6 +156,12 @@ pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
 }
 
 impl Pou<'_> {
+    /// `__ctx.fault(..)` of the kind a checked standard call carries.
+    pub(crate) fn fault_of(&self, kind: FaultKind, line: u32) -> TokenStream {
+        self.fault(&format!("{kind:?}"), line)
+    }
+
+    /// `__ctx.fault(::il_std::FaultKind::KIND, "Pou", line)`.
     pub(crate) fn fault(&self, kind: &str, line: u32) -> TokenStream {
         let kind = format_ident!("{}", kind);
         let pou = &self.pou.name;
@@ -200,22 +208,26 @@ impl Pou<'_> {
                 }
                 if self.cached(*i) {
                     let id = super::names::cache_ident(&v.name);
-                    quote!(#id)
-                } else if self.in_self(*i) {
-                    let id = rust_ident(&v.name);
-                    quote!(self.#id)
-                } else if v.kind == VarKind::External {
+                    return quote!(#id);
+                }
+                match v.storage {
+                    Storage::Instance => {
+                        let id = rust_ident(&v.name);
+                        quote!(self.#id)
+                    }
                     // A global, through the reference the caller passed.
-                    let id = rust_ident(&v.name);
-                    quote!((*__ext.#id))
-                } else if v.kind == VarKind::InOut
-                    || self.pou.kind == PouKind::Function && v.kind == VarKind::Output
-                {
-                    let id = local_ident(&v.name);
-                    quote!((*#id))
-                } else {
-                    let id = local_ident(&v.name);
-                    quote!(#id)
+                    Storage::External => {
+                        let id = rust_ident(&v.name);
+                        quote!((*__ext.#id))
+                    }
+                    Storage::InOut | Storage::OutParam => {
+                        let id = local_ident(&v.name);
+                        quote!((*#id))
+                    }
+                    Storage::Temp | Storage::Param | Storage::Located | Storage::Global => {
+                        let id = local_ident(&v.name);
+                        quote!(#id)
+                    }
                 }
             }
         }
@@ -496,76 +508,63 @@ impl Pou<'_> {
             Expr::CallStd {
                 call,
                 args,
-                arg_types,
+                arg_types: _,
                 ret,
+                fault,
             } => {
                 let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
-                match call {
+                match (call, fault) {
                     // REAL → integer out of range (or NaN) saturates, as the
                     // plain function does, and is recorded as a fault.
-                    StdCall::Plain(n)
-                        if (n.contains("_TO_") || n.contains("TRUNC"))
-                            && arg_types
-                                .first()
-                                .and_then(Ty::elem)
-                                .is_some_and(Elem::is_real)
-                            && ret
-                                .elem()
-                                .is_some_and(|e| e.int_range().is_some() && e != Elem::BOOL) =>
-                    {
+                    (StdCall::Plain(n), Some(k @ FaultKind::ConversionOutOfRange)) => {
                         let t = rust_ty(ret);
+                        // The fault is the table's; the rounding is the
+                        // function's: TRUNC and REAL_TRUNC_* truncate.
                         let f = if n.contains("TRUNC") {
                             quote!(trunc_to_int_checked)
                         } else {
                             quote!(real_to_int_checked)
                         };
                         let a = &args[0];
-                        let fault = self.fault("ConversionOutOfRange", line);
+                        let fault = self.fault_of(*k, line);
                         quote!({
                             let (__v, __bad) = ::il_std::conv::#f::<#t>(#a as f64);
                             if __bad { #fault; }
                             __v
                         })
                     }
-                    StdCall::Plain(n)
-                        if matches!(*n, "DIV" | "MOD")
-                            && arg_types
-                                .first()
-                                .and_then(Ty::elem)
-                                .is_some_and(|e| e.is_int()) =>
-                    {
-                        let f = if *n == "DIV" {
-                            quote!(div_checked)
-                        } else {
-                            quote!(mod_checked)
-                        };
-                        let fault = self.fault("DivisionByZero", line);
+                    // DIV, MOD, DIV_TIME by an integer zero: the `*_checked`
+                    // companion gives the result and the flag.
+                    (StdCall::Plain(n), Some(k @ FaultKind::DivisionByZero)) => {
+                        let f = format_ident!("{}_checked", n.to_ascii_lowercase());
+                        let fault = self.fault_of(*k, line);
                         quote!({
                             let (__v, __bad) = ::il_std::func::#f(#(#args),*);
                             if __bad { #fault; }
                             __v
                         })
                     }
-                    StdCall::Plain(n) => {
+                    (StdCall::Plain(n), _) => {
                         let f = format_ident!("{}", n);
                         quote!(::il_std::func::#f(#(#args),*))
                     }
                     // A result longer than the first string's capacity is
-                    // truncated and recorded.
-                    StdCall::Fold(n) if *n == "CONCAT" => {
-                        let fault = self.fault("StringOverflow", line);
+                    // truncated and recorded (CONCAT, step by step).
+                    (StdCall::Fold(n), Some(k @ FaultKind::StringOverflow)) => {
+                        let checked = format_ident!("{}_checked", n.to_ascii_lowercase());
+                        let fault = self.fault_of(*k, line);
                         let mut it = args.into_iter();
                         let mut acc = it.next().unwrap_or_default();
                         for a in it {
                             acc = quote!({
-                                let (__v, __bad) = ::il_std::func::concat_checked(#acc, #a);
+                                let (__v, __bad) = ::il_std::func::#checked(#acc, #a);
                                 if __bad { #fault; }
                                 __v
                             });
                         }
                         acc
                     }
-                    StdCall::Fold(n) => {
+                    (StdCall::Fold(n), _) => {
                         let f = format_ident!("{}", n);
                         let mut it = args.into_iter();
                         let mut acc = it.next().unwrap_or_default();
@@ -574,7 +573,7 @@ impl Pou<'_> {
                         }
                         acc
                     }
-                    StdCall::Chain(n) => {
+                    (StdCall::Chain(n), _) => {
                         let f = format_ident!("{}", n);
                         let pairs = args.windows(2).map(|w| {
                             let (a, b) = (&w[0], &w[1]);
@@ -582,8 +581,10 @@ impl Pou<'_> {
                         });
                         quote!(#(#pairs)&*)
                     }
-                    StdCall::Mux => {
-                        let fault = self.fault("InvalidArgument", line);
+                    // MUX returns the flag with the value: a selector out of
+                    // range (the table's InvalidArgument) is recorded.
+                    (StdCall::Mux, k) => {
+                        let fault = self.fault_of(k.unwrap_or(FaultKind::InvalidArgument), line);
                         let k = &args[0];
                         let ins = &args[1..];
                         quote!({

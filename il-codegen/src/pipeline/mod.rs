@@ -142,6 +142,15 @@ impl Checked {
         self.ok.then_some(self.ir.as_slice())
     }
 
+    /// [`Checked::ir`], owned.
+    pub fn into_ir(self) -> Result<Vec<sema::ir::Program>, Vec<Vec<Diagnostic>>> {
+        if self.ok {
+            Ok(self.ir)
+        } else {
+            Err(self.diagnostics)
+        }
+    }
+
     /// The Rust items of each input, or `None` when the program has errors.
     pub fn emit(&self, opts: crate::EmitOptions) -> Option<Vec<Emitted<'_>>> {
         let ir = self.ir()?;

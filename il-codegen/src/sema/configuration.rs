@@ -122,6 +122,8 @@ fn globals(
         .into_iter()
         .map(|mut v| {
             v.kind = VarKind::Global;
+            v.storage =
+                super::ir::Storage::of(PouKind::Program, VarKind::Global, v.location.is_some());
             let span = decl_span(&fake.var_blocks, &v.name).unwrap_or(owner.span);
             (v, span)
         })
@@ -189,7 +191,10 @@ fn bind_located(cx: &mut Cx, env: &mut Env, g: &Var, l: &super::ir::Loc, span: S
             continue;
         }
         match &v.location {
-            None => v.location = Some(l.clone()),
+            None => {
+                v.location = Some(l.clone());
+                v.storage = super::ir::Storage::Located;
+            }
             Some(other) if other.text == l.text => {}
             Some(other) => {
                 cx.err(

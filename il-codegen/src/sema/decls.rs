@@ -1,7 +1,7 @@
 //! Declarations: POU interfaces, variable types, initial values, literals.
 
 use super::codes::*;
-use super::ir::{Const, Field, Init, Loc, TypeDef, Var};
+use super::ir::{Const, Field, Init, Loc, Storage, TypeDef, Var};
 use super::types::{DEFAULT_STRING_LEN, Elem, Ty};
 use super::{Cx, stdfb, suggest};
 use crate::ast::{
@@ -527,6 +527,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
                     edge: decl.edge,
                     range,
                     kind: block.kind,
+                    storage: Storage::of(p.kind, block.kind, location.is_some()),
                     ty: ty.clone(),
                     init: init.clone(),
                     constant: block.constant,
@@ -546,6 +547,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
             edge: None,
             range: None,
             kind: ast::VarKind::Output,
+            storage: Storage::OutParam,
             ty: Ty::BOOL,
             init: Some(Init::Const(Const::Bool(true))),
             constant: false,

@@ -1983,6 +1983,7 @@ impl Walk<'_, '_> {
                 args: values,
                 arg_types: res.params,
                 ret: res.ret,
+                fault: res.fault,
             },
         });
         ret
@@ -2161,7 +2162,11 @@ impl Walk<'_, '_> {
     }
 }
 
-pub(crate) fn default_const(t: &Ty) -> Const {
+/// The default value of an elementary or string type, as a constant: FALSE,
+/// 0, 0.0, T#0s (and the zero of the other durations and dates), `''`. Other
+/// types (arrays, blocks, user types) have no single constant: `FALSE` is
+/// returned, and callers build those values element by element.
+pub fn default_const(t: &Ty) -> Const {
     match t {
         Ty::Elem(Elem::BOOL) => Const::Bool(false),
         Ty::Elem(e) if e.int_range().is_some() => Const::Int(0, *e),

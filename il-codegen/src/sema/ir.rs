@@ -177,6 +177,9 @@ pub struct Var {
     pub range: Option<(i128, i128)>,
     /// The section it was declared in.
     pub kind: VarKind,
+    /// Where it lives, decided by the checker from the POU, the section and
+    /// the address: the emitter and the interpreter both read this.
+    pub storage: Storage,
     /// The resolved type.
     pub ty: Ty,
     /// Its initial value (`None`: the type's default).
@@ -187,6 +190,57 @@ pub struct Var {
     pub retain: bool,
     /// Line of the declaration, for comments.
     pub line: u32,
+}
+
+/// Where a variable lives: decided once, by the checker ([`Storage::of`]),
+/// for the emitter and the interpreter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Storage {
+    /// Memory of the instance, kept between calls: VAR, VAR_INPUT and
+    /// VAR_OUTPUT of a FUNCTION_BLOCK or PROGRAM (a `pub` field of its struct).
+    Instance,
+    /// VAR_EXTERNAL of a FUNCTION_BLOCK or PROGRAM: the configuration's
+    /// global. Generated code reaches it through the reference its caller
+    /// passes (`__ext`), so it is not a field. The interpreter runs a PROGRAM
+    /// alone, without a configuration: it keeps the global as memory of the
+    /// instance and copies the caller's value in and out around each `CAL` of
+    /// a block, so it treats this variant as [`Storage::Instance`].
+    External,
+    /// VAR_IN_OUT: the caller's variable, by reference.
+    InOut,
+    /// Lives for one call, initialised on entry: VAR_TEMP, and the VAR of a
+    /// FUNCTION.
+    Temp,
+    /// VAR_INPUT of a FUNCTION: a parameter passed by value.
+    Param,
+    /// VAR_OUTPUT of a FUNCTION (and its ENO): an out-parameter, set to its
+    /// initial value on entry.
+    OutParam,
+    /// `AT %...`, or a VAR_EXTERNAL of a located global: a place of the
+    /// process image (reads and writes go through `Root::Addr`).
+    Located,
+    /// VAR_GLOBAL of a CONFIGURATION or RESOURCE: a field of the configuration.
+    Global,
+}
+
+impl Storage {
+    /// Where a variable of section `kind` in a POU of kind `pou` lives;
+    /// `located`: it has an address (its own, or its global's).
+    pub fn of(pou: PouKind, kind: VarKind, located: bool) -> Storage {
+        if located {
+            return Storage::Located;
+        }
+        match (pou, kind) {
+            (_, VarKind::Global) => Storage::Global,
+            (_, VarKind::External) => Storage::External,
+            (_, VarKind::InOut) => Storage::InOut,
+            (_, VarKind::Temp) => Storage::Temp,
+            (PouKind::Function, VarKind::Input) => Storage::Param,
+            (PouKind::Function, VarKind::Output) => Storage::OutParam,
+            (PouKind::Function, _) => Storage::Temp,
+            _ => Storage::Instance,
+        }
+    }
 }
 
 /// Initial values.
@@ -380,6 +434,11 @@ pub enum Expr {
         arg_types: Vec<Ty>,
         /// The result type.
         ret: Ty,
+        /// The runtime fault the call may record, from the signature table
+        /// ([`il_std::signature::Signature::fault_for`] of the argument types):
+        /// the emitter calls the `*_checked` companion and records it, the
+        /// interpreter checks the same condition.
+        fault: Option<il_std::FaultKind>,
     },
 }
 

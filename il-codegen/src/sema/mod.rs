@@ -180,7 +180,7 @@ pub(crate) fn is_std_fb(name: &str) -> bool {
     stdfb::lookup(name).is_some()
 }
 
-pub(crate) use flow::default_const;
+pub use flow::default_const;
 
 #[cfg(test)]
 mod suggest_tests {

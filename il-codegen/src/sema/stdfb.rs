@@ -1,83 +1,53 @@
 //! Interfaces of the standard function blocks of il-std, as the checker needs
-//! them: inputs and outputs with their IEC names and types.
+//! them: inputs and outputs with their IEC names and types, read from the one
+//! table of il-std ([`il_std::signature::FB_SIGNATURES`]).
 
-use super::types::Elem::{self, *};
+use super::types::Elem;
+use il_std::signature::{self as sig, FbParam};
+use std::sync::OnceLock;
 
 pub struct StdFb {
     pub name: &'static str,
-    pub inputs: &'static [(&'static str, Elem)],
-    pub outputs: &'static [(&'static str, Elem)],
+    pub inputs: Vec<(&'static str, Elem)>,
+    pub outputs: Vec<(&'static str, Elem)>,
 }
 
-macro_rules! counters {
-    ($($ctu:literal $ctd:literal $ctud:literal $t:ident;)*) => {
-        &[$(
-            StdFb { name: $ctu, inputs: &[("CU", BOOL), ("R", BOOL), ("PV", $t)], outputs: &[("Q", BOOL), ("CV", $t)] },
-            StdFb { name: $ctd, inputs: &[("CD", BOOL), ("LD", BOOL), ("PV", $t)], outputs: &[("Q", BOOL), ("CV", $t)] },
-            StdFb {
-                name: $ctud,
-                inputs: &[("CU", BOOL), ("CD", BOOL), ("R", BOOL), ("LD", BOOL), ("PV", $t)],
-                outputs: &[("QU", BOOL), ("QD", BOOL), ("CV", $t)],
-            },
-        )*]
-    };
+fn params(ps: &[FbParam]) -> Vec<(&'static str, Elem)> {
+    ps.iter()
+        .map(|p| {
+            let e = Elem::from_name(p.ty.name())
+                .unwrap_or_else(|| panic!("standard FB parameter {} : {:?}", p.name, p.ty));
+            (p.name, e)
+        })
+        .collect()
 }
 
-static COUNTERS: &[StdFb] = counters! {
-    "CTU" "CTD" "CTUD" INT;
-    "CTU_DINT" "CTD_DINT" "CTUD_DINT" DINT;
-    "CTU_LINT" "CTD_LINT" "CTUD_LINT" LINT;
-    "CTU_UDINT" "CTD_UDINT" "CTUD_UDINT" UDINT;
-    "CTU_ULINT" "CTD_ULINT" "CTUD_ULINT" ULINT;
-};
-
-static OTHERS: &[StdFb] = &[
-    StdFb {
-        name: "SR",
-        inputs: &[("S1", BOOL), ("R", BOOL)],
-        outputs: &[("Q1", BOOL)],
-    },
-    StdFb {
-        name: "RS",
-        inputs: &[("S", BOOL), ("R1", BOOL)],
-        outputs: &[("Q1", BOOL)],
-    },
-    StdFb {
-        name: "R_TRIG",
-        inputs: &[("CLK", BOOL)],
-        outputs: &[("Q", BOOL)],
-    },
-    StdFb {
-        name: "F_TRIG",
-        inputs: &[("CLK", BOOL)],
-        outputs: &[("Q", BOOL)],
-    },
-    StdFb {
-        name: "TP",
-        inputs: &[("IN", BOOL), ("PT", TIME)],
-        outputs: &[("Q", BOOL), ("ET", TIME)],
-    },
-    StdFb {
-        name: "TON",
-        inputs: &[("IN", BOOL), ("PT", TIME)],
-        outputs: &[("Q", BOOL), ("ET", TIME)],
-    },
-    StdFb {
-        name: "TOF",
-        inputs: &[("IN", BOOL), ("PT", TIME)],
-        outputs: &[("Q", BOOL), ("ET", TIME)],
-    },
-    StdFb {
-        name: "RTC",
-        inputs: &[("IN", BOOL), ("PDT", DT)],
-        outputs: &[("Q", BOOL), ("CDT", DT)],
-    },
-];
+fn table() -> &'static [StdFb] {
+    static TABLE: OnceLock<Vec<StdFb>> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        sig::FB_SIGNATURES
+            .iter()
+            .map(|f| StdFb {
+                name: f.name,
+                inputs: params(f.inputs),
+                outputs: params(f.outputs),
+            })
+            .collect()
+    })
+}
 
 /// Look a standard FB up by name (case-insensitive).
 pub fn lookup(name: &str) -> Option<&'static StdFb> {
-    COUNTERS
-        .iter()
-        .chain(OTHERS)
-        .find(|f| f.name.eq_ignore_ascii_case(name))
+    table().iter().find(|f| f.name.eq_ignore_ascii_case(name))
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn every_block_of_the_table_is_known_with_its_types() {
+        assert_eq!(super::table().len(), il_std::signature::FB_SIGNATURES.len());
+        let ctud = super::lookup("ctud_lint").unwrap();
+        assert_eq!(ctud.name, "CTUD_LINT");
+        assert_eq!(ctud.outputs.last(), Some(&("CV", super::Elem::LINT)));
+    }
 }

@@ -28,6 +28,8 @@ pub(crate) struct Resolved {
     /// The type each argument must have.
     pub params: Vec<Ty>,
     pub ret: Ty,
+    /// The fault the call may record (from the signature table).
+    pub fault: Option<il_std::FaultKind>,
 }
 
 pub(crate) struct ResolveError {
@@ -284,7 +286,24 @@ pub(crate) fn resolve(
         Ext::Chain => StdCall::Chain(s.name),
         Ext::Mux => StdCall::Mux,
     };
-    Ok(Resolved { call, params, ret })
+    let elems: Vec<sig::Elem> = params.iter().filter_map(sig_elem).collect();
+    let fault = s.fault_for(&elems);
+    Ok(Resolved {
+        call,
+        params,
+        ret,
+        fault,
+    })
+}
+
+/// The signature table's name of an elementary or string type.
+fn sig_elem(t: &Ty) -> Option<sig::Elem> {
+    match t {
+        Ty::Elem(e) => sig::Elem::from_name(e.name()),
+        Ty::Str { wide: false, .. } => Some(sig::Elem::STRING),
+        Ty::Str { wide: true, .. } => Some(sig::Elem::WSTRING),
+        _ => None,
+    }
 }
 
 /// Order the arguments of a formal call (`LIMIT(MN := 0, IN := x, MX := 9)`)

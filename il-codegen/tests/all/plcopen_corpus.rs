@@ -1,12 +1,10 @@
 //! Beremiz's first_steps PLCopen project from the shared corpus: what the
-//! import says about it, and its `CounterIL` run by the reference
-//! interpreter. Skipped (with a message) when ../shared is absent.
+//! import says about it (its `CounterIL` run by the reference interpreter:
+//! il-interp/tests/all/plcopen.rs). Skipped (with a message) when
+//! ../shared is absent.
 
 use il_codegen::Program;
 use il_codegen::diag::{Severity, SourceFile};
-use il_codegen::interp::{Machine, Value, load};
-use il_codegen::plcopen::Import;
-use il_std::Cycle;
 
 const FILE: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
@@ -54,30 +52,6 @@ fn only_counter_il_is_translated_and_the_rest_is_named() {
     assert_eq!(cfg.len(), 1);
     assert!(cfg[0].message.contains("`plc_prg`"), "{}", cfg[0].message);
     assert_eq!(diags.len(), 7);
-}
-
-#[test]
-fn counter_il_counts_in_the_interpreter() {
-    let Some(xml) = read() else { return };
-    let imp = Import::new(xml);
-    let prog = load(&imp.il).unwrap_or_else(|e| panic!("{e}\n{}", imp.il.text));
-    let mut m = Machine::new(&prog, "CounterIL").expect("instance");
-    let mut ctx = Cycle::new();
-    let int = |m: &Machine, n: &str| match m.get(n) {
-        Some(Value::Int(v, _)) => v,
-        other => panic!("{n}: {other:?}"),
-    };
-    for n in 1..=3 {
-        m.scan(&mut ctx).expect("scan");
-        assert_eq!((int(&m, "Cnt"), int(&m, "OUT")), (n, n));
-    }
-    m.set("Reset", Value::Bool(true)).unwrap();
-    m.scan(&mut ctx).expect("scan");
-    // ResetCounterValue: the configuration's VAR_GLOBAL CONSTANT, 17.
-    assert_eq!(int(&m, "OUT"), 17);
-    m.set("Reset", Value::Bool(false)).unwrap();
-    m.scan(&mut ctx).expect("scan");
-    assert_eq!(int(&m, "OUT"), 18);
 }
 
 /// Truncated and damaged copies of the project: diagnostics, never a panic,

@@ -22,8 +22,8 @@ mod generator;
 
 use generator::{Lit, Program, T};
 use il_codegen::diag::SourceFile;
-use il_codegen::interp::{Machine, Value, load};
 use il_codegen::sema::types::Elem;
+use il_interp::{Machine, Value, load};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -444,7 +444,7 @@ fn lit_text(l: &Lit) -> String {
         Lit::Bool(b) => if *b { "TRUE" } else { "FALSE" }.to_string(),
         Lit::Int(v) => v.to_string(),
         Lit::Real(f) => format!("{f:?}"),
-        Lit::Time(ns) => format!("T#{}", il_codegen::interp::fmt_dur(*ns)),
+        Lit::Time(ns) => format!("T#{}", il_interp::fmt_dur(*ns)),
     }
 }
 

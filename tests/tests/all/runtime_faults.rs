@@ -4,9 +4,9 @@
 //! overflow wraps without a fault; DIV/MOD by zero give 0; array reads out of
 //! range give the default value and stores out of range are skipped (one and
 //! two dimensions); a store outside a subrange is skipped; CONCAT beyond the
-//! capacity is truncated. None of them panics, each but the wrap is recorded
-//! in the `Cycle` with its POU and exact IL line, and the rest of the scan
-//! runs.
+//! capacity is truncated; DIV, MOD and DIV_TIME called as functions fault as
+//! the operators do. None of them panics, each but the wrap is recorded in the
+//! `Cycle` with its POU and exact IL line, and the rest of the scan runs.
 
 use il_std::{Cycle, FaultKind, STRING, TIME};
 
@@ -33,7 +33,7 @@ macro_rules! fault_tests {
     ($m:ident) => {
         mod $m {
             use super::*;
-            use il_tests::$m::{RtDiv, RtFaults, RtGrid};
+            use il_tests::$m::{RtDiv, RtDivForms, RtFaults, RtGrid};
 
             fn faults(ctx: &Cycle) -> Vec<(FaultKind, &'static str, u32)> {
                 ctx.faults().map(|f| (f.kind, f.pou, f.line)).collect()
@@ -104,6 +104,30 @@ macro_rules! fault_tests {
                 assert_eq!(p.blk_got, 5);
                 assert_eq!(p.blk.grid[0][2], 99);
                 assert!(p.reached);
+            }
+
+            #[test]
+            fn div_mod_and_div_time_as_functions_record_the_fault() {
+                let mut ctx = Cycle::new();
+                let mut p = RtDivForms::default();
+                p.call(&mut ctx);
+                assert_eq!(
+                    faults(&ctx),
+                    [
+                        (FaultKind::DivisionByZero, "RtDivForms", 115),
+                        (FaultKind::DivisionByZero, "RtDivForms", 117),
+                        (FaultKind::DivisionByZero, "RtDivForms", 119),
+                    ],
+                    "a REAL divisor of 0 records no fault"
+                );
+                assert_eq!((p.r, p.m, p.tq), (0, 0, TIME::from_ms(0)));
+                assert!(p.xq.is_infinite());
+                p.zero = 2;
+                p.rz = 4.0;
+                p.call(&mut ctx);
+                assert_eq!(ctx.fault_count(), 3, "no fault with a divisor");
+                assert_eq!((p.r, p.m, p.tq), (3, 1, TIME::from_ms(500)));
+                assert_eq!(p.tr, TIME::from_ms(250));
             }
 
             #[test]

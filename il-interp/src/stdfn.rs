@@ -1,9 +1,10 @@
 //! Standard functions, dispatched by name on runtime values. Each computes
 //! what the il-std function the emitter calls computes (most call it).
 
-use super::value::{Value, wrap};
-use crate::sema::ir::StdCall;
-use crate::sema::types::{Elem, Ty};
+use crate::values::{Value, wrap};
+use il_codegen::sema::ir::StdCall;
+use il_codegen::sema::types::{Elem, Ty};
+use il_std::FaultKind;
 use il_std::func as f;
 use std::cmp::Ordering;
 
@@ -211,7 +212,7 @@ fn shift(name: &str, v: &Value, n: &Value) -> Option<Value> {
     macro_rules! sh {
         ($c:expr) => {
             Value::Int(
-                match super::value::bits(e) {
+                match crate::values::bits(e) {
                     8 => op!(*x as u8, $c),
                     16 => op!(*x as u16, $c),
                     32 => op!(*x as u32, $c),
@@ -246,9 +247,8 @@ pub fn plain(name: &str, args: &[Value], ret: &Ty) -> Result<Value, String> {
         "DIV" | "MOD" => {
             let (a, b) = two(args, name)?;
             match (a, b) {
-                // The function form gives 0 for a zero divisor (il_std::func::DIV)
-                // and, like the emitter today, records no fault (reported as a
-                // compiler bug: tests/differential/compiler-bugs/div_function_form_no_fault.il).
+                // A zero divisor gives 0 (il_std::func::DIV); `call` records
+                // the fault the checked call carries.
                 (Value::Int(x, e), Value::Int(y, _)) => Ok(Value::Int(
                     int_divmod(name == "DIV", *x, *y, *e).unwrap_or(0),
                     *e,
@@ -377,7 +377,7 @@ pub fn plain(name: &str, args: &[Value], ret: &Ty) -> Result<Value, String> {
             let r = if name.starts_with("BCD_TO_") || name.contains("_BCD_TO_") {
                 il_std::conv::bcd_decode_checked(*x as u64).0 as i128
             } else {
-                il_std::conv::bcd_encode_checked(*x, super::value::bits(to) / 4).0 as i128
+                il_std::conv::bcd_encode_checked(*x, crate::values::bits(to) / 4).0 as i128
             };
             Ok(Value::Int(wrap(r, to), to))
         }
@@ -561,31 +561,31 @@ pub fn convert(from: Elem, to: Elem, v: &Value) -> Option<Value> {
     })
 }
 
-/// A standard function call as the emitter generates it. `fault` records
-/// `InvalidArgument` for an out-of-range MUX selector.
+/// A standard function call as the emitter generates it. `kind` is the
+/// fault the checked call carries (from the signature table); `fault`
+/// records it when its condition holds.
 pub fn call(
     call: &StdCall,
     args: &[Value],
     ret: &Ty,
-    fault: &mut dyn FnMut(il_std::FaultKind),
+    kind: Option<FaultKind>,
+    fault: &mut dyn FnMut(FaultKind),
 ) -> Result<Value, String> {
-    match call {
-        // As the emitter: integer DIV/MOD by zero records a fault, and REAL →
-        // integer conversions out of range (or NaN) saturate and record one.
-        StdCall::Plain(n) if matches!(*n, "DIV" | "MOD") => {
-            if let (Some(Value::Int(_, _)), Some(Value::Int(0, _))) = (args.first(), args.get(1)) {
-                fault(il_std::FaultKind::DivisionByZero);
+    match (call, kind) {
+        // As the emitter: DIV, MOD and DIV_TIME by an integer zero give 0
+        // (T#0s) and record the fault.
+        (StdCall::Plain(n), Some(k @ FaultKind::DivisionByZero)) => {
+            if let Some(Value::Int(0, _)) = args.get(1) {
+                fault(k);
             }
             plain(n, args, ret)
         }
-        StdCall::Plain(n)
-            if (n.contains("_TO_") || n.contains("TRUNC"))
-                && matches!(args.first(), Some(Value::Real(_) | Value::LReal(_)))
-                && ret
-                    .elem()
-                    .is_some_and(|e| e.int_range().is_some() && e != Elem::BOOL) =>
-        {
+        // As the emitter: REAL → integer conversions out of range (or NaN)
+        // saturate and record the fault.
+        (StdCall::Plain(n), Some(k @ FaultKind::ConversionOutOfRange)) => {
             let x = args.first().map(Value::as_f64).unwrap_or(0.0);
+            // The fault is the table's; the rounding is the function's:
+            // TRUNC and REAL_TRUNC_* truncate.
             let r = if n.contains("TRUNC") {
                 x.trunc()
             } else {
@@ -593,13 +593,13 @@ pub fn call(
             };
             let (lo, hi) = ret.elem().and_then(Elem::int_range).unwrap_or((0, 0));
             if !r.is_finite() || r < lo as f64 || r > hi as f64 {
-                fault(il_std::FaultKind::ConversionOutOfRange);
+                fault(k);
             }
             plain(n, args, ret)
         }
-        StdCall::Plain(n) => plain(n, args, ret),
+        (StdCall::Plain(n), _) => plain(n, args, ret),
         // As the emitter: each step of CONCAT that truncates records a fault.
-        StdCall::Fold(n) if *n == "CONCAT" => {
+        (StdCall::Fold(n), Some(k @ FaultKind::StringOverflow)) => {
             let mut it = args.iter();
             let mut acc = it
                 .next()
@@ -609,13 +609,13 @@ pub fn call(
                 let (v, cut) = string_fn(n, &[acc, a.clone()], ret)
                     .ok_or_else(|| format!("{n}: unexpected argument types in the interpreter"))?;
                 if cut {
-                    fault(il_std::FaultKind::StringOverflow);
+                    fault(k);
                 }
                 acc = v;
             }
             Ok(acc)
         }
-        StdCall::Fold(n) => {
+        (StdCall::Fold(n), _) => {
             let mut it = args.iter();
             let mut acc = it
                 .next()
@@ -626,20 +626,21 @@ pub fn call(
             }
             Ok(acc)
         }
-        StdCall::Chain(n) => {
+        (StdCall::Chain(n), _) => {
             let mut all = true;
             for w in args.windows(2) {
                 all &= plain(n, w, ret)?.as_bool();
             }
             Ok(Value::Bool(all))
         }
-        StdCall::Mux => {
+        // MUX: a selector out of range gives IN0 and records the fault.
+        (StdCall::Mux, kind) => {
             let k = args.first().map(Value::as_i64).unwrap_or(0);
             let ins = args.get(1..).unwrap_or_default();
             match usize::try_from(k).ok().and_then(|k| ins.get(k)) {
                 Some(v) => Ok(v.clone()),
                 None => {
-                    fault(il_std::FaultKind::InvalidArgument);
+                    fault(kind.unwrap_or(FaultKind::InvalidArgument));
                     ins.first()
                         .cloned()
                         .ok_or_else(|| "MUX without inputs".to_string())

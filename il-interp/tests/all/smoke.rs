@@ -1,10 +1,10 @@
 //! Every PROGRAM and FUNCTION_BLOCK of `tests/plc` runs under the interpreter
 //! for a few scans without an error (and never panics), and the features
-//! not covered by interp_plc.rs give the results the compiled code gives.
+//! not covered by plc.rs give the results the compiled code gives.
 
 use il_codegen::diag::SourceFile;
-use il_codegen::interp::{Machine, Value, load};
 use il_codegen::sema::types::Elem;
+use il_interp::{Machine, Value, load};
 use il_std::{Cycle, FaultKind, TIME};
 
 fn prog(name: &str, text: &str) -> il_codegen::sema::ir::Program {

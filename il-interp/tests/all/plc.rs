@@ -2,8 +2,8 @@
 //! asserting what `tests/tests/*.rs` assert for the generated code.
 
 use il_codegen::diag::SourceFile;
-use il_codegen::interp::{Machine, Value, load};
 use il_codegen::sema::types::Elem;
+use il_interp::{Machine, Value, load};
 use il_std::{Cycle, FaultKind, TIME};
 
 fn program(file: &str) -> il_codegen::sema::ir::Program {
@@ -17,7 +17,7 @@ fn machine(file: &str, pou: &str) -> Machine {
 }
 
 fn i(v: i128, e: Elem) -> Value {
-    il_codegen::interp::int(v, e)
+    il_interp::int(v, e)
 }
 
 fn int(m: &Machine, n: &str) -> i128 {
@@ -548,4 +548,33 @@ fn runtime_faults_as_the_generated_code() {
     assert_eq!(int(&f, "pct"), 42);
     assert_eq!(int(&f, "after"), 1);
     assert!(boolean(&f, "reached"));
+}
+
+/// plc/runtime_faults.il, RtDivForms: DIV, MOD and DIV_TIME as functions
+/// fault as the operators do (and as the generated code does); a REAL
+/// divisor of 0 does not.
+#[test]
+fn div_mod_and_div_time_as_functions_record_the_fault() {
+    let mut ctx = Cycle::new();
+    let mut f = machine("runtime_faults.il", "RtDivForms");
+    scan(&mut f, &mut ctx);
+    let faults: Vec<_> = ctx.faults().map(|x| (x.kind, x.pou, x.line)).collect();
+    use FaultKind::*;
+    assert_eq!(
+        faults,
+        [
+            (DivisionByZero, "RtDivForms", 115),
+            (DivisionByZero, "RtDivForms", 117),
+            (DivisionByZero, "RtDivForms", 119),
+        ]
+    );
+    assert_eq!((int(&f, "r"), int(&f, "m")), (0, 0));
+    assert_eq!(time(&f, "tq"), TIME::from_ms(0));
+    f.set("zero", i(2, Elem::INT)).unwrap();
+    f.set("rz", Value::Real(4.0)).unwrap();
+    scan(&mut f, &mut ctx);
+    assert_eq!(ctx.fault_count(), 3, "no fault with a divisor");
+    assert_eq!((int(&f, "r"), int(&f, "m")), (3, 1));
+    assert_eq!(time(&f, "tq"), TIME::from_ms(500));
+    assert_eq!(time(&f, "tr"), TIME::from_ms(250));
 }

@@ -1,8 +1,8 @@
 //! The standard function blocks, held as the real il-std blocks so that the
 //! interpreter and generated code share one implementation.
 
-use super::value::Value;
-use crate::sema::types::Elem;
+use crate::values::Value;
+use il_codegen::sema::types::Elem;
 use il_std::Cycle;
 
 /// Conversion between a block's Rust field type and a runtime value.
@@ -57,8 +57,21 @@ macro_rules! time_field {
 }
 time_field!(TIME => TIME, DT => DT);
 
+/// Set a field from a value of its kind; false for another kind.
+fn set<T: Field>(slot: &mut T, v: &Value) -> bool {
+    match T::from_value(v) {
+        Some(x) => {
+            *slot = x;
+            true
+        }
+        None => false,
+    }
+}
+
+/// The interpreter's view of the blocks of `il_std::std_function_blocks!`
+/// (the list [`il_std::signature::FB_SIGNATURES`] is built from).
 macro_rules! std_fbs {
-    ($($name:ident { $($f:ident),* })*) => {
+    ($( $name:ident ( $( $i:ident : $it:ident ),* ) -> ( $( $o:ident : $ot:ident ),* ); )*) => {
         /// A standard function block instance.
         #[allow(non_camel_case_types, clippy::upper_case_acronyms)]
         #[derive(Clone, Debug, PartialEq)]
@@ -86,8 +99,11 @@ macro_rules! std_fbs {
             pub fn get(&self, field: &str) -> Option<Value> {
                 match self {
                     $(StdFb::$name(_b) => {
-                        $(if field.eq_ignore_ascii_case(stringify!($f)) {
-                            return Some(_b.$f.to_value());
+                        $(if field.eq_ignore_ascii_case(stringify!($i)) {
+                            return Some(_b.$i.to_value());
+                        })*
+                        $(if field.eq_ignore_ascii_case(stringify!($o)) {
+                            return Some(_b.$o.to_value());
                         })*
                         None
                     })*
@@ -99,12 +115,11 @@ macro_rules! std_fbs {
             pub fn set(&mut self, field: &str, v: &Value) -> bool {
                 match self {
                     $(StdFb::$name(_b) => {
-                        $(if field.eq_ignore_ascii_case(stringify!($f)) {
-                            if let Some(x) = Field::from_value(v) {
-                                _b.$f = x;
-                                return true;
-                            }
-                            return false;
+                        $(if field.eq_ignore_ascii_case(stringify!($i)) {
+                            return set(&mut _b.$i, v);
+                        })*
+                        $(if field.eq_ignore_ascii_case(stringify!($o)) {
+                            return set(&mut _b.$o, v);
                         })*
                         false
                     })*
@@ -114,28 +129,4 @@ macro_rules! std_fbs {
     };
 }
 
-std_fbs! {
-    SR { S1, R, Q1 }
-    RS { S, R1, Q1 }
-    R_TRIG { CLK, Q }
-    F_TRIG { CLK, Q }
-    CTU { CU, R, PV, Q, CV }
-    CTU_DINT { CU, R, PV, Q, CV }
-    CTU_LINT { CU, R, PV, Q, CV }
-    CTU_UDINT { CU, R, PV, Q, CV }
-    CTU_ULINT { CU, R, PV, Q, CV }
-    CTD { CD, LD, PV, Q, CV }
-    CTD_DINT { CD, LD, PV, Q, CV }
-    CTD_LINT { CD, LD, PV, Q, CV }
-    CTD_UDINT { CD, LD, PV, Q, CV }
-    CTD_ULINT { CD, LD, PV, Q, CV }
-    CTUD { CU, CD, R, LD, PV, QU, QD, CV }
-    CTUD_DINT { CU, CD, R, LD, PV, QU, QD, CV }
-    CTUD_LINT { CU, CD, R, LD, PV, QU, QD, CV }
-    CTUD_UDINT { CU, CD, R, LD, PV, QU, QD, CV }
-    CTUD_ULINT { CU, CD, R, LD, PV, QU, QD, CV }
-    TP { IN, PT, Q, ET }
-    TON { IN, PT, Q, ET }
-    TOF { IN, PT, Q, ET }
-    RTC { IN, PDT, Q, CDT }
-}
+il_std::std_function_blocks!(std_fbs);

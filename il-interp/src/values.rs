@@ -1,9 +1,9 @@
 //! Runtime values of the reference interpreter and the elementary operations
 //! on them, with the same results as the Rust the emitter generates.
 
-use super::stdfb::StdFb;
-use crate::sema::ir::Const;
-use crate::sema::types::Elem;
+use crate::stdfb::StdFb;
+use il_codegen::sema::ir::Const;
+use il_codegen::sema::types::Elem;
 
 /// A runtime value.
 #[derive(Clone, Debug, PartialEq)]

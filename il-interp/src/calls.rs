@@ -1,0 +1,352 @@
+//! Calls: user FUNCTIONs (with EN/ENO, outputs and in-outs), standard
+//! functions, `CAL` of function block instances, and the frames they run in.
+
+use crate::places::self_root;
+use crate::values::{Instance, Value};
+use crate::{Frame, Machine, find_var, held, stdfn};
+use il_codegen::ast::{Edge, PouKind, VarKind};
+use il_codegen::sema::ir::{CheckedPou, Expr, Op, PathElem, Place, Root, Storage};
+use il_codegen::sema::types::Ty;
+use il_std::{Cycle, FaultKind};
+
+/// Names of the VAR_IN_OUTs of `pou`, in declaration order.
+fn inout_names(pou: &CheckedPou) -> Vec<String> {
+    pou.vars
+        .iter()
+        .filter(|v| v.storage == Storage::InOut)
+        .map(|v| v.name.clone())
+        .collect()
+}
+
+impl Machine {
+    /// A call of a user FUNCTION in an expression.
+    pub(crate) fn call_user(
+        &mut self,
+        f: &mut Frame,
+        call: &Expr,
+        ctx: &mut Cycle,
+        line: u32,
+    ) -> Result<Value, String> {
+        let Expr::CallUser {
+            en,
+            eno,
+            ret,
+            name,
+            args,
+            inouts,
+            out_types: _,
+            outputs,
+        } = call
+        else {
+            return Err("internal: not a user function call".into());
+        };
+        if let Some(en) = en
+            && !self.value(f, en, ctx, line)?.as_bool()
+        {
+            for (k, place, neg) in outputs {
+                if Some(*k) == *eno {
+                    self.write(f, place, Value::Bool(*neg), ctx, line)?;
+                }
+            }
+            return self.default_of(ret);
+        }
+        let mut vals = Vec::with_capacity(args.len());
+        for a in args {
+            vals.push(self.value(f, a, ctx, line)?);
+        }
+        let p =
+            self.prog
+                .pous
+                .iter()
+                .position(|p| p.name == *name && p.kind == PouKind::Function)
+                .or_else(|| {
+                    self.prog.pous.iter().position(|p| {
+                        p.name.eq_ignore_ascii_case(name) && p.kind == PouKind::Function
+                    })
+                })
+                .ok_or_else(|| format!("internal: no FUNCTION {name}"))?;
+        let mut refs = Vec::with_capacity(inouts.len());
+        for place in inouts {
+            refs.push(self.read(f, place, ctx, line)?);
+        }
+        let (r, outs, back) = self.call_function(p, vals, refs, ctx)?;
+        // VAR_IN_OUT: copy-in/copy-out, as the emitter does for places it cannot borrow.
+        for (place, v) in inouts.iter().zip(back) {
+            self.write(f, place, v, ctx, line)?;
+        }
+        for (k, place, neg) in outputs {
+            let v = outs.get(*k).cloned().ok_or("internal: output index")?;
+            let v = if *neg { stdfn::not(&v) } else { v };
+            self.write(f, place, v, ctx, line)?;
+        }
+        Ok(r)
+    }
+
+    /// A call of a standard function in an expression (its faults recorded at `line`).
+    pub(crate) fn call_std(
+        &mut self,
+        f: &mut Frame,
+        e: &Expr,
+        ctx: &mut Cycle,
+        line: u32,
+    ) -> Result<Value, String> {
+        let Expr::CallStd {
+            call,
+            args,
+            ret,
+            fault,
+            arg_types: _,
+        } = e
+        else {
+            return Err("internal: not a standard function call".into());
+        };
+        let mut vals = Vec::with_capacity(args.len());
+        for a in args {
+            vals.push(self.value(f, a, ctx, line)?);
+        }
+        let mut faults = Vec::new();
+        let r = stdfn::call(call, &vals, ret, *fault, &mut |k| faults.push(k))?;
+        for k in faults {
+            self.fault(ctx, f, k, line);
+        }
+        Ok(r)
+    }
+
+    /// `CAL inst(...)`: inputs, in-outs and externals copied in, the call, outputs copied out.
+    pub(crate) fn cal(
+        &mut self,
+        f: &mut Frame,
+        op: &Op,
+        ctx: &mut Cycle,
+        line: u32,
+    ) -> Result<(), String> {
+        let Op::CallFb {
+            inst,
+            inputs,
+            outputs,
+            inouts,
+            externals,
+            cond: _,
+        } = op
+        else {
+            return Err("internal: not a CAL".into());
+        };
+        let mut ins = Vec::with_capacity(inputs.len());
+        for (n, v) in inputs {
+            ins.push((n.clone(), self.value(f, v, ctx, line)?));
+        }
+        // In-outs and the globals the block uses: copied in, and out after the call.
+        let mut places: Vec<Place> = inouts.clone();
+        for (e, _) in externals {
+            let k = find_var(&self.prog.pous[f.pou], e)
+                .ok_or_else(|| format!("internal: caller has no external {e}"))?;
+            places.push(Place {
+                root: Root::Var(k),
+                path: Vec::new(),
+                ty: self.prog.pous[f.pou].vars[k].ty.clone(),
+                range: None,
+            });
+        }
+        let mut names = match &inst.ty {
+            Ty::Fb(fb) => self
+                .prog
+                .pous
+                .iter()
+                .find(|p| p.name.eq_ignore_ascii_case(fb))
+                .map(inout_names)
+                .unwrap_or_default(),
+            _ => Vec::new(),
+        };
+        names.extend(externals.iter().map(|(e, _)| e.clone()));
+        let mut refs = Vec::with_capacity(places.len());
+        for (n, p) in names.iter().zip(&places) {
+            refs.push((n.clone(), self.read(f, p, ctx, line)?));
+        }
+        let back = self.call_fb_at(f, inst, ins, refs, ctx, line)?;
+        for (p, v) in places.iter().zip(back) {
+            self.write(f, p, v, ctx, line)?;
+        }
+        for (n, target, neg) in outputs {
+            let mut src = inst.clone();
+            src.path.push(PathElem::Field(n.clone()));
+            let mut v = self.read(f, &src, ctx, line)?;
+            if *neg {
+                v = stdfn::not(&v);
+            }
+            self.write(f, target, v, ctx, line)?;
+        }
+        Ok(())
+    }
+
+    /// `CAL inst(inputs)`: set the inputs, then call (a bad subscript faults and skips the call).
+    pub(crate) fn call_fb_at(
+        &mut self,
+        f: &mut Frame,
+        inst: &Place,
+        ins: Vec<(String, Value)>,
+        refs: Vec<(String, Value)>,
+        ctx: &mut Cycle,
+        line: u32,
+    ) -> Result<Vec<Value>, String> {
+        let (steps, ok) = self.steps(f, inst, ctx, line)?;
+        // The values to copy back (unchanged if the call does not happen).
+        let mut back: Vec<Value> = refs.iter().map(|(_, v)| v.clone()).collect();
+        if !ok {
+            self.fault(ctx, f, FaultKind::IndexOutOfRange, line);
+            return Ok(back);
+        }
+        let mut b = match self.read_at(self_root(f, &inst.root)?, &steps) {
+            Some(v) => v,
+            None => return Err("internal: FB instance not found".into()),
+        };
+        match &mut b {
+            Value::StdFb(fb) => {
+                for (n, v) in &ins {
+                    if !fb.set(n, v) {
+                        return Err(format!("internal: cannot set input {n}"));
+                    }
+                }
+                fb.call(ctx);
+            }
+            Value::Fb(i) => {
+                let mut ref_idx = Vec::with_capacity(refs.len());
+                for (n, v) in ins.into_iter().chain(refs) {
+                    let k = find_var(&self.prog.pous[i.pou], &n)
+                        .ok_or_else(|| format!("internal: no input {n}"))?;
+                    i.vars[k] = v;
+                    ref_idx.push(k);
+                }
+                self.call_instance(i, ctx)?;
+                let skip = ref_idx.len() - back.len();
+                for (slot, k) in back.iter_mut().zip(&ref_idx[skip..]) {
+                    *slot = i.vars[*k].clone();
+                }
+            }
+            _ => return Err("internal: CAL of a non-instance".into()),
+        }
+        let mut root = std::mem::replace(self_root(f, &inst.root)?, Value::Bool(false));
+        let done = self.write_at(&mut root, &steps, b);
+        *self_root(f, &inst.root)? = root;
+        if done {
+            Ok(back)
+        } else {
+            Err("internal: cannot store the instance".into())
+        }
+    }
+
+    pub(crate) fn call_instance(
+        &mut self,
+        inst: &mut Instance,
+        ctx: &mut Cycle,
+    ) -> Result<(), String> {
+        let pou = inst.pou;
+        let p = &self.prog.pous[pou];
+        let mut edges = vec![None; p.vars.len()];
+        for (i, v) in p.vars.iter().enumerate() {
+            if let Some(e) = v.edge
+                && held(v)
+            {
+                let x = inst.vars[i].as_bool();
+                let m = inst.edge_mem[i];
+                edges[i] = Some(match e {
+                    Edge::Rising => {
+                        inst.edge_mem[i] = x;
+                        x && !m
+                    }
+                    Edge::Falling => {
+                        inst.edge_mem[i] = !x;
+                        !x && !m
+                    }
+                });
+            }
+        }
+        let mut vars = std::mem::take(&mut inst.vars);
+        let temps: Vec<usize> = (0..p.vars.len())
+            .filter(|&i| {
+                !matches!(
+                    p.vars[i].storage,
+                    Storage::Instance | Storage::External | Storage::InOut
+                )
+            })
+            .collect();
+        for i in temps {
+            let v = &self.prog.pous[pou].vars[i];
+            vars[i] = self.init_of(&v.ty, v.init.as_ref())?;
+        }
+        let mut f = self.frame(pou, vars, edges)?;
+        let r = self.run(&mut f, ctx);
+        inst.vars = f.vars;
+        r
+    }
+
+    pub(crate) fn frame(
+        &self,
+        pou: usize,
+        vars: Vec<Value>,
+        edges: Vec<Option<bool>>,
+    ) -> Result<Frame, String> {
+        let p = &self.prog.pous[pou];
+        let cr = p
+            .cr_types
+            .iter()
+            .map(|t| self.default_of(t))
+            .collect::<Result<_, _>>()?;
+        let saves = p
+            .save_types
+            .iter()
+            .map(|t| self.default_of(t))
+            .collect::<Result<_, _>>()?;
+        let ret = match &p.ret {
+            Some(t) => self.default_of(t)?,
+            None => Value::Bool(false),
+        };
+        Ok(Frame {
+            pou,
+            vars,
+            edges,
+            cr,
+            saves,
+            ret,
+        })
+    }
+
+    /// Call a user FUNCTION: its result and all its outputs in declaration order.
+    pub(crate) fn call_function(
+        &mut self,
+        pou: usize,
+        args: Vec<Value>,
+        inouts: Vec<Value>,
+        ctx: &mut Cycle,
+    ) -> Result<(Value, Vec<Value>, Vec<Value>), String> {
+        let p = &self.prog.pous[pou];
+        let mut args = args.into_iter();
+        let mut inouts = inouts.into_iter();
+        let mut vars = Vec::with_capacity(p.vars.len());
+        for v in &p.vars {
+            vars.push(match v.kind {
+                VarKind::Input => args.next().ok_or("internal: missing argument")?,
+                VarKind::InOut => inouts.next().ok_or("internal: missing in-out")?,
+                _ => self.init_of(&v.ty, v.init.as_ref())?,
+            });
+        }
+        let n = p.vars.len();
+        let mut f = self.frame(pou, vars, vec![None; n])?;
+        self.run(&mut f, ctx)?;
+        let p = &self.prog.pous[pou];
+        let outs = p
+            .vars
+            .iter()
+            .zip(f.vars)
+            .map(|(v, x)| (v.kind, x))
+            .collect::<Vec<_>>();
+        let (outs, back): (Vec<_>, Vec<_>) = outs
+            .into_iter()
+            .filter(|(k, _)| matches!(k, VarKind::Output | VarKind::InOut))
+            .partition(|(k, _)| *k == VarKind::Output);
+        Ok((
+            f.ret,
+            outs.into_iter().map(|(_, x)| x).collect(),
+            back.into_iter().map(|(_, x)| x).collect(),
+        ))
+    }
+}

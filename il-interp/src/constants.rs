@@ -1,0 +1,141 @@
+//! Default and initial values of variables, and IEC literals parsed as values.
+
+use crate::Machine;
+use crate::places::Step;
+use crate::stdfb::StdFb;
+use crate::values::{Instance, Value};
+use il_codegen::sema::ir::Init;
+use il_codegen::sema::types::{Elem, Ty};
+
+impl Machine {
+    pub(crate) fn new_instance(&self, pou: usize) -> Result<Instance, String> {
+        let p = &self.prog.pous[pou];
+        let vars = p
+            .vars
+            .iter()
+            .map(|v| self.init_of(&v.ty, v.init.as_ref()))
+            .collect::<Result<_, _>>()?;
+        Ok(Instance {
+            pou,
+            vars,
+            edge_mem: vec![false; p.vars.len()],
+        })
+    }
+
+    pub(crate) fn default_of(&self, t: &Ty) -> Result<Value, String> {
+        Ok(match t {
+            Ty::Struct(n) | Ty::Enum(n) => {
+                return Err(format!(
+                    "user type `{n}`: TYPE declarations are not supported by the interpreter yet"
+                ));
+            }
+            Ty::Elem(_) | Ty::Str { .. } => Value::from_const(&il_codegen::sema::default_const(t)),
+            Ty::Array { dims, elem } => {
+                let n: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
+                let d = self.default_of(elem)?;
+                Value::Array(vec![d; n.max(0) as usize])
+            }
+            Ty::Fb(name) => {
+                if let Some(b) = StdFb::new(&name.to_ascii_uppercase()) {
+                    Value::StdFb(Box::new(b))
+                } else if let Some(p) = self
+                    .prog
+                    .pous
+                    .iter()
+                    .position(|p| p.name.eq_ignore_ascii_case(name))
+                {
+                    Value::Fb(Box::new(self.new_instance(p)?))
+                } else {
+                    return Err(format!(
+                        "the function block {name} is not supported by the interpreter"
+                    ));
+                }
+            }
+        })
+    }
+
+    pub(crate) fn init_of(&self, t: &Ty, init: Option<&Init>) -> Result<Value, String> {
+        match (init, t) {
+            (Some(Init::Const(c)), _) => Ok(Value::from_const(c)),
+            (Some(Init::Array(items)), Ty::Array { elem, .. }) => {
+                let mut v = self.default_of(t)?;
+                if let Value::Array(slots) = &mut v {
+                    let d = self.default_of(elem)?;
+                    let mut values = items
+                        .iter()
+                        .flat_map(|(n, c)| std::iter::repeat_n(c, *n))
+                        .map(Value::from_const);
+                    for s in slots.iter_mut() {
+                        *s = values.next().unwrap_or_else(|| d.clone());
+                    }
+                }
+                Ok(v)
+            }
+            (Some(Init::Fields(fields)), Ty::Fb(_)) => {
+                let mut v = self.default_of(t)?;
+                for (n, c) in fields {
+                    if !self.write_at(&mut v, &[Step::Field(n.clone())], Value::from_const(c)) {
+                        return Err(format!("cannot initialise field {n}"));
+                    }
+                }
+                Ok(v)
+            }
+            _ => self.default_of(t),
+        }
+    }
+}
+
+/// Parse an IEC literal as a value of type `ty`.
+pub fn parse_literal(ty: &Ty, text: &str) -> Option<Value> {
+    let t = text.trim();
+    match ty {
+        Ty::Elem(Elem::BOOL) => match t.to_ascii_uppercase().as_str() {
+            "TRUE" | "1" | "BOOL#TRUE" | "BOOL#1" => Some(Value::Bool(true)),
+            "FALSE" | "0" | "BOOL#FALSE" | "BOOL#0" => Some(Value::Bool(false)),
+            _ => None,
+        },
+        Ty::Elem(e) if e.is_int() || e.is_bitstring() => {
+            let body = match t.split_once('#') {
+                Some((pre, rest)) if Elem::from_name(pre) == Some(*e) => rest,
+                _ => t,
+            };
+            let v = il_std::literal::parse_int(body)?;
+            let (lo, hi) = e.int_range()?;
+            (lo..=hi).contains(&v).then_some(Value::Int(v, *e))
+        }
+        Ty::Elem(e) if e.is_real() => {
+            let body = match t.split_once('#') {
+                Some((pre, rest)) if Elem::from_name(pre) == Some(*e) => rest,
+                _ => t,
+            };
+            let v = il_std::literal::parse_real(body)?;
+            Some(if *e == Elem::REAL {
+                Value::Real(v as f32)
+            } else {
+                Value::LReal(v)
+            })
+        }
+        Ty::Elem(e @ (Elem::TIME | Elem::LTIME)) => {
+            let up = t.to_ascii_uppercase();
+            let body = ["LTIME#", "TIME#", "LT#", "T#"]
+                .iter()
+                .find_map(|p| up.strip_prefix(p).map(|_| &t[p.len()..]))
+                .unwrap_or(t);
+            il_std::literal::parse_duration(body)
+                .ok()
+                .map(|ns| Value::Time(ns, *e))
+        }
+        Ty::Str { wide, len } => {
+            let q = if *wide { '"' } else { '\'' };
+            let inner = t
+                .strip_prefix(q)
+                .and_then(|s| s.strip_suffix(q))
+                .unwrap_or(t);
+            Some(Value::Str {
+                units: crate::values::str_units(inner, *wide, *len),
+                wide: *wide,
+            })
+        }
+        _ => None,
+    }
+}

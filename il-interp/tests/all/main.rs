@@ -1,0 +1,9 @@
+//! The reference interpreter's tests, one binary with a module per topic:
+//! `plc` (the behaviour-test programs of `tests/plc`, asserting what
+//! `tests/tests/*.rs` assert for the generated code), `smoke` (every POU of
+//! `tests/plc` runs; features not covered by `plc`), `plcopen` (a PLCopen
+//! project of the shared corpus).
+
+mod plc;
+mod plcopen;
+mod smoke;
