@@ -1,0 +1,280 @@
+//! Function block calls: `CAL` with a formal list, the input operators
+//! (S1, CLK, PT ...), in-outs and the externals an instance passes down.
+
+use super::*;
+
+impl Walk<'_, '_> {
+    /// If the operand is a plain FB instance (of one of `types`, or any FB when
+    /// `types` is empty), its place.
+    pub(super) fn fb_operand(&mut self, o: &Operand, types: &[&str]) -> Option<Place> {
+        let Operand::Var(v) = o else { return None };
+        let (_, var) = self.sig.var(&v.base.name)?;
+        let Ty::Fb(t) = &var.ty else { return None };
+        if v.path.is_empty()
+            && (types.is_empty() || types.iter().any(|x| x.eq_ignore_ascii_case(t)))
+        {
+            let saved = self.final_pass;
+            let p = self.place(v, false);
+            self.final_pass = saved;
+            return p;
+        }
+        None
+    }
+
+    /// Table 54: set one input from the CR and call the instance.
+    pub(super) fn fb_input(&mut self, inst: Place, input: &str, cr: Cr, span: Span) -> Cr {
+        let Ty::Fb(fb) = inst.ty.clone() else {
+            self.err(
+                NOT_AN_FB,
+                span,
+                format!(
+                    "`{input}` as an operator needs a function block instance; this is {}",
+                    inst.ty
+                ),
+            );
+            return cr;
+        };
+        let mut all: Vec<(String, Ty)> = Vec::new();
+        if let Some(s) = stdfb::lookup(&fb) {
+            all.extend(s.inputs.iter().map(|(n, e)| (n.to_string(), Ty::Elem(*e))));
+        } else if let Some(sig) = self.env.pou(&fb) {
+            all.extend(sig.inputs().map(|(_, v)| (v.name.clone(), v.ty.clone())));
+        }
+        let Some((name, ty)) = all.into_iter().find(|(n, _)| n.eq_ignore_ascii_case(input)) else {
+            self.err(
+                BAD_INPUT_OP,
+                span,
+                format!("`{input}` is not an input of {fb}"),
+            );
+            return cr;
+        };
+        let Some(arg) = self.use_cr(&cr, span) else {
+            return cr;
+        };
+        let Some(value) = self.fit_to(arg, &ty, span, &format!("input `{name}` of {fb}")) else {
+            return cr;
+        };
+        let (inouts, externals) = self.fb_refs(&fb);
+        if let Some((n, _)) = inouts.first() {
+            self.err(
+                BAD_IN_OUT,
+                span,
+                format!("{fb} has VAR_IN_OUT `{n}`, which every call binds: use `CAL inst({n} := variable, ...)`"),
+            );
+            return cr;
+        }
+        self.push(Op::CallFb {
+            inst,
+            inputs: vec![(name, value)],
+            outputs: Vec::new(),
+            inouts: Vec::new(),
+            externals,
+            cond: None,
+        });
+        cr
+    }
+
+    /// A user FB's VAR_IN_OUTs (name, type) and the names of its VAR_EXTERNALs
+    /// that the caller passes (the located ones need no passing).
+    #[allow(clippy::type_complexity)]
+    pub(super) fn fb_refs(&self, fb: &str) -> (Vec<(String, Ty)>, Vec<(String, bool)>) {
+        let Some(sig) = self
+            .env
+            .pou(fb)
+            .filter(|s| s.kind == PouKind::FunctionBlock)
+        else {
+            return (Vec::new(), Vec::new());
+        };
+        let inouts = sig
+            .vars
+            .iter()
+            .filter(|v| v.kind == ast::VarKind::InOut)
+            .map(|v| (v.name.clone(), v.ty.clone()))
+            .collect();
+        let externals = sig
+            .vars
+            .iter()
+            .filter(|v| v.kind == ast::VarKind::External && v.location.is_none())
+            .map(|v| (v.name.clone(), v.constant))
+            .collect();
+        (inouts, externals)
+    }
+
+    /// The place bound to a VAR_IN_OUT `name : ty`: a writable variable of exactly that type.
+    pub(super) fn inout_place(
+        &mut self,
+        o: &Operand,
+        name: &str,
+        ty: &Ty,
+        callee: &str,
+    ) -> Option<Place> {
+        if let Operand::Lit(l) = o {
+            self.err(
+                BAD_IN_OUT,
+                l.span,
+                format!("`{name}` is a VAR_IN_OUT of {callee}: it needs a variable, not a literal"),
+            );
+            return None;
+        }
+        let place = self.place_of(o, true)?;
+        if &place.ty != ty {
+            self.err(
+                BAD_IN_OUT,
+                o.span(),
+                format!(
+                    "`{name}` is a VAR_IN_OUT of {callee} of type {ty}; the variable is {} (a reference needs exactly the same type)",
+                    place.ty
+                ),
+            );
+            return None;
+        }
+        Some(place)
+    }
+
+    /// The argument list of a CAL of an FB.
+    #[allow(clippy::type_complexity)]
+    pub(super) fn fb_args(
+        &mut self,
+        fb: &str,
+        args: &CallArgs,
+        span: Span,
+    ) -> (
+        Vec<(String, Value)>,
+        Vec<(String, Place, bool)>,
+        Vec<(String, Place)>,
+    ) {
+        let mut ins = Vec::new();
+        let mut outs = Vec::new();
+        let mut inouts: Vec<(String, Place)> = Vec::new();
+        let (inout_decl, _) = self.fb_refs(fb);
+        match args {
+            CallArgs::Formal(list) => {
+                for p in list {
+                    if let Some((name, ty)) = inout_decl.iter().find(|(n, _)| p.name.is(n)) {
+                        match &p.kind {
+                            ParamKind::Input(o) => {
+                                if inouts.iter().any(|(n, _)| n == name) {
+                                    self.err(
+                                        DUPLICATE_DECL,
+                                        p.name.span,
+                                        format!("`{name}` is bound twice"),
+                                    );
+                                } else if let Some(pl) = self.inout_place(o, name, ty, fb) {
+                                    inouts.push((name.clone(), pl));
+                                }
+                            }
+                            ParamKind::Output { .. } => {
+                                self.err(
+                                    BAD_IN_OUT,
+                                    p.span,
+                                    format!("`{name}` is a VAR_IN_OUT of {fb}: bind it with `{name} := variable`"),
+                                );
+                            }
+                        }
+                        continue;
+                    }
+                    let Some((name, ty, is_input)) = self.member(fb, &p.name.name, p.name.span)
+                    else {
+                        continue;
+                    };
+                    match &p.kind {
+                        ParamKind::Input(o) => {
+                            if !is_input {
+                                self.err(
+                                    NOT_WRITABLE,
+                                    p.name.span,
+                                    format!(
+                                        "`{name}` is an output of {fb}: use `{name} => variable`"
+                                    ),
+                                );
+                                continue;
+                            }
+                            let Some(a) = self.operand(o) else { continue };
+                            if let Some(v) =
+                                self.fit_to(a, &ty, o.span(), &format!("input `{name}` of {fb}"))
+                            {
+                                ins.push((name, v));
+                            }
+                        }
+                        ParamKind::Output { negate, target } => {
+                            if is_input {
+                                self.err(
+                                    NOT_WRITABLE,
+                                    p.name.span,
+                                    format!("`{name}` is an input of {fb}: use `{name} := value`"),
+                                );
+                                continue;
+                            }
+                            let Some(place) = self.place_of(target, true) else {
+                                continue;
+                            };
+                            if place.ty != ty {
+                                self.err(
+                                    TYPE_MISMATCH,
+                                    target.span(),
+                                    format!("`{name}` is {ty}, the variable is {}", place.ty),
+                                );
+                                continue;
+                            }
+                            if *negate && !ty.is_logic() {
+                                self.err(
+                                    BAD_OPERATOR_TYPE,
+                                    p.span,
+                                    format!(
+                                        "NOT needs a BOOL or bit-string output; `{name}` is {ty}"
+                                    ),
+                                );
+                                continue;
+                            }
+                            outs.push((name, place, *negate));
+                        }
+                    }
+                }
+            }
+            CallArgs::NonFormal(_) if !inout_decl.is_empty() => {
+                self.err(
+                    BAD_IN_OUT,
+                    span,
+                    format!(
+                        "{fb} has VAR_IN_OUT `{}`: call it with a formal list (`CAL inst({} := variable, ...)`)",
+                        inout_decl[0].0, inout_decl[0].0
+                    ),
+                );
+            }
+            CallArgs::NonFormal(list) => {
+                let inputs: Vec<(String, Ty)> = if let Some(s) = stdfb::lookup(fb) {
+                    s.inputs
+                        .iter()
+                        .map(|(n, e)| (n.to_string(), Ty::Elem(*e)))
+                        .collect()
+                } else if let Some(sig) = self.env.pou(fb) {
+                    sig.inputs()
+                        .map(|(_, v)| (v.name.clone(), v.ty.clone()))
+                        .collect()
+                } else {
+                    Vec::new()
+                };
+                if list.len() > inputs.len() {
+                    self.err(
+                        ARG_COUNT,
+                        span,
+                        format!(
+                            "{fb} has {} inputs; {} values given",
+                            inputs.len(),
+                            list.len()
+                        ),
+                    );
+                }
+                for (o, (name, ty)) in list.iter().zip(inputs) {
+                    let Some(a) = self.operand(o) else { continue };
+                    if let Some(v) =
+                        self.fit_to(a, &ty, o.span(), &format!("input `{name}` of {fb}"))
+                    {
+                        ins.push((name, v));
+                    }
+                }
+            }
+        }
+        (ins, outs, inouts)
+    }
+}

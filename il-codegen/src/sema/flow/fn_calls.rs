@@ -1,0 +1,408 @@
+//! Function calls: user FUNCTIONs and the standard functions, formal and
+//! non-formal argument lists.
+
+use super::*;
+
+impl Walk<'_, '_> {
+    pub(super) fn is_function(&self, name: &str) -> bool {
+        self.env
+            .pou(name)
+            .is_some_and(|s| s.kind == PouKind::Function)
+            || stdfn::is_std(&name.to_ascii_uppercase())
+    }
+
+    /// A function call; `formal_only` for `CAL F(...)` (the CR is not an argument).
+    pub(super) fn fn_call(
+        &mut self,
+        name: &ast::Ident,
+        args: &CallArgs,
+        cr: Cr,
+        span: Span,
+        formal_only: bool,
+    ) -> Cr {
+        let bad = Cr::Undef(Why::Error);
+        if let Some(sig) = self
+            .env
+            .pou(&name.name)
+            .filter(|s| s.kind == PouKind::Function)
+        {
+            let inputs: Vec<(usize, String, Ty)> = sig
+                .inputs()
+                .map(|(i, v)| (i, v.name.clone(), v.ty.clone()))
+                .collect();
+            let inouts: Vec<(String, Ty)> = sig
+                .vars
+                .iter()
+                .filter(|v| v.kind == ast::VarKind::InOut)
+                .map(|v| (v.name.clone(), v.ty.clone()))
+                .collect();
+            // Positional order: inputs and in-outs as declared.
+            let params: Vec<(bool, usize)> = {
+                let (mut i, mut j) = (0, 0);
+                sig.vars
+                    .iter()
+                    .filter_map(|v| match v.kind {
+                        ast::VarKind::Input => {
+                            i += 1;
+                            Some((false, i - 1))
+                        }
+                        ast::VarKind::InOut => {
+                            j += 1;
+                            Some((true, j - 1))
+                        }
+                        _ => None,
+                    })
+                    .collect()
+            };
+            let mut inout_places: Vec<Option<Place>> = vec![None; inouts.len()];
+            let ret = sig.ret.clone();
+            let fname = sig.name.clone();
+            let mut values: Vec<Option<Value>> = vec![None; inputs.len()];
+            let mut outputs = Vec::new();
+            let mut en: Option<Value> = None;
+            // `ENO => x` on a function that never sets ENO: x gets EN (or TRUE).
+            let mut eno_plain: Vec<(Place, bool)> = Vec::new();
+            match args {
+                CallArgs::NonFormal(list) if !formal_only => {
+                    let total = list.len() + 1;
+                    if total != params.len() {
+                        if let Some(d) = self.err(ARG_COUNT, span, format!("{fname} takes {} input(s); this call gives {total} (the current result and {} operand(s))", params.len(), list.len())) {
+                            d.notes.push(format!("inputs of {fname}: {}", inputs.iter().map(|(_, n, t)| format!("{n} : {t}")).chain(inouts.iter().map(|(n, t)| format!("{n} : {t} (VAR_IN_OUT)"))).collect::<Vec<_>>().join(", ")));
+                        }
+                        return bad;
+                    }
+                    if params[0].0 {
+                        self.err(BAD_IN_OUT, span, format!("the first parameter of {fname}, `{}`, is a VAR_IN_OUT: the current result is a value, not a variable; use a formal call `{fname}({} := variable, ...)`", inouts[0].0, inouts[0].0));
+                        return bad;
+                    }
+                    let Some(first) = self.use_cr(&cr, span) else {
+                        return bad;
+                    };
+                    values[params[0].1] = self.fit(first, &inputs[params[0].1].2, span);
+                    for (k, o) in list.iter().enumerate() {
+                        match params[k + 1] {
+                            (true, j) => {
+                                let (n, t) = inouts[j].clone();
+                                inout_places[j] = self.inout_place(o, &n, &t, &fname);
+                                if inout_places[j].is_none() {
+                                    return bad;
+                                }
+                            }
+                            (false, j) => {
+                                let Some(a) = self.operand(o) else { return bad };
+                                values[j] = self.fit(a, &inputs[j].2, o.span());
+                            }
+                        }
+                    }
+                }
+                CallArgs::NonFormal(_) => {
+                    self.err(
+                        ARG_COUNT,
+                        span,
+                        "CAL of a function needs a formal list: `CAL F(IN := x)`",
+                    );
+                    return bad;
+                }
+                CallArgs::Formal(list) => {
+                    for p in list {
+                        match &p.kind {
+                            ParamKind::Input(o) if p.name.is("EN") => {
+                                let Some(a) = self.operand(o) else { continue };
+                                en = self.fit(a, &Ty::BOOL, o.span());
+                            }
+                            ParamKind::Output { negate, target }
+                                if p.name.is("ENO") && sig.var("ENO").is_none() =>
+                            {
+                                let Some(place) = self.place_of(target, true) else {
+                                    continue;
+                                };
+                                if place.ty != Ty::BOOL {
+                                    self.err(
+                                        TYPE_MISMATCH,
+                                        target.span(),
+                                        format!("`ENO` is BOOL, the variable is {}", place.ty),
+                                    );
+                                    continue;
+                                }
+                                eno_plain.push((place, *negate));
+                            }
+                            ParamKind::Input(o)
+                                if let Some(j) = inouts.iter().position(|(n, _)| p.name.is(n)) =>
+                            {
+                                let (n, t) = inouts[j].clone();
+                                inout_places[j] = self.inout_place(o, &n, &t, &fname);
+                                if inout_places[j].is_none() {
+                                    return bad;
+                                }
+                            }
+                            ParamKind::Input(o) => {
+                                let Some(k) = inputs.iter().position(|(_, n, _)| p.name.is(n))
+                                else {
+                                    self.err(
+                                        UNKNOWN_MEMBER,
+                                        p.name.span,
+                                        format!("{fname} has no input `{}`", p.name),
+                                    );
+                                    continue;
+                                };
+                                let Some(a) = self.operand(o) else { continue };
+                                values[k] = self.fit(a, &inputs[k].2, o.span());
+                            }
+                            ParamKind::Output { negate, target } => {
+                                let Some((_, v)) = sig
+                                    .var(&p.name.name)
+                                    .filter(|(_, v)| v.kind == ast::VarKind::Output)
+                                else {
+                                    self.err(
+                                        UNKNOWN_MEMBER,
+                                        p.name.span,
+                                        format!("{fname} has no output `{}`", p.name),
+                                    );
+                                    continue;
+                                };
+                                let ty = v.ty.clone();
+                                let Some(place) = self.place_of(target, true) else {
+                                    continue;
+                                };
+                                if place.ty != ty {
+                                    self.err(
+                                        TYPE_MISMATCH,
+                                        target.span(),
+                                        format!(
+                                            "`{}` is {ty}, the variable is {}",
+                                            p.name, place.ty
+                                        ),
+                                    );
+                                    continue;
+                                }
+                                let k = sig
+                                    .vars
+                                    .iter()
+                                    .filter(|o| o.kind == ast::VarKind::Output)
+                                    .position(|o| o.name == v.name)
+                                    .unwrap_or(0);
+                                outputs.push((k, place, *negate));
+                            }
+                        }
+                    }
+                    for (k, (_, _, t)) in inputs.iter().enumerate() {
+                        if values[k].is_none() {
+                            values[k] = Some(Value::Const(default_const(t)));
+                        }
+                    }
+                }
+            }
+            let Some(ret) = ret else { return bad };
+            if let Some(j) = inout_places.iter().position(Option::is_none) {
+                self.err(
+                    BAD_IN_OUT,
+                    span,
+                    format!(
+                        "{fname} has VAR_IN_OUT `{}`: every call binds it (`{fname}({} := variable, ...)`)",
+                        inouts[j].0, inouts[j].0
+                    ),
+                );
+                return bad;
+            }
+            if values.iter().any(Option::is_none) {
+                return bad;
+            }
+            let inouts = inout_places.into_iter().flatten().collect();
+            let args = values.into_iter().flatten().collect();
+            let out_types = sig
+                .vars
+                .iter()
+                .filter(|o| o.kind == ast::VarKind::Output)
+                .map(|o| o.ty.clone())
+                .collect();
+            let eno = sig
+                .vars
+                .iter()
+                .filter(|o| o.kind == ast::VarKind::Output)
+                .position(|o| o.name == "ENO");
+            self.push(Op::SetCr {
+                ty: ret.clone(),
+                expr: Expr::CallUser {
+                    name: fname,
+                    inouts,
+                    args,
+                    out_types,
+                    outputs,
+                    en: en.clone(),
+                    eno,
+                    ret: ret.clone(),
+                },
+            });
+            for (place, negate) in eno_plain {
+                let value = en.clone().unwrap_or(Value::Const(Const::Bool(true)));
+                self.push(Op::Store {
+                    place,
+                    value,
+                    negate,
+                });
+            }
+            return Cr::Val(ret);
+        }
+        let key = name.key();
+        if stdfn::is_std(&key) {
+            let mut argv: Vec<(Arg, Span)> = Vec::new();
+            match args {
+                CallArgs::NonFormal(list) if !formal_only => {
+                    let Some(first) = self.use_cr(&cr, span) else {
+                        return bad;
+                    };
+                    argv.push((first, span));
+                    for o in list {
+                        let Some(a) = self.operand(o) else { return bad };
+                        argv.push((a, o.span()));
+                    }
+                }
+                CallArgs::NonFormal(_) => {
+                    self.err(
+                        ARG_COUNT,
+                        span,
+                        "CAL of a function needs a formal list: `CAL F(IN := x)`",
+                    );
+                    return bad;
+                }
+                CallArgs::Formal(list) => {
+                    let mut named = Vec::new();
+                    for p in list {
+                        match &p.kind {
+                            ParamKind::Input(o) => {
+                                let Some(a) = self.operand(o) else { return bad };
+                                named.push((p.name.clone(), a, o.span()));
+                            }
+                            ParamKind::Output { .. } => {
+                                self.err(
+                                    UNSUPPORTED,
+                                    p.span,
+                                    "standard functions have no outputs to read with `=>`",
+                                );
+                                return bad;
+                            }
+                        }
+                    }
+                    match stdfn::order_formal(&key, named) {
+                        Ok(v) => argv = v,
+                        Err((s, m)) => {
+                            self.err(UNKNOWN_MEMBER, s.unwrap_or(span), m);
+                            return bad;
+                        }
+                    }
+                }
+            }
+            return self.std_call(&key, argv, name.span);
+        }
+        let is_var = self.sig.var(&name.name).is_some();
+        let mut cands: Vec<String> = self
+            .env
+            .pous
+            .values()
+            .filter(|s| s.kind == PouKind::Function)
+            .map(|s| s.name.clone())
+            .collect();
+        // A hash map's order: sorted, so that the suggestion is the same on
+        // every run.
+        cands.sort();
+        cands.extend(stdfn::names().map(String::from));
+        // A mistyped IL operator (`LDD`) lands here too.
+        cands.extend(
+            [
+                "LD", "LDN", "ST", "STN", "S", "R", "AND", "ANDN", "OR", "ORN", "XOR", "XORN",
+                "NOT", "ADD", "SUB", "MUL", "DIV", "MOD", "GT", "GE", "EQ", "NE", "LE", "LT",
+                "JMP", "JMPC", "JMPCN", "CAL", "CALC", "CALCN", "RET", "RETC", "RETCN", "S1", "R1",
+                "CLK", "CU", "CD", "PV", "IN", "PT",
+            ]
+            .map(String::from),
+        );
+        let hint = suggest(&name.name, cands.iter().map(String::as_str))
+            .map(|s| format!("did you mean `{s}`?"));
+        if let Some(d) = self.err(
+            UNKNOWN_FUNCTION,
+            name.span,
+            format!("unknown operator or function `{name}`"),
+        ) {
+            if is_var {
+                d.help = Some(format!(
+                    "`{name}` is a variable: write `LD {name}` or `ST {name}`"
+                ));
+            } else {
+                d.help = hint;
+                d.notes.push("a word in the operator field that is not an IL operator must name a FUNCTION; vendor built-ins are not IEC 61131-3".into());
+            }
+        }
+        bad
+    }
+
+    /// `CR := F(values)` for a resolved standard function; the CR's type.
+    pub(super) fn push_std_call(&mut self, res: stdfn::Resolved, values: Vec<Value>) -> Ty {
+        let ret = res.ret.clone();
+        self.push(Op::SetCr {
+            ty: ret.clone(),
+            expr: Expr::CallStd {
+                call: res.call,
+                args: values,
+                arg_types: res.params,
+                ret: res.ret,
+                fault: res.fault,
+            },
+        });
+        ret
+    }
+
+    pub(super) fn std_call(&mut self, key: &str, argv: Vec<(Arg, Span)>, span: Span) -> Cr {
+        let bad = Cr::Undef(Why::Error);
+        let mut settled = Vec::new();
+        for (a, s) in argv {
+            let Some(a) = self.settle(a) else { return bad };
+            settled.push((a, s));
+        }
+        let argv = settled;
+        let shapes: Vec<stdfn::ArgShape> = argv
+            .iter()
+            .map(|(a, _)| match a {
+                Arg::Typed(_, t) => stdfn::ArgShape::Ty(t.clone()),
+                Arg::Lit(l, _) => stdfn::ArgShape::Lit(l.clone()),
+            })
+            .collect();
+        if stdfn::needs_context(key, &shapes) {
+            let args = argv
+                .into_iter()
+                .map(|(a, s)| match a {
+                    Arg::Typed(v, t) => (PendArg::Typed(v, t), s),
+                    Arg::Lit(l, _) => (PendArg::Lit(l), s),
+                })
+                .collect();
+            let p = Pending {
+                key: key.to_string(),
+                args,
+                span,
+            };
+            return Cr::Lit(LitClass::Pending(Box::new(p)), span);
+        }
+        match stdfn::resolve(key, &shapes, None) {
+            Ok(res) => {
+                let mut values = Vec::new();
+                for ((a, s), t) in argv.into_iter().zip(&res.params) {
+                    let Some(v) = self.fit(a, t, s) else {
+                        return bad;
+                    };
+                    values.push(v);
+                }
+                Cr::Val(self.push_std_call(res, values))
+            }
+            Err(e) => {
+                let code = if e.count { ARG_COUNT } else { TYPE_MISMATCH };
+                if let Some(d) = self.err(code, span, e.message) {
+                    d.notes.push(format!("signature: {}", e.signature));
+                    if e.count {
+                        d.notes
+                            .push("in IL the current result is the first argument".into());
+                    }
+                }
+                bad
+            }
+        }
+    }
+}

@@ -1,0 +1,399 @@
+//! The body checker: walks the instruction list, proving the type of the
+//! current result (CR) at every instruction, and lowers it to [`ir`].
+//!
+//! Labels make the CR's type a flow problem: the walk is repeated until the
+//! CR state at every label is stable (a fixpoint), then run once more to
+//! report diagnostics and build the IR with those states.
+
+use super::codes::*;
+use super::decls::{Env, LitClass, PendArg, Pending, PouSig, coerce, describe, lit_class};
+use super::ir::{self, BinOp, CheckedPou, Const, Expr, Op, PathElem, Place, Root, Value};
+use super::types::{Elem, Ty};
+use super::{Cx, stdfb, stdfn, suggest};
+use crate::ast::{
+    self, Accessor, CallArgs, Cond, ExprOp, InstrKind, Operand, ParamKind, PouKind, Span, VarRef,
+};
+use std::collections::HashMap;
+
+mod fb_calls;
+mod fn_calls;
+mod instr;
+mod operands;
+mod operators;
+mod places;
+mod values;
+
+pub use operators::default_const;
+use operators::*;
+
+/// The CR at a point of the body.
+#[derive(Clone, Debug, PartialEq)]
+enum Cr {
+    /// No path reaches here.
+    Dead,
+    Undef(Why),
+    /// An untyped literal: it takes its type from its first typed use.
+    Lit(LitClass, Span),
+    Val(Ty),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Why {
+    Start,
+    /// An error was reported for the instruction that set the CR; uses
+    /// of it stay silent until the next load, so one mistake reports once.
+    Error,
+    AfterCal(u32),
+    /// Paths into a label disagree; the text names them.
+    Mixed(String),
+}
+
+/// The CR's class on one edge into a label (literal values erased).
+#[derive(Clone, Debug, PartialEq)]
+enum Class {
+    /// An integer literal, with its value: it joins a typed path only if it fits.
+    LitInt(i128),
+    LitReal,
+    LitStr(bool),
+    Val(Ty),
+    Undef(String),
+    /// After an error: absorbs the join silently.
+    Error,
+}
+
+/// A value the CR or an operand provides to an operation.
+#[derive(Clone, Debug)]
+enum Arg {
+    Typed(Value, Ty),
+    Lit(LitClass, Span),
+}
+
+pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<CheckedPou> {
+    let sig = env.pou(&pou.name.name)?;
+    if sig.kind != pou.kind || sig.name != pou.name.name {
+        return None; // a duplicate, already reported
+    }
+    let mut labels = HashMap::new();
+    let mut label_spans = Vec::new();
+    for s in &pou.body {
+        if let ast::Stmt::Label(id) = s {
+            if let Some(&prev) = labels.get(&id.key()) {
+                cx.err(
+                    DUPLICATE_LABEL,
+                    id.span,
+                    format!("label `{id}` is defined twice"),
+                )
+                .add_secondary(label_spans[prev], "first defined here");
+            } else {
+                labels.insert(id.key(), label_spans.len());
+                label_spans.push(id.span);
+            }
+        }
+    }
+    let n = label_spans.len();
+    // Where each label stands in the body: edges from later statements are
+    // backward edges, known only from the previous round.
+    let mut label_pos = vec![0; n];
+    for (i, s) in pou.body.iter().enumerate() {
+        if let ast::Stmt::Label(id) = s
+            && let Some(&l) = labels.get(&id.key())
+            && label_pos[l] == 0
+        {
+            label_pos[l] = i;
+        }
+    }
+    let mut w = Walk {
+        cx,
+        env,
+        sig,
+        labels,
+        label_in: vec![Cr::Dead; n],
+        edges: vec![Vec::new(); n],
+        label_pos,
+        pos: 0,
+        back_prev: vec![Vec::new(); n],
+        back_now: vec![Vec::new(); n],
+        final_pass: false,
+        out: Vec::new(),
+        cr_types: Vec::new(),
+        save_types: Vec::new(),
+        jumped: vec![false; n],
+        line: 0,
+        addresses: Vec::new(),
+    };
+    // Fixpoint: the lattice per label is short (dead → literal → type → mixed),
+    // so a few rounds settle it; the cap only guards against oscillation bugs.
+    // Forward edges are used in the same round, so straight-line code with
+    // any number of labels settles in two rounds; each round adds backward
+    // edges, and the per-label lattice is short, so loops settle quickly too.
+    let mut settled = false;
+    for _ in 0..64 {
+        w.edges.iter_mut().for_each(Vec::clear);
+        w.back_now.iter_mut().for_each(Vec::clear);
+        w.walk(&pou.body);
+        let next: Vec<Cr> = w.edges.iter().map(|e| join(e)).collect();
+        let same = next == w.label_in && w.back_now == w.back_prev;
+        w.label_in = next;
+        w.back_prev = w.back_now.clone();
+        if same {
+            settled = true;
+            break;
+        }
+    }
+    if !settled {
+        // Never silently: report it rather than emit code from unsettled states.
+        w.cx.err(UNSUPPORTED, pou.name.span, format!("the flow analysis of `{}` did not settle (too many nested loops); please report this", pou.name));
+    }
+    w.final_pass = true;
+    w.edges.iter_mut().for_each(Vec::clear);
+    w.out.clear();
+    w.walk(&pou.body);
+    for (i, used) in w.jumped.iter().enumerate() {
+        if !used {
+            let span = label_spans[i];
+            let name =
+                w.cx.file
+                    .snippet(span)
+                    .trim_end_matches(':')
+                    .trim()
+                    .to_string();
+            w.cx.warn(
+                UNUSED_LABEL,
+                span,
+                format!("label `{name}` is never jumped to"),
+            );
+        }
+    }
+    Some(CheckedPou {
+        kind: pou.kind,
+        name: sig.name.clone(),
+        vars: sig.vars.clone(),
+        ret: sig.ret.clone(),
+        body: w.out,
+        label_count: n,
+        addresses: w.addresses,
+        cr_types: w.cr_types,
+        save_types: w.save_types,
+        retained: super::configuration::retained(env, sig),
+    })
+}
+
+/// The CR after a label, from the CR on every edge into it.
+fn join(edges: &[(Span, Class, u32)]) -> Cr {
+    let Some((_, first, _)) = edges.first() else {
+        return Cr::Dead;
+    };
+    if edges.iter().any(|(_, c, _)| *c == Class::Error) {
+        return Cr::Undef(Why::Error);
+    }
+    let mut ty: Option<Ty> = None;
+    let mut lit: Option<Class> = None;
+    let mut lits: Vec<&Class> = Vec::new();
+    let mut bad = false;
+    for (_, c, _) in edges {
+        match c {
+            Class::Val(t) => match &ty {
+                None => ty = Some(t.clone()),
+                Some(u) if u == t => {}
+                Some(_) => bad = true,
+            },
+            Class::Undef(_) => bad = true,
+            l => {
+                // Literals of one kind join (their values may differ).
+                match &lit {
+                    None => lit = Some(l.clone()),
+                    Some(m) if std::mem::discriminant(m) == std::mem::discriminant(l) => {}
+                    Some(_) => bad = true,
+                }
+                lits.push(l);
+            }
+        }
+    }
+    if !bad {
+        match (ty, lit) {
+            (Some(t), None) => return Cr::Val(t),
+            (Some(t), Some(_)) if lits.iter().all(|l| lit_fits(l, &t)) => return Cr::Val(t),
+            (None, Some(Class::LitInt(_))) => return Cr::Val(Ty::Elem(Elem::DINT)),
+            (None, Some(Class::LitReal)) => return Cr::Val(Ty::Elem(Elem::LREAL)),
+            (None, Some(Class::LitStr(w))) => {
+                return Cr::Val(Ty::Str {
+                    wide: w,
+                    len: super::types::DEFAULT_STRING_LEN,
+                });
+            }
+            _ => {}
+        }
+    }
+    let _ = first;
+    let paths: Vec<String> = edges
+        .iter()
+        .map(|(_, c, line)| {
+            let what = match c {
+                Class::Val(t) => t.to_string(),
+                Class::LitInt(v) => format!("the integer literal {v}"),
+                Class::LitReal => "a real literal".into(),
+                Class::LitStr(_) => "a string literal".into(),
+                Class::Undef(why) => format!("undefined ({why})"),
+                Class::Error => "an error".into(),
+            };
+            format!("{what} from line {line}")
+        })
+        .collect();
+    Cr::Undef(Why::Mixed(paths.join(", ")))
+}
+
+fn lit_fits(c: &Class, t: &Ty) -> bool {
+    match (c, t) {
+        // BOOL takes 0 and 1 in a store, but a label joining an integer path
+        // with a BOOL path is more likely a mistake: keep them apart.
+        (Class::LitInt(v), Ty::Elem(e)) if *e != Elem::BOOL => {
+            coerce(&LitClass::Int(*v), t).is_ok()
+        }
+        (Class::LitReal, Ty::Elem(e)) => e.is_real(),
+        (Class::LitStr(w), Ty::Str { wide, .. }) => w == wide,
+        _ => false,
+    }
+}
+
+struct Walk<'a, 'c> {
+    cx: &'a mut Cx<'c>,
+    env: &'a Env,
+    sig: &'a PouSig,
+    labels: HashMap<String, usize>,
+    /// CR after each label (from the previous round).
+    label_in: Vec<Cr>,
+    /// Edges into each label found in this round: (source span, class, line).
+    edges: Vec<Vec<(Span, Class, u32)>>,
+    /// Body index of each label.
+    label_pos: Vec<usize>,
+    /// Body index of the statement being walked.
+    pos: usize,
+    /// Backward edges found in the previous round / this round.
+    back_prev: Vec<Vec<(Span, Class, u32)>>,
+    back_now: Vec<Vec<(Span, Class, u32)>>,
+    final_pass: bool,
+    out: Vec<ir::Stmt>,
+    cr_types: Vec<Ty>,
+    save_types: Vec<Ty>,
+    jumped: Vec<bool>,
+    line: u32,
+    addresses: Vec<ir::Loc>,
+}
+
+impl Walk<'_, '_> {
+    fn err(
+        &mut self,
+        code: &'static str,
+        span: Span,
+        msg: impl Into<String>,
+    ) -> Option<&mut crate::diag::Diagnostic> {
+        if self.final_pass {
+            Some(self.cx.err(code, span, msg))
+        } else {
+            None
+        }
+    }
+
+    fn push(&mut self, op: Op) {
+        if let Op::SetCr { ty, .. } = &op
+            && !self.cr_types.contains(ty)
+        {
+            self.cr_types.push(ty.clone());
+        }
+        self.out.push(ir::Stmt {
+            op,
+            line: self.line,
+        });
+    }
+
+    fn walk(&mut self, body: &[ast::Stmt]) {
+        self.save_types.clear();
+        let mut cr = Cr::Undef(Why::Start);
+        let mut warned_dead = false;
+        for (i, stmt) in body.iter().enumerate() {
+            self.pos = i;
+            match stmt {
+                ast::Stmt::Label(id) => {
+                    let Some(&l) = self.labels.get(&id.key()) else {
+                        continue;
+                    };
+                    // The fall-through edge comes from the line before the label.
+                    cr = self.settle_cr(cr);
+                    if cr != Cr::Dead {
+                        self.edge(l, &cr, id.span);
+                    }
+                    self.line = self.cx.line(id.span);
+                    // This round's edges (all from before the label) plus the
+                    // previous round's backward edges.
+                    let mut into = self.edges[l].clone();
+                    into.extend(self.back_prev[l].iter().cloned());
+                    cr = match join(&into) {
+                        Cr::Undef(Why::Mixed(paths)) => {
+                            Cr::Undef(Why::Mixed(format!("{}\u{0}{paths}", id.name)))
+                        }
+                        other => other,
+                    };
+                    self.push(Op::Label(l));
+                    warned_dead = false;
+                }
+                ast::Stmt::Instr(i) => {
+                    self.line = self.cx.line(i.span);
+                    if cr == Cr::Dead {
+                        if !warned_dead && self.final_pass {
+                            self.cx
+                                .warn(UNREACHABLE, i.span, "this instruction can never run")
+                                .set_label("no label leads here after the JMP or RET above");
+                        }
+                        warned_dead = true;
+                        continue;
+                    }
+                    self.push(Op::Nop);
+                    cr = self.instr(i, cr, false);
+                }
+            }
+        }
+    }
+
+    /// Record an edge into label `l` with the current CR; on the final pass,
+    /// give an untyped literal CR the label's type.
+    fn edge(&mut self, l: usize, cr: &Cr, span: Span) {
+        let class = match cr {
+            Cr::Dead => return,
+            Cr::Undef(Why::Start) => Class::Undef("no value loaded".into()),
+            Cr::Undef(Why::Error) => Class::Error,
+            Cr::Undef(Why::AfterCal(line)) => Class::Undef(format!("after CAL on line {line}")),
+            // Only the label's name, not its own list of paths: that list
+            // may hold the lists of earlier labels, and with a label repeated
+            // (an error, but checked on) the text doubled at every join, to
+            // gigabytes for a 600-byte input (found by fuzzing the `il!`
+            // expansion, which checks sources with errors for its stubs).
+            Cr::Undef(Why::Mixed(m)) => Class::Undef(match m.split_once('\u{0}') {
+                Some((label, _)) => format!("the paths into `{label}` disagree"),
+                None => m.clone(),
+            }),
+            Cr::Lit(LitClass::Int(v), _) => Class::LitInt(*v),
+            Cr::Lit(LitClass::Real(..), _) => Class::LitReal,
+            Cr::Lit(LitClass::Str(_, w), _) => Class::LitStr(*w),
+            Cr::Lit(..) => Class::Undef("an invalid literal".into()),
+            Cr::Val(t) => Class::Val(t.clone()),
+        };
+        if self.pos > self.label_pos[l] {
+            self.back_now[l].push((span, class.clone(), self.line));
+        }
+        self.edges[l].push((span, class, self.line));
+        if let (Cr::Lit(lit, lspan), Cr::Val(t)) = (cr, &self.label_in[l].clone())
+            && !matches!(lit, LitClass::Pending(_))
+        {
+            match coerce(lit, t) {
+                Ok(c) => self.push(Op::SetCr {
+                    ty: t.clone(),
+                    expr: Expr::Value(Value::Const(c)),
+                }),
+                Err(m) => {
+                    let lspan = *lspan;
+                    self.err(LITERAL_RANGE, lspan, m);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,280 @@
+//! Places: what an operand names in storage (a variable, a member, an
+//! array element, a direct address), for reading and writing.
+
+use super::*;
+
+impl Walk<'_, '_> {
+    pub(super) fn addr_place(&mut self, a: &ast::DirectAddress, write: bool) -> Option<Place> {
+        if !self.final_pass {
+            // Resolution reports errors; report them once, on the final pass.
+            let saved = std::mem::take(&mut self.cx.diags);
+            let l = super::super::decls::resolve_addr(self.cx, a, None);
+            self.cx.diags = saved;
+            return l.map(|l| Place {
+                range: None,
+                ty: Ty::Elem(l.elem),
+                root: Root::Addr(l),
+                path: Vec::new(),
+            });
+        }
+        let l = super::super::decls::resolve_addr(self.cx, a, None)?;
+        if write && l.area == ast::Area::Input {
+            self.err(
+                NOT_WRITABLE,
+                a.span,
+                format!(
+                    "`{}` is an input: the host writes it before each scan",
+                    l.text
+                ),
+            );
+            return None;
+        }
+        if !self.addresses.contains(&l) {
+            self.addresses.push(l.clone());
+        }
+        Some(Place {
+            range: None,
+            ty: Ty::Elem(l.elem),
+            root: Root::Addr(l),
+            path: Vec::new(),
+        })
+    }
+
+    pub(super) fn place_of(&mut self, o: &Operand, write: bool) -> Option<Place> {
+        match o {
+            Operand::Var(v) => self.place(v, write),
+            Operand::Lit(l) => {
+                self.err(NOT_WRITABLE, l.span, "expected a variable, found a literal");
+                None
+            }
+            Operand::Addr(a) => self.addr_place(a, write),
+        }
+    }
+
+    /// Resolve a variable reference; `write` checks that it may be stored to.
+    pub(super) fn place(&mut self, v: &VarRef, write: bool) -> Option<Place> {
+        let (root, mut ty, constant) = if let Some((i, var)) = self.sig.var(&v.base.name) {
+            match &var.location {
+                Some(l) if write && l.area == ast::Area::Input => {
+                    self.err(
+                        NOT_WRITABLE,
+                        v.span,
+                        format!(
+                            "`{}` is located at the input `{}`: the host writes it",
+                            v.base, l.text
+                        ),
+                    );
+                    return None;
+                }
+                Some(l) => (Root::Addr(l.clone()), var.ty.clone(), var.constant),
+                None if write && var.edge.is_some() => {
+                    self.err(
+                        NOT_WRITABLE,
+                        v.span,
+                        format!(
+                            "`{}` is an edge input (R_EDGE/F_EDGE): it is read-only in the body",
+                            v.base
+                        ),
+                    );
+                    return None;
+                }
+                None => (Root::Var(i), var.ty.clone(), var.constant),
+            }
+        } else if self.sig.kind == PouKind::Function && v.base.is(&self.sig.name) {
+            (Root::Ret, self.sig.ret.clone()?, false)
+        } else if self.sig.poisoned.contains(&v.base.key()) {
+            return None; // its declaration was already reported
+        } else {
+            let names: Vec<&str> = self.sig.vars.iter().map(|v| v.name.as_str()).collect();
+            let hint = suggest(&v.base.name, names).map(|s| format!("did you mean `{s}`?"));
+            let what = if self.is_function(&v.base.name) {
+                format!("`{}` is a function, not a variable", v.base)
+            } else {
+                format!("unknown variable `{}`", v.base)
+            };
+            let pou_name = self.sig.name.clone();
+            if let Some(d) = self.err(UNKNOWN_NAME, v.base.span, what) {
+                d.label = format!("not declared in {pou_name}");
+                d.help = hint;
+            }
+            return None;
+        };
+        if write && constant {
+            self.err(NOT_WRITABLE, v.span, format!("`{}` is a CONSTANT", v.base));
+            return None;
+        }
+        let mut range = self
+            .sig
+            .var(&v.base.name)
+            .and_then(|(_, var)| var.range)
+            .filter(|_| matches!(root, Root::Var(_)));
+        let mut path = Vec::new();
+        for acc in &v.path {
+            match acc {
+                Accessor::Field(f) => {
+                    range = None;
+                    let (Ty::Fb(fb) | Ty::Struct(fb)) = &ty else {
+                        self.err(
+                            UNKNOWN_MEMBER,
+                            f.span,
+                            format!("`{}` is {ty}, which has no members", v.base),
+                        );
+                        return None;
+                    };
+                    let fb = fb.clone();
+                    if let Some(field) = self
+                        .env
+                        .types
+                        .structs
+                        .get(&fb.to_ascii_uppercase())
+                        .and_then(|fs| fs.iter().find(|x| f.is(&x.name)))
+                    {
+                        range = field.range;
+                    }
+                    let (name, mty, is_input) = self.member(&fb, &f.name, f.span)?;
+                    if write && !is_input {
+                        self.err(
+                            NOT_WRITABLE,
+                            f.span,
+                            format!("`{name}` is an output of {fb}; only the block sets it"),
+                        );
+                        return None;
+                    }
+                    path.push(PathElem::Field(name));
+                    ty = mty;
+                }
+                Accessor::Index(subs, span) => {
+                    range = None;
+                    let Ty::Array { dims, elem } = &ty else {
+                        self.err(
+                            BAD_INDEX,
+                            *span,
+                            format!("`{}` is {ty}, not an array", v.base),
+                        );
+                        return None;
+                    };
+                    if subs.len() != dims.len() {
+                        self.err(
+                            BAD_INDEX,
+                            *span,
+                            format!(
+                                "{} subscripts for an array of {} dimensions",
+                                subs.len(),
+                                dims.len()
+                            ),
+                        );
+                        return None;
+                    }
+                    let (dims, elem) = (dims.clone(), (**elem).clone());
+                    let mut vals = Vec::new();
+                    for (s, (lo, hi)) in subs.iter().zip(&dims) {
+                        match self.operand(s)? {
+                            Arg::Typed(val, t) if t.elem().is_some_and(Elem::is_int) => {
+                                vals.push(val)
+                            }
+                            Arg::Typed(_, t) => {
+                                self.err(
+                                    BAD_INDEX,
+                                    s.span(),
+                                    format!("a subscript must be an integer, not {t}"),
+                                );
+                                return None;
+                            }
+                            Arg::Lit(LitClass::Int(n), sp) => {
+                                if n < *lo as i128 || n > *hi as i128 {
+                                    self.err(
+                                        BAD_INDEX,
+                                        sp,
+                                        format!("subscript {n} is outside the bounds {lo}..{hi}"),
+                                    );
+                                    return None;
+                                }
+                                vals.push(Value::Const(Const::Int(n, Elem::LINT)));
+                            }
+                            Arg::Lit(l, sp) => {
+                                self.err(
+                                    BAD_INDEX,
+                                    sp,
+                                    format!("a subscript must be an integer, not {}", describe(&l)),
+                                );
+                                return None;
+                            }
+                        }
+                    }
+                    path.push(PathElem::Index { dims, subs: vals });
+                    ty = elem;
+                }
+                Accessor::Bit(_, span) => {
+                    self.err(
+                        UNSUPPORTED,
+                        *span,
+                        "bit access (`x.3`) is not supported yet",
+                    );
+                    return None;
+                }
+            }
+        }
+        if write && matches!(ty, Ty::Fb(_)) {
+            self.err(
+                NOT_WRITABLE,
+                v.span,
+                "cannot store to a function block instance",
+            );
+            return None;
+        }
+        Some(Place {
+            root,
+            path,
+            ty,
+            range,
+        })
+    }
+
+    /// A member of an FB type: (declared name, type, is it an input).
+    pub(super) fn member(
+        &mut self,
+        fb: &str,
+        name: &str,
+        span: Span,
+    ) -> Option<(String, Ty, bool)> {
+        let mut all: Vec<(String, Ty, bool)> = Vec::new();
+        if let Some(s) = stdfb::lookup(fb) {
+            all.extend(
+                s.inputs
+                    .iter()
+                    .map(|(n, e)| (n.to_string(), Ty::Elem(*e), true)),
+            );
+            all.extend(
+                s.outputs
+                    .iter()
+                    .map(|(n, e)| (n.to_string(), Ty::Elem(*e), false)),
+            );
+        } else if let Some(fields) = self.env.types.structs.get(&fb.to_ascii_uppercase()) {
+            // Every field of a STRUCT can be read and written.
+            all.extend(fields.iter().map(|f| (f.name.clone(), f.ty.clone(), true)));
+        } else if let Some(sig) = self.env.pou(fb) {
+            for v in &sig.vars {
+                match v.kind {
+                    ast::VarKind::Input => all.push((v.name.clone(), v.ty.clone(), true)),
+                    ast::VarKind::Output => all.push((v.name.clone(), v.ty.clone(), false)),
+                    _ => {}
+                }
+            }
+        }
+        if let Some(m) = all.iter().find(|(n, _, _)| n.eq_ignore_ascii_case(name)) {
+            return Some(m.clone());
+        }
+        let hint = suggest(name, all.iter().map(|(n, _, _)| n.as_str()))
+            .map(|s| format!("did you mean `{s}`?"));
+        let list: Vec<&str> = all.iter().map(|(n, _, _)| n.as_str()).collect();
+        if let Some(d) = self.err(
+            UNKNOWN_MEMBER,
+            span,
+            format!("{fb} has no input or output `{name}`"),
+        ) {
+            d.notes.push(format!("{fb} has: {}", list.join(", ")));
+            d.help = hint;
+        }
+        None
+    }
+}

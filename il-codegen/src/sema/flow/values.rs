@@ -1,0 +1,218 @@
+//! Values of the CR: using it, fitting it to a type, and settling untyped
+//! literals (pending folds) into typed values.
+
+use super::*;
+
+impl Walk<'_, '_> {
+    /// The CR as an argument, or a diagnostic saying why there is none.
+    pub(super) fn use_cr(&mut self, cr: &Cr, span: Span) -> Option<Arg> {
+        match cr {
+            Cr::Dead => None,
+            Cr::Undef(Why::Error) => None,
+            Cr::Undef(Why::Start) => {
+                if let Some(d) = self.err(CR_UNDEFINED, span, "there is no current result here") {
+                    d.label = "this uses the current result".into();
+                    d.help = Some("load a value first, e.g. `LD x`".into());
+                }
+                None
+            }
+            Cr::Undef(Why::AfterCal(line)) => {
+                let line = *line;
+                if let Some(d) = self.err(
+                    CR_UNDEFINED,
+                    span,
+                    format!("the current result is undefined after the CAL on line {line}"),
+                ) {
+                    d.help =
+                        Some("load a value first, e.g. an output of the block: `LD inst.Q`".into());
+                }
+                None
+            }
+            Cr::Undef(Why::Mixed(text)) => {
+                // "label\0paths" (the label's name is added where it is known).
+                let (label, paths) = text.split_once('\u{0}').unwrap_or(("above", text));
+                let label = if label == "above" {
+                    "the label above".to_string()
+                } else {
+                    format!("`{label}`")
+                };
+                let paths = paths.to_string();
+                if let Some(d) = self.err(
+                    CR_DISAGREES,
+                    span,
+                    format!("the current result has different types on the paths into {label}"),
+                ) {
+                    d.notes.push(format!("the paths bring: {paths}"));
+                    d.help =
+                        Some("load a value after the label before using the current result".into());
+                }
+                None
+            }
+            Cr::Lit(l, s) => Some(Arg::Lit(l.clone(), *s)),
+            Cr::Val(t) => Some(Arg::Typed(Value::Cr(t.clone()), t.clone())),
+        }
+    }
+
+    /// The CR as a BOOL condition (JMPC, CALC, RETC, S, R).
+    pub(super) fn cond_value(&mut self, cr: &Cr, span: Span) -> Option<Value> {
+        match self.use_cr(cr, span)? {
+            Arg::Typed(v, t) if t.is_bool() => Some(v),
+            Arg::Typed(_, t) => {
+                if let Some(d) = self.err(
+                    COND_NOT_BOOL,
+                    span,
+                    format!(
+                        "this instruction tests the current result, which must be BOOL; it is {t}"
+                    ),
+                ) {
+                    d.help = Some("compare first, e.g. `GT 0` or `EQ x`".into());
+                }
+                None
+            }
+            Arg::Lit(LitClass::Pending(p), _) => {
+                self.materialize(&p, Some(&Ty::BOOL)).map(|(v, _)| v)
+            }
+            Arg::Lit(l, s) => match coerce(&l, &Ty::BOOL) {
+                Ok(c) => {
+                    // The CR is BOOL from here on, so it must live in its local.
+                    self.push(Op::SetCr {
+                        ty: Ty::BOOL,
+                        expr: Expr::Value(Value::Const(c)),
+                    });
+                    Some(Value::Cr(Ty::BOOL))
+                }
+                Err(m) => {
+                    self.err(COND_NOT_BOOL, s, m);
+                    None
+                }
+            },
+        }
+    }
+
+    /// Make an argument a value of type `ty` for `dest` ("`x`", "input `PT` of t"):
+    /// like [`Self::fit`], with a message that names both sides.
+    pub(super) fn fit_to(&mut self, arg: Arg, ty: &Ty, span: Span, dest: &str) -> Option<Value> {
+        if let Arg::Typed(v, t) = &arg
+            && t != ty
+        {
+            {
+                let src = if matches!(v, Value::Cr(_) | Value::Saved(..)) {
+                    "the current result"
+                } else {
+                    "the value"
+                };
+                if let Some(d) = self.err(
+                    TYPE_MISMATCH,
+                    span,
+                    format!("{dest} is {ty}, but {src} is {t}"),
+                ) {
+                    d.help = conversion_hint(t, ty);
+                }
+                return None;
+            }
+        }
+        self.fit(arg, ty, span)
+    }
+
+    /// Make an argument a value of type `ty`.
+    pub(super) fn fit(&mut self, arg: Arg, ty: &Ty, span: Span) -> Option<Value> {
+        match arg {
+            Arg::Typed(v, t) if t == *ty => Some(v),
+            Arg::Typed(_, t) => {
+                if let Some(d) = self.err(TYPE_MISMATCH, span, format!("expected {ty}, found {t}"))
+                {
+                    d.help = conversion_hint(&t, ty);
+                }
+                None
+            }
+            Arg::Lit(l, s) => self.lit_value(&l, ty, s, LITERAL_RANGE),
+        }
+    }
+
+    /// A pending call as an argument where no type is expected: emit it
+    /// with the types its arguments default to.
+    pub(super) fn settle(&mut self, a: Arg) -> Option<Arg> {
+        match a {
+            Arg::Lit(LitClass::Pending(p), _) => {
+                let (v, t) = self.materialize(&p, None)?;
+                Some(Arg::Typed(v, t))
+            }
+            a => Some(a),
+        }
+    }
+
+    pub(super) fn settle_cr(&mut self, cr: Cr) -> Cr {
+        match cr {
+            Cr::Lit(LitClass::Pending(p), _) => match self.materialize(&p, None) {
+                Some((_, t)) => Cr::Val(t),
+                None => Cr::Undef(Why::Error),
+            },
+            cr => cr,
+        }
+    }
+
+    /// Emit a pending call with result type `force` (or its default): the
+    /// CR local of that type holds the result.
+    pub(super) fn materialize(&mut self, p: &Pending, force: Option<&Ty>) -> Option<(Value, Ty)> {
+        let shapes: Vec<stdfn::ArgShape> = p
+            .args
+            .iter()
+            .map(|(a, _)| match a {
+                PendArg::Typed(_, t) => stdfn::ArgShape::Ty(t.clone()),
+                PendArg::Lit(l) => stdfn::ArgShape::Lit(l.clone()),
+            })
+            .collect();
+        let res = match stdfn::resolve(&p.key, &shapes, force) {
+            Ok(r) => r,
+            Err(e) => {
+                if let Some(d) = self.err(TYPE_MISMATCH, p.span, e.message) {
+                    d.notes.push(format!("signature: {}", e.signature));
+                }
+                return None;
+            }
+        };
+        if let Some(f) = force
+            && res.ret != *f
+        {
+            self.err(
+                TYPE_MISMATCH,
+                p.span,
+                format!(
+                    "{} cannot give {f} here (its arguments make it {})",
+                    p.key, res.ret
+                ),
+            );
+            return None;
+        }
+        let mut values = Vec::new();
+        for ((a, s), t) in p.args.iter().zip(&res.params) {
+            let v = match a {
+                PendArg::Typed(v, _) => v.clone(),
+                PendArg::Lit(l) => self.lit_value(l, t, *s, LITERAL_RANGE)?,
+            };
+            values.push(v);
+        }
+        let ret = self.push_std_call(res, values);
+        Some((Value::Cr(ret.clone()), ret))
+    }
+
+    /// A literal (or pending call) as a value of type `ty`.
+    pub(super) fn lit_value(
+        &mut self,
+        l: &LitClass,
+        ty: &Ty,
+        span: Span,
+        code: &'static str,
+    ) -> Option<Value> {
+        if let LitClass::Pending(p) = l {
+            return self.materialize(p, Some(ty)).map(|(v, _)| v);
+        }
+        match coerce(l, ty) {
+            Ok(c) => Some(Value::Const(c)),
+            Err(m) => {
+                self.err(code, span, m);
+                None
+            }
+        }
+    }
+}
