@@ -17,11 +17,12 @@ use crate::ast::*;
 use crate::diag::Diagnostic;
 
 use super::errors::code;
-use super::literal;
+use super::literal_message;
+use il_std::literal;
 
-mod keywords;
 mod body;
 mod decls;
+mod keywords;
 mod literals;
 
 pub(crate) use keywords::is_decl_keyword;
