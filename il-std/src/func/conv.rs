@@ -347,6 +347,9 @@ mod tests {
         assert_eq!(STRING_TO_REAL(st("1.5E3")), 1500.0);
         assert_eq!(STRING_TO_LREAL(st("nope")), 0.0);
         assert!(STRING_TO_BOOL(st("true")) && STRING_TO_BOOL(st("1")) && !STRING_TO_BOOL(st("0")));
+        // Too large for any integer type, but not zero.
+        assert!(STRING_TO_BOOL(st("99999999999999999999999")));
+        assert!(!STRING_TO_BOOL(st("-16#1")));
         assert_eq!(STRING_TO_TIME(st("T#1s500ms")), TIME::from_ms(1500));
         assert_eq!(STRING_TO_TIME(st("time#2s")), TIME::from_secs(2));
         assert_eq!(STRING_TO_TIME(st("250ms")), TIME::from_ms(250));
