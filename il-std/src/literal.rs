@@ -31,7 +31,7 @@ pub enum LiteralError {
         /// The base of the number.
         radix: u32,
     },
-    /// `_` not between two digits (`_1`, `1_`, `1__0`).
+    /// `_` not between two digits (`_1`, `1_`, `1__0`) nor after a duration's unit (`T#5_s`).
     BadUnderscore,
     /// An integer whose magnitude exceeds ULINT's (the largest IEC integer type).
     IntTooLarge,
@@ -368,7 +368,8 @@ pub fn parse_duration(text: &str) -> Result<i64, LiteralError> {
         let int_part = match digits(&text[start..i], 10) {
             Ok(v) => v,
             Err(LiteralError::IntTooLarge) => return Err(LiteralError::DurationOutOfRange),
-            Err(_) => return Err(LiteralError::DurationNeedsNumber),
+            Err(LiteralError::EmptyNumber) => return Err(LiteralError::DurationNeedsNumber),
+            Err(e) => return Err(e),
         };
         let mut frac: i128 = 0;
         let mut frac_scale: i128 = 1;
@@ -387,6 +388,10 @@ pub fn parse_duration(text: &str) -> Result<i64, LiteralError> {
                 return Err(LiteralError::MissingFractionDigits);
             }
             had_fraction = true;
+        }
+        // `_` separates digits or follows a unit, never precedes one (`5_s`, `1__0s`).
+        if b.get(i) == Some(&b'_') {
+            return Err(LiteralError::BadUnderscore);
         }
         let us = i;
         while b.get(i).is_some_and(u8::is_ascii_alphabetic) {
@@ -747,7 +752,11 @@ mod tests {
             ("1.s", MissingFractionDigits),
             ("s", DurationNeedsNumber),
             ("1h_s", DurationNeedsNumber),
-            ("5_s", MissingDurationUnit { start: 0, end: 1 }),
+            ("5_s", BadUnderscore),
+            ("_5s", BadUnderscore),
+            ("1__0s", BadUnderscore),
+            ("1.5_s", BadUnderscore),
+            ("1h__5m", BadUnderscore),
             ("106751d23h47m16s854ms775us808ns", DurationOutOfRange),
             (
                 "99999999999999999999999999999999999999999d",

@@ -279,7 +279,7 @@ fn forms_outside_the_iec_grammar_are_refused() {
     );
     assert_eq!(
         body_err("LD T#5_s", "IL0019", 4),
-        "`5` has no unit: write d, h, m, s, ms, us or ns after the number"
+        "`5_s`: `_` may only separate digits"
     );
     assert_eq!(
         body_err("LD TOD#12:00:00.", "IL0020", 4),
