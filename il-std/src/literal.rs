@@ -31,7 +31,7 @@ pub enum LiteralError {
         /// The base of the number.
         radix: u32,
     },
-    /// `_` not between two digits (`_1`, `1_`, `1__0`) nor after a duration's unit (`T#5_s`).
+    /// `_` not between two digits (`_1`, `1_`, `1__0`) nor just before a duration's unit (`T#5_s`).
     BadUnderscore,
     /// An integer whose magnitude exceeds ULINT's (the largest IEC integer type).
     IntTooLarge,
