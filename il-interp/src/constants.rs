@@ -99,7 +99,7 @@ pub fn parse_literal(ty: &Ty, text: &str) -> Option<Value> {
                 Some((pre, rest)) if Elem::from_name(pre) == Some(*e) => rest,
                 _ => t,
             };
-            let v = il_std::literal::parse_int(body)?;
+            let v = il_std::literal::parse_int(body).ok()?;
             let (lo, hi) = e.int_range()?;
             (lo..=hi).contains(&v).then_some(Value::Int(v, *e))
         }
@@ -108,7 +108,7 @@ pub fn parse_literal(ty: &Ty, text: &str) -> Option<Value> {
                 Some((pre, rest)) if Elem::from_name(pre) == Some(*e) => rest,
                 _ => t,
             };
-            let v = il_std::literal::parse_real(body)?;
+            let v = il_std::literal::parse_real(body).ok()?;
             Some(if *e == Elem::REAL {
                 Value::Real(v as f32)
             } else {

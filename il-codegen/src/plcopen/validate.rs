@@ -228,7 +228,9 @@ fn integer(s: &str) -> Result<(), String> {
     {
         return Err("it is not an integer literal".into());
     }
-    crate::syntax::literal::parse_int(s).map(|_| ())
+    il_std::literal::parse_int(s)
+        .map(|_| ())
+        .map_err(|e| e.to_string())
 }
 
 /// `0`, `16`, `250`: decimal digits only.

@@ -10,13 +10,14 @@ use crate::diag::{Diagnostic, SourceFile, codes::CodeInfo};
 mod actions;
 pub mod errors;
 pub mod lexer;
-pub mod literal;
+mod literal_message;
 
 #[allow(clippy::all, clippy::pedantic, unused, unused_parens, unused_qualifications, non_snake_case, dead_code)]
 #[rustfmt::skip]
 mod grammar;
 
 pub use errors::code;
+pub use literal_message::literal_message;
 
 /// Diagnostic codes of the front end (IL0001..IL0099).
 pub static CODES: &[CodeInfo] = errors::code::CODES;

@@ -248,6 +248,45 @@ fn malformed_durations_and_dates() {
     assert!(body_err("LD DT#2001-01-01", "IL0020", 4).contains("is not a date and time"));
 }
 
+/// Forms the lexer accepted before it shared the runtime's parser
+/// (`il_std::literal`), which follows the IEC grammar: based integers have no
+/// sign, `_` only between digits, duration units in descending order.
+#[test]
+fn forms_outside_the_iec_grammar_are_refused() {
+    assert_eq!(
+        body_err("LD -16#FF", "IL0018", 4),
+        "`-16#FF`: a based integer (`16#FF`) cannot have a sign"
+    );
+    assert_eq!(
+        body_err("LD 1__0.5", "IL0018", 4),
+        "`1__0.5`: `_` may only separate digits"
+    );
+    assert_eq!(
+        body_err("LD 1.5_", "IL0018", 4),
+        "`1.5_`: `_` may only separate digits"
+    );
+    assert_eq!(
+        body_err("LD T#1s1h", "IL0019", 4),
+        "`1s1h`: units must go from days down to nanoseconds, each at most once"
+    );
+    assert_eq!(
+        body_err("LD T#1s_", "IL0019", 4),
+        "`1s_`: a duration cannot end with `_`"
+    );
+    assert_eq!(
+        body_err("LD T#1.s", "IL0019", 4),
+        "`1.s`: expected digits after the decimal point"
+    );
+    assert_eq!(
+        body_err("LD T#5_s", "IL0019", 4),
+        "`5_s`: `_` may only separate digits"
+    );
+    assert_eq!(
+        body_err("LD TOD#12:00:00.", "IL0020", 4),
+        "`12:00:00.`: expected digits after the decimal point"
+    );
+}
+
 #[test]
 fn malformed_strings() {
     assert_eq!(

@@ -45,7 +45,7 @@ fn strip_prefix_ci<'a>(s: &'a str, prefixes: &[&str]) -> &'a str {
     s
 }
 
-fn parse_int_str<const N: usize>(s: STRING<N>) -> Option<i128> {
+fn parse_int_str<const N: usize>(s: STRING<N>) -> Result<i128, literal::LiteralError> {
     let t = trim(s.as_bytes());
     // Accept an optional type prefix such as `INT#`.
     let t = match t.split_once('#') {
@@ -165,7 +165,7 @@ macro_rules! conv_fn {
     (str_to_int, $name:ident, $s:ident, $d:ident) => {
         #[doc = concat!("`", stringify!($name), "`: parses an integer literal (`-12`, `16#FF`); 0 if malformed or out of range.")]
         pub fn $name<const N: usize>(IN: STRING<N>) -> $d {
-            parse_int_str(IN).and_then(|v| <$d>::try_from(v).ok()).unwrap_or(0)
+            parse_int_str(IN).ok().and_then(|v| <$d>::try_from(v).ok()).unwrap_or(0)
         }
     };
     (str_to_real, $name:ident, $s:ident, $d:ident) => {
@@ -178,7 +178,9 @@ macro_rules! conv_fn {
         /// `STRING_TO_BOOL`: `TRUE` for `'TRUE'` (any case) or a non-zero integer, else `FALSE`.
         pub fn $name<const N: usize>(IN: STRING<N>) -> $d {
             let t = trim(IN.as_bytes());
-            t.eq_ignore_ascii_case("TRUE") || parse_int_str(IN).is_some_and(|v| v != 0)
+            // An integer too large to parse is still not zero.
+            t.eq_ignore_ascii_case("TRUE")
+                || parse_int_str(IN).map_or_else(|e| e == literal::LiteralError::IntTooLarge, |v| v != 0)
         }
     };
     (str_to_time, $name:ident, $s:ident, $d:ident) => {
@@ -345,6 +347,9 @@ mod tests {
         assert_eq!(STRING_TO_REAL(st("1.5E3")), 1500.0);
         assert_eq!(STRING_TO_LREAL(st("nope")), 0.0);
         assert!(STRING_TO_BOOL(st("true")) && STRING_TO_BOOL(st("1")) && !STRING_TO_BOOL(st("0")));
+        // Too large for any integer type, but not zero.
+        assert!(STRING_TO_BOOL(st("99999999999999999999999")));
+        assert!(!STRING_TO_BOOL(st("-16#1")));
         assert_eq!(STRING_TO_TIME(st("T#1s500ms")), TIME::from_ms(1500));
         assert_eq!(STRING_TO_TIME(st("time#2s")), TIME::from_secs(2));
         assert_eq!(STRING_TO_TIME(st("250ms")), TIME::from_ms(250));

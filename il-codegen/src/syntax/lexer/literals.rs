@@ -80,7 +80,8 @@ impl<'a> Lexer<'a> {
                     value,
                     text: text.to_string(),
                 },
-                Err(m) => {
+                Err(e) => {
+                    let m = literal_message(e, text);
                     self.diag(code::BAD_NUMBER, start, i, m, "malformed number");
                     LitKind::Int(0)
                 }
@@ -88,14 +89,9 @@ impl<'a> Lexer<'a> {
         } else {
             match literal::parse_int(text) {
                 Ok(v) => LitKind::Int(v),
-                Err(m) => {
-                    self.diag(
-                        code::BAD_NUMBER,
-                        start,
-                        i,
-                        format!("`{text}`: {m}"),
-                        "malformed number",
-                    );
+                Err(e) => {
+                    let m = literal_message(e, text);
+                    self.diag(code::BAD_NUMBER, start, i, m, "malformed number");
                     LitKind::Int(0)
                 }
             }
@@ -160,9 +156,19 @@ impl<'a> Lexer<'a> {
             return None;
         }
         let body = &self.src[start + 1..end - 1];
-        match literal::unescape(body, wide) {
-            Ok(value) => Some((LitKind::String { value, wide }, end)),
-            Err(m) => {
+        // `$hh`/`$hhhh` codes become the character of that code point
+        // (U+FFFD for a lone surrogate), as the emitter expects.
+        let mut value = String::with_capacity(body.len());
+        let r = literal::unescape_string(body, wide, &mut |p| match p {
+            literal::StrPiece::Char(c) => value.push(c),
+            literal::StrPiece::Code(v) => {
+                value.push(char::from_u32(u32::from(v)).unwrap_or('\u{FFFD}'));
+            }
+        });
+        match r {
+            Ok(()) => Some((LitKind::String { value, wide }, end)),
+            Err(e) => {
+                let m = literal_message(e, body);
                 self.diag(code::BAD_STRING, start, end, m, "in this string");
                 Some((
                     LitKind::String {
@@ -212,28 +218,36 @@ impl<'a> Lexer<'a> {
                 let text = take(self, &|c| {
                     is_ident(c) || c == b'.' || c == b'-' || c == b'+'
                 });
-                let r = literal::parse_duration(text).map(|nanos| LitKind::Time { nanos, long });
+                let r = literal::parse_duration(text)
+                    .map(|nanos| LitKind::Time { nanos, long })
+                    .map_err(|e| literal_message(e, text));
                 done(self, r, code::BAD_DURATION, "invalid duration");
             }
             "D" | "DATE" | "LDATE" => {
                 let text = take(self, &|c| {
                     c.is_ascii_alphanumeric() || c == b'-' || c == b'_'
                 });
-                let r = literal::parse_date(text).map(LitKind::Date);
+                let r = literal::parse_date(text)
+                    .map(|d| LitKind::Date(d.0))
+                    .map_err(|e| literal_message(e, text));
                 done(self, r, code::BAD_DATE, "invalid date");
             }
             "TOD" | "TIME_OF_DAY" | "LTOD" | "LTIME_OF_DAY" => {
                 let text = take(self, &|c| {
                     c.is_ascii_alphanumeric() || c == b':' || c == b'.'
                 });
-                let r = literal::parse_tod(text).map(LitKind::Tod);
+                let r = literal::parse_tod(text)
+                    .map(|t| LitKind::Tod(t.0))
+                    .map_err(|e| literal_message(e, text));
                 done(self, r, code::BAD_DATE, "invalid time of day");
             }
             "DT" | "DATE_AND_TIME" | "LDT" | "LDATE_AND_TIME" => {
                 let text = take(self, &|c| {
                     c.is_ascii_alphanumeric() || c == b':' || c == b'.' || c == b'-'
                 });
-                let r = literal::parse_dt(text).map(LitKind::Dt);
+                let r = literal::parse_dt(text)
+                    .map(|t| LitKind::Dt(t.0))
+                    .map_err(|e| literal_message(e, text));
                 done(self, r, code::BAD_DATE, "invalid date and time");
             }
             _ => {

@@ -17,7 +17,8 @@ use crate::ast::*;
 use crate::diag::Diagnostic;
 
 use super::errors::code;
-use super::literal;
+use super::literal_message;
+use il_std::literal;
 
 mod body;
 mod decls;
