@@ -204,12 +204,18 @@ fn time(f: &impl Fn()) -> Duration {
     t.elapsed()
 }
 
+/// Growth allowed from n to 8n: linear is 8x and quadratic 64x; the bound
+/// sits between them, far enough from 8x that cache effects (the large input
+/// no longer fits the caches) and a loaded machine do not fail a linear
+/// stage (seen: 40x for linear code on a machine running 5 builds).
+const LINEAR: f64 = 32.0;
+
 /// How much longer `large` (8x the input) takes than `small`: the fastest
-/// of five runs each, interleaved, with no other test measuring.
+/// of seven runs each, interleaved, with no other test measuring.
 fn ratio(small: impl Fn(), large: impl Fn()) -> (f64, Duration, Duration) {
     let _quiet = quiet();
     let (mut t1, mut t8) = (Duration::MAX, Duration::MAX);
-    for _ in 0..5 {
+    for _ in 0..7 {
         t1 = t1.min(time(&small));
         t8 = t8.min(time(&large));
     }
@@ -232,14 +238,15 @@ fn thousands_of_attributes_are_refused_in_linear_time() {
             .count()
             + 1
     );
-    // Work at n and 8n, measured in this run: linear is 8x, quadratic 64x.
-    let small = with_attributes(30_000);
-    let large = with_attributes(240_000);
-    let (ratio, t1, t8) = ratio(|| drop(import(&small)), || drop(import(&large)));
-    assert!(
-        ratio < 24.0,
-        "8x the attributes took {ratio:.1}x the time ({t1:?} → {t8:?})"
-    );
+    // The refusal comes from the linear pre-pass, before roxmltree (whose
+    // duplicate-attribute check is the quadratic part) sees the element: at
+    // 240,000 attributes it is the same IL0208 at the same tag. (A time
+    // ratio here measured only the linear line table of the 3 MB input, and
+    // was 37x in a debug build on a loaded machine: cache effects, not
+    // growth.)
+    let imp = import(&with_attributes(240_000));
+    assert_eq!(imp.diagnostics.len(), 1, "{:?}", imp.diagnostics);
+    assert_eq!(imp.diagnostics[0].code, "IL0208");
     // Up to the limit, the element is read as usual.
     let imp = import(&with_attributes(limits::MAX_ATTRIBUTES - 1));
     assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
@@ -279,7 +286,7 @@ fn big_body(bytes: usize, escaped: bool) -> String {
 fn assert_linear(what: &str, small: &str, large: &str, f: impl Fn(&str)) {
     let (ratio, t1, t8) = ratio(|| f(small), || f(large));
     assert!(
-        ratio < 24.0,
+        ratio < LINEAR,
         "{what}: 8x the input took {ratio:.1}x the time ({t1:?} → {t8:?})"
     );
 }
@@ -355,8 +362,8 @@ fn one_line_body(bytes: usize) -> String {
 #[test]
 fn xml_lines_of_a_body_on_one_line_take_linear_time() {
     let (small, large) = (
-        import(&one_line_body(32 << 10)),
-        import(&one_line_body(256 << 10)),
+        import(&one_line_body(128 << 10)),
+        import(&one_line_body(1 << 20)),
     );
     let lines = large.xml_lines();
     let body_line = large
@@ -365,7 +372,7 @@ fn xml_lines_of_a_body_on_one_line_take_linear_time() {
     assert!(lines.iter().filter(|&&l| l == body_line).count() > 12000);
     let (ratio, t1, t8) = ratio(|| drop(small.xml_lines()), || drop(large.xml_lines()));
     assert!(
-        ratio < 24.0,
+        ratio < LINEAR,
         "8x the body took {ratio:.1}x the time ({t1:?} → {t8:?})"
     );
 }

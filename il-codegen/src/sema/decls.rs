@@ -352,10 +352,9 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
         }
     }
     // A STRUCT that contains itself has no finite size.
+    let cyclic = cyclic_structs(&env.types);
     for (f, d) in &type_file {
-        if matches!(d.spec, TypeSpec::Struct { .. })
-            && struct_contains(&env.types, &d.name.key(), &d.name.key())
-        {
+        if matches!(d.spec, TypeSpec::Struct { .. }) && cyclic.contains(&d.name.key()) {
             cxs[*f].err(
                 RECURSION,
                 d.name.span,
@@ -693,34 +692,42 @@ fn check_ident(cx: &mut Cx, id: &ast::Ident) {
     }
 }
 
-/// Whether STRUCT `key` reaches STRUCT `target` through its fields (arrays
-/// included). A walk over the field graph that visits each struct once, so
-/// shared and cyclic types stay linear (an unmemoised walk is exponential:
-/// four fields of the same type per level double the work at every level).
-fn struct_contains(t: &TypeTables, key: &str, target: &str) -> bool {
-    let mut seen: HashSet<String> = HashSet::new();
-    let mut todo = vec![key.to_string()];
-    while let Some(k) = todo.pop() {
-        let Some(fields) = t.structs.get(&k) else {
-            continue;
-        };
-        for f in fields {
-            let mut ty = &f.ty;
-            while let Ty::Array { elem, .. } = ty {
-                ty = elem;
-            }
-            if let Ty::Struct(n) = ty {
-                if n.eq_ignore_ascii_case(target) {
-                    return true;
-                }
-                let n = n.to_ascii_uppercase();
-                if seen.insert(n.clone()) {
-                    todo.push(n);
-                }
-            }
-        }
-    }
-    false
+/// The STRUCTs (upper-case keys) that contain themselves through their
+/// fields, arrays included: the nodes on a cycle of the field graph, found
+/// once for all types (a walk from every STRUCT was quadratic on a chain of
+/// thousands of types, and exponential before it was memoised).
+fn cyclic_structs(t: &TypeTables) -> HashSet<String> {
+    let mut keys: Vec<&String> = t.structs.keys().collect();
+    keys.sort();
+    let index: HashMap<&str, usize> = keys
+        .iter()
+        .enumerate()
+        .map(|(i, k)| (k.as_str(), i))
+        .collect();
+    let succ: Vec<Vec<usize>> = keys
+        .iter()
+        .map(|k| {
+            t.structs[*k]
+                .iter()
+                .filter_map(|f| {
+                    let mut ty = &f.ty;
+                    while let Ty::Array { elem, .. } = ty {
+                        ty = elem;
+                    }
+                    match ty {
+                        Ty::Struct(n) => index.get(n.to_ascii_uppercase().as_str()).copied(),
+                        _ => None,
+                    }
+                })
+                .collect()
+        })
+        .collect();
+    let on = super::graph::on_cycle(&succ);
+    keys.into_iter()
+        .zip(on)
+        .filter(|(_, c)| *c)
+        .map(|(k, _)| k.clone())
+        .collect()
 }
 
 pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Option<Ty> {
@@ -1226,10 +1233,9 @@ const CYCLE_REPORTS: usize = 16;
 /// One error for each POU that lies on a cycle of `edges` (up to
 /// [`CYCLE_REPORTS`] per strongly connected component), at the reference that
 /// closes its shortest cycle. Linear in the graph: the components come from
-/// one pass of Kosaraju's algorithm (iterative, so deep call chains cannot
-/// overflow the stack), each path from a breadth-first search inside one
+/// one pass of Kosaraju's algorithm, each path from a breadth-first search inside one
 /// component. (A depth-first search per POU that copied its path was cubic:
-/// 1,000 chained FUNCTIONs took 6 s.)
+/// 1,000 chained FUNCTIONs took 6 s.) Components: [`super::graph`].
 fn report_cycles(cxs: &mut [Cx], env: &Env, edges: &HashMap<String, Vec<(String, usize, Span)>>) {
     let mut keys: Vec<&String> = edges.keys().collect();
     keys.sort();
@@ -1238,7 +1244,6 @@ fn report_cycles(cxs: &mut [Cx], env: &Env, edges: &HashMap<String, Vec<(String,
         .enumerate()
         .map(|(i, k)| (k.as_str(), i))
         .collect();
-    let n = keys.len();
     // Successors by index (targets that are no POU of the program are dropped).
     let succ: Vec<Vec<(usize, usize, Span)>> = keys
         .iter()
@@ -1249,56 +1254,11 @@ fn report_cycles(cxs: &mut [Cx], env: &Env, edges: &HashMap<String, Vec<(String,
                 .collect()
         })
         .collect();
-    let mut pred: Vec<Vec<usize>> = vec![Vec::new(); n];
-    for (i, out) in succ.iter().enumerate() {
-        for &(j, _, _) in out {
-            pred[j].push(i);
-        }
-    }
-    // Pass 1: finishing order.
-    let mut order = Vec::with_capacity(n);
-    let mut seen = vec![false; n];
-    for s in 0..n {
-        if seen[s] {
-            continue;
-        }
-        seen[s] = true;
-        let mut stack = vec![(s, 0usize)];
-        while let Some((v, k)) = stack.pop() {
-            if let Some(&(w, _, _)) = succ[v].get(k) {
-                stack.push((v, k + 1));
-                if !seen[w] {
-                    seen[w] = true;
-                    stack.push((w, 0));
-                }
-            } else {
-                order.push(v);
-            }
-        }
-    }
-    // Pass 2: components on the reversed graph, in reverse finishing order.
-    let mut comp = vec![usize::MAX; n];
-    let mut comps: Vec<Vec<usize>> = Vec::new();
-    for &s in order.iter().rev() {
-        if comp[s] != usize::MAX {
-            continue;
-        }
-        let c = comps.len();
-        let mut members = vec![s];
-        comp[s] = c;
-        let mut todo = vec![s];
-        while let Some(v) = todo.pop() {
-            for &u in &pred[v] {
-                if comp[u] == usize::MAX {
-                    comp[u] = c;
-                    members.push(u);
-                    todo.push(u);
-                }
-            }
-        }
-        members.sort_unstable();
-        comps.push(members);
-    }
+    let plain: Vec<Vec<usize>> = succ
+        .iter()
+        .map(|out| out.iter().map(|e| e.0).collect())
+        .collect();
+    let (comp, comps) = super::graph::components(&plain);
     let name = |i: usize| env.pou(keys[i]).map_or(keys[i].clone(), |s| s.name.clone());
     for (c, members) in comps.iter().enumerate() {
         let cyclic = members.len() > 1 || succ[members[0]].iter().any(|e| e.0 == members[0]);

@@ -5,6 +5,7 @@ pub mod codes;
 mod configuration;
 mod decls;
 mod flow;
+mod graph;
 pub mod ir;
 mod stdfb;
 mod stdfn;
