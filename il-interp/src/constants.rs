@@ -2,7 +2,7 @@
 
 use crate::Machine;
 use crate::places::Step;
-use crate::stdfb::StdFb;
+use crate::values::StdFb;
 use crate::values::{Instance, Value};
 use il_codegen::sema::ir::Init;
 use il_codegen::sema::types::{Elem, Ty};

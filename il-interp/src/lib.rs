@@ -22,14 +22,13 @@ mod constants;
 mod expressions;
 mod flow;
 mod places;
-mod stdfb;
 mod stdfn;
 mod values;
 
 pub use constants::parse_literal;
 /// The runtime the interpreter runs on (for front ends without their own dependency).
 pub use il_std;
-pub use stdfb::StdFb;
+pub use values::StdFb;
 pub use values::{Instance, Value, fmt_dur};
 
 use il_codegen::ast::PouKind;

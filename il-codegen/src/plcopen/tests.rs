@@ -12,10 +12,11 @@ pub(crate) fn check_inputs(inputs: &[Input]) -> Vec<Vec<Diagnostic>> {
     program.check().into_diagnostics()
 }
 
+/// The `.rs` text and warnings of each input.
+type Compiled = Vec<(String, Vec<Diagnostic>)>;
+
 /// The `.rs` text and warnings per input, or every input's diagnostics.
-pub(crate) fn compile_inputs(
-    inputs: &[Input],
-) -> Result<Vec<(String, Vec<Diagnostic>)>, Vec<Vec<Diagnostic>>> {
+pub(crate) fn compile_inputs(inputs: &[Input]) -> Result<Compiled, Vec<Vec<Diagnostic>>> {
     let program = inputs.iter().cloned().fold(Program::new(), Program::input);
     let checked = program.check();
     let opts = crate::emit::Options {

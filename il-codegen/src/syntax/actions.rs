@@ -3,7 +3,7 @@
 
 use lalrpop_util::ErrorRecovery;
 
-use super::errors::code;
+use super::code;
 use super::lexer::{LexError, Tok};
 use crate::ast::*;
 use crate::diag::Diagnostic;

@@ -8,6 +8,7 @@ use crate::ast::{CompilationUnit, Span};
 use crate::diag::{Diagnostic, SourceFile, codes::CodeInfo};
 
 mod actions;
+pub mod code;
 pub mod errors;
 pub mod lexer;
 mod literal_message;
@@ -16,11 +17,10 @@ mod literal_message;
 #[rustfmt::skip]
 mod grammar;
 
-pub use errors::code;
 pub use literal_message::literal_message;
 
 /// Diagnostic codes of the front end (IL0001..IL0099).
-pub static CODES: &[CodeInfo] = errors::code::CODES;
+pub static CODES: &[CodeInfo] = code::CODES;
 
 /// Parse a whole file. Always returns a tree (possibly partial) and every
 /// syntax diagnostic of the file, sorted by position.

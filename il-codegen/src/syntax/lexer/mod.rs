@@ -16,7 +16,7 @@
 use crate::ast::*;
 use crate::diag::Diagnostic;
 
-use super::errors::code;
+use super::code;
 use super::literal_message;
 use il_std::literal;
 
