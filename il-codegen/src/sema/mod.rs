@@ -4,9 +4,14 @@
 pub mod codes;
 mod configuration;
 mod decls;
+mod env;
 mod flow;
 mod graph;
+mod init;
 pub mod ir;
+mod literals;
+mod recursion;
+mod resolve;
 mod stdfb;
 mod stdfn;
 pub mod types;
@@ -74,7 +79,7 @@ pub fn check_all(
         }
         programs.push(program);
     }
-    decls::check_recursion(&mut cxs, &env, &asts);
+    recursion::check_recursion(&mut cxs, &env, &asts);
     (programs, cxs.into_iter().map(|c| c.diags).collect())
 }
 

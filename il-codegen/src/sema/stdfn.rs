@@ -2,8 +2,8 @@
 //! (`il_std::signature`), the one table that the runtime, the checker and the
 //! emitter share.
 
-use super::decls::LitClass;
 use super::ir::StdCall;
+use super::literals::LitClass;
 use super::types::{DEFAULT_STRING_LEN, Elem, Ty};
 use crate::ast::{Ident, Span};
 use il_std::signature::{self as sig, Class, Ext, ParamTy, Signature};

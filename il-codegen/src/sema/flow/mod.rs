@@ -6,8 +6,9 @@
 //! report diagnostics and build the IR with those states.
 
 use super::codes::*;
-use super::decls::{Env, LitClass, PendArg, Pending, PouSig, coerce, describe, lit_class};
+use super::env::{Env, PouSig};
 use super::ir::{self, BinOp, CheckedPou, Const, Expr, Op, PathElem, Place, Root, Value};
+use super::literals::{LitClass, PendArg, Pending, coerce, describe, lit_class};
 use super::types::{Elem, Ty};
 use super::{Cx, stdfb, stdfn, suggest};
 use crate::ast::{

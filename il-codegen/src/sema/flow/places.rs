@@ -8,7 +8,7 @@ impl Walk<'_, '_> {
         if !self.final_pass {
             // Resolution reports errors; report them once, on the final pass.
             let saved = std::mem::take(&mut self.cx.diags);
-            let l = super::super::decls::resolve_addr(self.cx, a, None);
+            let l = super::super::resolve::resolve_addr(self.cx, a, None);
             self.cx.diags = saved;
             return l.map(|l| Place {
                 range: None,
@@ -17,7 +17,7 @@ impl Walk<'_, '_> {
                 path: Vec::new(),
             });
         }
-        let l = super::super::decls::resolve_addr(self.cx, a, None)?;
+        let l = super::super::resolve::resolve_addr(self.cx, a, None)?;
         if write && l.area == ast::Area::Input {
             self.err(
                 NOT_WRITABLE,

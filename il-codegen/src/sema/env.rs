@@ -1,0 +1,97 @@
+//! The environment the checker works in: every POU's interface, the
+//! resolved user types, and the names of FBs and types while they resolve.
+
+use super::ir::{Field, TypeDef, Var};
+use super::types::Ty;
+use crate::ast::{self, PouKind, Span};
+use std::collections::{HashMap, HashSet};
+
+/// The interfaces of every POU of the unit, by upper-case name.
+pub(crate) struct Env {
+    pub pous: HashMap<String, PouSig>,
+    pub types: TypeTables,
+    /// Checked configurations, with the index of the declaring file.
+    pub configs: Vec<(usize, super::ir::ConfigDef)>,
+    /// Whether an FB (upper-case name) holds anything RETAIN, directly or in
+    /// a nested instance: memoised, because instance trees share subtrees and
+    /// an unmemoised walk is exponential in the nesting depth.
+    pub holds_retain: std::cell::RefCell<HashMap<String, bool>>,
+}
+
+/// Resolved user types.
+#[derive(Default)]
+pub(crate) struct TypeTables {
+    /// STRUCT key → its fields.
+    pub structs: HashMap<String, Vec<Field>>,
+    /// Enumeration key → (name as declared, values).
+    pub enums: HashMap<String, (String, Vec<String>)>,
+    /// Items to emit, with the index of the declaring file.
+    pub defs: Vec<(usize, TypeDef)>,
+}
+
+impl TypeTables {
+    /// The enumeration that has a value `name`, if exactly one has.
+    pub fn enum_of_value(&self, name: &str) -> Option<(String, String)> {
+        let mut found = self.enums.values().filter_map(|(ty, vals)| {
+            vals.iter()
+                .find(|v| v.eq_ignore_ascii_case(name))
+                .map(|v| (ty.clone(), v.clone()))
+        });
+        let first = found.next()?;
+        found.next().is_none().then_some(first)
+    }
+}
+
+/// Every name a declaration can refer to, across all files.
+pub(crate) struct Names<'u> {
+    /// POU key → (name as declared, kind).
+    pub pous: HashMap<String, (String, PouKind)>,
+    /// User type key → its declaration.
+    pub types: HashMap<String, &'u ast::TypeDecl>,
+    pub(crate) depth: std::cell::Cell<u32>,
+}
+
+pub(crate) struct PouSig {
+    pub kind: PouKind,
+    pub name: String,
+    pub vars: Vec<Var>,
+    /// Upper-case name → index into `vars`.
+    pub index: HashMap<String, usize>,
+    pub ret: Option<Ty>,
+    /// Index of the source file that declares it.
+    pub file: usize,
+    /// Variables whose declaration had an error (their uses are not reported).
+    pub poisoned: HashSet<String>,
+    /// The POU's name where it is declared (a duplicate has another span).
+    pub span: Span,
+}
+
+impl PouSig {
+    pub fn var(&self, name: &str) -> Option<(usize, &Var)> {
+        // Called for every variable reference: upper-case short names on
+        // the stack instead of allocating a String per lookup.
+        let mut buf = [0u8; 64];
+        let i = match buf.get_mut(..name.len()) {
+            Some(b) => {
+                b.copy_from_slice(name.as_bytes());
+                b.make_ascii_uppercase();
+                *self.index.get(std::str::from_utf8(b).ok()?)?
+            }
+            None => *self.index.get(&name.to_ascii_uppercase())?,
+        };
+        Some((i, &self.vars[i]))
+    }
+    /// Inputs in declaration order (what a non-formal call fills).
+    pub fn inputs(&self) -> impl Iterator<Item = (usize, &Var)> {
+        self.vars
+            .iter()
+            .enumerate()
+            .filter(|(_, v)| v.kind == ast::VarKind::Input)
+    }
+}
+
+impl Env {
+    pub fn pou(&self, name: &str) -> Option<&PouSig> {
+        self.pous.get(&name.to_ascii_uppercase())
+    }
+}

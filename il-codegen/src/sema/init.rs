@@ -1,0 +1,173 @@
+//! Initial values of declarations, checked against their types.
+
+use super::codes::*;
+use super::env::*;
+use super::ir::{Const, Init};
+use super::literals::*;
+use super::types::Ty;
+use super::{Cx, stdfb};
+use crate::ast::{Initializer, LitKind, Literal, Operand};
+
+pub(crate) fn init_value(
+    cx: &mut Cx,
+    types: &TypeTables,
+    init: &Initializer,
+    ty: &Ty,
+    range: Option<(i128, i128)>,
+) -> Option<Init> {
+    match (init, ty) {
+        (Initializer::Simple(Operand::Lit(lit)), Ty::Elem(_) | Ty::Str { .. }) => {
+            match coerce(&lit_class(lit), ty) {
+                Ok(Const::Int(v, e)) if range.is_some_and(|(lo, hi)| v < lo || v > hi) => {
+                    let (lo, hi) = range.unwrap_or_default();
+                    cx.err(
+                        BAD_INIT,
+                        lit.span,
+                        format!("{v} is outside the subrange {lo}..{hi}"),
+                    );
+                    let _ = e;
+                    None
+                }
+                Ok(c) => Some(Init::Const(c)),
+                Err(msg) => {
+                    cx.err(BAD_INIT, lit.span, msg);
+                    None
+                }
+            }
+        }
+        (Initializer::Simple(o), Ty::Enum(name)) => {
+            let value = match o {
+                Operand::Lit(Literal {
+                    kind: LitKind::Enum { ty: t, value },
+                    ..
+                }) if t.is(name) => value,
+                Operand::Var(v) if v.path.is_empty() => &v.base,
+                _ => {
+                    cx.err(
+                        BAD_INIT,
+                        o.span(),
+                        format!("expected a value of the enumeration {name}"),
+                    );
+                    return None;
+                }
+            };
+            let vals = types
+                .enums
+                .get(&name.to_ascii_uppercase())
+                .map(|(_, v)| v.clone())
+                .unwrap_or_default();
+            match vals.iter().find(|v| value.is(v)) {
+                Some(v) => Some(Init::Const(Const::Enum {
+                    ty: name.clone(),
+                    value: v.clone(),
+                })),
+                None => {
+                    cx.err(
+                        BAD_INIT,
+                        o.span(),
+                        format!("`{value}` is not a value of {name} ({})", vals.join(", ")),
+                    );
+                    None
+                }
+            }
+        }
+        (Initializer::Struct { fields, .. }, Ty::Struct(name)) => {
+            let defs = types
+                .structs
+                .get(&name.to_ascii_uppercase())
+                .cloned()
+                .unwrap_or_default();
+            let mut out = Vec::new();
+            for (fname, v) in fields {
+                let Some(f) = defs.iter().find(|f| fname.is(&f.name)) else {
+                    cx.err(
+                        UNKNOWN_MEMBER,
+                        fname.span,
+                        format!("{name} has no field `{fname}`"),
+                    );
+                    continue;
+                };
+                if let Some(i) = init_value(cx, types, v, &f.ty, f.range) {
+                    out.push((f.name.clone(), f.ty.clone(), i));
+                }
+            }
+            Some(Init::Struct(out))
+        }
+        (Initializer::Array { elems, span }, Ty::Array { dims, elem }) => {
+            let total: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
+            let mut out = Vec::new();
+            // Each count is at most `total` (16 million): their sum over any
+            // source text fits an i64.
+            let mut len: i64 = 0;
+            for (count, e) in elems {
+                let n = match count {
+                    None => 1,
+                    Some(Literal {
+                        kind: LitKind::Int(n),
+                        ..
+                    }) if (0..=total as i128).contains(n) => *n as i64,
+                    Some(l) => {
+                        cx.err(
+                            BAD_INIT,
+                            l.span,
+                            "a repeat count must be a small non-negative integer",
+                        );
+                        return None;
+                    }
+                };
+                let Some(Init::Const(c)) = init_value(cx, types, e, elem, None) else {
+                    if !matches!(e, Initializer::Simple(Operand::Lit(_))) {
+                        cx.err(UNSUPPORTED, e.span(), "array elements must be literals");
+                    }
+                    return None;
+                };
+                len += n;
+                if n > 0 {
+                    out.push((n as usize, c));
+                }
+            }
+            if len > total {
+                cx.err(
+                    BAD_INIT,
+                    *span,
+                    format!("{len} initial values for an array of {total} elements"),
+                );
+                return None;
+            }
+            Some(Init::Array(out))
+        }
+        (Initializer::Struct { fields, .. }, Ty::Fb(fb)) => {
+            let Some(std) = stdfb::lookup(fb) else {
+                cx.err(
+                    UNSUPPORTED,
+                    init.span(),
+                    "initial values of user FB instances are not supported yet",
+                );
+                return None;
+            };
+            let mut out = Vec::new();
+            for (name, v) in fields {
+                let Some((iec, e)) = std.inputs.iter().find(|(n, _)| name.is(n)) else {
+                    cx.err(
+                        UNKNOWN_MEMBER,
+                        name.span,
+                        format!("{fb} has no input `{name}`"),
+                    );
+                    continue;
+                };
+                if let Some(Init::Const(c)) = init_value(cx, types, v, &Ty::Elem(*e), None) {
+                    out.push((iec.to_string(), c));
+                }
+            }
+            Some(Init::Fields(out))
+        }
+        _ => {
+            cx.err(
+                BAD_INIT,
+                init.span(),
+                format!("this initial value does not fit type {ty}"),
+            );
+            None
+        }
+    }
+}
