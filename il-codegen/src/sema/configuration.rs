@@ -6,9 +6,9 @@
 //! located variable, so no reference to it needs passing around.
 
 use super::codes::*;
-use super::decls::pou_sig;
 use super::env::{Env, Names, PouSig};
 use super::init::init_value;
+use super::interface::pou_sig;
 use super::ir::{
     ConfigDef, GlobalRef, Init, ProgArg, ProgramInst, ResourceDef, Retained, TaskDef, Var,
 };

@@ -8,6 +8,7 @@ mod env;
 mod flow;
 mod graph;
 mod init;
+mod interface;
 pub mod ir;
 mod literals;
 mod recursion;
