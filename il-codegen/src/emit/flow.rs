@@ -9,7 +9,7 @@
 //! - Any other pattern (a jump into a loop, overlapping loops): a dispatcher
 //!   loop over the code between labels, `__pc` holding the next block.
 
-use super::Pou;
+use super::PouEmitter;
 use crate::ast::PouKind;
 use crate::sema::ir::{Op, PathElem, Stmt, Value};
 use crate::sema::types::Ty;
@@ -128,7 +128,7 @@ fn lifetime(name: &str) -> TokenStream {
     t
 }
 
-impl Pou<'_> {
+impl PouEmitter<'_> {
     pub(crate) fn body(&self) -> TokenStream {
         let mut stmts: &[Stmt] = &self.pou.body;
         // A RET at the very end is where the body ends anyway.

@@ -91,12 +91,14 @@ fn is_std_fb(name: &str) -> bool {
     crate::sema::is_std_fb(name)
 }
 
-struct Pou<'a> {
+/// Emits one checked POU (the checked IR's `CheckedPou`; not the AST's
+/// `ast::Pou`).
+struct PouEmitter<'a> {
     pou: &'a CheckedPou,
     opts: Options,
 }
 
-impl Pou<'_> {
+impl PouEmitter<'_> {
     /// Whether variable `i` is a field of `self` (FB/PROGRAM memory).
     fn field(&self, i: usize) -> bool {
         self.pou.vars[i].storage == Storage::Instance
@@ -116,7 +118,7 @@ impl Pou<'_> {
 }
 
 fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
-    let p = Pou { pou, opts };
+    let p = PouEmitter { pou, opts };
     let name = item_ident(&pou.name);
     let body = p.body();
     let cr_locals = pou.cr_types.iter().map(|t| {

@@ -1,6 +1,6 @@
 //! Values, places and expressions.
 
-use super::{Pou, item_ident, local_ident, rust_ident, rust_ty};
+use super::{PouEmitter, item_ident, local_ident, rust_ident, rust_ty};
 use crate::ast::Area;
 use crate::sema::ir::{
     BinOp, Const, Expr, Init, Loc, PathElem, Place, Root, StdCall, Storage, Value,
@@ -155,7 +155,7 @@ pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
     }
 }
 
-impl Pou<'_> {
+impl PouEmitter<'_> {
     /// `__ctx.fault(..)` of the kind a checked standard call carries.
     pub(crate) fn fault_of(&self, kind: FaultKind, line: u32) -> TokenStream {
         self.fault(&format!("{kind:?}"), line)
