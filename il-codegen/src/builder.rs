@@ -214,6 +214,32 @@ mod tests {
     }
 
     #[test]
+    fn unreadable_text_names_its_position_and_encoding() {
+        let dir = std::env::temp_dir().join(format!("il-builder-enc-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let latin1 = dir.join("latin1.il");
+        std::fs::write(&latin1, b"PROGRAM p\n(* Gr\xF6\xDFe *)\nEND_PROGRAM\n").unwrap();
+        let utf16 = dir.join("utf16.il");
+        let mut bytes = vec![0xFF, 0xFE];
+        bytes.extend("PROGRAM p\n".encode_utf16().flat_map(u16::to_le_bytes));
+        std::fs::write(&utf16, bytes).unwrap();
+        for (file, want) in [
+            (&latin1, "invalid byte 0xF6 at line 2, byte 6 of the line"),
+            (&utf16, "UTF-16 text (little-endian, with a byte order mark)"),
+        ] {
+            let e = Builder::new()
+                .file(file)
+                .out_dir(&dir)
+                .cargo_directives(false)
+                .compile()
+                .unwrap_err();
+            assert!(e.to_string().contains(want), "{e}");
+            assert!(e.to_string().contains(&file.display().to_string()), "{e}");
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
     fn plcopen_file_becomes_stem_rs_and_errors_show_xml_lines() {
         let dir = std::env::temp_dir().join(format!("il-builder-xml-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
