@@ -225,7 +225,10 @@ mod tests {
         std::fs::write(&utf16, bytes).unwrap();
         for (file, want) in [
             (&latin1, "invalid byte 0xF6 at line 2, byte 6 of the line"),
-            (&utf16, "UTF-16 text (little-endian, with a byte order mark)"),
+            (
+                &utf16,
+                "UTF-16 text (little-endian, with a byte order mark)",
+            ),
         ] {
             let e = Builder::new()
                 .file(file)
