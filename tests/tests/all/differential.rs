@@ -1,4 +1,4 @@
-//! Differential testing: random well-typed IL programs (tests/differential/gen.rs)
+//! Differential testing: random well-typed IL programs (tests/differential/gen/)
 //! run under the reference interpreter and as generated Rust, compared variable
 //! by variable after every scan (plus the fault count and the last fault).
 //!
@@ -17,7 +17,7 @@
 //! `tests/differential/compiler-bugs/` holds reproducers of compiler bugs the
 //! generator found (and now avoids).
 
-#[path = "../../differential/gen.rs"]
+#[path = "../../differential/gen/mod.rs"]
 mod generator;
 
 use generator::{Lit, Program, T};

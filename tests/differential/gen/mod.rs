@@ -1,0 +1,475 @@
+//! A generator of random, well-typed IL programs for differential testing
+//! (interpreter vs generated Rust). Deterministic: a seed gives one program.
+//!
+//! Every program has a user FUNCTION `Fn1`, a user FUNCTION_BLOCK `Blk` and a
+//! PROGRAM `Main` whose VAR_INPUTs are driven with random values each scan.
+//! Bodies cover every expression operator with and without `N`, `NOT`,
+//! deferred parentheses (short and long form, nested), conversions, standard
+//! functions, forward jumps with the CR carried to the label, bounded backward
+//! loops, RETC, S/R, the standard blocks (timers with time advancing,
+//! counters, edges, bistables) by CAL with formal lists and by input
+//! operators, arrays with variable (possibly out-of-range) subscripts, and
+//! integer DIV/MOD by (runtime) zero.
+
+#![allow(dead_code)]
+
+mod bodies;
+
+/// xorshift64*.
+pub struct Rng(u64);
+
+impl Rng {
+    pub fn new(seed: u64) -> Rng {
+        Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1)
+    }
+    pub fn next(&mut self) -> u64 {
+        let mut x = self.0;
+        x ^= x >> 12;
+        x ^= x << 25;
+        x ^= x >> 27;
+        self.0 = x;
+        x.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+    pub fn below(&mut self, n: usize) -> usize {
+        (self.next() % n.max(1) as u64) as usize
+    }
+    pub fn chance(&mut self, percent: u64) -> bool {
+        self.next() % 100 < percent
+    }
+    pub fn pick<'a, T>(&mut self, xs: &'a [T]) -> &'a T {
+        &xs[self.below(xs.len())]
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum T {
+    Bool,
+    Sint,
+    Int,
+    Dint,
+    Lint,
+    Usint,
+    Uint,
+    Udint,
+    Ulint,
+    Byte,
+    Word,
+    Dword,
+    Lword,
+    Real,
+    Lreal,
+    Time,
+}
+
+pub const NUMERIC: &[T] = &[
+    T::Sint,
+    T::Int,
+    T::Dint,
+    T::Lint,
+    T::Usint,
+    T::Uint,
+    T::Udint,
+    T::Ulint,
+    T::Real,
+    T::Lreal,
+];
+pub const BITS: &[T] = &[T::Byte, T::Word, T::Dword, T::Lword];
+
+impl T {
+    pub fn name(self) -> &'static str {
+        match self {
+            T::Bool => "BOOL",
+            T::Sint => "SINT",
+            T::Int => "INT",
+            T::Dint => "DINT",
+            T::Lint => "LINT",
+            T::Usint => "USINT",
+            T::Uint => "UINT",
+            T::Udint => "UDINT",
+            T::Ulint => "ULINT",
+            T::Byte => "BYTE",
+            T::Word => "WORD",
+            T::Dword => "DWORD",
+            T::Lword => "LWORD",
+            T::Real => "REAL",
+            T::Lreal => "LREAL",
+            T::Time => "TIME",
+        }
+    }
+    pub fn rust(self) -> &'static str {
+        match self {
+            T::Bool => "bool",
+            T::Sint => "i8",
+            T::Int => "i16",
+            T::Dint => "i32",
+            T::Lint => "i64",
+            T::Usint | T::Byte => "u8",
+            T::Uint | T::Word => "u16",
+            T::Udint | T::Dword => "u32",
+            T::Ulint | T::Lword => "u64",
+            T::Real => "f32",
+            T::Lreal => "f64",
+            T::Time => "il_std::TIME",
+        }
+    }
+    pub fn is_int(self) -> bool {
+        matches!(
+            self,
+            T::Sint | T::Int | T::Dint | T::Lint | T::Usint | T::Uint | T::Udint | T::Ulint
+        )
+    }
+    pub fn is_signed(self) -> bool {
+        matches!(self, T::Sint | T::Int | T::Dint | T::Lint)
+    }
+    pub fn is_bits(self) -> bool {
+        matches!(self, T::Byte | T::Word | T::Dword | T::Lword)
+    }
+    pub fn is_real(self) -> bool {
+        matches!(self, T::Real | T::Lreal)
+    }
+    pub fn is_num(self) -> bool {
+        self.is_int() || self.is_real()
+    }
+    pub fn range(self) -> (i128, i128) {
+        match self {
+            T::Bool => (0, 1),
+            T::Sint => (i8::MIN as i128, i8::MAX as i128),
+            T::Int => (i16::MIN as i128, i16::MAX as i128),
+            T::Dint => (i32::MIN as i128, i32::MAX as i128),
+            T::Lint => (i64::MIN as i128, i64::MAX as i128),
+            T::Usint | T::Byte => (0, u8::MAX as i128),
+            T::Uint | T::Word => (0, u16::MAX as i128),
+            T::Udint | T::Dword => (0, u32::MAX as i128),
+            _ => (0, u64::MAX as i128),
+        }
+    }
+}
+
+/// A value to drive an input with.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Lit {
+    Bool(bool),
+    Int(i128),
+    Real(f64),
+    /// Nanoseconds.
+    Time(i64),
+}
+
+#[derive(Clone, Debug)]
+pub struct Var {
+    pub name: String,
+    pub ty: T,
+}
+
+pub struct Program {
+    pub il: String,
+    /// Inputs of `Main`, with the value of each scan.
+    pub inputs: Vec<Var>,
+    pub scans: Vec<Vec<Lit>>,
+    /// Time advanced after each scan (ns).
+    pub step_ns: i64,
+}
+
+struct Pou<'r> {
+    rng: &'r mut Rng,
+    lines: Vec<String>,
+    vars: Vec<Var>,
+    /// Variables not to store into (loop counters, inputs of functions...).
+    readonly: Vec<String>,
+    labels: usize,
+    loops: usize,
+    /// Standard blocks and user blocks available: (instance, type).
+    fbs: Vec<(String, &'static str)>,
+    has_fn: Option<T>,
+    arrays: Vec<(String, T, i64, i64)>,
+    in_function: bool,
+    max_loops: usize,
+    /// Fn1 stores ENO, so a call may read it with `ENO =>`.
+    fn_eno: bool,
+}
+
+fn int_lit(rng: &mut Rng, t: T) -> i128 {
+    let (lo, hi) = t.range();
+    match rng.below(6) {
+        0 => lo,
+        1 => hi,
+        2 => 0,
+        3 => 1.min(hi),
+        4 if t.is_signed() => -1,
+        _ => {
+            let span = (hi - lo) as u128;
+            lo + (rng.next() as u128 % (span + 1)) as i128
+        }
+    }
+}
+
+pub fn random_lit(rng: &mut Rng, t: T) -> Lit {
+    match t {
+        T::Bool => Lit::Bool(rng.chance(50)),
+        T::Real | T::Lreal => {
+            Lit::Real(*rng.pick(&[0.0, 1.0, -1.5, 0.1, 1e9, -3.25e-3, 123.456, 7.0, -0.0]))
+        }
+        T::Time => Lit::Time(*rng.pick(&[0, 5, 10, 25, 100, 1500]) * 1_000_000),
+        _ => Lit::Int(int_lit(rng, t)),
+    }
+}
+
+fn decls(vars: &[Var]) -> String {
+    vars.iter()
+        .map(|v| format!("    {} : {};\n", v.name, v.ty.name()))
+        .collect()
+}
+
+/// Generate program number `seed`.
+pub fn generate(seed: u64) -> Program {
+    let mut rng = Rng::new(seed);
+    let mut types = vec![T::Bool];
+    for _ in 0..1 + rng.below(3) {
+        let t = *rng.pick(&[NUMERIC, BITS].concat());
+        if !types.contains(&t) {
+            types.push(t);
+        }
+    }
+    let with_time = rng.chance(50);
+    if with_time {
+        types.push(T::Time);
+    }
+    if !types.contains(&T::Int) && rng.chance(50) {
+        types.push(T::Int);
+    }
+    if types.contains(&T::Time) && !types.contains(&T::Dint) && rng.chance(50) {
+        types.push(T::Dint);
+    }
+    let ft = *rng.pick(
+        &types[1..]
+            .iter()
+            .copied()
+            .filter(|t| *t != T::Time)
+            .collect::<Vec<_>>()
+            .into_iter()
+            .chain([T::Int])
+            .collect::<Vec<_>>(),
+    );
+    let mut il = String::new();
+
+    let fn_eno = rng.chance(50);
+    // FUNCTION Fn1 : ft
+    {
+        let vars = vec![
+            Var {
+                name: "a".into(),
+                ty: ft,
+            },
+            Var {
+                name: "b".into(),
+                ty: ft,
+            },
+            Var {
+                name: "flag".into(),
+                ty: T::Bool,
+            },
+        ];
+        let mut p = Pou {
+            rng: &mut rng,
+            lines: Vec::new(),
+            vars: vars.clone(),
+            readonly: vec!["a".into(), "b".into(), "flag".into()],
+            labels: 0,
+            loops: 0,
+            fbs: Vec::new(),
+            has_fn: None,
+            arrays: Vec::new(),
+            in_function: true,
+            max_loops: 0,
+            fn_eno: false,
+        };
+        p.vars.push(Var {
+            name: "tmp".into(),
+            ty: ft,
+        });
+        p.vars.push(Var {
+            name: "tb".into(),
+            ty: T::Bool,
+        });
+        if fn_eno {
+            p.emit("LD flag");
+            p.emit("ST ENO");
+        }
+        for _ in 0..1 + p.rng.below(3) {
+            p.block(&[ft, T::Bool], 1);
+        }
+        let first = if p.rng.chance(50) { "a" } else { "tmp" };
+        p.emit(format!("LD {first}"));
+        p.same_type_op(ft, 0);
+        p.emit("ST Fn1");
+        if p.rng.chance(30) {
+            p.emit("LD flag");
+            p.emit("RETC");
+            p.emit("LD tmp");
+            p.emit("ST Fn1");
+        }
+        il.push_str(&format!(
+            "FUNCTION Fn1 : {}\nVAR_INPUT\n{}END_VAR\nVAR\n    tmp : {};\n    tb : BOOL;\nEND_VAR\n{}\nEND_FUNCTION\n\n",
+            ft.name(),
+            decls(&vars),
+            ft.name(),
+            p.lines.join("\n")
+        ));
+    }
+
+    // FUNCTION_BLOCK Blk
+    {
+        let ins = vec![
+            Var {
+                name: "x".into(),
+                ty: ft,
+            },
+            Var {
+                name: "en".into(),
+                ty: T::Bool,
+            },
+        ];
+        let outs = vec![
+            Var {
+                name: "y".into(),
+                ty: ft,
+            },
+            Var {
+                name: "q".into(),
+                ty: T::Bool,
+            },
+        ];
+        let locals = vec![
+            Var {
+                name: "acc".into(),
+                ty: ft,
+            },
+            Var {
+                name: "m".into(),
+                ty: T::Bool,
+            },
+            Var {
+                name: "cnt0".into(),
+                ty: T::Int,
+            },
+            Var {
+                name: "cnt1".into(),
+                ty: T::Int,
+            },
+        ];
+        let mut p = Pou {
+            rng: &mut rng,
+            lines: Vec::new(),
+            vars: [ins.clone(), outs.clone(), locals.clone()].concat(),
+            readonly: vec!["x".into(), "en".into()],
+            labels: 0,
+            loops: 0,
+            fbs: vec![("rt".into(), "R_TRIG")],
+            has_fn: Some(ft),
+            arrays: Vec::new(),
+            in_function: false,
+            max_loops: 2,
+            fn_eno,
+        };
+        for _ in 0..1 + p.rng.below(4) {
+            p.block(&[ft, T::Bool], 0);
+        }
+        il.push_str(&format!(
+            "FUNCTION_BLOCK Blk\nVAR_INPUT\n{}END_VAR\nVAR_OUTPUT\n{}END_VAR\nVAR\n{}    rt : R_TRIG;\nEND_VAR\n{}\nEND_FUNCTION_BLOCK\n\n",
+            decls(&ins),
+            decls(&outs),
+            decls(&locals),
+            p.lines.join("\n")
+        ));
+    }
+
+    // PROGRAM Main
+    let mut inputs = Vec::new();
+    let mut locals = Vec::new();
+    for &t in &types {
+        for k in 0..2 {
+            inputs.push(Var {
+                name: format!("i{}_{k}", t.name().to_lowercase()),
+                ty: t,
+            });
+            locals.push(Var {
+                name: format!("v{}_{k}", t.name().to_lowercase()),
+                ty: t,
+            });
+        }
+    }
+    let n_loops = 4;
+    for k in 0..n_loops {
+        locals.push(Var {
+            name: format!("cnt{k}"),
+            ty: T::Int,
+        });
+    }
+    let arr_t = types[rng.below(types.len())];
+    let arrays = vec![("arr".to_string(), arr_t, 0i64, 3i64)];
+    let mut fbs: Vec<(String, &'static str)> = vec![
+        ("r1".into(), "R_TRIG"),
+        ("f1".into(), "F_TRIG"),
+        ("s1".into(), "SR"),
+        ("b1".into(), "Blk"),
+    ];
+    if types.contains(&T::Int) {
+        fbs.push(("c1".into(), "CTU"));
+        fbs.push(("c2".into(), "CTD"));
+        fbs.push(("c3".into(), "CTUD"));
+    }
+    fbs.push(("rs1".into(), "RS"));
+    fbs.push(("t1".into(), "TON"));
+    fbs.push(("t2".into(), "TOF"));
+    fbs.push(("t3".into(), "TP"));
+    let body = {
+        let mut p = Pou {
+            rng: &mut rng,
+            lines: Vec::new(),
+            vars: [inputs.clone(), locals.clone()].concat(),
+            readonly: inputs.iter().map(|v| v.name.clone()).collect(),
+            labels: 0,
+            loops: 0,
+            fbs: fbs.clone(),
+            has_fn: Some(ft),
+            arrays: arrays.clone(),
+            in_function: false,
+            max_loops: n_loops,
+            fn_eno,
+        };
+        let n = 3 + p.rng.below(8);
+        for _ in 0..n {
+            p.block(&types, 0);
+        }
+        if p.rng.chance(30) {
+            p.bool_cond();
+            p.emit("RETC");
+            p.block(&types, 2);
+        }
+        p.lines.join("\n")
+    };
+    let fb_decls: String = fbs
+        .iter()
+        .map(|(n, t)| format!("    {n} : {t};\n"))
+        .collect();
+    il.push_str(&format!(
+        "PROGRAM Main\nVAR_INPUT\n{}END_VAR\nVAR\n{}    arr : ARRAY[0..3] OF {};\n{}END_VAR\n{}\nEND_PROGRAM\n",
+        decls(&inputs),
+        decls(&locals),
+        arr_t.name(),
+        fb_decls,
+        body
+    ));
+
+    let n_scans = 4 + rng.below(4);
+    let mut scans = Vec::new();
+    for _ in 0..n_scans {
+        scans.push(inputs.iter().map(|v| random_lit(&mut rng, v.ty)).collect());
+    }
+    Program {
+        il,
+        inputs,
+        scans,
+        step_ns: *rng.pick(&[1_000_000i64, 5_000_000, 10_000_000]),
+    }
+}
