@@ -175,10 +175,7 @@ const EXPECTED: &[Entry] = &[
 ];
 
 fn corpus_dir() -> PathBuf {
-    PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../shared/corpus"
-    ))
+    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/corpus"))
 }
 
 fn is_corpus_file(p: &Path) -> bool {

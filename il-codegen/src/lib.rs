@@ -21,7 +21,7 @@ pub mod plcopen;
 pub mod sema;
 pub mod syntax;
 
-pub use builder::{Builder, Error, write_if_changed};
+pub use builder::{Builder, Error, output_paths, write_if_changed};
 pub use check::{check_source, check_sources};
 pub use compile::{Compiled, compile, compile_all_to_files, compile_to_file, format_file};
 pub use input::{Input, check_inputs, compile_inputs};

@@ -76,10 +76,7 @@ const VALID: &[&str] = &[
 ];
 
 fn corpus() -> Vec<String> {
-    let dir = PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../shared/corpus"
-    ));
+    let dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/corpus"));
     let Ok(entries) = std::fs::read_dir(&dir) else {
         println!(
             "corpus not found at {}: mutating only the built-in programs",
