@@ -250,6 +250,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
             let mut vals = Vec::new();
             let mut seen_vals: HashSet<String> = HashSet::new();
             for v in values {
+                check_ident(&mut cxs[*f], &v.name);
                 if !seen_vals.insert(v.name.key()) {
                     cxs[*f].err(
                         DUPLICATE_DECL,
@@ -320,6 +321,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
                     .or_else(|| fb_names.default_init(&decl.ty));
                 let init = init.and_then(|i| init_value(&mut cxs[*f], &env.types, i, &ty, range));
                 for n in &decl.names {
+                    check_ident(&mut cxs[*f], n);
                     if out.iter().any(|o| n.is(&o.name)) {
                         cxs[*f].err(
                             DUPLICATE_DECL,
@@ -677,7 +679,15 @@ pub(crate) fn resolve_addr(
 /// Names with `__` or a trailing `_` are not IEC identifiers, and the generated
 /// code relies on that to keep its own names apart.
 fn check_ident(cx: &mut Cx, id: &ast::Ident) {
-    if id.name.contains("__") || id.name.ends_with('_') && id.name.len() > 1 {
+    // The lexer already refuses `_` alone; this also covers names that reach
+    // the checker some other way.
+    if id.name.bytes().all(|b| b == b'_') {
+        cx.err(
+            BAD_IDENT,
+            id.span,
+            format!("`{id}` is not an IEC identifier (it needs a letter or a digit)"),
+        );
+    } else if id.name.contains("__") || id.name.ends_with('_') {
         cx.err(
             BAD_IDENT,
             id.span,
