@@ -60,7 +60,7 @@ codes! {
     BAD_INDEX = "IL0125", "wrong array access",
         "Subscripts must be integers, one per dimension, and only arrays can be subscripted; a constant subscript must be within the bounds.";
     BAD_IDENT = "IL0126", "invalid identifier",
-        "An IEC identifier is letters, digits and single underscores, with at least one letter or digit: it cannot be `_` alone, contain two underscores in a row or end with an underscore (the generated code reserves such names).\n\n    VAR _ : INT; END_VAR";
+        "An IEC identifier is letters, digits and single underscores, with at least one letter or digit: it cannot be `_` alone, contain two underscores in a row or end with an underscore (the generated code reserves such names); `_x` and `x_1` are fine.";
     BAD_ADDRESS = "IL0128", "invalid direct address",
         "The address does not fit: a located variable's type must have the address's size (%IX: BOOL; %IB: BYTE/SINT/USINT; %IW: WORD/INT/UINT; %ID: DWORD/DINT/UDINT/REAL; %IL: LWORD/LINT/ULINT/LREAL), the address must lie inside the process image, and inputs (%I) are written by the host only.\n\n    sensor AT %IX0.0 : INT;   (* an INT needs %IW *)";
     BAD_GLOBAL = "IL0129", "VAR_EXTERNAL without a matching VAR_GLOBAL",
