@@ -93,3 +93,68 @@ fn enum_values_and_struct_fields_are_identifiers_too() {
         "{e:?}"
     );
 }
+
+/// A chain of `n` FUNCTION_BLOCKs, each holding the next (through a
+/// one-element array when `arrays`), under a PROGRAM.
+fn fb_chain(n: usize, arrays: bool) -> String {
+    let mut s = String::new();
+    for k in 1..=n {
+        let inner = match (k < n, arrays) {
+            (false, _) => String::new(),
+            (true, false) => format!("inner : F{};", k + 1),
+            (true, true) => format!("inner : ARRAY[0..0] OF F{};", k + 1),
+        };
+        s.push_str(&format!(
+            "FUNCTION_BLOCK F{k}\nVAR x : INT; {inner} END_VAR\n LD x\n ST x\nEND_FUNCTION_BLOCK\n"
+        ));
+    }
+    s + "PROGRAM Main\nVAR top : F1; END_VAR\n CAL top\nEND_PROGRAM\n"
+}
+
+/// A chain of `n` STRUCTs, each holding the next, under a PROGRAM.
+fn struct_chain(n: usize) -> String {
+    let mut s = String::from("TYPE\n");
+    for k in 1..=n {
+        let inner = if k < n {
+            format!(" inner : S{};", k + 1)
+        } else {
+            String::new()
+        };
+        s.push_str(&format!("S{k} : STRUCT x : INT;{inner} END_STRUCT;\n"));
+    }
+    s + "END_TYPE\nPROGRAM Main\nVAR s : S1; y : INT; END_VAR\n LD s.x\n ST y\nEND_PROGRAM\n"
+}
+
+/// 130 nested FUNCTION_BLOCKs passed the checker and failed in rustc
+/// ("reached the recursion limit finding the struct tail"), and 200 nested
+/// STRUCTs too. The deepest accepted nesting (tests/plc/deep_nesting.il,
+/// compiled by rustc in the tests crate) is 120 levels; one more is IL0133,
+/// reported once, at the outermost type that is too deep.
+#[test]
+fn nesting_deeper_than_rustc_compiles_is_refused() {
+    // Main + 118 FBs + the INT of the last: 120 levels.
+    assert_eq!(errors(&fb_chain(118, false)), []);
+    let e = errors(&fb_chain(119, false));
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert_eq!((e[0].0.as_str(), e[0].1), ("IL0133", 119 * 5 + 1), "{e:?}");
+    assert!(
+        e[0].3.contains("121 levels") && e[0].3.contains("at most 120"),
+        "{e:?}"
+    );
+    let e = errors(&fb_chain(130, false));
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert!(
+        e[0].3.contains("`F11`"),
+        "reported where the chain gets too deep: {e:?}"
+    );
+    // Each array dimension is a level: rustc's drop check goes through them.
+    assert_eq!(errors(&fb_chain(59, true)), []);
+    assert_eq!(errors(&fb_chain(60, true))[0].0, "IL0133");
+    assert_eq!(errors(&struct_chain(118)), []);
+    let e = errors(&struct_chain(200));
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert!(
+        e[0].0 == "IL0133" && e[0].3.contains("STRUCT `S81`"),
+        "{e:?}"
+    );
+}

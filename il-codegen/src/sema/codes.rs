@@ -71,6 +71,8 @@ codes! {
         "A CONFIGURATION/RESOURCE names an unknown task or program, a TASK has an invalid INTERVAL, PRIORITY or SINGLE, or a program instance's arguments do not fit.\n\n    TASK fast (INTERVAL := 10, PRIORITY := 1);   (* INTERVAL needs a TIME: T#10ms *)";
     BAD_SECTION = "IL0132", "variable section not allowed here",
         "The VAR section cannot appear in this kind of POU, or cannot have that attribute: VAR_GLOBAL belongs in a CONFIGURATION or RESOURCE (POUs use globals through VAR_EXTERNAL); a FUNCTION has no VAR_EXTERNAL; VAR_EXTERNAL and VAR_IN_OUT take no initial value and no address.\n\n    FUNCTION_BLOCK Pump\n    VAR_GLOBAL pressure : REAL; END_VAR";
+    TOO_DEEP = "IL0133", "types nested too deeply",
+        "Function block instances, STRUCTs and arrays nest at most 120 levels deep: each FUNCTION_BLOCK, PROGRAM or STRUCT that holds the next is one level, each array dimension one (a standard FB counts as 3, a STRING as 2, other elementary types as 1). rustc cannot compile Rust types nested much deeper (its recursion limit is 128, and the generated code adds a few levels around a program).\n\n    FUNCTION_BLOCK L1  VAR next : L2; END_VAR  END_FUNCTION_BLOCK\n    FUNCTION_BLOCK L2  VAR next : L3; END_VAR  END_FUNCTION_BLOCK\n    (* ... up to L121 *)\n\nFlatten the hierarchy: hold the inner blocks side by side in one block.";
     BAD_INIT = "IL0127", "invalid initial value",
         "The initial value does not fit the declared type.";
 }

@@ -6,6 +6,7 @@ mod config;
 mod decls;
 mod flow;
 pub mod ir;
+mod nesting;
 mod stdfb;
 mod stdfn;
 pub mod types;
@@ -74,6 +75,7 @@ pub fn check_all(
         programs.push(program);
     }
     decls::check_recursion(&mut cxs, &env, &asts);
+    nesting::check_nesting(&mut cxs, &env, &asts);
     (programs, cxs.into_iter().map(|c| c.diags).collect())
 }
 
