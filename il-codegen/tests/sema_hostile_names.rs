@@ -158,3 +158,91 @@ fn nesting_deeper_than_rustc_compiles_is_refused() {
         "{e:?}"
     );
 }
+
+/// Arrays over 64 KiB are kept on the heap as FB/PROGRAM variables, and
+/// refused (IL0134) wherever they would be a value on the stack.
+#[test]
+fn arrays_too_large_for_the_stack_are_refused_where_they_would_be_on_it() {
+    let big = "ARRAY[0..8192] OF LREAL"; // 65,544 bytes
+    let small = "ARRAY[0..8191] OF LREAL"; // 65,536 bytes: not large
+    let refused = |src: &str, line: usize, col: usize| {
+        let e = errors(src);
+        assert!(
+            e.iter()
+                .any(|(c, l, k, _)| c == "IL0134" && *l == line && *k == col),
+            "{src}\n{e:?}"
+        );
+    };
+    // Accepted: variables of a PROGRAM or FUNCTION_BLOCK, used element-wise.
+    let ok = format!(
+        "FUNCTION_BLOCK F\nVAR_INPUT a : {big}; END_VAR\nVAR_OUTPUT b : {big}; END_VAR\nVAR c : {big}; x : LREAL; END_VAR\n LD a[1]\n ST b[2]\n ST c[3]\nEND_FUNCTION_BLOCK\n\
+         PROGRAM P\nVAR f : F; g : ARRAY[0..9999] OF F; END_VAR\n LD f.b[2]\n ST f.a[1]\nEND_PROGRAM\n"
+    );
+    assert_eq!(errors(&ok), []);
+    // As a whole: through the CR, as an argument.
+    refused(
+        &format!("PROGRAM P\nVAR a, b : {big}; END_VAR\n LD a\n ST b\nEND_PROGRAM\n"),
+        3,
+        5,
+    );
+    let copy = format!("PROGRAM P\nVAR a, b : {small}; END_VAR\n LD a\n ST b\nEND_PROGRAM\n");
+    assert_eq!(errors(&copy), [], "64 KiB exactly is still copied by value");
+    refused(
+        &format!(
+            "FUNCTION_BLOCK F\nVAR_INPUT a : {big}; END_VAR\nEND_FUNCTION_BLOCK\n\
+             PROGRAM P\nVAR f : F; a : {big}; END_VAR\n CAL f(a := a)\nEND_PROGRAM\n"
+        ),
+        6,
+        13,
+    );
+    // On the stack: FUNCTION variables and results, VAR_TEMP, VAR_IN_OUT.
+    refused(
+        &format!("FUNCTION G : INT\nVAR a : {big}; END_VAR\n LD 1\n ST G\nEND_FUNCTION\n"),
+        2,
+        5,
+    );
+    refused(
+        &format!("FUNCTION G : INT\nVAR_INPUT a : {big}; END_VAR\n LD 1\n ST G\nEND_FUNCTION\n"),
+        2,
+        11,
+    );
+    refused(
+        &format!("FUNCTION G : {big}\nVAR_INPUT i : INT; END_VAR\nEND_FUNCTION\n"),
+        1,
+        14,
+    );
+    refused(
+        &format!("PROGRAM P\nVAR_TEMP t : {big}; END_VAR\nEND_PROGRAM\n"),
+        2,
+        10,
+    );
+    refused(
+        &format!("FUNCTION_BLOCK F\nVAR_IN_OUT io : {big}; END_VAR\nEND_FUNCTION_BLOCK\n"),
+        2,
+        12,
+    );
+    // A STRUCT is a value; a global is not supported on the heap yet.
+    refused(
+        &format!("TYPE S : STRUCT a : {big}; END_STRUCT; END_TYPE\n"),
+        1,
+        17,
+    );
+    refused(
+        &format!(
+            "PROGRAM P\nVAR x : INT; END_VAR\n LD x\n ST x\nEND_PROGRAM\n\
+             CONFIGURATION C\nVAR_GLOBAL g : {big}; END_VAR\nPROGRAM p : P;\nEND_CONFIGURATION\n"
+        ),
+        7,
+        12,
+    );
+    // Only the first dimension goes to the heap: its rows must fit.
+    refused(
+        &format!("PROGRAM P\nVAR a : ARRAY[0..1, 0..8192] OF LREAL; END_VAR\nEND_PROGRAM\n"),
+        2,
+        5,
+    );
+    assert_eq!(
+        errors("PROGRAM P\nVAR a : ARRAY[0..999, 0..1999] OF LREAL; END_VAR\nEND_PROGRAM\n"),
+        []
+    );
+}

@@ -15,6 +15,9 @@ pub(crate) struct Env {
     pub types: TypeTables,
     /// Checked configurations, with the index of the declaring file.
     pub configs: Vec<(usize, super::ir::ConfigDef)>,
+    /// Bytes of each user FB (`FB:NAME`) and STRUCT (`S:NAME`), for the
+    /// large-array rules (see `size.rs`).
+    pub sizes: super::size::Sizes,
 }
 
 /// Resolved user types.
@@ -171,6 +174,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
         pous: HashMap::new(),
         types: TypeTables::default(),
         configs: Vec::new(),
+        sizes: Default::default(),
     };
     let mut seen: HashMap<String, (usize, Span)> = HashMap::new();
     let pous: Vec<(usize, &ast::Pou)> = units
@@ -528,6 +532,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
                     init: init.clone(),
                     constant: block.constant,
                     retain: block.retain == ast::Retain::Retain,
+                    heap: false,
                     line: cx.line(name.span),
                 });
             }
@@ -547,6 +552,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
             init: Some(Init::Const(Const::Bool(true))),
             constant: false,
             retain: false,
+            heap: false,
             line: cx.line(p.name.span),
         });
     }

@@ -1236,6 +1236,19 @@ impl Walk<'_, '_> {
             );
             return None;
         }
+        // A whole array over 64 KiB would be copied through the stack.
+        if super::size::is_large(self.env, &ty) {
+            self.err(
+                TOO_LARGE,
+                v.span,
+                format!(
+                    "`{}` is an array of more than 64 KiB: it cannot be loaded, stored or passed as a whole",
+                    v.base
+                ),
+            )
+            .map(|d| d.help = Some("use its elements (`x[i]`), in a loop".into()));
+            return None;
+        }
         Some(Place {
             root,
             path,

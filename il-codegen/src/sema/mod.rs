@@ -7,6 +7,7 @@ mod decls;
 mod flow;
 pub mod ir;
 mod nesting;
+pub(crate) mod size;
 mod stdfb;
 mod stdfn;
 pub mod types;
@@ -39,7 +40,8 @@ pub fn check_all(
         })
         .collect();
     let asts: Vec<&ast::CompilationUnit> = units.iter().map(|(_, u)| *u).collect();
-    let env = decls::collect(&mut cxs, &asts);
+    let mut env = decls::collect(&mut cxs, &asts);
+    size::mark_heap(&mut cxs, &mut env, &asts);
     let mut programs = Vec::new();
     for (f, unit) in asts.iter().enumerate() {
         let types = env
