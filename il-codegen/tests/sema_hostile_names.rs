@@ -237,7 +237,7 @@ fn arrays_too_large_for_the_stack_are_refused_where_they_would_be_on_it() {
     );
     // Only the first dimension goes to the heap: its rows must fit.
     refused(
-        &format!("PROGRAM P\nVAR a : ARRAY[0..1, 0..8192] OF LREAL; END_VAR\nEND_PROGRAM\n"),
+        "PROGRAM P\nVAR a : ARRAY[0..1, 0..8192] OF LREAL; END_VAR\nEND_PROGRAM\n",
         2,
         5,
     );

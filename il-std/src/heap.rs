@@ -21,7 +21,6 @@ pub fn from_fn<T>(len: usize, f: impl FnMut(usize) -> T) -> Box<[T]> {
 /// "::il_std::heap::serde_len::deserialize::<_, _, N>")]` on the field.
 #[cfg(feature = "serde")]
 pub mod serde_len {
-    //! Serialize as a sequence; deserialize a sequence of the declared length.
     use super::Box;
     use core::fmt;
     use core::marker::PhantomData;

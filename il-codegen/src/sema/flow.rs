@@ -1238,15 +1238,13 @@ impl Walk<'_, '_> {
         }
         // A whole array over 64 KiB would be copied through the stack.
         if super::size::is_large(self.env, &ty) {
-            self.err(
-                TOO_LARGE,
-                v.span,
-                format!(
-                    "`{}` is an array of more than 64 KiB: it cannot be loaded, stored or passed as a whole",
-                    v.base
-                ),
-            )
-            .map(|d| d.help = Some("use its elements (`x[i]`), in a loop".into()));
+            let msg = format!(
+                "`{}` is an array of more than 64 KiB: it cannot be loaded, stored or passed as a whole",
+                v.base
+            );
+            if let Some(d) = self.err(TOO_LARGE, v.span, msg) {
+                d.help = Some("use its elements (`x[i]`), in a loop".into());
+            }
             return None;
         }
         Some(Place {

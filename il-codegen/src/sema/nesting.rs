@@ -113,14 +113,14 @@ pub(crate) fn check_nesting(cxs: &mut [Cx], env: &Env, units: &[&ast::Compilatio
     for (f, unit) in units.iter().enumerate() {
         for item in &unit.items {
             match item {
-                ast::Item::Pou(p) if p.kind != ast::PouKind::Function => {
-                    // A duplicate POU has no signature of its own.
-                    if env
-                        .pou(&p.name.name)
-                        .is_some_and(|s| s.file == f && s.span == p.name.span)
-                    {
-                        found.push((f, Node::Pou(p.name.name.as_str()), p.name.span));
-                    }
+                // A duplicate POU has no signature of its own.
+                ast::Item::Pou(p)
+                    if p.kind != ast::PouKind::Function
+                        && env
+                            .pou(&p.name.name)
+                            .is_some_and(|s| s.file == f && s.span == p.name.span) =>
+                {
+                    found.push((f, Node::Pou(p.name.name.as_str()), p.name.span));
                 }
                 ast::Item::Types(decls) => {
                     for d in decls {
