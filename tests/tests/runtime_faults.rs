@@ -160,6 +160,7 @@ macro_rules! limit_tests {
                         (p.grid[0][2], p.grid[1][0], p.grid[62_499][31]),
                         (1.5, 0.0, 2.5)
                     );
+                    p.n = 2_000_000;
                     p.call(&mut ctx);
                     assert_eq!(ctx.fault_count(), 0);
                     assert_eq!(p.sum, 1_999_999.0 * 2_000_000.0 / 2.0);
