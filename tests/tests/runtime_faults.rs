@@ -6,7 +6,9 @@
 //! two dimensions); a store outside a subrange is skipped; CONCAT beyond the
 //! capacity is truncated. None of them panics, each but the wrap is recorded
 //! in the `Cycle` with its POU and exact IL line, and the rest of the scan
-//! runs.
+//! runs. `limits`: an instance larger than a thread's stack
+//! (plc/big_instance.il) and the deepest nesting the checker accepts
+//! (plc/deep_nesting.il) are created and run without aborting.
 
 use il_std::{Cycle, FaultKind, STRING, TIME};
 
