@@ -5,7 +5,8 @@ use std::io::Write;
 use std::path::Path;
 
 /// Compile `files` as one program (a `.xml` file is a PLCopen project). Diagnostics go to `err`; the Rust code to
-/// `out`, or to `<dir>/<stem>.rs` per input (written only when every file
+/// `out`, or to `<dir>/<stem>.rs` per input (two inputs with one stem are refused;
+/// written only when every file
 /// compiles, each atomically and only when changed). Returns success.
 pub fn run(
     files: &[String],
@@ -15,6 +16,23 @@ pub fn run(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> bool {
+    // Two inputs with one stem would write one file: refuse before reading
+    // or writing anything (`-`, standard input, becomes `stdin.rs`).
+    let paths = match dir {
+        Some(d) => {
+            let names = files
+                .iter()
+                .map(|f| Path::new(if f == "-" { "stdin" } else { f }));
+            match il_codegen::output_paths(d, names) {
+                Ok(p) => p,
+                Err(e) => {
+                    let _ = write!(err, "{e}");
+                    return false;
+                }
+            }
+        }
+        None => Vec::new(),
+    };
     let mut sources = Vec::new();
     let mut ok = true;
     let mut bar = crate::progress::Progress::new(progress, files.len());
@@ -48,22 +66,18 @@ pub fn run(
         let _ = write!(err, "{}", checked.render(color));
         return false;
     };
-    for unit in &compiled {
+    for (k, unit) in compiled.iter().enumerate() {
         let src = unit.input().source();
         if !unit.warnings.is_empty() {
             let _ = write!(err, "{}", render(src, &unit.warnings, color));
         }
         let code = &unit.file_text();
-        match dir {
+        match paths.get(k) {
             None => {
                 let _ = out.write_all(code.as_bytes());
             }
-            Some(d) => {
-                let stem = Path::new(&src.name)
-                    .file_stem()
-                    .map_or_else(|| "stdin".into(), |s| s.to_string_lossy().into_owned());
-                let path = d.join(format!("{stem}.rs"));
-                if let Err(e) = il_codegen::write_if_changed(&path, code) {
+            Some(path) => {
+                if let Err(e) = il_codegen::write_if_changed(path, code) {
                     let _ = writeln!(err, "error: cannot write `{}`: {e}", path.display());
                     return false;
                 }

@@ -34,7 +34,7 @@ pub mod sema;
 #[doc(hidden)]
 pub mod syntax;
 
-pub use builder::{Builder, Error, write_if_changed};
+pub use builder::{Builder, Error, output_paths, write_if_changed};
 pub use diag::{Diagnostic, SourceFile};
 pub use emit::Options as EmitOptions;
 pub use pipeline::{Checked, Emitted, Input, Program};

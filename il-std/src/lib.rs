@@ -14,7 +14,8 @@
 //!
 //! The crate is `#![no_std]`, has no dependencies, never allocates and never panics on any
 //! input. The optional `std` feature adds `std::error::Error` for [`Fault`] and a wall-clock
-//! helper `RealClock`.
+//! helper `RealClock`; the `alloc` feature (on with `std`) adds `heap`, the allocation of
+//! arrays over 64 KiB in generated FUNCTION_BLOCK and PROGRAM instances.
 //!
 //! Conventions the compiler relies on: integer arithmetic wraps; integer `DIV`/`MOD` by zero
 //! gives 0 and generated code records the fault with the `*_checked` variants of [`func`]
@@ -39,6 +40,8 @@
 #![warn(missing_docs)]
 #![allow(non_snake_case, non_camel_case_types)]
 
+#[cfg(feature = "alloc")]
+extern crate alloc;
 #[cfg(any(test, feature = "std"))]
 extern crate std;
 
@@ -46,6 +49,8 @@ pub mod conv;
 mod cycle;
 pub mod fb;
 pub mod func;
+#[cfg(feature = "alloc")]
+pub mod heap;
 mod image;
 pub mod literal;
 pub mod math;

@@ -346,3 +346,59 @@ fn emit_of_hostile_comments_and_strings() {
     assert_eq!(injected, as_comment + as_string, "{text}");
     assert_eq!((as_comment, as_string), (4, 2));
 }
+
+/// `ilc emit a/m.il b/m.il -o out` used to write both to `out/m.rs`, the
+/// second silently replacing the first: now it is refused before anything is
+/// written, naming both inputs.
+#[test]
+fn emit_refuses_two_inputs_with_one_output_name() {
+    let a = temp_file("clash-a-m.il", b"");
+    let dir = PathBuf::from(&a).parent().unwrap().join("clash");
+    for sub in ["a", "b"] {
+        std::fs::create_dir_all(dir.join(sub)).unwrap();
+        std::fs::write(
+            dir.join(sub).join("m.il"),
+            format!("PROGRAM P{sub}\nVAR x : INT; END_VAR\n LD x\n ST x\nEND_PROGRAM\n"),
+        )
+        .unwrap();
+    }
+    let out = dir.join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    std::fs::write(out.join("m.rs"), "// kept\n").unwrap();
+    let (fa, fb) = (dir.join("a/m.il"), dir.join("b/m.il"));
+    let (fa, fb, o) = (
+        fa.to_str().unwrap(),
+        fb.to_str().unwrap(),
+        out.to_str().unwrap(),
+    );
+    let r = ilc(&["emit", fa, fb, "-o", o]);
+    assert_eq!(code(&r), 1, "{}", stderr(&r));
+    let e = stderr(&r);
+    assert!(
+        e.contains(fa) && e.contains(fb) && e.contains("m.rs"),
+        "{e}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(out.join("m.rs")).unwrap(),
+        "// kept\n"
+    );
+    // Distinct stems are written, one file each.
+    std::fs::write(
+        dir.join("b/n.il"),
+        "PROGRAM Q\nVAR x : INT; END_VAR\n LD x\n ST x\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let fnn = dir.join("b/n.il");
+    let r = ilc(&["emit", fa, fnn.to_str().unwrap(), "-o", o]);
+    assert_eq!(code(&r), 0, "{}", stderr(&r));
+    assert!(
+        std::fs::read_to_string(out.join("m.rs"))
+            .unwrap()
+            .contains("pub struct Pa")
+    );
+    assert!(
+        std::fs::read_to_string(out.join("n.rs"))
+            .unwrap()
+            .contains("pub struct Q")
+    );
+}

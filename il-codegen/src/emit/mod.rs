@@ -52,6 +52,30 @@ pub(crate) fn serde_field(t: &Ty, opts: Options) -> TokenStream {
     }
 }
 
+/// The Rust type of a field: a heap field (an array over 64 KiB, see
+/// `sema/size.rs`) is `Box<[Row]>`.
+pub(crate) fn field_ty(v: &crate::sema::ir::Var) -> TokenStream {
+    if v.heap {
+        let row = rust_ty(&crate::sema::size::row(&v.ty));
+        quote!(::il_std::heap::Box<[#row]>)
+    } else {
+        rust_ty(&v.ty)
+    }
+}
+
+/// [`serde_field`] for a field: a heap field is a sequence of exactly its
+/// declared length.
+pub(crate) fn serde_var(v: &crate::sema::ir::Var, opts: Options) -> TokenStream {
+    match &v.ty {
+        Ty::Array { dims, .. } if v.heap && opts.serde => {
+            let n = dims.first().map_or(0, |(lo, hi)| hi - lo + 1);
+            let de = format!("::il_std::heap::serde_len::deserialize::<_, _, {n}>");
+            quote!(#[serde(serialize_with = "::il_std::heap::serde_len::serialize", deserialize_with = #de)])
+        }
+        t => serde_field(t, opts),
+    }
+}
+
 /// Emit every POU of a checked program.
 pub fn program(p: &Program, opts: Options) -> TokenStream {
     // Streams are moved into the result, never interpolated: `quote!`'s
@@ -215,14 +239,26 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 .collect();
             let decls = fields.iter().map(|v| {
                 let id = rust_ident(&v.name);
-                let ty = rust_ty(&v.ty);
-                let vdoc = format!(" {} (IL line {})", v.kind.keyword(), v.line);
-                let sf = serde_field(&v.ty, opts);
+                let ty = field_ty(v);
+                let vdoc = if v.heap {
+                    format!(
+                        " {} (IL line {}); over 64 KiB, so on the heap: the elements of its first dimension",
+                        v.kind.keyword(),
+                        v.line
+                    )
+                } else {
+                    format!(" {} (IL line {})", v.kind.keyword(), v.line)
+                };
+                let sf = serde_var(v, opts);
                 quote!(#[doc = #vdoc] #sf pub #id: #ty,)
             });
             let inits = fields.iter().map(|v| {
                 let id = rust_ident(&v.name);
-                let init = values::init_value(&v.ty, v.init.as_ref());
+                let init = if v.heap {
+                    values::heap_init_value(&v.ty, v.init.as_ref())
+                } else {
+                    values::init_value(&v.ty, v.init.as_ref())
+                };
                 quote!(#id: #init,)
             });
             // R_EDGE/F_EDGE inputs: private memory, and the edge computed on
@@ -383,21 +419,29 @@ fn retain_items(pou: &CheckedPou, opts: Options) -> TokenStream {
         let id = rust_ident(&v.name);
         match how {
             Retained::Whole => {
-                let ty = rust_ty(&v.ty);
+                let ty = field_ty(v);
                 let doc = format!(" {} RETAIN (IL line {})", v.kind.keyword(), v.line);
-                let sf = serde_field(&v.ty, opts);
+                let sf = serde_var(v, opts);
                 fields.push(quote!(#[doc = #doc] #sf pub #id: #ty,));
                 takes.push(quote!(#id: ::core::clone::Clone::clone(&self.#id),));
                 puts.push(quote!(self.#id = ::core::clone::Clone::clone(&s.#id);));
             }
             Retained::Nested => {
                 // The snapshot of each instance, arrays mapped element-wise.
-                let ty = v.ty.rust(&|fb| {
-                    let r = names::retain_ident(fb);
-                    quote!(#r)
-                });
+                let snap = |t: &Ty| {
+                    t.rust(&|fb| {
+                        let r = names::retain_ident(fb);
+                        quote!(#r)
+                    })
+                };
+                let ty = if v.heap {
+                    let row = snap(&crate::sema::size::row(&v.ty));
+                    quote!(::il_std::heap::Box<[#row]>)
+                } else {
+                    snap(&v.ty)
+                };
                 let doc = format!(" The RETAIN variables of `{}` (IL line {})", v.name, v.line);
-                let sf = serde_field(&v.ty, opts);
+                let sf = serde_var(v, opts);
                 fields.push(quote!(#[doc = #doc] #sf pub #id: #ty,));
                 let mut depth = 0;
                 let mut t = &v.ty;
@@ -407,8 +451,13 @@ fn retain_items(pou: &CheckedPou, opts: Options) -> TokenStream {
                 }
                 let mut take = quote!(__x.retain());
                 let mut put = quote!(__d.restore(__s););
-                for _ in 0..depth {
-                    take = quote!(__x.each_ref().map(|__x| #take));
+                for k in (0..depth).rev() {
+                    // The first dimension of a heap field is a boxed slice.
+                    take = if v.heap && k == 0 {
+                        quote!(__x.iter().map(|__x| #take).collect())
+                    } else {
+                        quote!(__x.each_ref().map(|__x| #take))
+                    };
                     put = quote!(for (__d, __s) in __d.iter_mut().zip(__s.iter()) { #put });
                 }
                 takes.push(quote!(#id: { let __x = &self.#id; #take },));

@@ -94,6 +94,27 @@ pub(crate) fn default_value(t: &Ty) -> TokenStream {
 
 /// The initial value of a variable.
 pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
+    array_init(t, init, false)
+}
+
+/// The initial value of a heap field (`Var::heap`, an array over 64 KiB):
+/// a `Box<[Row]>` built element by element on the heap, never as a whole
+/// array on the stack.
+pub(crate) fn heap_init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
+    match (init, t) {
+        (Some(Init::Array(_)), Ty::Array { .. }) => array_init(t, init, true),
+        (_, Ty::Array { dims, .. }) => {
+            let n = dims.first().map_or(0, |(lo, hi)| (hi - lo + 1) as usize);
+            let d = default_value(&crate::sema::size::row(t));
+            quote!(::il_std::heap::from_fn(#n, |_| #d))
+        }
+        _ => default_value(t),
+    }
+}
+
+/// [`init_value`]; with `heap`, the first dimension of an array with initial
+/// values is built by `il_std::heap::from_fn`.
+fn array_init(t: &Ty, init: Option<&Init>, heap: bool) -> TokenStream {
     match (init, t) {
         (Some(Init::Const(c)), _) => constant(c),
         (Some(Init::Array(items)), Ty::Array { dims, elem }) => {
@@ -128,8 +149,13 @@ pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
             });
             let flat = quote!(#(#terms)+*);
             let mut body = quote!(match #flat { #(#arms)* _ => #d });
-            for id in idx.iter().rev() {
-                body = quote!(::core::array::from_fn(|#id| #body));
+            for (k, id) in idx.iter().enumerate().rev() {
+                body = if heap && k == 0 {
+                    let n = sizes[0];
+                    quote!(::il_std::heap::from_fn(#n, |#id| #body))
+                } else {
+                    quote!(::core::array::from_fn(|#id| #body))
+                };
             }
             body
         }

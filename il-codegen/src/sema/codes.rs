@@ -52,7 +52,7 @@ codes! {
     BAD_INDEX = "IL0125", "wrong array access",
         "Subscripts must be integers, one per dimension, and only arrays can be subscripted; a constant subscript must be within the bounds.";
     BAD_IDENT = "IL0126", "invalid identifier",
-        "IEC identifiers cannot contain two underscores in a row or end with an underscore (the generated code reserves such names).";
+        "An IEC identifier is letters, digits and single underscores, with at least one letter or digit: it cannot be `_` alone, contain two underscores in a row or end with an underscore (the generated code reserves such names); `_x` and `x_1` are fine.";
     BAD_ADDRESS = "IL0128", "invalid direct address",
         "The address does not fit: a located variable's type must have the address's size (%IX: BOOL; %IB: BYTE/SINT/USINT; %IW: WORD/INT/UINT; %ID: DWORD/DINT/UDINT/REAL; %IL: LWORD/LINT/ULINT/LREAL), the address must lie inside the process image, and inputs (%I) are written by the host only.\n\n    sensor AT %IX0.0 : INT;   (* an INT needs %IW *)";
     BAD_GLOBAL = "IL0129", "VAR_EXTERNAL without a matching VAR_GLOBAL",
@@ -63,6 +63,10 @@ codes! {
         "A CONFIGURATION/RESOURCE names an unknown task or program, a TASK has an invalid INTERVAL, PRIORITY or SINGLE, or a program instance's arguments do not fit.\n\n    TASK fast (INTERVAL := 10, PRIORITY := 1);   (* INTERVAL needs a TIME: T#10ms *)";
     BAD_SECTION = "IL0132", "variable section not allowed here",
         "The VAR section cannot appear in this kind of POU, or cannot have that attribute: VAR_GLOBAL belongs in a CONFIGURATION or RESOURCE (POUs use globals through VAR_EXTERNAL); a FUNCTION has no VAR_EXTERNAL; VAR_EXTERNAL and VAR_IN_OUT take no initial value and no address.\n\n    FUNCTION_BLOCK Pump\n    VAR_GLOBAL pressure : REAL; END_VAR";
+    TOO_DEEP = "IL0133", "types nested too deeply",
+        "Function block instances, STRUCTs and arrays nest at most 120 levels deep: each FUNCTION_BLOCK, PROGRAM or STRUCT that holds the next is one level, each array dimension one (a standard FB counts as 3, a STRING as 2, other elementary types as 1). rustc cannot compile Rust types nested much deeper (its recursion limit is 128, and the generated code adds a few levels around a program).\n\n    FUNCTION_BLOCK L1  VAR next : L2; END_VAR  END_FUNCTION_BLOCK\n    FUNCTION_BLOCK L2  VAR next : L3; END_VAR  END_FUNCTION_BLOCK\n    (* ... up to L121 *)\n\nFlatten the hierarchy: hold the inner blocks side by side in one block.";
+    TOO_LARGE = "IL0134", "array too large for the stack",
+        "An array of more than 64 KiB is kept on the heap when it is a VAR, VAR_INPUT or VAR_OUTPUT of a FUNCTION_BLOCK or PROGRAM (creating the instance then never builds it on the stack). Anywhere else it would be a value on the stack, which is a few MiB for a whole thread, and is refused: in a FUNCTION or VAR_TEMP, as a VAR_IN_OUT, VAR_EXTERNAL or VAR_GLOBAL, as a STRUCT field, as rows of more than 64 KiB (only the first dimension goes to the heap), and loaded, stored or passed as a whole.\n\n    PROGRAM Main\n    VAR samples, copy : ARRAY[0..99999] OF LREAL; END_VAR\n        LD   samples     (* 800000 bytes through the CR: copy element by element *)\n        ST   copy\n    END_PROGRAM";
     BAD_INIT = "IL0127", "invalid initial value",
         "The initial value does not fit the declared type.";
 }

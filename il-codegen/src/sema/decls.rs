@@ -17,6 +17,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
         types: TypeTables::default(),
         holds_retain: Default::default(),
         configs: Vec::new(),
+        sizes: Default::default(),
     };
     let mut seen: HashMap<String, (usize, Span)> = HashMap::new();
     let pous: Vec<(usize, &ast::Pou)> = units
@@ -96,6 +97,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
             let mut vals = Vec::new();
             let mut seen_vals: HashSet<String> = HashSet::new();
             for v in values {
+                check_ident(&mut cxs[*f], &v.name);
                 if !seen_vals.insert(v.name.key()) {
                     cxs[*f].err(
                         DUPLICATE_DECL,
@@ -166,6 +168,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
                     .or_else(|| fb_names.default_init(&decl.ty));
                 let init = init.and_then(|i| init_value(&mut cxs[*f], &env.types, i, &ty, range));
                 for n in &decl.names {
+                    check_ident(&mut cxs[*f], n);
                     if out.iter().any(|o| n.is(&o.name)) {
                         cxs[*f].err(
                             DUPLICATE_DECL,

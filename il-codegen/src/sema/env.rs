@@ -12,6 +12,9 @@ pub(crate) struct Env {
     pub types: TypeTables,
     /// Checked configurations, with the index of the declaring file.
     pub configs: Vec<(usize, super::ir::ConfigDef)>,
+    /// Bytes of each user FB (`FB:NAME`) and STRUCT (`S:NAME`), for the
+    /// large-array rules (see `size.rs`).
+    pub sizes: super::size::Sizes,
     /// Whether an FB (upper-case name) holds anything RETAIN, directly or in
     /// a nested instance: memoised, because instance trees share subtrees and
     /// an unmemoised walk is exponential in the nesting depth.

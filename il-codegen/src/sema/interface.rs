@@ -167,6 +167,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
                     init: init.clone(),
                     constant: block.constant,
                     retain: block.retain == ast::Retain::Retain,
+                    heap: false,
                     line: cx.line(name.span),
                 });
             }
@@ -187,6 +188,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
             init: Some(Init::Const(Const::Bool(true))),
             constant: false,
             retain: false,
+            heap: false,
             line: cx.line(p.name.span),
         });
     }

@@ -188,6 +188,9 @@ pub struct Var {
     pub constant: bool,
     /// Declared in a RETAIN section: part of the snapshot the host saves.
     pub retain: bool,
+    /// An array of more than 64 KiB in an FB/PROGRAM: the field is a
+    /// `Box<[Row]>` built on the heap (a stack value would overflow).
+    pub heap: bool,
     /// Line of the declaration, for comments.
     pub line: u32,
 }

@@ -11,8 +11,10 @@ mod init;
 mod interface;
 pub mod ir;
 mod literals;
+mod nesting;
 mod recursion;
 mod resolve;
+pub(crate) mod size;
 mod stdfb;
 mod stdfn;
 pub mod types;
@@ -45,7 +47,8 @@ pub fn check_all(
         })
         .collect();
     let asts: Vec<&ast::CompilationUnit> = units.iter().map(|(_, u)| *u).collect();
-    let env = decls::collect(&mut cxs, &asts);
+    let mut env = decls::collect(&mut cxs, &asts);
+    size::mark_heap(&mut cxs, &mut env, &asts);
     let mut programs = Vec::new();
     for (f, unit) in asts.iter().enumerate() {
         let types = env
@@ -81,6 +84,7 @@ pub fn check_all(
         programs.push(program);
     }
     recursion::check_recursion(&mut cxs, &env, &asts);
+    nesting::check_nesting(&mut cxs, &env, &asts);
     (programs, cxs.into_iter().map(|c| c.diags).collect())
 }
 

@@ -110,7 +110,15 @@ pub(crate) fn resolve_addr(
 /// Names with `__` or a trailing `_` are not IEC identifiers, and the generated
 /// code relies on that to keep its own names apart.
 pub(crate) fn check_ident(cx: &mut Cx, id: &ast::Ident) {
-    if id.name.contains("__") || id.name.ends_with('_') && id.name.len() > 1 {
+    // The lexer already refuses `_` alone; this also covers names that reach
+    // the checker some other way.
+    if id.name.bytes().all(|b| b == b'_') {
+        cx.err(
+            BAD_IDENT,
+            id.span,
+            format!("`{id}` is not an IEC identifier (it needs a letter or a digit)"),
+        );
+    } else if id.name.contains("__") || id.name.ends_with('_') {
         cx.err(
             BAD_IDENT,
             id.span,

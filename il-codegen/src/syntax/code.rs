@@ -65,4 +65,6 @@ crate::diag::codes::codes! {
         "IL has one instruction per line.\n\n    LD a ST b\n\nPut `ST b` on its own line.";
     EXPECTED_INSTRUCTION = "IL0031", "a line that does not start with an operator",
         "An instruction line starts with an optional `label:` and an operator or function name.\n\n    5\n\nWrite e.g. `LD 5`.";
+    NOT_IDENT = "IL0033", "a word that is not an identifier",
+        "A name needs at least one letter or digit: `_` alone (or `__`, `___` ...) is no IEC identifier, and in the generated Rust it would be the wildcard pattern.\n\n    VAR _ : INT; END_VAR\n\nName it: `VAR unused : INT; END_VAR`.";
 }

@@ -7,6 +7,9 @@
 //! capacity is truncated; DIV, MOD and DIV_TIME called as functions fault as
 //! the operators do. None of them panics, each but the wrap is recorded in the
 //! `Cycle` with its POU and exact IL line, and the rest of the scan runs.
+//! `limits`: an instance larger than a thread's stack (plc/big_instance.il)
+//! and the deepest nesting the checker accepts (plc/deep_nesting.il) are
+//! created and run without aborting.
 
 use il_std::{Cycle, FaultKind, STRING, TIME};
 
@@ -161,3 +164,83 @@ macro_rules! fault_tests {
 
 fault_tests!(via_build);
 fault_tests!(via_macro);
+
+/// Resource limits: generated code must not abort either.
+macro_rules! limit_tests {
+    ($m:ident) => {
+        mod $m {
+            use il_std::Cycle;
+            use il_tests::$m::{BigProg, DeepMain, DeepPlant};
+
+            /// plc/big_instance.il: 16 MB of LREAL, a 16 MB initialised 2-D
+            /// array, 100,000 RETAIN blocks... used to overflow the stack in
+            /// `Default::default()` (debug and release). The large arrays are
+            /// on the heap: created, run, cloned, compared, snapshot and
+            /// restored in a thread with a 2 MiB stack (the test default).
+            #[test]
+            fn an_instance_larger_than_the_stack_is_created_and_run() {
+                let run = || {
+                    let mut ctx = Cycle::new();
+                    let mut p = BigProg::default();
+                    assert_eq!(p.samples.len(), 2_000_000);
+                    assert_eq!(
+                        (p.grid[0][2], p.grid[1][0], p.grid[62_499][31]),
+                        (1.5, 0.0, 2.5)
+                    );
+                    p.n = 2_000_000;
+                    p.call(&mut ctx);
+                    assert_eq!(ctx.fault_count(), 0);
+                    assert_eq!(p.sum, 1_999_999.0 * 2_000_000.0 / 2.0);
+                    assert_eq!(p.samples[1_234_567], 1_234_567.0);
+                    assert_eq!((p.last, p.got, p.cell), (2.5, 1_999_999.0, 7));
+                    assert_eq!(p.inner.buf[99_999], 1_999_999.0);
+                    let copy = p.clone();
+                    assert!(copy == p);
+                    let saved = p.retain();
+                    let mut warm = BigProg::default();
+                    warm.restore(&saved);
+                    assert_eq!((warm.cells[99_999].total, warm.kept[199_999]), (7, 7));
+                    assert_eq!(
+                        (warm.more[5].total, warm.more[5].out),
+                        (3, 0),
+                        "total is RETAIN"
+                    );
+                    assert_eq!(warm.samples[1_234_567], 0.0, "not RETAIN");
+                    // An index past the end is a fault, not a panic.
+                    p.n = 2_000_001;
+                    p.call(&mut ctx);
+                    assert_eq!(ctx.fault_count(), 1);
+                };
+                std::thread::Builder::new()
+                    .stack_size(2 << 20)
+                    .spawn(run)
+                    .unwrap()
+                    .join()
+                    .unwrap();
+            }
+
+            /// plc/deep_nesting.il: the deepest nesting the checker accepts
+            /// (120 levels, IL0133) compiles and runs.
+            #[test]
+            fn the_deepest_accepted_nesting_runs() {
+                let mut ctx = Cycle::new();
+                let mut m = Box::new(DeepMain::default());
+                m.call(&mut ctx);
+                assert_eq!(m.count, 116);
+                let mut plant = Box::new(DeepPlant::default());
+                plant.run(&mut ctx);
+                assert_eq!(plant.cpu.main.count, 116);
+                assert_eq!(plant.cpu.structs.x, 118);
+                let saved = plant.retain();
+                let mut warm = Box::new(DeepPlant::default());
+                warm.restore(&saved);
+                assert!(warm.retain() == saved);
+            }
+        }
+    };
+}
+
+mod limits {
+    limit_tests!(via_build);
+    limit_tests!(via_macro);
+}

@@ -222,6 +222,17 @@ impl Walk<'_, '_> {
             );
             return None;
         }
+        // A whole array over 64 KiB would be copied through the stack.
+        if super::super::size::is_large(self.env, &ty) {
+            let msg = format!(
+                "`{}` is an array of more than 64 KiB: it cannot be loaded, stored or passed as a whole",
+                v.base
+            );
+            if let Some(d) = self.err(TOO_LARGE, v.span, msg) {
+                d.help = Some("use its elements (`x[i]`), in a loop".into());
+            }
+            return None;
+        }
         Some(Place {
             root,
             path,

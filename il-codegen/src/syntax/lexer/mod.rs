@@ -542,6 +542,20 @@ impl<'a> Lexer<'a> {
         while self.pos < self.b.len() && is_ident(self.b[self.pos]) {
             self.pos += 1;
         }
+        // `_`, `__`...: no letter or digit, so no IEC identifier (as a name
+        // it would reach Rust as `_`, which is not an identifier there).
+        if self.b[start..self.pos].iter().all(|&c| c == b'_') && self.pos > start {
+            self.diag(
+                code::NOT_IDENT,
+                start,
+                self.pos,
+                format!(
+                    "`{}` is not an identifier: an IEC identifier needs a letter or a digit",
+                    &self.src[start..self.pos]
+                ),
+                "not an identifier",
+            );
+        }
         (start, self.pos)
     }
 }
