@@ -1,0 +1,238 @@
+//! Expressions: the CR and operand values, operators, standard function
+//! calls with their faults.
+
+use super::*;
+
+impl PouEmitter<'_> {
+    pub(crate) fn expr(&self, e: &Expr, line: u32) -> TokenStream {
+        match e {
+            Expr::Value(v) => self.value(v, line),
+            Expr::Not(v) => {
+                let v = self.value(v, line);
+                quote!(!#v)
+            }
+            Expr::Bin {
+                op,
+                ty,
+                lhs,
+                rhs,
+                negate_rhs,
+            } => {
+                let l = self.receiver(lhs, line);
+                let mut r = self.value(rhs, line);
+                if *negate_rhs {
+                    r = quote!(!#r);
+                }
+                // A literal divisor other than 0 needs no zero check.
+                let nonzero =
+                    !*negate_rhs && matches!(rhs, Value::Const(Const::Int(n, _)) if *n != 0);
+                self.binary(*op, ty, l, r, nonzero, line)
+            }
+            Expr::TimeScale {
+                div,
+                time,
+                lhs,
+                num,
+                rhs,
+            } => {
+                let t = time.rust();
+                let l = self.receiver(lhs, line);
+                let r = self.receiver(rhs, line);
+                // TIME: the operator and MUL_TIME/DIV_TIME are one rule.
+                if *time == Elem::TIME {
+                    if !*div {
+                        return quote!(::il_std::func::MUL_TIME(#l, #r));
+                    }
+                    let fault = self.fault("DivisionByZero", line);
+                    return quote!({
+                        let (__v, __bad) = ::il_std::func::div_time_checked(#l, #r);
+                        if __bad { #fault; }
+                        __v
+                    });
+                }
+                match (div, num.is_real()) {
+                    (false, false) => quote!(#t(#l.0.wrapping_mul(#r as i64))),
+                    (false, true) => quote!(#t(((#l.0 as f64) * (#r as f64)) as i64)),
+                    (true, true) => quote!(#t(((#l.0 as f64) / (#r as f64)) as i64)),
+                    (true, false) => {
+                        let fault = self.fault("DivisionByZero", line);
+                        quote!({
+                            let __d = #r as i64;
+                            if __d == 0 { #fault; #t(0) } else { #t(#l.0.wrapping_div(__d)) }
+                        })
+                    }
+                }
+            }
+            Expr::CallUser {
+                name,
+                args,
+                inouts,
+                outputs,
+                out_types,
+                en,
+                eno,
+                ret,
+            } => {
+                let call = self.user_call(name, args, inouts, outputs, out_types, line);
+                let Some(en) = en else { return call };
+                // EN = FALSE: the function does not run; its result is the
+                // default and ENO (if read with `=>`) is FALSE.
+                let en = self.value(en, line);
+                let d = default_value(ret);
+                let eno_false =
+                    outputs
+                        .iter()
+                        .filter(|(k, _, _)| Some(*k) == *eno)
+                        .map(|(_, place, neg)| {
+                            self.write(place, if *neg { quote!(true) } else { quote!(false) }, line)
+                        });
+                quote!(if #en { #call } else { #(#eno_false)* #d })
+            }
+            Expr::CallStd {
+                call,
+                args,
+                arg_types: _,
+                ret,
+                fault,
+            } => {
+                let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
+                match (call, fault) {
+                    // REAL → integer out of range (or NaN) saturates, as the
+                    // plain function does, and is recorded as a fault.
+                    (StdCall::Plain(n), Some(k @ FaultKind::ConversionOutOfRange)) => {
+                        let t = rust_ty(ret);
+                        // The fault is the table's; the rounding is the
+                        // function's: TRUNC and REAL_TRUNC_* truncate.
+                        let f = if n.contains("TRUNC") {
+                            quote!(trunc_to_int_checked)
+                        } else {
+                            quote!(real_to_int_checked)
+                        };
+                        let a = &args[0];
+                        let fault = self.fault_of(*k, line);
+                        quote!({
+                            let (__v, __bad) = ::il_std::conv::#f::<#t>(#a as f64);
+                            if __bad { #fault; }
+                            __v
+                        })
+                    }
+                    // DIV, MOD, DIV_TIME by an integer zero: the `*_checked`
+                    // companion gives the result and the flag.
+                    (StdCall::Plain(n), Some(k @ FaultKind::DivisionByZero)) => {
+                        let f = format_ident!("{}_checked", n.to_ascii_lowercase());
+                        let fault = self.fault_of(*k, line);
+                        quote!({
+                            let (__v, __bad) = ::il_std::func::#f(#(#args),*);
+                            if __bad { #fault; }
+                            __v
+                        })
+                    }
+                    (StdCall::Plain(n), _) => {
+                        let f = format_ident!("{}", n);
+                        quote!(::il_std::func::#f(#(#args),*))
+                    }
+                    // A result longer than the first string's capacity is
+                    // truncated and recorded (CONCAT, step by step).
+                    (StdCall::Fold(n), Some(k @ FaultKind::StringOverflow)) => {
+                        let checked = format_ident!("{}_checked", n.to_ascii_lowercase());
+                        let fault = self.fault_of(*k, line);
+                        let mut it = args.into_iter();
+                        let mut acc = it.next().unwrap_or_default();
+                        for a in it {
+                            acc = quote!({
+                                let (__v, __bad) = ::il_std::func::#checked(#acc, #a);
+                                if __bad { #fault; }
+                                __v
+                            });
+                        }
+                        acc
+                    }
+                    (StdCall::Fold(n), _) => {
+                        let f = format_ident!("{}", n);
+                        let mut it = args.into_iter();
+                        let mut acc = it.next().unwrap_or_default();
+                        for a in it {
+                            acc = quote!(::il_std::func::#f(#acc, #a));
+                        }
+                        acc
+                    }
+                    (StdCall::Chain(n), _) => {
+                        let f = format_ident!("{}", n);
+                        let pairs = args.windows(2).map(|w| {
+                            let (a, b) = (&w[0], &w[1]);
+                            quote!(::il_std::func::#f(#a, #b))
+                        });
+                        quote!(#(#pairs)&*)
+                    }
+                    // MUX returns the flag with the value: a selector out of
+                    // range (the table's InvalidArgument) is recorded.
+                    (StdCall::Mux, k) => {
+                        let fault = self.fault_of(k.unwrap_or(FaultKind::InvalidArgument), line);
+                        let k = &args[0];
+                        let ins = &args[1..];
+                        quote!({
+                            let (__v, __bad) = ::il_std::func::MUX(#k as i64, &[#(#ins),*]);
+                            if __bad { #fault; }
+                            __v
+                        })
+                    }
+                }
+            }
+        }
+    }
+
+    pub(super) fn binary(
+        &self,
+        op: BinOp,
+        ty: &Ty,
+        l: TokenStream,
+        r: TokenStream,
+        nonzero: bool,
+        line: u32,
+    ) -> TokenStream {
+        let e = ty.elem();
+        let int = e.is_some_and(|e| e.is_int() || e.is_bitstring());
+        let dur = e.filter(|e| e.is_duration()).map(Elem::rust);
+        match op {
+            BinOp::And => quote!(#l & #r),
+            BinOp::Or => quote!(#l | #r),
+            BinOp::Xor => quote!(#l ^ #r),
+            BinOp::Gt => quote!(#l > #r),
+            BinOp::Ge => quote!(#l >= #r),
+            BinOp::Eq => quote!(#l == #r),
+            BinOp::Ne => quote!(#l != #r),
+            BinOp::Le => quote!(#l <= #r),
+            BinOp::Lt => quote!(#l < #r),
+            BinOp::Add | BinOp::Sub if dur.is_some() => {
+                let t = dur.unwrap_or_default();
+                if op == BinOp::Add {
+                    quote!(#t(#l.0.wrapping_add(#r.0)))
+                } else {
+                    quote!(#t(#l.0.wrapping_sub(#r.0)))
+                }
+            }
+            BinOp::Add if int => quote!(#l.wrapping_add(#r)),
+            BinOp::Sub if int => quote!(#l.wrapping_sub(#r)),
+            BinOp::Mul if int => quote!(#l.wrapping_mul(#r)),
+            BinOp::Div if int && nonzero => quote!(#l.wrapping_div(#r)),
+            BinOp::Mod if int && nonzero => quote!(#l.wrapping_rem(#r)),
+            BinOp::Div | BinOp::Mod if int => {
+                let fault = self.fault("DivisionByZero", line);
+                let f = if op == BinOp::Div {
+                    quote!(wrapping_div)
+                } else {
+                    quote!(wrapping_rem)
+                };
+                quote!({
+                    let __d = #r;
+                    if __d == 0 { #fault; 0 } else { #l.#f(__d) }
+                })
+            }
+            BinOp::Add => quote!(#l + #r),
+            BinOp::Sub => quote!(#l - #r),
+            BinOp::Mul => quote!(#l * #r),
+            BinOp::Div => quote!(#l / #r),
+            BinOp::Mod => quote!(#l % #r),
+        }
+    }
+}

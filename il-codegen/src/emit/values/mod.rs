@@ -1,0 +1,21 @@
+//! Values the emitter writes: constants and initial values, places,
+//! expressions and calls (the interpreter's partners: il-interp's
+//! constants.rs, places.rs, expressions.rs and calls.rs).
+
+use super::{PouEmitter, item_ident, local_ident, rust_ident, rust_ty};
+use crate::ast::Area;
+use crate::sema::ir::{
+    BinOp, Const, Expr, Init, Loc, PathElem, Place, Root, StdCall, Storage, Value,
+};
+use crate::sema::types::{Elem, Ty};
+use il_std::FaultKind;
+use proc_macro2::{Literal, TokenStream};
+use quote::{format_ident, quote};
+
+mod calls;
+mod constants;
+mod expressions;
+mod places;
+
+pub(crate) use constants::{constant, cr_ident, default_value, heap_init_value, init_value};
+pub(crate) use places::{io_read, io_write};
