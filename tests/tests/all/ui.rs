@@ -19,14 +19,20 @@
 //! the Rust code that uses them; its `main` runs them all. They prove that
 //! accepted programs compile and run.
 //!
-//! trybuild builds (and, for pass cases, runs) one file at a time, so the
-//! number of files, not of cases, sets the time of this test.
+//! Two `TestCases`: trybuild builds a set holding pass cases one file at a
+//! time (a `cargo build` each, then runs it), but a compile-fail-only set in
+//! one `cargo check --bins --keep-going`, all files at once. So the pass
+//! cases run first, alone, and the compile-fail files in one batch.
 //! Regenerate the expectations with
 //! `TRYBUILD=overwrite cargo test -p il-tests --test all ui`.
 
 #[test]
 fn ui() {
-    let t = trybuild::TestCases::new();
-    t.pass("ui/pass/*.rs");
-    t.compile_fail("ui/*.rs");
+    {
+        let pass = trybuild::TestCases::new();
+        pass.pass("ui/pass/*.rs");
+        // dropped here: builds and runs the pass cases
+    }
+    let fail = trybuild::TestCases::new();
+    fail.compile_fail("ui/*.rs");
 }
