@@ -306,80 +306,74 @@ fn sig_elem(t: &Ty) -> Option<sig::Elem> {
     }
 }
 
-/// Order the arguments of a formal call (`LIMIT(MN := 0, IN := x, MX := 9)`)
-/// by the signature's parameter names.
-#[allow(clippy::type_complexity)]
-pub(crate) fn order_formal<A>(
-    key: &str,
-    named: Vec<(Ident, A, Span)>,
-) -> Result<Vec<(A, Span)>, (Option<Span>, String)> {
+/// The position of the parameter `name` in a formal call of `key` with
+/// `count` parameters (`LIMIT(MN := 0, IN := x, MX := 9)`), or why there is
+/// none.
+pub(crate) fn formal_slot(key: &str, name: &Ident, count: usize) -> Result<usize, String> {
     let Some(s) = sig::lookup(key) else {
-        return Err((None, format!("unknown function {key}")));
+        return Err(format!("unknown function {key}"));
     };
-    let mut slots: Vec<Option<(A, Span)>> = Vec::new();
     let extensible = !matches!(s.ext, Ext::Fixed);
-    let count = named.len();
-    for (name, a, sp) in named {
-        let pos = s.params.iter().position(|p| name.is(p.name)).or_else(|| {
-            // IN1, IN2, ... beyond the listed ones for extensible functions.
-            let up = name.key();
-            let n: usize = up.strip_prefix("IN")?.parse().ok()?;
-            let first = s
-                .params
-                .iter()
-                .position(|p| p.name.eq_ignore_ascii_case("IN1"))?;
-            // `IN0` does not exist (`then_some` computed `first + n - 1`
-            // even then, and `IN0 := x` underflowed: found by fuzzing), and
-            // `INn` beyond the number of arguments given leaves a gap (some
-            // IN below it is missing): no such parameter. Bounding `n` also
-            // keeps `slots` from being resized to `n` (`IN99999999999 := x`
-            // asked for terabytes).
-            (extensible && (1..=count).contains(&n)).then(|| first + n - 1)
-        });
-        let Some(pos) = pos else {
-            let names: Vec<&str> = s.params.iter().map(|p| p.name).collect();
-            return Err((
-                Some(name.span),
-                format!(
-                    "{} has no parameter `{name}` (it has {})",
-                    s.name,
-                    names.join(", ")
-                ),
-            ));
-        };
+    let pos = s.params.iter().position(|p| name.is(p.name)).or_else(|| {
+        // IN1, IN2, ... beyond the listed ones for extensible functions.
+        let up = name.key();
+        let n: usize = up.strip_prefix("IN")?.parse().ok()?;
+        let first = s
+            .params
+            .iter()
+            .position(|p| p.name.eq_ignore_ascii_case("IN1"))?;
+        // `IN0` does not exist (`then_some` computed `first + n - 1` even
+        // then, and `IN0 := x` underflowed: found by fuzzing), and `INn`
+        // beyond the number of arguments given leaves a gap (some IN below
+        // it is missing): no such parameter. Bounding `n` also keeps the
+        // slots from being resized to `n` (`IN99999999999 := x` asked for
+        // terabytes).
+        (extensible && (1..=count).contains(&n)).then(|| first + n - 1)
+    });
+    pos.ok_or_else(|| {
+        let names: Vec<&str> = s.params.iter().map(|p| p.name).collect();
+        format!(
+            "{} has no parameter `{name}` (it has {})",
+            s.name,
+            names.join(", ")
+        )
+    })
+}
+
+/// The arguments of a formal call of `key` in parameter order, from their
+/// positions ([`formal_slot`]; each given once): or the first parameter
+/// that is missing.
+pub(crate) fn order_slots<A>(
+    key: &str,
+    given: Vec<(usize, A, Span)>,
+) -> Result<Vec<(A, Span)>, String> {
+    let Some(s) = sig::lookup(key) else {
+        return Err(format!("unknown function {key}"));
+    };
+    let extensible = !matches!(s.ext, Ext::Fixed);
+    let mut slots: Vec<Option<(A, Span)>> = Vec::new();
+    for (pos, a, sp) in given {
         if slots.len() <= pos {
             slots.resize_with(pos + 1, || None);
         }
-        if slots[pos].is_some() {
-            return Err((
-                Some(name.span),
-                format!("parameter `{name}` is given twice"),
-            ));
-        }
         slots[pos] = Some((a, sp));
     }
-    let given = slots.len();
+    let n = slots.len();
     let mut out = Vec::new();
-    for (i, s2) in slots.into_iter().enumerate() {
-        match s2 {
+    for (i, slot) in slots.into_iter().enumerate() {
+        match slot {
             Some(x) => out.push(x),
             None => {
-                return Err((
-                    None,
-                    format!(
-                        "{} needs parameter `{}`",
-                        s.name,
-                        s.params.get(i).map_or("?", |p| p.name)
-                    ),
+                return Err(format!(
+                    "{} needs parameter `{}`",
+                    s.name,
+                    s.params.get(i).map_or("?", |p| p.name)
                 ));
             }
         }
     }
-    if !extensible && given < s.params.len() {
-        return Err((
-            None,
-            format!("{} needs parameter `{}`", s.name, s.params[given].name),
-        ));
+    if !extensible && n < s.params.len() {
+        return Err(format!("{} needs parameter `{}`", s.name, s.params[n].name));
     }
     Ok(out)
 }

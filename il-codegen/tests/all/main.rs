@@ -9,6 +9,7 @@ mod front_end_robustness;
 mod golden_emit;
 mod plcopen_corpus;
 mod render_golden;
+mod sema_calls;
 mod sema_hostile_names;
 mod sema_literals;
 mod sema_types;

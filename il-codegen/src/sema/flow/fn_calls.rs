@@ -3,7 +3,57 @@
 
 use super::*;
 
+/// What one name of a formal list binds in the called function.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(super) enum Slot {
+    /// `EN := b`.
+    En,
+    /// `ENO => b` of a function that declares no ENO.
+    Eno,
+    /// The k-th input (a standard function: the k-th parameter).
+    Input(usize),
+    /// The k-th VAR_IN_OUT.
+    InOut(usize),
+    /// The k-th VAR_OUTPUT.
+    Output(usize),
+}
+
+/// Why a name of a formal list binds nothing: code, place, message.
+type Unbound = (&'static str, Span, String);
+
 impl Walk<'_, '_> {
+    /// Bind a formal list to the callee's parameters: the one loop for user
+    /// and standard functions. `slot` says what each name binds, or why it
+    /// binds nothing; a parameter given twice is an error for both. Every
+    /// error is reported; the bool says whether there was none.
+    pub(super) fn bind_formal<'l>(
+        &mut self,
+        list: &'l [ast::ParamAssign],
+        mut slot: impl FnMut(&ast::ParamAssign) -> Result<Slot, Unbound>,
+    ) -> (Vec<(Slot, &'l ast::ParamAssign)>, bool) {
+        let mut seen = std::collections::HashSet::new();
+        let mut bound = Vec::new();
+        let mut ok = true;
+        for p in list {
+            match slot(p) {
+                Ok(s) if !seen.insert(s) => {
+                    self.err(
+                        UNKNOWN_MEMBER,
+                        p.name.span,
+                        format!("parameter `{}` is given twice", p.name),
+                    );
+                    ok = false;
+                }
+                Ok(s) => bound.push((s, p)),
+                Err((code, span, msg)) => {
+                    self.err(code, span, msg);
+                    ok = false;
+                }
+            }
+        }
+        (bound, ok)
+    }
+
     pub(super) fn is_function(&self, name: &str) -> bool {
         self.env
             .pou(name)
@@ -104,15 +154,48 @@ impl Walk<'_, '_> {
                     return bad;
                 }
                 CallArgs::Formal(list) => {
-                    for p in list {
-                        match &p.kind {
-                            ParamKind::Input(o) if p.name.is("EN") => {
+                    let outs: Vec<&ir::Var> = sig
+                        .vars
+                        .iter()
+                        .filter(|o| o.kind == ast::VarKind::Output)
+                        .collect();
+                    let (bound, _) = self.bind_formal(list, |p| match &p.kind {
+                        ParamKind::Input(_) if p.name.is("EN") => Ok(Slot::En),
+                        ParamKind::Output { .. }
+                            if p.name.is("ENO") && sig.var("ENO").is_none() =>
+                        {
+                            Ok(Slot::Eno)
+                        }
+                        ParamKind::Input(_) => inouts
+                            .iter()
+                            .position(|(n, _)| p.name.is(n))
+                            .map(Slot::InOut)
+                            .or_else(|| {
+                                inputs
+                                    .iter()
+                                    .position(|(_, n, _)| p.name.is(n))
+                                    .map(Slot::Input)
+                            })
+                            .ok_or_else(|| {
+                                let m = format!("{fname} has no input `{}`", p.name);
+                                (UNKNOWN_MEMBER, p.name.span, m)
+                            }),
+                        ParamKind::Output { .. } => outs
+                            .iter()
+                            .position(|o| p.name.is(&o.name))
+                            .map(Slot::Output)
+                            .ok_or_else(|| {
+                                let m = format!("{fname} has no output `{}`", p.name);
+                                (UNKNOWN_MEMBER, p.name.span, m)
+                            }),
+                    });
+                    for (slot, p) in bound {
+                        match (slot, &p.kind) {
+                            (Slot::En, ParamKind::Input(o)) => {
                                 let Some(a) = self.operand(o) else { continue };
                                 en = self.fit(a, &Ty::BOOL, o.span());
                             }
-                            ParamKind::Output { negate, target }
-                                if p.name.is("ENO") && sig.var("ENO").is_none() =>
-                            {
+                            (Slot::Eno, ParamKind::Output { negate, target }) => {
                                 let Some(place) = self.place_of(target, true) else {
                                     continue;
                                 };
@@ -126,41 +209,19 @@ impl Walk<'_, '_> {
                                 }
                                 eno_plain.push((place, *negate));
                             }
-                            ParamKind::Input(o)
-                                if let Some(j) = inouts.iter().position(|(n, _)| p.name.is(n)) =>
-                            {
+                            (Slot::InOut(j), ParamKind::Input(o)) => {
                                 let (n, t) = inouts[j].clone();
                                 inout_places[j] = self.inout_place(o, &n, &t, &fname);
                                 if inout_places[j].is_none() {
                                     return bad;
                                 }
                             }
-                            ParamKind::Input(o) => {
-                                let Some(k) = inputs.iter().position(|(_, n, _)| p.name.is(n))
-                                else {
-                                    self.err(
-                                        UNKNOWN_MEMBER,
-                                        p.name.span,
-                                        format!("{fname} has no input `{}`", p.name),
-                                    );
-                                    continue;
-                                };
+                            (Slot::Input(k), ParamKind::Input(o)) => {
                                 let Some(a) = self.operand(o) else { continue };
                                 values[k] = self.fit(a, &inputs[k].2, o.span());
                             }
-                            ParamKind::Output { negate, target } => {
-                                let Some((_, v)) = sig
-                                    .var(&p.name.name)
-                                    .filter(|(_, v)| v.kind == ast::VarKind::Output)
-                                else {
-                                    self.err(
-                                        UNKNOWN_MEMBER,
-                                        p.name.span,
-                                        format!("{fname} has no output `{}`", p.name),
-                                    );
-                                    continue;
-                                };
-                                let ty = v.ty.clone();
+                            (Slot::Output(k), ParamKind::Output { negate, target }) => {
+                                let ty = outs[k].ty.clone();
                                 let Some(place) = self.place_of(target, true) else {
                                     continue;
                                 };
@@ -175,14 +236,9 @@ impl Walk<'_, '_> {
                                     );
                                     continue;
                                 }
-                                let k = sig
-                                    .vars
-                                    .iter()
-                                    .filter(|o| o.kind == ast::VarKind::Output)
-                                    .position(|o| o.name == v.name)
-                                    .unwrap_or(0);
                                 outputs.push((k, place, *negate));
                             }
+                            _ => {}
                         }
                     }
                     for (k, (_, _, t)) in inputs.iter().enumerate() {
@@ -266,27 +322,31 @@ impl Walk<'_, '_> {
                     return bad;
                 }
                 CallArgs::Formal(list) => {
-                    let mut named = Vec::new();
-                    for p in list {
-                        match &p.kind {
-                            ParamKind::Input(o) => {
-                                let Some(a) = self.operand(o) else { return bad };
-                                named.push((p.name.clone(), a, o.span()));
-                            }
-                            ParamKind::Output { .. } => {
-                                self.err(
-                                    UNSUPPORTED,
-                                    p.span,
-                                    "standard functions have no outputs to read with `=>`",
-                                );
-                                return bad;
-                            }
+                    let count = list.len();
+                    let (bound, ok) = self.bind_formal(list, |p| match &p.kind {
+                        ParamKind::Input(_) => stdfn::formal_slot(&key, &p.name, count)
+                            .map(Slot::Input)
+                            .map_err(|m| (UNKNOWN_MEMBER, p.name.span, m)),
+                        ParamKind::Output { .. } => Err((
+                            UNSUPPORTED,
+                            p.span,
+                            "standard functions have no outputs to read with `=>`".into(),
+                        )),
+                    });
+                    if !ok {
+                        return bad;
+                    }
+                    let mut given = Vec::new();
+                    for (slot, p) in bound {
+                        if let (Slot::Input(pos), ParamKind::Input(o)) = (slot, &p.kind) {
+                            let Some(a) = self.operand(o) else { return bad };
+                            given.push((pos, a, o.span()));
                         }
                     }
-                    match stdfn::order_formal(&key, named) {
+                    match stdfn::order_slots(&key, given) {
                         Ok(v) => argv = v,
-                        Err((s, m)) => {
-                            self.err(UNKNOWN_MEMBER, s.unwrap_or(span), m);
+                        Err(m) => {
+                            self.err(UNKNOWN_MEMBER, span, m);
                             return bad;
                         }
                     }
