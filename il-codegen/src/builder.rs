@@ -29,9 +29,18 @@ pub struct Builder {
 }
 
 /// A failed build: every diagnostic of every file, rendered like rustc.
-#[derive(Debug)]
 pub struct Error {
     rendered: String,
+}
+
+/// The rendered diagnostics, as [`Display`](fmt::Display) shows them: a
+/// build script's `fn main() -> Result<(), il_codegen::Error>` prints its
+/// error with `Debug`, and a struct dump (`Error { rendered: "error[IL0106]
+/// ...\n" }`) would put every message on one escaped line.
+impl fmt::Debug for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.rendered)
+    }
 }
 
 impl fmt::Display for Error {
