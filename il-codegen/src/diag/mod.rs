@@ -93,23 +93,18 @@ impl SourceFile {
     pub fn line_end(&self, line: usize) -> usize {
         self.line_starts
             .get(line)
-            .map_or(self.text.len(), |&next| next - 1)
+            .map_or(self.text.len(), |&next| next.saturating_sub(1))
     }
 
     /// The text of a 1-based line, without its line break.
     pub fn line_text(&self, line: usize) -> &str {
-        let Some(&start) = self.line_starts.get(line.wrapping_sub(1)) else {
+        if line == 0 || line > self.line_starts.len() {
             return "";
-        };
-        let end = self
-            .line_starts
-            .get(line)
-            .copied()
-            .unwrap_or(self.text.len());
+        }
         self.text
-            .get(start..end)
+            .get(self.line_start(line)..self.line_end(line))
             .unwrap_or("")
-            .trim_end_matches(['\n', '\r'])
+            .trim_end_matches('\r')
     }
 
     /// The source text of a span ("" if the span is not on char boundaries).

@@ -18,14 +18,8 @@ use crate::ast::Span;
 /// char boundaries (`lo` rounded down, `hi` rounded up).
 pub(crate) fn clamp_span(text: &str, span: Span) -> (usize, usize) {
     let len = text.len();
-    let mut lo = (span.lo as usize).min(len);
-    let mut hi = (span.hi as usize).min(len).max(lo);
-    while !text.is_char_boundary(lo) {
-        lo -= 1;
-    }
-    while !text.is_char_boundary(hi) {
-        hi += 1;
-    }
+    let lo = floor_char(text, (span.lo as usize).min(len));
+    let mut hi = ceil_char(text, (span.hi as usize).min(len).max(lo));
     if span.hi <= span.lo {
         hi = lo; // empty (or reversed) stays empty
     }
@@ -338,7 +332,7 @@ pub fn render_short_in(file: &SourceFile, d: &Diagnostic, first_line: Option<usi
         .take_while(|&c| c != '\n')
         .count();
     let carets = "^".repeat(span_chars.min(on_line).max(1));
-    let shown = printable(src_line);
+    let shown = shown_source(src_line).0;
     let sep = if shown.is_empty() { "" } else { " " };
     out.push_str(&format!(
         "{pad} |\n{num} |{sep}{shown}\n{pad} | {prefix}{carets}"
@@ -363,21 +357,6 @@ pub fn render_short_in(file: &SourceFile, d: &Diagnostic, first_line: Option<usi
     }
     out.truncate(out.trim_end().len());
     out
-}
-
-/// Control characters other than tab (and bidirectional controls, line
-/// separators) shown as U+FFFD so that a message never carries terminal
-/// escapes, moves the cursor or reorders the line.
-fn printable(s: &str) -> String {
-    s.chars()
-        .map(|c| {
-            if unsafe_char(c) && c != '\t' {
-                '\u{FFFD}'
-            } else {
-                c
-            }
-        })
-        .collect()
 }
 
 #[cfg(test)]
