@@ -59,14 +59,14 @@ impl Program {
     /// Parse and check every input.
     pub fn check(self) -> Checked {
         let files: Vec<&SourceFile> = self.inputs.iter().map(Input::il_text).collect();
-        let parsed: Vec<_> = files.iter().map(|f| syntax::parse(f)).collect();
-        let mut diags: Vec<Vec<Diagnostic>> = parsed.iter().map(|(_, d)| d.clone()).collect();
+        let (units, mut diags): (Vec<_>, Vec<Vec<Diagnostic>>) =
+            files.iter().map(|f| syntax::parse(f)).unzip();
         // Files with syntax errors stay out of the semantic check (it would
         // mostly repeat them); the others are checked together.
         let clean: Vec<usize> = (0..files.len())
             .filter(|&i| !has_errors(&diags[i]))
             .collect();
-        let pairs: Vec<_> = clean.iter().map(|&i| (files[i], &parsed[i].0)).collect();
+        let pairs: Vec<_> = clean.iter().map(|&i| (files[i], &units[i])).collect();
         let (programs, more) = sema::check_all(&pairs);
         let mut ir: Vec<sema::ir::Program> = files.iter().map(|_| Default::default()).collect();
         for ((&i, p), m) in clean.iter().zip(programs).zip(more) {
