@@ -29,6 +29,16 @@ pub enum Outcome {
     TooSlow,
 }
 
+/// The time budget of one run: `IL_FUZZ_BUDGET_SECS`, or `default_secs`.
+pub fn budget(default_secs: u64) -> std::time::Duration {
+    std::time::Duration::from_secs(
+        std::env::var("IL_FUZZ_BUDGET_SECS")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(default_secs),
+    )
+}
+
 /// Run `target` on `data` in a thread of its own and wait at most `budget`.
 /// A run over budget is reported, not waited for: its thread is left behind
 /// (the caller stops soon after with the input saved).

@@ -156,12 +156,7 @@ fn main() {
         }
     }
     assert!(!seeds.is_empty(), "no seed files");
-    let budget = std::time::Duration::from_secs(
-        std::env::var("IL_FUZZ_BUDGET_SECS")
-            .ok()
-            .and_then(|s| s.parse().ok())
-            .unwrap_or(10),
-    );
+    let budget = il_fuzz::budget(10);
     let mut rng = Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
     let start = std::time::Instant::now();
     let mut data = Vec::new();

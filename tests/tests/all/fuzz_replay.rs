@@ -41,12 +41,7 @@ fn every_target_over_the_seed_and_regression_corpus() {
     inputs.extend(files(&root.join("tests/plc")));
     inputs.extend(files(&root.join("tests/plc-hostile")));
     inputs.extend(files(&root.join("../shared/corpus")));
-    let budget = std::time::Duration::from_secs(
-        std::env::var("IL_FUZZ_BUDGET_SECS")
-            .ok()
-            .and_then(|s| s.parse().ok())
-            .unwrap_or(30),
-    );
+    let budget = targets::budget(30);
     let mut runs = 0;
     for path in &inputs {
         let data = std::fs::read(path).expect("read a corpus file");
