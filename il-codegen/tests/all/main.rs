@@ -2,6 +2,7 @@
 //! (one link instead of one per file). Data they read sits beside this folder:
 //! `../golden` (emitted code), `../diag` (rendered diagnostics).
 
+mod checked;
 mod syntax_common;
 
 mod corpus_configurations;

@@ -1,23 +1,7 @@
 //! Formal lists of function calls: one binder for user and standard
 //! functions, so both refuse the same mistakes the same way.
 
-use il_codegen::diag::SourceFile;
-
-/// (code, line, column, message) of every error.
-fn errors(src: &str) -> Vec<(String, usize, usize, String)> {
-    let f = SourceFile::new("t.il", src);
-    il_codegen::Program::new()
-        .il(f.clone())
-        .check()
-        .diagnostics()[0]
-        .iter()
-        .filter(|d| d.is_error())
-        .map(|d| {
-            let (l, c) = f.line_col(d.span.lo);
-            (d.code.to_string(), l, c, d.message.clone())
-        })
-        .collect()
-}
+use crate::checked::errors;
 
 const ADD2: &str = "FUNCTION Add2 : INT\nVAR_INPUT a, b : INT; END_VAR\nVAR_OUTPUT c : INT; END_VAR\n    LD a\n    ADD b\n    ST Add2\n    ST c\nEND_FUNCTION\n";
 

@@ -1,23 +1,7 @@
 //! Names and nesting that pass the parser but cannot become Rust: each is
 //! refused with a code and a place.
 
-use il_codegen::diag::SourceFile;
-
-/// The errors of compiling `src`: code, line, column, message.
-fn errors(src: &str) -> Vec<(String, usize, usize, String)> {
-    let f = SourceFile::new("t.il", src);
-    il_codegen::Program::new()
-        .il(f.clone())
-        .check()
-        .diagnostics()[0]
-        .iter()
-        .filter(|d| d.is_error())
-        .map(|d| {
-            let (l, c) = f.line_col(d.span.lo);
-            (d.code.to_string(), l, c, d.message.clone())
-        })
-        .collect()
-}
+use crate::checked::errors;
 
 /// `_` was accepted as a POU, variable or enumeration value name and became
 /// `__invalid_1` in the Rust. The lexer refuses it (IL0033, a front-end
