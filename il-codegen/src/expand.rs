@@ -1,9 +1,12 @@
 //! The `il!` macro's expansion, on proc_macro2 types so that it is testable
 //! here; `il-macros` only converts the token streams.
 //!
-//! Forms: `il!(r#"...IL..."#)` and `il!(file = "plc/motor.il")` (relative to
-//! the crate being compiled; the file is tracked so edits rebuild), either
-//! followed by `, serde` to derive serde's traits on the generated types.
+//! Forms: `il!(r#"...IL..."#)`, `il!(file = "plc/motor.il")` and
+//! `il!(files = ["plc/types.il", "plc/tank.xml"])` (relative to the crate
+//! being compiled; the files are tracked so edits rebuild; `.xml` files are
+//! PLCopen projects), each optionally followed by `, serde` to derive
+//! serde's traits on the generated types. One call is one program: its
+//! POUs see each other's TYPEs and FBs, and no other call's.
 
 use crate::diag::{SourceFile, has_errors, render::render_short_in};
 use crate::pipeline::Program;
@@ -13,7 +16,8 @@ use quote::{quote, quote_spanned};
 
 enum Input {
     Inline(syn::LitStr),
-    File(syn::LitStr),
+    /// `file = "a.il"` or `files = ["a.il", "b.xml"]`: one program.
+    Files(Vec<syn::LitStr>),
 }
 
 /// What follows the IL: `, serde`.
@@ -35,7 +39,7 @@ fn parse_flags(ps: syn::parse::ParseStream) -> syn::Result<bool> {
     Ok(serde)
 }
 
-const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or a file relative to the crate, `il!(file = \"plc/motor.il\")`, optionally followed by `, serde`";
+const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or files relative to the crate, `il!(file = \"plc/motor.il\")` or `il!(files = [\"plc/types.il\", \"plc/tank.il\"])` (one program: a POU may use the TYPEs and FBs of every file), optionally followed by `, serde`";
 
 fn parse_input(tokens: TokenStream) -> syn::Result<(Input, bool)> {
     syn::parse::Parser::parse2(
@@ -45,12 +49,30 @@ fn parse_input(tokens: TokenStream) -> syn::Result<(Input, bool)> {
                 return Ok((Input::Inline(lit), parse_flags(ps)?));
             }
             let kw: syn::Ident = ps.parse()?;
-            if kw != "file" {
-                return Err(syn::Error::new(kw.span(), USAGE));
-            }
             let _: syn::Token![=] = ps.parse()?;
-            let lit: syn::LitStr = ps.parse()?;
-            Ok((Input::File(lit), parse_flags(ps)?))
+            let files = if kw == "file" {
+                vec![ps.parse::<syn::LitStr>()?]
+            } else if kw == "files" {
+                let list;
+                syn::bracketed!(list in ps);
+                let lits = list.parse_terminated(|p| p.parse::<syn::LitStr>(), syn::Token![,])?;
+                let lits: Vec<syn::LitStr> = lits.into_iter().collect();
+                if lits.is_empty() {
+                    return Err(syn::Error::new(kw.span(), "`files = [...]` lists no file"));
+                }
+                for (i, l) in lits.iter().enumerate() {
+                    if lits[..i].iter().any(|o| o.value() == l.value()) {
+                        return Err(syn::Error::new(
+                            l.span(),
+                            format!("`{}` is listed twice", l.value()),
+                        ));
+                    }
+                }
+                lits
+            } else {
+                return Err(syn::Error::new(kw.span(), USAGE));
+            };
+            Ok((Input::Files(files), parse_flags(ps)?))
         },
         tokens,
     )
@@ -90,70 +112,98 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
         serde,
         ..Default::default()
     };
-    let (file, lit_span, track) = match input {
+    // Each source with the literal its errors point at.
+    let mut sources: Vec<(SourceFile, Span)> = Vec::new();
+    let mut track = TokenStream::new();
+    match input {
         Input::Inline(lit) => {
             // The IL's line 1 is the rest of the line where the string starts
             // (0 when the compiler does not report locations).
             let line = lit.span().start().line;
             first_line = (line > 0).then_some(line);
-            (
-                SourceFile::new("il! input", lit.value()),
-                lit.span(),
-                quote!(),
-            )
+            sources.push((SourceFile::new("il! input", lit.value()), lit.span()));
         }
-        Input::File(lit) => {
-            let rel = lit.value();
+        Input::Files(lits) => {
             let base = std::env::var_os("CARGO_MANIFEST_DIR")
                 .map(std::path::PathBuf::from)
                 .unwrap_or_default();
-            let path = base.join(&rel);
-            match crate::read::read_source(&path, &rel) {
-                Ok(file) => {
-                    let abs = path.display().to_string();
-                    // include_bytes! makes cargo rebuild when the file changes.
-                    (
-                        file,
-                        lit.span(),
-                        quote!(
+            let mut unreadable = TokenStream::new();
+            for lit in lits {
+                let rel = lit.value();
+                let path = base.join(&rel);
+                match crate::read::read_source(&path, &rel) {
+                    Ok(file) => {
+                        let abs = path.display().to_string();
+                        // include_bytes! makes cargo rebuild when the file changes.
+                        track.extend(quote!(
                             const _: &[u8] = include_bytes!(#abs);
-                        ),
-                    )
-                }
-                Err(e) => {
-                    let msg = format!("cannot read IL file `{}`: {}", path.display(), e.reason);
-                    return quote_spanned!(lit.span()=> ::core::compile_error!(#msg););
+                        ));
+                        sources.push((file, lit.span()));
+                    }
+                    Err(e) => {
+                        let msg = format!("cannot read IL file `{}`: {}", path.display(), e.reason);
+                        unreadable
+                            .extend(quote_spanned!(lit.span()=> ::core::compile_error!(#msg);));
+                    }
                 }
             }
+            if !unreadable.is_empty() {
+                return unreadable;
+            }
         }
-    };
-    let checked = Program::new().il(file).check();
-    if let Some(mut emitted) = checked.emit(opts) {
-        let items = emitted.pop().map(|e| e.tokens).unwrap_or_default();
-        return quote!(#track #items);
     }
-    let file = checked.inputs()[0].source();
-    let errors = checked.diagnostics()[0]
+    let checked = sources
         .iter()
-        .filter(|d| d.is_error())
-        .map(|d| {
-            let msg = render_short_in(file, d, first_line);
-            quote_spanned!(lit_span=> ::core::compile_error!(#msg);)
-        });
-    let stubs = stubs(file, opts);
-    quote!(#track #(#errors)* #stubs)
+        .fold(Program::new(), |p, (f, _)| p.source(f.clone()))
+        .check();
+    if let Some(emitted) = checked.emit(opts) {
+        let mut items = track;
+        items.extend(emitted.into_iter().map(|e| e.tokens));
+        return items;
+    }
+    let mut errors = TokenStream::new();
+    for ((input, diags), (_, span)) in checked.reports().zip(&sources) {
+        for d in diags.iter().filter(|d| d.is_error()) {
+            let mut msg = render_short_in(input.source(), d, first_line);
+            // A file's message names it: with several, the line alone is ambiguous.
+            if first_line.is_none() {
+                msg = format!("{}: {msg}", input.source().name);
+            }
+            errors.extend(quote_spanned!(*span=> ::core::compile_error!(#msg);));
+        }
+    }
+    let files: Vec<&SourceFile> = checked.inputs().iter().map(|i| i.il_text()).collect();
+    let stubs = stubs(&files, opts);
+    quote!(#track #errors #stubs)
 }
 
 /// Items with the interfaces of every POU that could be checked, and empty
 /// bodies; emitted only next to `compile_error!`s.
-fn stubs(file: &SourceFile, opts: emit::Options) -> TokenStream {
-    let (unit, diags) = syntax::parse(file);
-    if has_errors(&diags) && unit.items.is_empty() {
+fn stubs(files: &[&SourceFile], opts: emit::Options) -> TokenStream {
+    let parsed: Vec<_> = files.iter().map(|f| syntax::parse(f)).collect();
+    // Files whose syntax errors left no items have nothing to stub.
+    let pairs: Vec<_> = files
+        .iter()
+        .zip(&parsed)
+        .filter(|(_, (unit, diags))| !(has_errors(diags) && unit.items.is_empty()))
+        .map(|(f, (unit, _))| (*f, unit))
+        .collect();
+    if pairs.is_empty() {
         return TokenStream::new();
     }
-    let (mut program, diags) = sema::check(file, &unit);
+    let (programs, diags) = sema::check_all(&pairs);
+    let mut program = sema::ir::Program::default();
+    for p in programs {
+        program.types.extend(p.types);
+        program.pous.extend(p.pous);
+        program.configs.extend(p.configs);
+    }
     // A FUNCTION_BLOCK that contains itself cannot be a Rust struct at all.
-    if diags.iter().any(|d| d.code == sema::codes::RECURSION) {
+    if diags
+        .iter()
+        .flatten()
+        .any(|d| d.code == sema::codes::RECURSION)
+    {
         return TokenStream::new();
     }
     for p in &mut program.pous {

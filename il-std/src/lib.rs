@@ -71,6 +71,7 @@ pub use fb::{
     CTUD, CTUD_DINT, CTUD_LINT, CTUD_UDINT, CTUD_ULINT, F_TRIG, FunctionBlock, R_TRIG, RS, RTC, SR,
     TOF, TON, TP,
 };
+pub use image::address as addr;
 pub use image::{Area, INPUT_BYTES, Located, MEMORY_BYTES, OUTPUT_BYTES, ProcessImage};
 pub use string::{DEFAULT_STRING_LEN, STRING, WSTRING};
 pub use task::{TaskInfo, TaskState};

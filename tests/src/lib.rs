@@ -26,6 +26,12 @@ pub mod hostile_macro {
     il_macros::il!(file = "plc-hostile/hostile.il");
 }
 
+/// The tank controller of the new-user test (`new-user/plc`): two files,
+/// one program, through one `il!(files = [...])`.
+pub mod tank_macro {
+    il_macros::il!(files = ["new-user/plc/types.il", "new-user/plc/tank.il"]);
+}
+
 /// The Annex F programs of IEC 61131-3, from `../shared/corpus`.
 #[cfg(il_corpus)]
 pub mod annex_f {

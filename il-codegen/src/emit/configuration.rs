@@ -59,9 +59,9 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
                 sub_items.extend(quote! {
                     #[doc = #doc]
                     #[derive(Clone, Debug, PartialEq)]
-                    #[allow(non_snake_case, non_camel_case_types, clippy::all)]
+                    #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
                     pub struct #st { #f }
-                    #[allow(clippy::all)]
+                    #[allow(dead_code, clippy::all)]
                     impl ::core::default::Default for #st {
                         fn default() -> Self { Self { #i } }
                     }
@@ -191,7 +191,13 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
         .globals
         .iter()
         .chain(c.resources.iter().flat_map(|r| &r.globals))
-        .filter_map(|v| v.location.as_ref().map(|l| super::located(&v.name, l)));
+        .filter_map(|v| v.location.as_ref().map(|l| super::io::located(&v.name, l)));
+    let mut io_accessors = TokenStream::new();
+    for r in &c.resources {
+        let prefix = r.name.as_ref().map(|n| format!("{n}_")).unwrap_or_default();
+        io_accessors.extend(super::io::accessors_in(&prefix, &r.globals));
+    }
+    io_accessors.extend(super::io::accessors(&c.globals));
     let doc = format!(
         " IEC 61131-3 CONFIGURATION `{}`, generated from Instruction List: its globals and program instances. Call [`{}::run`] once per host cycle with the current time in the context.",
         c.name, name
@@ -199,7 +205,7 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
     quote! {
         #[doc = #doc]
         #[derive(Clone, Debug, PartialEq)]
-        #[allow(non_snake_case, non_camel_case_types, clippy::all)]
+        #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
         pub struct #name {
             #fields
             #prog_fields
@@ -207,7 +213,7 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
             #(#state_ids: ::il_std::TaskState,)*
         }
 
-        #[allow(clippy::all)]
+        #[allow(dead_code, clippy::all)]
         impl ::core::default::Default for #name {
             fn default() -> Self {
                 Self {
@@ -222,12 +228,13 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
         #sub_items
         #retain
 
-        #[allow(non_snake_case, unused_mut, unused_variables, clippy::all)]
+        #[allow(dead_code, non_snake_case, unused_mut, unused_variables, clippy::all)]
         impl #name {
             /// The tasks, highest priority first.
             pub const TASKS: &'static [::il_std::TaskInfo] = &[#(#infos),*];
             /// The located globals (`AT %...`), which live in `Cycle::io`.
             pub const ADDRESSES: &'static [::il_std::Located] = &[#(#located),*];
+            #io_accessors
 
             /// Runs every task released at `__ctx.now()`, highest priority
             /// first (each task's programs in declaration order), then the

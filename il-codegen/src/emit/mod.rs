@@ -7,6 +7,7 @@
 
 mod configuration;
 mod flow;
+mod io;
 mod names;
 mod values;
 
@@ -171,7 +172,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
         pou.kind.keyword(),
         pou.name
     );
-    let allow = quote!(#[allow(non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens,
+    let allow = quote!(#[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens,
         unused_comparisons, clippy::all)]);
 
     match pou.kind {
@@ -316,7 +317,8 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
             let mut inner = quote!(#(#edge_lets)* #(#loads)* #locals);
             inner.extend(body);
             let block = braced(inner);
-            let addresses = addresses(pou);
+            let addresses = io::addresses(pou);
+            let io_accessors = io::accessors(&pou.vars);
             let method_doc = if pou.kind == PouKind::Program {
                 " Run one scan."
             } else {
@@ -350,7 +352,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 (
                     quote! {
                         #[doc = #edoc]
-                        #[allow(non_snake_case, non_camel_case_types)]
+                        #[allow(dead_code, non_snake_case, non_camel_case_types)]
                         pub struct #ext_id<'a> { #(#fields)* }
                     },
                     quote!(mut __ext: #ext_id<'_>),
@@ -372,23 +374,25 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 #[doc = #doc]
                 #[derive(Clone, Debug, PartialEq)]
                 #serde
-                #[allow(non_snake_case, non_camel_case_types, clippy::all)]
+                #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
                 pub struct #name {
                     #(#decls)*
                     #(#mem_decls)*
                 }
 
-                #[allow(clippy::all)]
+                #[allow(dead_code, clippy::all)]
                 impl ::core::default::Default for #name {
                     fn default() -> Self {
                         Self { #(#inits)* #(#mem_inits)* }
                     }
                 }
 
+                #[allow(dead_code)]
                 impl #name {
                     /// The located variables and direct addresses this POU
                     /// reads or writes in `Cycle::io`, for binding I/O.
                     pub const ADDRESSES: &'static [::il_std::Located] = &[#(#addresses),*];
+                    #io_accessors
 
                     #[doc = #method_doc]
                     #allow
@@ -486,10 +490,10 @@ pub(crate) fn snapshot_item(
         #[doc = #doc]
         #[derive(Clone, Debug, PartialEq)]
         #serde
-        #[allow(non_snake_case, non_camel_case_types)]
+        #[allow(dead_code, non_snake_case, non_camel_case_types)]
         pub struct #st { #(#fields)* }
 
-        #[allow(clippy::all)]
+        #[allow(dead_code, clippy::all)]
         impl #owner {
             /// A snapshot of the RETAIN variables.
             pub fn retain(&self) -> #st {
@@ -516,33 +520,6 @@ fn inout_params(pou: &CheckedPou) -> Vec<TokenStream> {
         .collect()
 }
 
-fn addresses(pou: &CheckedPou) -> Vec<TokenStream> {
-    let located = pou
-        .vars
-        .iter()
-        .filter_map(|v| v.location.as_ref().map(|l| (v.name.as_str(), l)));
-    let direct = pou.addresses.iter().map(|l| (l.text.as_str(), l));
-    located
-        .chain(direct)
-        .map(|(name, l)| self::located(name, l))
-        .collect()
-}
-
-/// An `il_std::Located` entry of an `ADDRESSES` table.
-fn located(name: &str, l: &crate::sema::ir::Loc) -> TokenStream {
-    let area = match l.area {
-        crate::ast::Area::Input => quote!(::il_std::Area::Input),
-        crate::ast::Area::Output => quote!(::il_std::Area::Output),
-        crate::ast::Area::Memory => quote!(::il_std::Area::Memory),
-    };
-    let (text, byte, ty) = (&l.text, l.byte, l.elem.name());
-    let bit = match l.bit {
-        Some(b) => quote!(::core::option::Option::Some(#b)),
-        None => quote!(::core::option::Option::None),
-    };
-    quote!(::il_std::Located { name: #name, address: #text, area: #area, byte: #byte, bit: #bit, ty: #ty })
-}
-
 /// A user STRUCT or enumeration as a Rust item the host can use directly.
 fn emit_type(t: &crate::sema::ir::TypeDef, opts: Options) -> TokenStream {
     let serde = serde_derive(opts);
@@ -566,10 +543,10 @@ fn emit_type(t: &crate::sema::ir::TypeDef, opts: Options) -> TokenStream {
                 #[doc = #doc]
                 #[derive(Clone, Copy, Debug, PartialEq)]
                 #serde
-                #[allow(non_snake_case, non_camel_case_types, clippy::all)]
+                #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
                 pub struct #id { #(#decls)* }
 
-                #[allow(clippy::all)]
+                #[allow(dead_code, clippy::all)]
                 impl ::core::default::Default for #id {
                     fn default() -> Self {
                         Self { #(#inits)* }
@@ -598,7 +575,7 @@ fn emit_type(t: &crate::sema::ir::TypeDef, opts: Options) -> TokenStream {
                 #[doc = #doc]
                 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
                 #serde
-                #[allow(non_camel_case_types, clippy::all)]
+                #[allow(dead_code, non_camel_case_types, clippy::all)]
                 pub enum #id { #(#vals)* }
             }
         }

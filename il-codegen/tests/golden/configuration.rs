@@ -2,19 +2,20 @@
 
 /// IEC 61131-3 PROGRAM `Fast`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
 pub struct Fast {
     /// VAR_INPUT (IL line 6)
     pub enable: bool,
     /// VAR_OUTPUT (IL line 7)
     pub seen: i32,
 }
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl ::core::default::Default for Fast {
     fn default() -> Self {
         Self { enable: false, seen: 0i32 }
     }
 }
+#[allow(dead_code)]
 impl Fast {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
@@ -28,8 +29,20 @@ impl Fast {
             ty: "BOOL",
         },
     ];
+    /// `lamp` (%QX0.1 BOOL) as the process image holds it now.
+    pub fn io_lamp(__ctx: &::il_std::Cycle) -> bool {
+        __ctx.io.bit(::il_std::Area::Output, 0usize, 1u8)
+    }
+    /// Writes `lamp` (%QX0.1 BOOL) into the process image.
+    pub fn set_io_lamp(__ctx: &mut ::il_std::Cycle, __value: bool) {
+        {
+            let __v: bool = __value;
+            __ctx.io.set_bit(::il_std::Area::Output, 0usize, 1u8, __v);
+        }
+    }
     /// Run one scan.
     #[allow(
+        dead_code,
         non_snake_case,
         unused_mut,
         unused_variables,
@@ -78,27 +91,29 @@ impl Fast {
     }
 }
 /// The globals `Fast` uses (its VAR_EXTERNALs), passed to every call.
-#[allow(non_snake_case, non_camel_case_types)]
+#[allow(dead_code, non_snake_case, non_camel_case_types)]
 pub struct Fast__Ext<'a> {
     /// VAR_EXTERNAL (IL line 5)
     pub ticks: &'a mut i32,
 }
 /// IEC 61131-3 PROGRAM `Slow`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
 pub struct Slow {}
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl ::core::default::Default for Slow {
     fn default() -> Self {
         Self {}
     }
 }
+#[allow(dead_code)]
 impl Slow {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
     #[allow(
+        dead_code,
         non_snake_case,
         unused_mut,
         unused_variables,
@@ -129,7 +144,7 @@ impl Slow {
     }
 }
 /// The globals `Slow` uses (its VAR_EXTERNALs), passed to every call.
-#[allow(non_snake_case, non_camel_case_types)]
+#[allow(dead_code, non_snake_case, non_camel_case_types)]
 pub struct Slow__Ext<'a> {
     /// VAR_EXTERNAL CONSTANT (IL line 21)
     pub limit: &'a i32,
@@ -138,7 +153,7 @@ pub struct Slow__Ext<'a> {
 }
 /// IEC 61131-3 CONFIGURATION `Plant`, generated from Instruction List: its globals and program instances. Call [`Plant::run`] once per host cycle with the current time in the context.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
 pub struct Plant {
     /// VAR_GLOBAL (IL line 33)
     pub ticks: i32,
@@ -153,7 +168,7 @@ pub struct Plant {
     __task_0: ::il_std::TaskState,
     __task_1: ::il_std::TaskState,
 }
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl ::core::default::Default for Plant {
     fn default() -> Self {
         Self {
@@ -169,14 +184,14 @@ impl ::core::default::Default for Plant {
 }
 /// RESOURCE `Cpu` of CONFIGURATION `Plant`.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
 pub struct Plant__Cpu {
     /// PROGRAM instance `fast` : Fast
     pub fast: Fast,
     /// PROGRAM instance `slow` : Slow
     pub slow: Slow,
 }
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl ::core::default::Default for Plant__Cpu {
     fn default() -> Self {
         Self {
@@ -185,7 +200,7 @@ impl ::core::default::Default for Plant__Cpu {
         }
     }
 }
-#[allow(non_snake_case, unused_mut, unused_variables, clippy::all)]
+#[allow(dead_code, non_snake_case, unused_mut, unused_variables, clippy::all)]
 impl Plant {
     /// The tasks, highest priority first.
     pub const TASKS: &'static [::il_std::TaskInfo] = &[
@@ -217,6 +232,17 @@ impl Plant {
             ty: "BOOL",
         },
     ];
+    /// `lamp` (%QX0.1 BOOL) as the process image holds it now.
+    pub fn io_lamp(__ctx: &::il_std::Cycle) -> bool {
+        __ctx.io.bit(::il_std::Area::Output, 0usize, 1u8)
+    }
+    /// Writes `lamp` (%QX0.1 BOOL) into the process image.
+    pub fn set_io_lamp(__ctx: &mut ::il_std::Cycle, __value: bool) {
+        {
+            let __v: bool = __value;
+            __ctx.io.set_bit(::il_std::Area::Output, 0usize, 1u8, __v);
+        }
+    }
     /// Runs every task released at `__ctx.now()`, highest priority
     /// first (each task's programs in declaration order), then the
     /// programs without a task. Returns how many programs ran.

@@ -2,7 +2,7 @@
 
 /// IEC 61131-3 PROGRAM `Dispatch`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
 pub struct Dispatch {
     /// VAR_INPUT (IL line 5)
     pub start_mid: bool,
@@ -13,7 +13,7 @@ pub struct Dispatch {
     /// VAR (IL line 6)
     pub n: i16,
 }
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl ::core::default::Default for Dispatch {
     fn default() -> Self {
         Self {
@@ -24,12 +24,14 @@ impl ::core::default::Default for Dispatch {
         }
     }
 }
+#[allow(dead_code)]
 impl Dispatch {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
     #[allow(
+        dead_code,
         non_snake_case,
         unused_mut,
         unused_variables,

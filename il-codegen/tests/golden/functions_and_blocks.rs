@@ -2,6 +2,7 @@
 
 /// IEC 61131-3 FUNCTION `Scale`, generated from Instruction List.
 #[allow(
+    dead_code,
     non_snake_case,
     unused_mut,
     unused_variables,
@@ -31,7 +32,7 @@ pub fn Scale(__ctx: &mut ::il_std::Cycle, mut __v_raw: i16, mut __v_span: i16) -
 }
 /// IEC 61131-3 FUNCTION_BLOCK `Filler`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
 pub struct Filler {
     /// VAR_INPUT (IL line 14)
     pub level: i16,
@@ -46,7 +47,7 @@ pub struct Filler {
     /// VAR (IL line 16)
     pub slot: i16,
 }
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl ::core::default::Default for Filler {
     fn default() -> Self {
         Self {
@@ -59,12 +60,14 @@ impl ::core::default::Default for Filler {
         }
     }
 }
+#[allow(dead_code)]
 impl Filler {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Call the block once.
     #[allow(
+        dead_code,
         non_snake_case,
         unused_mut,
         unused_variables,

@@ -2,6 +2,7 @@
 
 /// IEC 61131-3 FUNCTION `SumTo`, generated from Instruction List.
 #[allow(
+    dead_code,
     non_snake_case,
     unused_mut,
     unused_variables,

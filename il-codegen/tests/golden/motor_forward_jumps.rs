@@ -2,7 +2,7 @@
 
 /// IEC 61131-3 FUNCTION_BLOCK `Motor`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
 pub struct Motor {
     /// VAR_INPUT (IL line 4)
     pub start: bool,
@@ -15,7 +15,7 @@ pub struct Motor {
     /// VAR (IL line 12)
     pub edge: ::il_std::R_TRIG,
 }
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl ::core::default::Default for Motor {
     fn default() -> Self {
         Self {
@@ -27,12 +27,14 @@ impl ::core::default::Default for Motor {
         }
     }
 }
+#[allow(dead_code)]
 impl Motor {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Call the block once.
     #[allow(
+        dead_code,
         non_snake_case,
         unused_mut,
         unused_variables,

@@ -2,7 +2,7 @@
 
 /// IEC 61131-3 FUNCTION_BLOCK `Odometer`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
 pub struct Odometer {
     /// VAR_INPUT (IL line 5)
     pub pulse: bool,
@@ -11,7 +11,7 @@ pub struct Odometer {
     /// VAR (IL line 7)
     pub edge: ::il_std::R_TRIG,
 }
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl ::core::default::Default for Odometer {
     fn default() -> Self {
         Self {
@@ -21,12 +21,14 @@ impl ::core::default::Default for Odometer {
         }
     }
 }
+#[allow(dead_code)]
 impl Odometer {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Call the block once.
     #[allow(
+        dead_code,
         non_snake_case,
         unused_mut,
         unused_variables,
@@ -75,12 +77,12 @@ impl ::il_std::FunctionBlock for Odometer {
 }
 /// The RETAIN variables of `Odometer` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types)]
+#[allow(dead_code, non_snake_case, non_camel_case_types)]
 pub struct Odometer__Retain {
     /// VAR RETAIN (IL line 6)
     pub total: u32,
 }
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl Odometer {
     /// A snapshot of the RETAIN variables.
     pub fn retain(&self) -> Odometer__Retain {
@@ -95,7 +97,7 @@ impl Odometer {
 }
 /// IEC 61131-3 PROGRAM `Line`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
 pub struct Line {
     /// VAR_INPUT (IL line 18)
     pub pulses: [bool; 2usize],
@@ -108,7 +110,7 @@ pub struct Line {
     /// VAR (IL line 23)
     pub scratch: i16,
 }
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl ::core::default::Default for Line {
     fn default() -> Self {
         Self {
@@ -120,12 +122,14 @@ impl ::core::default::Default for Line {
         }
     }
 }
+#[allow(dead_code)]
 impl Line {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
     #[allow(
+        dead_code,
         non_snake_case,
         unused_mut,
         unused_variables,
@@ -184,7 +188,7 @@ impl ::il_std::FunctionBlock for Line {
 }
 /// The RETAIN variables of `Line` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types)]
+#[allow(dead_code, non_snake_case, non_camel_case_types)]
 pub struct Line__Retain {
     /// VAR RETAIN (IL line 19)
     pub shifts: i16,
@@ -193,7 +197,7 @@ pub struct Line__Retain {
     /// The RETAIN variables of `axes` (IL line 22)
     pub axes: [Odometer__Retain; 2usize],
 }
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl Line {
     /// A snapshot of the RETAIN variables.
     pub fn retain(&self) -> Line__Retain {
@@ -226,14 +230,14 @@ impl Line {
 }
 /// IEC 61131-3 PROGRAM `OnlyNested`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
 pub struct OnlyNested {
     /// VAR (IL line 35)
     pub wheel: Odometer,
     /// VAR (IL line 35)
     pub x: bool,
 }
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl ::core::default::Default for OnlyNested {
     fn default() -> Self {
         Self {
@@ -242,12 +246,14 @@ impl ::core::default::Default for OnlyNested {
         }
     }
 }
+#[allow(dead_code)]
 impl OnlyNested {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
     #[allow(
+        dead_code,
         non_snake_case,
         unused_mut,
         unused_variables,
@@ -277,12 +283,12 @@ impl ::il_std::FunctionBlock for OnlyNested {
 }
 /// The RETAIN variables of `OnlyNested` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(non_snake_case, non_camel_case_types)]
+#[allow(dead_code, non_snake_case, non_camel_case_types)]
 pub struct OnlyNested__Retain {
     /// The RETAIN variables of `wheel` (IL line 35)
     pub wheel: Odometer__Retain,
 }
-#[allow(clippy::all)]
+#[allow(dead_code, clippy::all)]
 impl OnlyNested {
     /// A snapshot of the RETAIN variables.
     pub fn retain(&self) -> OnlyNested__Retain {

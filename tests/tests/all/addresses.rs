@@ -79,6 +79,30 @@ macro_rules! address_tests {
                 assert_eq!(Located::ADDRESSES.len(), 5);
                 assert_eq!(Located::ADDRESSES[0].byte, 6);
             }
+
+            /// The same program bound through its typed accessors and typed
+            /// IEC addresses: no byte offsets, and the values keep their
+            /// IEC types (`level` is an INT, `limit` a REAL).
+            #[test]
+            fn typed_accessors_and_addresses() {
+                use il_std::addr::{md, mx, qb, qx};
+                let mut ctx = Cycle::new();
+                let mut p = Located::default();
+                Located::set_io_level(&mut ctx, -5);
+                Located::set_io_limit(&mut ctx, -10.0);
+                ctx.io.set(qb(1), 255);
+                p.call(&mut ctx);
+                assert!(Located::io_alarm(&ctx), "-5 > -10");
+                assert_eq!(Located::io_count(&ctx), 0, "USINT wraps");
+                assert!(ctx.io.get(mx(0, 3)), "%MW0 OR 8 sets %MX0.3");
+                assert_eq!(Located::io_flags(&ctx), 8);
+                // The accessors and the typed addresses are the same bytes.
+                assert_eq!(ctx.io.get(md(1).real()), -10.0);
+                assert_eq!(ctx.io.get(il_std::addr::iw(3).int()), -5);
+                assert_eq!(ctx.io.get(qx(0, 7)), Located::io_alarm(&ctx));
+                Located::set_io_alarm(&mut ctx, false);
+                assert!(!ctx.io.bit(Area::Output, 0, 7));
+            }
         }
     };
 }

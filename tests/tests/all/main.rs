@@ -6,7 +6,6 @@
 
 mod addresses;
 mod annex_f;
-mod build_script;
 mod differential;
 mod edge_cases;
 mod edges_strings;
@@ -19,6 +18,7 @@ mod jumps;
 mod labels_parens;
 mod misc_lang;
 mod motor;
+mod new_user;
 mod ops_arith;
 mod ops_bool;
 mod parens;

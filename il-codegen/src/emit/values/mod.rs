@@ -18,4 +18,4 @@ mod expressions;
 mod places;
 
 pub(crate) use constants::{constant, cr_ident, default_value, heap_init_value, init_value};
-pub(crate) use places::{io_read, io_write};
+pub(crate) use places::{area, io_read, io_write};

@@ -303,7 +303,7 @@ pub(super) fn index_usize(v: TokenStream, elem: Option<Elem>, lo: i64) -> TokenS
     quote!(usize::try_from(#off).unwrap_or(usize::MAX))
 }
 
-pub(super) fn area(l: &Loc) -> TokenStream {
+pub(crate) fn area(l: &Loc) -> TokenStream {
     match l.area {
         Area::Input => quote!(::il_std::Area::Input),
         Area::Output => quote!(::il_std::Area::Output),

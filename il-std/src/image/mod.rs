@@ -11,6 +11,10 @@
 //!
 //! Accessors never panic: an access outside an area reads 0 and writes
 //! nothing (the compiler refuses addresses outside the areas anyway).
+//! Hosts use the typed addresses of [`address`] (`ctx.io.set(iw(1), 500)`)
+//! rather than byte offsets.
+
+pub mod address;
 
 /// Size of the input area in bytes.
 pub const INPUT_BYTES: usize = 256;
@@ -97,14 +101,14 @@ impl ProcessImage {
             if v { *b |= m } else { *b &= !m }
         }
     }
-    fn read<const N: usize>(&self, a: Area, byte: usize) -> [u8; N] {
+    pub(crate) fn read<const N: usize>(&self, a: Area, byte: usize) -> [u8; N] {
         let mut out = [0u8; N];
         if let Some(s) = self.area(a).get(byte..byte.saturating_add(N)) {
             out.copy_from_slice(s);
         }
         out
     }
-    fn write<const N: usize>(&mut self, a: Area, byte: usize, v: [u8; N]) {
+    pub(crate) fn write<const N: usize>(&mut self, a: Area, byte: usize, v: [u8; N]) {
         if let Some(s) = self.area_mut(a).get_mut(byte..byte.saturating_add(N)) {
             s.copy_from_slice(&v);
         }

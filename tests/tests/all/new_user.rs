@@ -1,0 +1,245 @@
+//! The new user's path, as the README tells it: a crate of their own with
+//! `il!`, another with build.rs, both binaries around the two-file tank
+//! controller of `tests/new-user/plc` (an enum, a struct, a subrange, timers,
+//! a counter, a FUNCTION with an output, jumps, direct addresses), then a
+//! deliberate mistake in the IL of each.
+//!
+//! The two crates are built by cargo outside this workspace, offline, with
+//! path dependencies and one target directory of their own under
+//! `target/tests/new-user` (this workspace's is locked by the running
+//! `cargo test`). They must build without a single warning: generated code
+//! in a binary, inside a `mod`, glob-imported, uses few of its items.
+
+use il_tests::tank_macro::{Tank, TankState};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// The host loop both crates run (and the in-workspace test mirrors): the
+/// pump fills 50 raw units per 100 ms scan; draining empties 100 a scan.
+const MAIN: &str = r#"
+use plc::*;
+
+fn main() {
+    let mut ctx = il_std::Cycle::new();
+    let mut tank = Tank::default();
+    let mut raw: i16 = 0;
+    for scan in 0..40 {
+        Tank::set_io_raw_level(&mut ctx, raw);
+        ctx.io.set(il_std::addr::ix(0, 1), scan >= 30); // drain_req AT %IX0.1
+        tank.call(&mut ctx);
+        if Tank::io_pump(&ctx) {
+            raw += 50;
+        } else if tank.state == TankState::Draining {
+            raw -= 100;
+        }
+        ctx.advance(il_std::TIME::from_ms(100));
+        println!(
+            "scan {scan}: {:?} level {} pump {} lamp {} fills {}",
+            tank.state,
+            tank.reading.level,
+            Tank::io_pump(&ctx),
+            ctx.io.get(il_std::addr::qx(0, 2)),
+            tank.fills.CV
+        );
+    }
+}
+"#;
+
+fn plc_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("new-user/plc")
+}
+
+/// The same run in this workspace, through `il!(files = [...])`.
+fn run_here() -> Vec<String> {
+    let mut ctx = il_std::Cycle::new();
+    let mut tank = Tank::default();
+    let mut raw: i16 = 0;
+    let mut lines = Vec::new();
+    for scan in 0..40 {
+        Tank::set_io_raw_level(&mut ctx, raw);
+        ctx.io.set(il_std::addr::ix(0, 1), scan >= 30);
+        tank.call(&mut ctx);
+        if Tank::io_pump(&ctx) {
+            raw += 50;
+        } else if tank.state == TankState::Draining {
+            raw -= 100;
+        }
+        ctx.advance(il_std::TIME::from_ms(100));
+        lines.push(format!(
+            "scan {scan}: {:?} level {} pump {} lamp {} fills {}",
+            tank.state,
+            tank.reading.level,
+            Tank::io_pump(&ctx),
+            ctx.io.get(il_std::addr::qx(0, 2)),
+            tank.fills.CV
+        ));
+    }
+    lines
+}
+
+#[test]
+fn the_tank_from_two_files_fills_holds_and_drains() {
+    let lines = run_here();
+    // 18 scans of 50 reach 900 raw = 90 %, the high mark.
+    assert!(lines[17].contains("Filling") && lines[17].contains("pump true"));
+    assert!(lines[18].contains("Full") && lines[18].contains("pump false"));
+    assert!(lines[18].contains("fills 1"), "{}", lines[18]);
+    assert!(lines[18].contains("lamp false"));
+    assert!(lines[29].contains("Full"));
+    assert!(lines[30].contains("Draining"), "{}", lines[30]);
+    // 900 raw drains 100 a scan: at 5 % or less it is Idle again, and stays
+    // Idle while the drain is asked for.
+    let last = lines.last().unwrap();
+    assert!(last.contains("Idle") && last.contains("fills 1"), "{last}");
+    assert!(lines[5].contains("lamp true"), "the lamp follows the pump");
+}
+
+/// A crate of the user's, written into `root/name`.
+fn write_crate(root: &Path, name: &str, cargo_extra: &str, files: &[(&str, &str)]) -> PathBuf {
+    let ws = workspace();
+    let dir = root.join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(dir.join("src")).unwrap();
+    std::fs::create_dir_all(dir.join("plc")).unwrap();
+    let dep = |c: &str| format!("{c} = {{ path = {:?} }}\n", ws.join(c));
+    std::fs::write(
+        dir.join("Cargo.toml"),
+        format!(
+            "[package]\nname = \"{name}\"\nversion = \"0.0.0\"\nedition = \"2024\"\npublish = false\n\n\
+             [dependencies]\n{}{cargo_extra}\n[workspace]\n",
+            dep("il-std")
+        )
+        .replace("{il-codegen}", &dep("il-codegen"))
+        .replace("{il-macros}", &dep("il-macros")),
+    )
+    .unwrap();
+    for f in ["types.il", "tank.il"] {
+        std::fs::copy(plc_dir().join(f), dir.join("plc").join(f)).unwrap();
+    }
+    for (path, text) in files {
+        std::fs::write(dir.join(path), text).unwrap();
+    }
+    // This workspace's versions of the dependencies, all in the local cache.
+    std::fs::copy(ws.join("Cargo.lock"), dir.join("Cargo.lock")).unwrap();
+    dir
+}
+
+fn workspace() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("..")
+        .canonicalize()
+        .expect("workspace root")
+}
+
+fn cargo(dir: &Path, target: &Path, args: &[&str]) -> Output {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    Command::new(cargo)
+        .args(args)
+        .arg("--offline")
+        .current_dir(dir)
+        .env("CARGO_TARGET_DIR", target)
+        .env_remove("RUSTFLAGS")
+        .env_remove("CARGO_ENCODED_RUSTFLAGS")
+        .output()
+        .expect("run cargo")
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+/// Builds and runs the crate: no warning anywhere, and the same time-line
+/// as [`run_here`].
+fn builds_clean_and_runs(dir: &Path, target: &Path) {
+    let out = cargo(dir, target, &["run", "--quiet"]);
+    let stderr = text(&out.stderr);
+    assert!(out.status.success(), "{}:\n{stderr}", dir.display());
+    assert!(
+        !stderr.contains("warning"),
+        "{} warns:\n{stderr}",
+        dir.display()
+    );
+    let stdout = text(&out.stdout);
+    let got: Vec<&str> = stdout.lines().collect();
+    assert_eq!(got, run_here(), "{}", dir.display());
+}
+
+/// `tank.il` with an INT stored into the BOOL `pump`; returns the line and
+/// column the error must name.
+fn break_tank(dir: &Path) -> (usize, usize) {
+    let path = dir.join("plc/tank.il");
+    let good = std::fs::read_to_string(&path).unwrap();
+    let bad = good.replacen("    LD   valve.open\n", "    LD   high\n", 1);
+    assert_ne!(good, bad);
+    std::fs::write(&path, &bad).unwrap();
+    let line = bad.lines().position(|l| l == "    LD   high").unwrap() + 2;
+    (line, 5)
+}
+
+#[test]
+fn a_new_users_crates_build_without_warnings_and_show_il_errors() {
+    let ws = workspace();
+    let root = ws.join("target/tests/new-user");
+    let target = root.join("target");
+
+    // 1. `il!` in a binary: both files in one call, in a `mod`, glob-imported.
+    let with_macro = write_crate(
+        &root,
+        "tank-macro",
+        "{il-macros}",
+        &[(
+            "src/main.rs",
+            &format!(
+                "mod plc {{\n    il_macros::il!(files = [\"plc/types.il\", \"plc/tank.il\"]);\n}}\n{MAIN}"
+            ),
+        )],
+    );
+    builds_clean_and_runs(&with_macro, &target);
+
+    // 2. build.rs as the README writes it, a library including the files at
+    //    its root and a binary including them in a `mod`.
+    let build_rs = "fn main() -> Result<(), il_codegen::Error> {\n    il_codegen::Builder::new()\n        .file(\"plc/types.il\")\n        .file(\"plc/tank.il\")\n        .compile()?;\n    Ok(())\n}\n";
+    let include = "include!(concat!(env!(\"OUT_DIR\"), \"/types.rs\"));\ninclude!(concat!(env!(\"OUT_DIR\"), \"/tank.rs\"));\n";
+    let with_build = write_crate(
+        &root,
+        "tank-build",
+        "\n[build-dependencies]\n{il-codegen}",
+        &[
+            ("build.rs", build_rs),
+            ("src/lib.rs", include),
+            ("src/main.rs", &format!("mod plc {{\n{include}}}\n{MAIN}")),
+        ],
+    );
+    builds_clean_and_runs(&with_build, &target);
+
+    // 3. A mistake in the IL: each front end names the file, line, column
+    //    and code. The macro's message sits in one line of compile_error!.
+    let (line, col) = break_tank(&with_macro);
+    let out = cargo(&with_macro, &target, &["build", "--quiet"]);
+    let stderr = text(&out.stderr);
+    assert!(!out.status.success(), "the build must fail:\n{stderr}");
+    let want = "plc/tank.il: IL0106: `pump` is BOOL, but the current result is INT";
+    assert!(stderr.contains(want), "{want}:\n{stderr}");
+    assert!(
+        stderr.contains(&format!("(at line {line}, column {col})")),
+        "{stderr}"
+    );
+
+    // build.rs: cargo shows the build script's error as rustc shows its
+    // own, line by line (Debug prints the rendered text), not a struct dump.
+    let (line, col) = break_tank(&with_build);
+    let out = cargo(&with_build, &target, &["build", "--quiet"]);
+    let stderr = text(&out.stderr);
+    assert!(!out.status.success(), "the build must fail:\n{stderr}");
+    assert!(
+        stderr.lines().any(|l| l.contains("error[IL0106]")),
+        "no rendered diagnostic line:\n{stderr}"
+    );
+    let arrow = format!("--> plc/tank.il:{line}:{col}");
+    assert!(
+        stderr.lines().any(|l| l.trim_start().starts_with(&arrow)),
+        "no `{arrow}` line of its own:\n{stderr}"
+    );
+    assert!(!stderr.contains("rendered:"), "a struct dump:\n{stderr}");
+    assert!(!stderr.contains("\\n"), "escaped line breaks:\n{stderr}");
+}
