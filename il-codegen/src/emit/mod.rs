@@ -387,7 +387,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                     }
                 }
 
-                #[allow(dead_code)]
+                #[allow(dead_code, clippy::all)]
                 impl #name {
                     /// The located variables and direct addresses this POU
                     /// reads or writes in `Cycle::io`, for binding I/O.

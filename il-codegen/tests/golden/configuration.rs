@@ -15,7 +15,7 @@ impl ::core::default::Default for Fast {
         Self { enable: false, seen: 0i32 }
     }
 }
-#[allow(dead_code)]
+#[allow(dead_code, clippy::all)]
 impl Fast {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
@@ -106,7 +106,7 @@ impl ::core::default::Default for Slow {
         Self {}
     }
 }
-#[allow(dead_code)]
+#[allow(dead_code, clippy::all)]
 impl Slow {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.

@@ -24,7 +24,7 @@ impl ::core::default::Default for Dispatch {
         }
     }
 }
-#[allow(dead_code)]
+#[allow(dead_code, clippy::all)]
 impl Dispatch {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.

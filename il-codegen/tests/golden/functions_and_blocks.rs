@@ -60,7 +60,7 @@ impl ::core::default::Default for Filler {
         }
     }
 }
-#[allow(dead_code)]
+#[allow(dead_code, clippy::all)]
 impl Filler {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.

@@ -27,7 +27,7 @@ impl ::core::default::Default for Motor {
         }
     }
 }
-#[allow(dead_code)]
+#[allow(dead_code, clippy::all)]
 impl Motor {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.

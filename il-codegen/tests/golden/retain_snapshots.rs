@@ -21,7 +21,7 @@ impl ::core::default::Default for Odometer {
         }
     }
 }
-#[allow(dead_code)]
+#[allow(dead_code, clippy::all)]
 impl Odometer {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
@@ -122,7 +122,7 @@ impl ::core::default::Default for Line {
         }
     }
 }
-#[allow(dead_code)]
+#[allow(dead_code, clippy::all)]
 impl Line {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
@@ -246,7 +246,7 @@ impl ::core::default::Default for OnlyNested {
         }
     }
 }
-#[allow(dead_code)]
+#[allow(dead_code, clippy::all)]
 impl OnlyNested {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
