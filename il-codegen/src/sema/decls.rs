@@ -18,6 +18,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
         holds_retain: Default::default(),
         configs: Vec::new(),
         sizes: Default::default(),
+        duplicates: Vec::new(),
     };
     let mut seen: HashMap<String, (usize, Span)> = HashMap::new();
     let pous: Vec<(usize, &ast::Pou)> = units
@@ -207,12 +208,13 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
         }
     }
     for (f, p) in &pous {
-        if env.pous.contains_key(&p.name.key()) {
-            continue;
-        }
         let mut sig = pou_sig(&mut cxs[*f], &fb_names, &env.types, p);
         sig.file = *f;
-        env.pous.insert(p.name.key(), sig);
+        if env.pous.contains_key(&p.name.key()) {
+            env.duplicates.push(sig);
+        } else {
+            env.pous.insert(p.name.key(), sig);
+        }
     }
     env.configs = super::configuration::collect(cxs, units, &fb_names, &mut env);
     super::configuration::check_fb_externals(cxs, &pous, &env);

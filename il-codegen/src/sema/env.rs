@@ -15,6 +15,10 @@ pub(crate) struct Env {
     /// Bytes of each user FB (`FB:NAME`) and STRUCT (`S:NAME`), for the
     /// large-array rules (see `size.rs`).
     pub sizes: super::size::Sizes,
+    /// The signatures of POUs declared again under a name already taken:
+    /// their bodies are still checked (against their own declarations), so
+    /// that a duplicate name does not hide the real errors in them.
+    pub duplicates: Vec<PouSig>,
     /// Whether an FB (upper-case name) holds anything RETAIN, directly or in
     /// a nested instance: memoised, because instance trees share subtrees and
     /// an unmemoised walk is exponential in the nesting depth.

@@ -73,12 +73,14 @@ pub fn check_all(
             ast::Item::Pou(p) => Some(p),
             _ => None,
         }) {
-            if env
-                .pou(&pou.name.name)
-                .is_some_and(|s| s.file == f && s.span == pou.name.span)
-                && let Some(checked) = flow::check_pou(&mut cxs[f], &env, pou)
-            {
-                program.pous.push(checked);
+            let this = |s: &&env::PouSig| s.file == f && s.span == pou.name.span;
+            if let Some(sig) = env.pou(&pou.name.name).filter(this) {
+                if let Some(checked) = flow::check_pou(&mut cxs[f], &env, pou, sig) {
+                    program.pous.push(checked);
+                }
+            } else if let Some(sig) = env.duplicates.iter().find(this) {
+                // Its errors are reported; the program has an error anyway.
+                let _ = flow::check_pou(&mut cxs[f], &env, pou, sig);
             }
         }
         programs.push(program);

@@ -11,6 +11,7 @@ mod golden_emit;
 mod plcopen_corpus;
 mod render_golden;
 mod sema_calls;
+mod sema_hints;
 mod sema_hostile_names;
 mod sema_literals;
 mod sema_types;

@@ -233,12 +233,9 @@ impl Walk<'_, '_> {
                 }
                 let Some(&l) = self.labels.get(&label.key()) else {
                     // In label order: `suggest` keeps the first of equally
-                    // close names, and a hash map's order changes from run
-                    // to run (fuzzing found `l0` suggesting `L2` or `L3`).
-                    let mut labels: Vec<(&String, &usize)> = self.labels.iter().collect();
-                    labels.sort_by_key(|&(_, &i)| i);
-                    let names: Vec<String> = labels.into_iter().map(|(n, _)| n.clone()).collect();
-                    let hint = suggest(&label.name, names.iter().map(String::as_str))
+                    // close names (fuzzing found a hash map's order making
+                    // `l0` suggest `L2` or `L3` from run to run).
+                    let hint = suggest(&label.name, self.label_names.iter().map(String::as_str))
                         .map(|s| format!("did you mean `{s}`?"));
                     if let Some(d) = self.err(
                         UNKNOWN_LABEL,

@@ -69,13 +69,17 @@ enum Arg {
     Lit(LitClass, Span),
 }
 
-pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<CheckedPou> {
-    let sig = env.pou(&pou.name.name)?;
-    if sig.kind != pou.kind || sig.name != pou.name.name {
-        return None; // a duplicate, already reported
-    }
+/// Checks a POU's body against its signature (the one in `env`, or a
+/// duplicate's own from `env.duplicates`).
+pub(crate) fn check_pou(
+    cx: &mut Cx,
+    env: &Env,
+    pou: &ast::Pou,
+    sig: &PouSig,
+) -> Option<CheckedPou> {
     let mut labels = HashMap::new();
     let mut label_spans = Vec::new();
+    let mut label_names = Vec::new();
     for s in &pou.body {
         if let ast::Stmt::Label(id) = s {
             if let Some(&prev) = labels.get(&id.key()) {
@@ -88,6 +92,7 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
             } else {
                 labels.insert(id.key(), label_spans.len());
                 label_spans.push(id.span);
+                label_names.push(id.name.clone());
             }
         }
     }
@@ -108,6 +113,7 @@ pub(crate) fn check_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou) -> Option<Checke
         env,
         sig,
         labels,
+        label_names,
         label_in: vec![Cr::Dead; n],
         edges: vec![Vec::new(); n],
         label_pos,
@@ -261,6 +267,8 @@ struct Walk<'a, 'c> {
     env: &'a Env,
     sig: &'a PouSig,
     labels: HashMap<String, usize>,
+    /// Each label as declared (suggestions show the user's spelling).
+    label_names: Vec<String>,
     /// CR after each label (from the previous round).
     label_in: Vec<Cr>,
     /// Edges into each label found in this round: (source span, class, line).

@@ -254,7 +254,16 @@ pub(super) fn conversion_hint(from: &Ty, to: &Ty) -> Option<String> {
         return None;
     };
     let name = format!("{}_TO_{}", short(*a), short(*b));
-    stdfn::is_std(&name).then(|| format!("convert with `{name}`"))
+    if !stdfn::is_std(&name) {
+        return None;
+    }
+    // A number where a BOOL is wanted is mostly a missing comparison.
+    if *b == Elem::BOOL && (a.is_int() || a.is_real()) {
+        return Some(format!(
+            "to test the value, compare it first (`GT 0`, `NE 0`); to convert it, `{name}`"
+        ));
+    }
+    Some(format!("convert with `{name}`"))
 }
 
 pub(super) fn short(e: Elem) -> &'static str {

@@ -55,13 +55,20 @@ impl<'a> Lexer<'a> {
         let text = &self.src[start..i];
         let lo = prefix.as_ref().map_or(start, |p| p.1);
         let kind = if bad {
-            self.diag(
+            // `5s`, `100ms`: a duration without its `T#`.
+            let duration = prefix.is_none()
+                && !text.starts_with(['-', '+'])
+                && literal::parse_duration(text).is_ok();
+            let d = self.diag(
                 code::BAD_NUMBER,
                 start,
                 i,
                 format!("`{text}` is not a number"),
                 "malformed number",
             );
+            if duration {
+                d.help = Some(format!("a duration is written `T#{text}`"));
+            }
             LitKind::Int(0)
         } else if real {
             if no_dot_exp {
