@@ -1,12 +1,41 @@
-//! IEC 61131-3 Instruction List → Rust.
+//! IEC 61131-3 Instruction List (IL) to Rust, at build time.
 //!
-//! Stages: [`syntax`] (text → [`ast`]), [`sema`] (names, types of the current
-//! result, flow → checked IR), [`emit`] (IR → Rust tokens). Every stage
-//! collects [`diag::Diagnostic`]s. One pipeline runs them for every front end
-//! (the `il!` macro, the build-script [`Builder`], the `ilc` command):
-//! sources in ([`Program`]) → checked program ([`Checked`]) → emitted Rust
-//! ([`Emitted`]). [`plcopen`] reads PLCopen TC6 XML projects; [`Input`] mixes
-//! them with IL.
+//! Most users need one thing from this crate: [`Builder`], called from
+//! `build.rs`. Each IL file (or PLCopen TC6 XML project) becomes a Rust file
+//! in `OUT_DIR`, which the crate includes. All files of one `Builder` are
+//! one program: a POU may use the TYPEs and FUNCTION_BLOCKs of every file.
+//!
+//! ```no_run
+//! // build.rs
+//! fn main() -> Result<(), il_codegen::Error> {
+//!     il_codegen::Builder::new()
+//!         .file("plc/types.il")
+//!         .file("plc/tank.il")
+//!         .compile()?; // on an IL error, cargo shows it as rustc shows its own
+//!     Ok(())
+//! }
+//! ```
+//!
+//! ```ignore
+//! // src/lib.rs (or inside a `mod` of a binary)
+//! include!(concat!(env!("OUT_DIR"), "/types.rs"));
+//! include!(concat!(env!("OUT_DIR"), "/tank.rs"));
+//! ```
+//!
+//! The crate depends on [`il-std`](https://docs.rs/il-std), the runtime the
+//! generated code calls. A FUNCTION_BLOCK or PROGRAM `Tank` becomes `pub
+//! struct Tank` with its variables as `pub` fields and `fn call(&mut self,
+//! ctx: &mut il_std::Cycle)`; a FUNCTION becomes a `pub fn`. The user guide
+//! (`docs/guide.md` in the repository) describes every item generated.
+//!
+//! For IL inside Rust source, use the `il!` macro of
+//! [`il-macros`](https://docs.rs/il-macros); it runs this same compiler.
+//!
+//! Tools that need more than generated files (an editor, a checker) run the
+//! pipeline themselves: [`Program`] of sources → [`Program::check`] →
+//! [`Checked`], with every [`Diagnostic`] and, when there is no error, the
+//! code ([`Checked::emit`], [`Checked::files`]). [`codes`] lists every
+//! diagnostic code with its explanation.
 
 #![warn(missing_docs)]
 

@@ -7,6 +7,8 @@
 //!   [`TOD`], [`DT`], [`STRING`], [`WSTRING`] ...) with their IEC ranges and defaults;
 //! * the cycle context [`Cycle`]: the current time (set or advanced by the host — nothing here
 //!   reads a wall clock by itself) and a record of runtime faults ([`Fault`], [`FaultKind`]);
+//! * the process image [`ProcessImage`] (`%I`, `%Q`, `%M`), which a host reads and writes by
+//!   typed IEC address with [`addr`]: `ctx.io.set(addr::iw(1), 500)`, `ctx.io.get(addr::qx(0, 2))`;
 //! * the standard function blocks ([`SR`], [`RS`], [`R_TRIG`], [`F_TRIG`], [`CTU`], [`CTD`],
 //!   [`CTUD`] and their typed variants, [`TP`], [`TON`], [`TOF`], [`RTC`]);
 //! * the standard functions in [`func`], their signatures in [`signature`], and literal parsing
