@@ -1,16 +1,22 @@
 #!/usr/bin/env bash
-# Group 3, build cost for users: cold and incremental `cargo build` of a
-# small crate that uses il! (il-macros), of one that uses build.rs
-# (il-codegen as a build-dependency), and of the same crate written without
-# IL. Prints one line per measurement. Takes a few minutes (cold builds
-# compile syn and the compiler). Usage: bash benches/build_cost.sh [WORKDIR]
+# Group 3, build cost for users: cold and incremental `cargo build` of small
+# crates around the README motor, each in its own empty target directory:
+#   plain          the motor written by hand (il-std only)
+#   baseline       a trivial proc macro with syn 2 (default features) + quote,
+#                  the cost of any crate that uses a derive
+#   with_macro     il!(file = "plc/motor.il")
+#   with_buildrs   build.rs + include!
+# and the last two again with `[profile.dev.build-override] opt-level = 2`
+# (`*_opt2`), the README's advice for large IL files.
+# Prints one line per crate. Takes several minutes (cold builds compile syn
+# and the compiler). Usage: bash benches/build_cost.sh [WORKDIR]
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 work=${1:-$(mktemp -d)}
 mkdir -p "$work"
 il="$repo/examples/motor.il"
 
-mk() { # name deps build-deps
+mk() { # name deps build-deps profile
   local d="$work/$1"; rm -rf "$d"; mkdir -p "$d/src" "$d/plc"
   cp "$il" "$d/plc/motor.il"
   cat > "$d/Cargo.toml" <<EOT
@@ -25,13 +31,13 @@ il-std = { path = "$repo/il-std" }
 $2
 [build-dependencies]
 $3
-[profile.dev.build-override]
-opt-level = 2
+$4
 EOT
   cp "$repo/Cargo.lock" "$d/Cargo.lock"
 }
+opt2=$'[profile.dev.build-override]\nopt-level = 2'
 
-mk plain "" ""
+mk plain "" "" ""
 cat > "$work/plain/src/lib.rs" <<'EOT'
 //! The motor of examples/motor.il, written by hand.
 #[derive(Default)]
@@ -45,24 +51,60 @@ impl Motor {
     }
 }
 EOT
-mk with_macro "il-macros = { path = \"$repo/il-macros\" }" ""
-echo 'il_macros::il!(file = "plc/motor.il");' > "$work/with_macro/src/lib.rs"
-mk with_buildrs "" "il-codegen = { path = \"$repo/il-codegen\" }"
-echo 'include!(concat!(env!("OUT_DIR"), "/motor.rs"));' > "$work/with_buildrs/src/lib.rs"
-cat > "$work/with_buildrs/build.rs" <<'EOT'
+
+# The baseline: a derive-style proc macro crate with syn + quote.
+pm="$work/trivial_macro"; rm -rf "$pm"; mkdir -p "$pm/src"
+cat > "$pm/Cargo.toml" <<EOT
+[package]
+name = "trivial_macro"
+version = "0.0.0"
+edition = "2024"
+publish = false
+[lib]
+proc-macro = true
+[dependencies]
+syn = "2"
+quote = "1"
+EOT
+cat > "$pm/src/lib.rs" <<'EOT'
+use proc_macro::TokenStream;
+#[proc_macro_derive(Named)]
+pub fn named(input: TokenStream) -> TokenStream {
+    let ast: syn::DeriveInput = syn::parse(input).unwrap();
+    let name = &ast.ident;
+    let text = name.to_string();
+    quote::quote!(impl #name { pub const NAME: &'static str = #text; }).into()
+}
+EOT
+mk baseline "trivial_macro = { path = \"$pm\" }" "" ""
+cat > "$work/baseline/src/lib.rs" <<'EOT'
+#[derive(trivial_macro::Named, Default)]
+pub struct Motor { pub run: bool }
+EOT
+
+for v in "" _opt2; do
+  prof=""; [ -n "$v" ] && prof="$opt2"
+  mk "with_macro$v" "il-macros = { path = \"$repo/il-macros\" }" "" "$prof"
+  echo 'il_macros::il!(file = "plc/motor.il");' > "$work/with_macro$v/src/lib.rs"
+  mk "with_buildrs$v" "" "il-codegen = { path = \"$repo/il-codegen\" }" "$prof"
+  echo 'include!(concat!(env!("OUT_DIR"), "/motor.rs"));' > "$work/with_buildrs$v/src/lib.rs"
+  cat > "$work/with_buildrs$v/build.rs" <<'EOT'
 fn main() -> Result<(), il_codegen::Error> {
     il_codegen::Builder::new().file("plc/motor.il").compile()?;
     Ok(())
 }
 EOT
+done
 
+echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 t() { local s=$(date +%s.%N); "$@" >/dev/null 2>&1; echo "$(date +%s.%N) - $s" | bc; }
-for c in plain with_macro with_buildrs; do
+for c in plain baseline with_macro with_buildrs with_macro_opt2 with_buildrs_opt2; do
   cd "$work/$c"
   cold=$(t cargo build --offline)
   touch src/lib.rs
   inc_rs=$(t cargo build --offline)
   echo "    (* edited *)" >> plc/motor.il; touch plc/motor.il
   inc_il=$(t cargo build --offline)
-  printf '%-13s cold %6.2f s   touch lib.rs %5.2f s   edit motor.il %5.2f s\n' "$c" "$cold" "$inc_rs" "$inc_il"
+  printf '%-18s cold %6.2f s   touch lib.rs %5.2f s   edit motor.il %5.2f s   (load %s)\n' \
+    "$c" "$cold" "$inc_rs" "$inc_il" "$(cut -d' ' -f1 /proc/loadavg)"
 done

@@ -39,6 +39,7 @@
 
 #![warn(missing_docs)]
 
+#[cfg(feature = "build")]
 mod builder;
 pub mod codes;
 pub mod diag;
@@ -63,6 +64,7 @@ pub mod sema;
 #[doc(hidden)]
 pub mod syntax;
 
+#[cfg(feature = "build")]
 pub use builder::{Builder, Error, output_paths, write_if_changed};
 pub use diag::{Diagnostic, SourceFile};
 pub use emit::Options as EmitOptions;

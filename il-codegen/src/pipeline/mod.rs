@@ -8,6 +8,7 @@
 //! (an XML project's lines), sorted by position and limited per file; code
 //! is emitted only when no input has an error.
 
+#[cfg(feature = "build")]
 mod file;
 mod input;
 
@@ -170,6 +171,7 @@ impl Checked {
     }
 }
 
+#[cfg(feature = "build")]
 impl Checked {
     /// The text of each input's `.rs` file, with its IL lines as comments
     /// (what build.rs writes and `ilc emit` prints), or `None` when the
@@ -200,7 +202,10 @@ impl Emitted<'_> {
     pub fn input(&self) -> &Input {
         self.input
     }
+}
 
+#[cfg(feature = "build")]
+impl Emitted<'_> {
     /// The text of the `.rs` file: formatted, `@generated`, and, when the
     /// tokens were emitted with [`EmitOptions::line_markers`](crate::EmitOptions), each IL
     /// line's source as a comment above the code it became (for an XML
