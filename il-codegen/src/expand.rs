@@ -39,6 +39,9 @@ fn parse_flags(ps: syn::parse::ParseStream) -> syn::Result<bool> {
     Ok(serde)
 }
 
+/// The most IL one `il!` call takes (IL0035): beyond it, build.rs.
+const MAX_MACRO_INPUT: usize = 16 << 20;
+
 const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or files relative to the crate, `il!(file = \"plc/motor.il\")` or `il!(files = [\"plc/types.il\", \"plc/tank.il\"])` (one program: a POU may use the TYPEs and FBs of every file), optionally followed by `, serde`";
 
 fn parse_input(tokens: TokenStream) -> syn::Result<(Input, bool)> {
@@ -152,6 +155,16 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
             }
         }
     }
+    let total: usize = sources.iter().map(|(f, _)| f.text.len()).sum();
+    if total > MAX_MACRO_INPUT {
+        let msg = format!(
+            "{}: il! takes at most 16 MiB of IL, this call has {} MiB: compile it with il_codegen::Builder in build.rs",
+            crate::syntax::code::MACRO_TOO_LARGE,
+            total.div_ceil(1 << 20)
+        );
+        let span = sources.first().map_or_else(Span::call_site, |s| s.1);
+        return quote_spanned!(span=> ::core::compile_error!(#msg););
+    }
     let checked = sources
         .iter()
         .fold(Program::new(), |p, (f, _)| p.source(f.clone()))
@@ -255,5 +268,32 @@ mod tests {
         );
         let trailing = expand(quote!(#il, )).to_string();
         assert_eq!(trailing, plain);
+    }
+
+    #[test]
+    fn an_input_over_16_mib_is_refused_with_its_code() {
+        let mut il = String::from("PROGRAM P\nVAR x : INT; END_VAR\n");
+        while il.len() <= super::MAX_MACRO_INPUT / 2 {
+            il.push_str("    LD x\n    ST x\n");
+        }
+        // Two files of 8 MiB each: the limit is on the call, not per file.
+        let dir = std::env::temp_dir().join(format!("il-expand-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let (a, b) = (dir.join("a.il"), dir.join("b.il"));
+        std::fs::write(&a, format!("{il}END_PROGRAM\n")).unwrap();
+        std::fs::write(
+            &b,
+            format!("{}END_PROGRAM\n", il.replace("PROGRAM P", "PROGRAM Q")),
+        )
+        .unwrap();
+        let (a, b) = (a.display().to_string(), b.display().to_string());
+        let out = expand(quote!(files = [#a, #b])).to_string();
+        let _ = std::fs::remove_dir_all(&dir);
+        assert!(
+            out.contains("compile_error") && out.contains("IL0035"),
+            "{}",
+            &out[..200.min(out.len())]
+        );
+        assert!(!out.contains("struct"), "nothing is compiled");
     }
 }

@@ -67,4 +67,8 @@ crate::diag::codes::codes! {
         "An instruction line starts with an optional `label:` and an operator or function name.\n\n    5\n\nWrite e.g. `LD 5`.";
     NOT_IDENT = "IL0033", "a word that is not an identifier",
         "A name needs at least one letter or digit: `_` alone (or `__`, `___` ...) is no IEC identifier, and in the generated Rust it would be the wildcard pattern.\n\n    VAR _ : INT; END_VAR\n\nName it: `VAR unused : INT; END_VAR`.";
+    LONG_NAME = "IL0034", "a name longer than 255 characters",
+        "Names (of variables, POUs, types, labels, operators) are at most 255 characters long, as in PLCopen XML. The limit keeps every message, suggestion and generated identifier bounded on damaged or generated input.\n\n    VAR a_name_of_three_hundred_characters_... : INT; END_VAR\n\nShorten the name.";
+    MACRO_TOO_LARGE = "IL0035", "an `il!` input over 16 MiB",
+        "One `il!` call takes at most 16 MiB of IL (inline, or all its files together): the macro runs inside rustc on every build of the crate, and its tokens stay in rustc's memory. Larger programs belong in build.rs, whose output is written once and rebuilt only when the IL changes.\n\n    il_macros::il!(file = \"plc/huge.il\");   // 40 MiB\n\nCompile it with `il_codegen::Builder` in build.rs and `include!` the result.";
 }

@@ -501,3 +501,29 @@ fn every_emitted_code_is_documented() {
         }
     }
 }
+
+#[test]
+fn names_over_255_characters_are_refused_wherever_they_stand() {
+    let at_limit = "n".repeat(255);
+    let over = "n".repeat(256);
+    let src = format!(
+        "PROGRAM p\nVAR {at_limit} : BOOL; {over} : BOOL; END_VAR\n    LD {at_limit}\n    ST {over}\nEND_PROGRAM\n"
+    );
+    let f = il_codegen::diag::SourceFile::new("t.il", src.as_str());
+    let d = il_codegen::Program::new()
+        .il(f.clone())
+        .check()
+        .into_diagnostics();
+    let long: Vec<(usize, usize)> = d[0]
+        .iter()
+        .filter(|d| d.code == "IL0034")
+        .map(|d| f.line_col(d.span.lo))
+        .collect();
+    assert_eq!(long, [(2, 4 + 255 + 9 + 1), (4, 8)], "{:?}", d[0]);
+    assert!(
+        d[0].iter()
+            .any(|d| d.message == "a name of 256 characters: names are at most 255"),
+        "{:?}",
+        d[0]
+    );
+}

@@ -16,6 +16,9 @@
 use crate::ast::*;
 use crate::diag::Diagnostic;
 
+/// The longest name, in characters (IL0034).
+pub(crate) const MAX_NAME: usize = 255;
+
 use super::code;
 use super::literal_message;
 use il_std::literal;
@@ -554,6 +557,18 @@ impl<'a> Lexer<'a> {
                     &self.src[start..self.pos]
                 ),
                 "not an identifier",
+            );
+        }
+        if self.pos - start > MAX_NAME {
+            self.diag(
+                code::LONG_NAME,
+                start,
+                self.pos,
+                format!(
+                    "a name of {} characters: names are at most {MAX_NAME}",
+                    self.pos - start
+                ),
+                "too long",
             );
         }
         (start, self.pos)
