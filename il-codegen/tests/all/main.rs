@@ -10,6 +10,7 @@ mod front_end_robustness;
 mod golden_emit;
 mod plcopen_corpus;
 mod render_golden;
+mod scaling;
 mod sema_calls;
 mod sema_hints;
 mod sema_hostile_names;

@@ -1,0 +1,310 @@
+//! The whole front end (parse, check, emit and format) stays linear on the
+//! classic input classes: each input is built at size n and 8n and run in
+//! this test, and the work is compared, not a wall-clock threshold.
+//!
+//! Work is measured two ways. Allocations (count and peak live bytes) are
+//! counted per thread by this binary's allocator, so they do not depend on
+//! the machine's load or on other tests: linear growth is 8x, and a bound of
+//! 12x leaves room for vectors that double. Time is the fastest of five
+//! interleaved runs each, bounded at 32x (linear is 8x, quadratic 64x: cache
+//! effects and a loaded machine stay below, a quadratic stage does not).
+
+use il_codegen::diag::SourceFile;
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+use std::time::{Duration, Instant};
+
+/// Counts what this thread allocates; everything else is the system's.
+struct Counting;
+
+thread_local! {
+    static ALLOCS: Cell<u64> = const { Cell::new(0) };
+    static LIVE: Cell<i64> = const { Cell::new(0) };
+    static PEAK: Cell<i64> = const { Cell::new(0) };
+}
+
+fn note(delta: i64, count: bool) {
+    // `try_with`: a thread being torn down has no counters left.
+    let _ = LIVE.try_with(|l| {
+        let now = l.get() + delta;
+        l.set(now);
+        let _ = PEAK.try_with(|p| p.set(p.get().max(now)));
+    });
+    if count {
+        let _ = ALLOCS.try_with(|a| a.set(a.get() + 1));
+    }
+}
+
+// SAFETY: every call goes to `System` unchanged; the counters are
+// thread-local `Cell`s with const initialisers, which never allocate.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, l: Layout) -> *mut u8 {
+        note(l.size() as i64, true);
+        unsafe { System.alloc(l) }
+    }
+    unsafe fn dealloc(&self, p: *mut u8, l: Layout) {
+        note(-(l.size() as i64), false);
+        unsafe { System.dealloc(p, l) }
+    }
+    unsafe fn realloc(&self, p: *mut u8, l: Layout, new: usize) -> *mut u8 {
+        note(new as i64 - l.size() as i64, true);
+        unsafe { System.realloc(p, l, new) }
+    }
+}
+
+#[global_allocator]
+static COUNTING: Counting = Counting;
+
+/// What one run of the pipeline over `files` cost on this thread.
+#[derive(Debug, Clone, Copy)]
+struct Work {
+    allocs: u64,
+    peak: i64,
+    time: Duration,
+}
+
+/// Check the files as one program and, when they are valid, emit and
+/// format them, as build.rs does.
+fn pipeline(files: &[SourceFile]) -> Work {
+    let (a0, l0) = (ALLOCS.with(Cell::get), LIVE.with(Cell::get));
+    PEAK.with(|p| p.set(l0));
+    let t = Instant::now();
+    let checked = files
+        .iter()
+        .fold(il_codegen::Program::new(), |p, f| p.il(f.clone()))
+        .check();
+    let files = checked.files(Default::default());
+    std::hint::black_box((&checked, &files));
+    drop((files, checked));
+    Work {
+        time: t.elapsed(),
+        allocs: ALLOCS.with(Cell::get) - a0,
+        peak: PEAK.with(Cell::get) - l0,
+    }
+}
+
+/// Runs the input class at n and 8n and fails when any measure grows
+/// faster than linearly. `valid`: whether the input must compile (so the
+/// emitter and formatter are part of the measure) or must be refused.
+fn assert_linear(what: &str, valid: bool, input: impl Fn(usize) -> Vec<SourceFile>, n: usize) {
+    let (small, large) = (input(n), input(8 * n));
+    for files in [&small, &large] {
+        let has_errors = files
+            .iter()
+            .fold(il_codegen::Program::new(), |p, f| p.il(f.clone()))
+            .check()
+            .has_errors();
+        assert_eq!(
+            has_errors,
+            !valid,
+            "{what}: the input must be {}",
+            if valid { "valid" } else { "refused" }
+        );
+    }
+    let (mut w1, mut w8) = (pipeline(&small), pipeline(&large));
+    // Counts are the same on every run; time takes the fastest.
+    for _ in 0..4 {
+        w1.time = w1.time.min(pipeline(&small).time);
+        w8.time = w8.time.min(pipeline(&large).time);
+    }
+    let bytes: usize = large.iter().map(|f| f.text.len()).sum();
+    let allocs = w8.allocs as f64 / w1.allocs.max(1) as f64;
+    let peak = w8.peak as f64 / w1.peak.max(1) as f64;
+    let time = w8.time.as_secs_f64() / w1.time.as_secs_f64().max(1e-9);
+    // Shown with --nocapture: the figures the issue on memory tracks.
+    println!(
+        "{what}: 8x input → allocations {allocs:.1}x, peak memory {peak:.1}x ({:.0} bytes per input byte at {bytes} bytes), time {time:.1}x",
+        w8.peak as f64 / bytes as f64
+    );
+    assert!(
+        allocs < 12.0,
+        "{what}: 8x the input made {allocs:.1}x the allocations ({w1:?} → {w8:?})"
+    );
+    assert!(
+        peak < 12.0,
+        "{what}: 8x the input took {peak:.1}x the memory ({w1:?} → {w8:?})"
+    );
+    assert!(
+        time < 32.0,
+        "{what}: 8x the input took {time:.1}x the time ({w1:?} → {w8:?})"
+    );
+}
+
+fn one(name: &str, text: String) -> Vec<SourceFile> {
+    vec![SourceFile::new(name, text)]
+}
+
+#[test]
+fn long_lines() {
+    // One instruction line with a long comment, and a line of many errors
+    // (each `#` is one, cut at the per-file limit).
+    assert_linear(
+        "long comment line",
+        true,
+        |n| {
+            one(
+                "t.il",
+                format!(
+                    "PROGRAM P\nVAR x : INT; END_VAR\n    LD x (* {} *)\n    ST x\nEND_PROGRAM\n",
+                    "comment ".repeat(n)
+                ),
+            )
+        },
+        2_000,
+    );
+    assert_linear(
+        "many errors on one line",
+        false,
+        |n| {
+            one(
+                "t.il",
+                format!(
+                    "PROGRAM P\nVAR x : INT; END_VAR\n    LD x {}\nEND_PROGRAM\n",
+                    "# ".repeat(n)
+                ),
+            )
+        },
+        2_000,
+    );
+}
+
+#[test]
+fn long_names() {
+    // 300 variables whose names are n characters long (up to the limit of 255).
+    assert_linear(
+        "long names",
+        true,
+        |n| {
+            let names: Vec<String> = (0..300)
+                .map(|i| format!("v{i}_{}", "x".repeat(n)))
+                .collect();
+            let mut s = String::from("PROGRAM P\nVAR\n");
+            for v in &names {
+                s.push_str(&format!("    {v} : INT;\n"));
+            }
+            s.push_str("END_VAR\n");
+            for w in names.windows(2) {
+                s.push_str(&format!("    LD {}\n    ADD 1\n    ST {}\n", w[0], w[1]));
+            }
+            one("t.il", s + "END_PROGRAM\n")
+        },
+        30,
+    );
+}
+
+#[test]
+fn many_labels() {
+    // MATIEC-style code: a label every few lines, jumps forward and back.
+    assert_linear(
+        "many labels",
+        true,
+        |n| {
+            let mut s = String::from("PROGRAM P\nVAR x : INT; b : BOOL; END_VAR\n");
+            for i in 0..n {
+                s.push_str(&format!(
+                    "L{i}:\n    LD x\n    ADD 1\n    ST x\n    GT {i}\n    ST b\n    LD b\n    JMPC L{}\n",
+                    (i + 1).min(n - 1)
+                ));
+            }
+            s.push_str("    LD b\n    JMPCN L0\n");
+            one("t.il", s + "END_PROGRAM\n")
+        },
+        40,
+    );
+}
+
+#[test]
+fn many_errors() {
+    // A type error on every line, and misspelled operators and names, each
+    // looked up for a suggestion.
+    assert_linear(
+        "many errors",
+        false,
+        |n| {
+            let mut s = String::from("PROGRAM P\nVAR x : INT; b : BOOL; END_VAR\n");
+            for i in 0..n {
+                s.push_str(&format!("    LD x\n    ST b\n    LDD x\n    LD xx{i}\n"));
+            }
+            one("t.il", s + "END_PROGRAM\n")
+        },
+        100,
+    );
+}
+
+#[test]
+fn deep_parentheses() {
+    // Deferred operations nested n deep (the limit is 256), many times over.
+    assert_linear(
+        "deep parentheses",
+        true,
+        |n| {
+            let mut s = String::from("PROGRAM P\nVAR x : INT; END_VAR\n");
+            for _ in 0..20 {
+                s.push_str("    LD x\n");
+                s.push_str(&"    ADD( x\n".repeat(n));
+                s.push_str(&"    )\n".repeat(n));
+                s.push_str("    ST x\n");
+            }
+            one("t.il", s + "END_PROGRAM\n")
+        },
+        30,
+    );
+}
+
+#[test]
+fn deep_types() {
+    // Structures nested n deep (the limit is 120), used by a program.
+    assert_linear(
+        "deep types",
+        true,
+        |n| {
+            let mut s = String::from("TYPE\n    S0 : STRUCT v : INT; END_STRUCT;\n");
+            for i in 1..n {
+                s.push_str(&format!(
+                    "    S{i} : STRUCT v : INT; inner : S{}; END_STRUCT;\n",
+                    i - 1
+                ));
+            }
+            s.push_str(&format!(
+                "END_TYPE\nPROGRAM P\nVAR s : S{}; END_VAR\n    LD s.v\n    ST s.inner.v\nEND_PROGRAM\n",
+                n - 1
+            ));
+            one("t.il", s)
+        },
+        14,
+    );
+}
+
+#[test]
+fn many_pous_and_files() {
+    // FBs that each hold an instance of the previous one, in one file and
+    // one per file.
+    let pous = |n: usize| -> Vec<String> {
+        (0..n)
+            .map(|i| {
+                // Chains of ten: instance nesting is limited to 120 levels.
+                let inner = if i % 10 == 0 {
+                    String::new()
+                } else {
+                    format!(" inner : F{};", i - 1)
+                };
+                format!(
+                    "FUNCTION_BLOCK F{i}\nVAR_INPUT a : INT; END_VAR\nVAR_OUTPUT q : INT; END_VAR\nVAR{inner} t : TON; END_VAR\n    LD a\n    ADD {i}\n    ST q\n    CAL t(IN := TRUE, PT := T#1s)\nEND_FUNCTION_BLOCK\n"
+                )
+            })
+            .collect()
+    };
+    assert_linear("many POUs", true, |n| one("t.il", pous(n).concat()), 40);
+    assert_linear(
+        "many files",
+        true,
+        |n| {
+            pous(n)
+                .into_iter()
+                .enumerate()
+                .map(|(i, t)| SourceFile::new(format!("f{i}.il"), t))
+                .collect()
+        },
+        40,
+    );
+}
