@@ -210,10 +210,11 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
     for (f, p) in &pous {
         let mut sig = pou_sig(&mut cxs[*f], &fb_names, &env.types, p);
         sig.file = *f;
-        if env.pous.contains_key(&p.name.key()) {
-            env.duplicates.push(sig);
-        } else {
-            env.pous.insert(p.name.key(), sig);
+        match env.pous.entry(p.name.key()) {
+            std::collections::hash_map::Entry::Occupied(_) => env.duplicates.push(sig),
+            std::collections::hash_map::Entry::Vacant(e) => {
+                e.insert(sig);
+            }
         }
     }
     env.configs = super::configuration::collect(cxs, units, &fb_names, &mut env);
