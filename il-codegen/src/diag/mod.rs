@@ -7,11 +7,15 @@
 use crate::ast::Span;
 
 pub mod codes;
+#[cfg(feature = "build")]
 pub mod json;
 pub mod render;
 
+#[cfg(feature = "build")]
 pub use json::to_json;
-pub use render::{render, render_short};
+#[cfg(feature = "build")]
+pub use render::render;
+pub use render::render_short;
 
 /// A source file and its line table.
 #[derive(Clone, Debug)]

@@ -8,8 +8,10 @@
 use std::borrow::Cow;
 use std::fmt::Write as _;
 
+#[cfg(feature = "build")]
 use annotate_snippets::{AnnotationKind, Group, Level, Renderer, Snippet};
 
+#[cfg(feature = "build")]
 pub use super::json::to_json;
 use super::{Diagnostic, Severity, SourceFile};
 use crate::ast::Span;
@@ -59,6 +61,7 @@ pub(crate) fn display_span(text: &str, span: Span) -> (usize, usize) {
 /// The byte range of the lines that `lo..hi` touches (without the final line
 /// break). From the line table, so that many diagnostics on one long line do
 /// not each scan it.
+#[cfg_attr(not(feature = "build"), allow(dead_code))] // only rustc-style rendering uses it
 fn line_range(file: &SourceFile, lo: usize, hi: usize) -> (usize, usize) {
     let text = file.text.as_str();
     let start = file.line_start(file.line_of(lo as u32));
@@ -71,8 +74,10 @@ fn line_range(file: &SourceFile, lo: usize, hi: usize) -> (usize, usize) {
 }
 
 /// Lines longer than this (in bytes) are shown as a window around the spans.
+#[cfg_attr(not(feature = "build"), allow(dead_code))] // only rustc-style rendering uses it
 const LONG_LINE: usize = 480;
 /// Bytes shown on each side of the spans in such a window.
+#[cfg_attr(not(feature = "build"), allow(dead_code))] // only rustc-style rendering uses it
 const CONTEXT: usize = 80;
 
 fn floor_char(text: &str, mut i: usize) -> usize {
@@ -155,11 +160,13 @@ fn shown_source(src: &str) -> (Cow<'_, str>, Vec<(usize, usize)>) {
 }
 
 /// Offset `o` of the original source in [`shown_source`]'s text.
+#[cfg_attr(not(feature = "build"), allow(dead_code))] // only rustc-style rendering uses it
 fn shifted(shifts: &[(usize, usize)], o: usize) -> usize {
     let i = shifts.partition_point(|(at, _)| *at <= o);
     if i == 0 { o } else { o + shifts[i - 1].1 }
 }
 
+#[cfg_attr(not(feature = "build"), allow(dead_code))] // only rustc-style rendering uses it
 fn ordered<'d>(text: &str, diags: &'d [Diagnostic]) -> Vec<&'d Diagnostic> {
     let mut v: Vec<&'d Diagnostic> = diags.iter().collect();
     // Stable: equal positions keep the order in which the stages reported them.
@@ -170,6 +177,7 @@ fn ordered<'d>(text: &str, diags: &'d [Diagnostic]) -> Vec<&'d Diagnostic> {
 /// Render diagnostics the way rustc does (`error[IL0003]: ...`, ` --> file:line:col`,
 /// the source lines with carets and labels, `= note:` and `= help:`), sorted by
 /// position, each followed by an empty line. `color` adds ANSI styles.
+#[cfg(feature = "build")]
 pub fn render(file: &SourceFile, diags: &[Diagnostic], color: bool) -> String {
     let renderer = if color {
         Renderer::styled()
@@ -184,6 +192,7 @@ pub fn render(file: &SourceFile, diags: &[Diagnostic], color: bool) -> String {
     out
 }
 
+#[cfg(feature = "build")]
 fn render_one(renderer: &Renderer, file: &SourceFile, d: &Diagnostic) -> String {
     let text = file.text.as_str();
     let level = match d.severity {

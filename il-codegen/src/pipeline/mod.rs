@@ -14,7 +14,9 @@ mod input;
 
 pub use input::{Input, is_xml_name};
 
-use crate::diag::{Diagnostic, SourceFile, has_errors, render};
+#[cfg(feature = "build")]
+use crate::diag::render;
+use crate::diag::{Diagnostic, SourceFile, has_errors};
 use crate::{emit, sema, syntax};
 use proc_macro2::TokenStream;
 
@@ -128,6 +130,7 @@ impl Checked {
             .zip(self.diagnostics.iter().map(Vec::as_slice))
     }
 
+    #[cfg(feature = "build")]
     /// Every diagnostic rendered as rustc renders its own (`color` adds ANSI
     /// styles), input by input.
     pub fn render(&self, color: bool) -> String {
