@@ -72,6 +72,8 @@ pub struct Machine {
     names: Vec<&'static str>,
     inst: Instance,
     steps: u64,
+    /// The error of this scan already says where it comes from.
+    error_located: bool,
 }
 
 /// The state of one call of a POU: its variables, current results and saves.
@@ -118,6 +120,7 @@ impl Machine {
                 edge_mem: Vec::new(),
             },
             steps: 0,
+            error_located: false,
         };
         let Some(pou) = m
             .prog
@@ -208,6 +211,7 @@ impl Machine {
     /// One scan (one call of the instance).
     pub fn scan(&mut self, ctx: &mut Cycle) -> Result<(), String> {
         self.steps = 0;
+        self.error_located = false;
         let mut inst = std::mem::replace(
             &mut self.inst,
             Instance {
@@ -236,6 +240,7 @@ impl Machine {
             .position(|p| p.name.eq_ignore_ascii_case(name) && p.kind == PouKind::Function)
             .ok_or_else(|| format!("no FUNCTION named `{name}`"))?;
         self.steps = 0;
+        self.error_located = false;
         let (r, outs, _) = self.call_function(p, args, Vec::new(), ctx)?;
         Ok((r, outs))
     }

@@ -67,6 +67,7 @@ pub fn check_all(
             .map(|(_, c)| c.clone())
             .collect();
         let mut program = ir::Program {
+            file: cxs[f].file.name.clone(),
             types,
             pous: Vec::new(),
             configs,
