@@ -3,9 +3,9 @@
 
 use std::io::Write;
 
+use il_codegen::sema::types::Ty;
 use il_interp::il_std::{self, Cycle, TIME};
 use il_interp::{HostPlace, Machine, Value, fmt_dur};
-use il_codegen::sema::types::Ty;
 
 pub const EXAMPLES: &str = "\
 Examples:

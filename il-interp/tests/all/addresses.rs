@@ -76,7 +76,10 @@ fn the_process_image_bit_for_bit() {
     assert_eq!(m.get("f"), Some(Value::Real(3.0)));
     assert_eq!(ctx.io.byte(Area::Memory, 3), 0xFD, "SINT -3 at %MB3");
     assert_eq!(ctx.io.byte(Area::Output, 7), 0xFD, "%MB3 copied to %QB7");
-    assert!(ctx.io.bit(Area::Output, 3, 7), "a located output of an FB instance");
+    assert!(
+        ctx.io.bit(Area::Output, 3, 7),
+        "a located output of an FB instance"
+    );
     // The instance holds no copy of located variables.
     assert_eq!(m.get("motor"), None);
 }
@@ -93,7 +96,11 @@ fn a_host_sets_and_reads_addresses_and_located_variables() {
     assert!(ctx.io.bit(Area::Input, 0, 0));
     assert_eq!(ctx.io.word(Area::Input, 4), 0xFED4);
     let w = m.lookup("%IW2").unwrap();
-    assert_eq!(w.ty.to_string(), "WORD", "an address has the type of its size");
+    assert_eq!(
+        w.ty.to_string(),
+        "WORD",
+        "an address has the type of its size"
+    );
     assert_eq!(m.get_at(&ctx, &w), il_interp::int(0xFED4, Elem::WORD));
     let lv = m.lookup("level").unwrap();
     assert_eq!(m.get_at(&ctx, &lv), il_interp::int(-300, Elem::INT));

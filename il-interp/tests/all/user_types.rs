@@ -43,7 +43,11 @@ fn tank_ctl_defaults_and_initial_values() {
     assert_eq!(int(&m, "tank.level"), 50);
     assert_eq!(shown(&m, "tank.corner"), "(x := 3, y := 7)");
     assert_eq!(shown(&m, "tank.name"), "'tank'");
-    assert_eq!(int(&m, "tanks[1].level"), 10, "the STRUCT's own initial value");
+    assert_eq!(
+        int(&m, "tanks[1].level"),
+        10,
+        "the STRUCT's own initial value"
+    );
     assert_eq!(int(&m, "tanks[3].corner.y"), 7);
     assert_eq!(shown(&m, "tank.mode"), "Mode#Idle");
 }
@@ -58,7 +62,11 @@ fn tank_ctl_enums_structs_arrays_and_subranges() {
     assert_eq!(get(&m, "is_draining"), Value::Bool(false));
     assert_eq!((int(&m, "tank.level"), int(&m, "tanks[2].level")), (30, 30));
     assert_eq!(shown(&m, "tank.mode"), "Mode#Filling");
-    assert_eq!(get(&m, "copy"), get(&m, "tank.corner"), "whole structures are copied");
+    assert_eq!(
+        get(&m, "copy"),
+        get(&m, "tank.corner"),
+        "whole structures are copied"
+    );
     m.set("demand", il_interp::int(80, Elem::INT)).unwrap();
     m.scan(&mut ctx).unwrap();
     assert_eq!(shown(&m, "state"), "Mode#Draining");
@@ -85,7 +93,10 @@ fn arrays_of_function_blocks() {
     }
     m.scan(&mut ctx).unwrap();
     assert_eq!(shown(&m, "done"), "[TRUE, TRUE, FALSE]");
-    assert_eq!(get(&m, "timers[3].PT"), Value::Time(300_000_000, Elem::TIME));
+    assert_eq!(
+        get(&m, "timers[3].PT"),
+        Value::Time(300_000_000, Elem::TIME)
+    );
     assert_eq!(get(&m, "timers[1].Q"), Value::Bool(true));
     assert_eq!(ctx.fault_count(), 0);
 }
@@ -178,9 +189,16 @@ fn every_kind_of_user_type() {
     assert_eq!(int(&m, "boxes[1].row[2]"), 5);
     // 7 is outside -5..5: skipped and recorded; 4 is stored.
     assert_eq!(int(&m, "s"), 4);
-    assert_eq!(ctx.last_fault().map(|f| f.kind), Some(FaultKind::SubrangeViolation));
+    assert_eq!(
+        ctx.last_fault().map(|f| f.kind),
+        Some(FaultKind::SubrangeViolation)
+    );
     m.scan(&mut ctx).unwrap();
-    assert_eq!(int(&m, "n"), 4 + 4, "grid[2, 0] read through variable subscripts");
+    assert_eq!(
+        int(&m, "n"),
+        4 + 4,
+        "grid[2, 0] read through variable subscripts"
+    );
 }
 
 #[test]
@@ -203,5 +221,8 @@ fn host_paths_values_and_errors() {
     assert!(err(m.parse_value("grid[3, 0]", "1")).contains("outside the bounds 1..2"));
     assert!(err(m.parse_value("grid[1]", "1")).contains("1 subscripts for an array of 2"));
     assert!(err(m.parse_value("colr", "1")).contains("did you mean `col`"));
-    assert!(m.set("col", Value::Bool(true)).is_err(), "a value of another type");
+    assert!(
+        m.set("col", Value::Bool(true)).is_err(),
+        "a value of another type"
+    );
 }
