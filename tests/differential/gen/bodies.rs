@@ -214,11 +214,9 @@ impl Pou<'_> {
                     t = T::Bool;
                 }
                 3 if Some(t) == self.has_fn && !self.in_function => {
-                    // Not an array element: see compiler-bugs/fn_arg_array_element.il.
-                    let saved = std::mem::take(&mut self.arrays);
-                    let all_vars = self.vars.clone();
-                    let fragile = self.fragile.clone();
-                    self.vars.retain(|v| !fragile.contains(&v.name));
+                    // Array elements, member paths and the process image as
+                    // arguments too (compiler-bugs/fn_arg_array_element.il is
+                    // fixed: arguments go into locals before the call).
                     let o = self.operand(t, false);
                     let f = self.operand(T::Bool, false);
                     if self.rng.chance(35) {
@@ -242,8 +240,6 @@ impl Pou<'_> {
                     } else {
                         self.emit(format!("Fn1 {o}, {f}"));
                     }
-                    self.arrays = saved;
-                    self.vars = all_vars;
                 }
                 _ => self.same_type_op(t, 0),
             }

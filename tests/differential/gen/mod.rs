@@ -191,9 +191,6 @@ struct Pou<'r> {
     fn_eno: bool,
     /// Places of the enumeration `Col` (user.rs).
     enums: Vec<String>,
-    /// Operands that are not passed to Fn1: element paths and the process
-    /// image (see compiler-bugs/fn_arg_array_element.il).
-    fragile: Vec<String>,
 }
 
 fn int_lit(rng: &mut Rng, t: T) -> i128 {
@@ -291,7 +288,6 @@ pub fn generate(seed: u64) -> Program {
             max_loops: 0,
             fn_eno: false,
             enums: Vec::new(),
-            fragile: Vec::new(),
         };
         p.vars.push(Var {
             name: "tmp".into(),
@@ -381,7 +377,6 @@ pub fn generate(seed: u64) -> Program {
             max_loops: 2,
             fn_eno,
             enums: Vec::new(),
-            fragile: Vec::new(),
         };
         for _ in 0..1 + p.rng.below(4) {
             p.block(&[ft, T::Bool], 0);
@@ -438,12 +433,6 @@ pub fn generate(seed: u64) -> Program {
     let body = {
         let mut readonly: Vec<String> = inputs.iter().map(|v| v.name.clone()).collect();
         readonly.extend(extras.readonly.iter().cloned());
-        let fragile = extras
-            .vars
-            .iter()
-            .filter(|v| v.name.contains(['[', '%']) || v.name.starts_with('l'))
-            .map(|v| v.name.clone())
-            .collect();
         let mut p = Pou {
             rng: &mut rng,
             lines: Vec::new(),
@@ -458,7 +447,6 @@ pub fn generate(seed: u64) -> Program {
             max_loops: n_loops,
             fn_eno,
             enums: extras.enums.clone(),
-            fragile,
         };
         let n = 3 + p.rng.below(8);
         for _ in 0..n {
