@@ -43,6 +43,9 @@ impl HostPlace {
     }
 }
 
+/// A member: its declared name, type and subrange bounds.
+type Member = (String, Ty, Option<(i128, i128)>);
+
 /// One part of a path: `.name` or `[i, j]`.
 enum Part<'a> {
     Field(&'a str),
@@ -190,12 +193,7 @@ impl Machine {
     }
 
     /// The member `f` of a value of type `ty`: its declared name, type and subrange.
-    fn member(
-        &self,
-        ty: &Ty,
-        f: &str,
-        text: &str,
-    ) -> Result<(String, Ty, Option<(i128, i128)>), String> {
+    fn member(&self, ty: &Ty, f: &str, text: &str) -> Result<Member, String> {
         let none = |names: Vec<&str>, of: &str| {
             format!("`{text}`: {of} has no member `{f}`{}", hint(f, names))
         };

@@ -474,7 +474,6 @@ pub fn generate(seed: u64) -> Program {
     ));
     let il = format!("{}{il}", extras.types);
     // Located inputs are driven like the VAR_INPUTs (through the image).
-    let mut inputs = inputs;
     inputs.extend(extras.inputs.iter().cloned());
 
     let n_scans = 4 + rng.below(4);

@@ -42,10 +42,9 @@ fn size_of(t: T) -> Option<(&'static str, usize)> {
 fn address(area: char, t: T, slot: usize, bit: usize) -> String {
     let (letter, width) = size_of(t).unwrap_or(("X", 0));
     let byte = slot * 8;
-    if width == 0 {
-        format!("%{area}X{byte}.{bit}")
-    } else {
-        format!("%{area}{letter}{}", byte / width)
+    match byte.checked_div(width) {
+        None => format!("%{area}X{byte}.{bit}"),
+        Some(n) => format!("%{area}{letter}{n}"),
     }
 }
 
