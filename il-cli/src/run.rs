@@ -3,18 +3,25 @@
 
 use std::io::Write;
 
+use il_codegen::sema::types::Ty;
 use il_interp::il_std::{self, Cycle, TIME};
-use il_interp::{Machine, Value, fmt_dur};
+use il_interp::{HostPlace, Machine, Value, fmt_dur};
 
 pub const EXAMPLES: &str = "\
 Examples:
   ilc run motor.il --program Motor --cycles 5 --set start=TRUE@2 --watch start,run,starts
   ilc run timers.il --program Main --cycles 20 --step 50ms --watch t1.Q,t1.ET
 
+  ilc run tank.il --cycles 10 --set %IX0.0=TRUE@2 --set %IW2=500 --watch state,tank.level,%QX0.0
+  ilc run tank.il --set valves[2].open=TRUE --set state=TankState#Filling --watch valves[2]
+
 Cycles are numbered from 1; scan k runs at time (k-1) * step. A --set without
-@CYCLE is written before scan 1. Values are IL literals (TRUE, 42, 16#FF, 1.5,
-T#10ms, 'text'). The table shows every watched variable after each scan; faults
-(division by zero, index out of range) are reported on stderr.
+@CYCLE is written before scan 1. Names are variables with members and elements
+(tank.level, valves[2].open, m[1,2]), located variables and direct addresses
+(%IX0.0, %IW2, %QD1), which are the process image the program reads and writes.
+Values are IL literals (TRUE, 42, 16#FF, 1.5, T#10ms, 'text', TankState#Filling).
+The table shows every watched variable after each scan; faults (division by
+zero, index out of range) are reported on stderr.
 
 Exit status: 0 ran, 1 the program has errors or a name/value is wrong,
 2 the command line itself is wrong.";
@@ -136,49 +143,49 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
     };
     let mut m = Machine::new(prog, &name)?;
 
-    // Every --set and --watch is checked before the first scan.
-    let mut sets: Vec<(u64, String, Value)> = Vec::new();
+    // Every --set and --watch is resolved and checked before the first scan.
+    let mut sets: Vec<(u64, HostPlace, Value)> = Vec::new();
     for s in &o.sets {
-        let v = m.parse_value(&s.var, &s.value)?;
+        let place = m
+            .lookup(&s.var)
+            .map_err(|e| format!("--set {}={}: {e}", s.var, s.value))?;
+        let v = m
+            .parse_for(&place, &s.value)
+            .map_err(|e| format!("--set {}={}: {e}", s.var, s.value))?;
         if s.cycle > o.cycles {
             return Err(format!(
                 "--set {}={}@{}: the run has only {} cycles",
                 s.var, s.value, s.cycle, o.cycles
             ));
         }
-        sets.push((s.cycle, s.var.clone(), v));
+        sets.push((s.cycle, place, v));
     }
-    let watch: Vec<String> = if o.watch.is_empty() {
-        m.vars()
-            .into_iter()
-            .filter(|(_, v)| !matches!(v, Value::Fb(_) | Value::StdFb(_)))
-            .map(|(n, _)| n)
-            .collect()
+    let watch_names: Vec<String> = if o.watch.is_empty() {
+        m.watchable()
     } else {
         o.watch.clone()
     };
-    for w in &watch {
-        match m.get(w) {
-            None => return Err(format!("no variable `{w}` in {name} (for --watch)")),
-            Some(Value::Fb(_) | Value::StdFb(_)) => {
-                return Err(format!(
-                    "`{w}` is a function block instance; watch its members, e.g. `{w}.Q`"
-                ));
-            }
-            Some(_) => {}
+    let mut watch = Vec::with_capacity(watch_names.len());
+    for w in &watch_names {
+        let place = m.lookup(w).map_err(|e| format!("--watch {w}: {e}"))?;
+        if matches!(place.ty, Ty::Fb(_)) {
+            return Err(format!(
+                "--watch {w}: `{w}` is a function block instance; watch its members, e.g. `{w}.Q`"
+            ));
         }
+        watch.push(place);
     }
 
     let mut header = vec!["cycle".to_string(), "time".to_string()];
-    header.extend(watch.iter().cloned());
+    header.extend(watch.iter().map(|p| p.text.clone()));
     let mut rows = Vec::new();
     let mut ctx = Cycle::new();
     let mut faults_seen = 0u64;
     let mut fault_lines = Vec::new();
     for k in 1..=o.cycles {
-        for (c, var, v) in &sets {
+        for (c, place, v) in &sets {
             if *c == k {
-                m.set(var, v.clone())?;
+                m.set_at(&mut ctx, place, v.clone())?;
             }
         }
         let now = ctx.now();
@@ -186,7 +193,7 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
             .map_err(|e| format!("cycle {k} (time {}): {e}", fmt_dur(now.0)))?;
         let mut row = vec![k.to_string(), fmt_dur(now.0)];
         for w in &watch {
-            row.push(m.get(w).map(|v| v.display()).unwrap_or_default());
+            row.push(m.get_at(&ctx, w).display());
         }
         rows.push(row);
         let new = ctx.fault_count() - faults_seen;

@@ -3,8 +3,8 @@
 use crate::Machine;
 use crate::places::Step;
 use crate::values::StdFb;
-use crate::values::{Instance, Value};
-use il_codegen::sema::ir::Init;
+use crate::values::{Instance, Struct, Value};
+use il_codegen::sema::ir::{Init, TypeDef};
 use il_codegen::sema::types::{Elem, Ty};
 
 impl Machine {
@@ -22,13 +22,54 @@ impl Machine {
         })
     }
 
+    /// The user type `name` (as the IR names it; case-insensitive like IEC).
+    pub(crate) fn type_def(&self, name: &str) -> Result<&TypeDef, String> {
+        let named = |d: &&TypeDef| match d {
+            TypeDef::Struct { name: n, .. } | TypeDef::Enum { name: n, .. } => {
+                n.eq_ignore_ascii_case(name)
+            }
+        };
+        self.prog
+            .types
+            .iter()
+            .find(named)
+            .ok_or_else(|| format!("internal: no user type `{name}` in the checked program"))
+    }
+
     pub(crate) fn default_of(&self, t: &Ty) -> Result<Value, String> {
         Ok(match t {
-            Ty::Struct(n) | Ty::Enum(n) => {
-                return Err(format!(
-                    "user type `{n}`: TYPE declarations are not supported by the interpreter yet"
-                ));
-            }
+            // As the generated `Default`: each field at its declared initial
+            // value (a subrange field's lower limit is its IR `init`).
+            Ty::Struct(n) => match self.type_def(n)? {
+                TypeDef::Struct { name, fields } => {
+                    let mut out = Vec::with_capacity(fields.len());
+                    for f in fields {
+                        out.push((f.name.clone(), self.init_of(&f.ty, f.init.as_ref())?));
+                    }
+                    Value::Struct(Box::new(Struct {
+                        ty: name.clone(),
+                        fields: out,
+                    }))
+                }
+                TypeDef::Enum { .. } => return Err(format!("internal: `{n}` is not a STRUCT")),
+            },
+            // The value the IR marks as the default (`#[default]` in Rust).
+            Ty::Enum(n) => match self.type_def(n)? {
+                TypeDef::Enum {
+                    name,
+                    values,
+                    default,
+                } => Value::Enum {
+                    ty: name.clone(),
+                    value: values
+                        .get(*default)
+                        .map(|(v, _)| v.clone())
+                        .ok_or_else(|| format!("internal: `{n}` has no default value"))?,
+                },
+                TypeDef::Struct { .. } => {
+                    return Err(format!("internal: `{n}` is not an enumeration"));
+                }
+            },
             Ty::Elem(_) | Ty::Str { .. } => Value::from_const(&il_codegen::sema::default_const(t)),
             Ty::Array { dims, elem } => {
                 let n: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
@@ -67,6 +108,21 @@ impl Machine {
                         .map(Value::from_const);
                     for s in slots.iter_mut() {
                         *s = values.next().unwrap_or_else(|| d.clone());
+                    }
+                }
+                Ok(v)
+            }
+            // As the emitter: the type's default, then each given field.
+            (Some(Init::Struct(fields)), Ty::Struct(_)) => {
+                let mut v = self.default_of(t)?;
+                for (n, fty, init) in fields {
+                    let x = self.init_of(fty, Some(init))?;
+                    match &mut v {
+                        Value::Struct(s) => match s.field_mut(n) {
+                            Some(slot) => *slot = x,
+                            None => return Err(format!("internal: no field {n} to initialise")),
+                        },
+                        _ => return Err("internal: a structure initialiser".into()),
                     }
                 }
                 Ok(v)

@@ -6,6 +6,17 @@ use il_codegen::sema::ir::{Op, Stmt};
 use il_std::{Cycle, FaultKind};
 
 impl Machine {
+    /// An error of statement `s` with the place in the source it comes from
+    /// (`file:line:col: in POU: ...`); an error from a nested call already
+    /// has its own, and keeps it.
+    fn located(&mut self, pou: usize, s: &Stmt, e: String) -> String {
+        if std::mem::replace(&mut self.error_located, true) {
+            return e;
+        }
+        let (file, name) = (&self.prog.file, &self.prog.pous[pou].name);
+        format!("{file}:{}:{}: in {name}: {e}", s.line, s.col)
+    }
+
     pub(crate) fn run(&mut self, f: &mut Frame, ctx: &mut Cycle) -> Result<(), String> {
         let pou = f.pou;
         let prog = self.prog.clone();
@@ -20,72 +31,89 @@ impl Machine {
         while let Some(s) = body.get(pc) {
             self.steps += 1;
             if self.steps > STEP_LIMIT {
-                return Err(format!(
-                    "{}: more than {STEP_LIMIT} instructions in one scan (endless loop?) at IL line {}",
-                    self.prog.pous[pou].name, s.line
-                ));
+                let e = format!("more than {STEP_LIMIT} instructions in one scan (endless loop?)");
+                return Err(self.located(pou, s, e));
             }
-            let line = s.line;
             pc += 1;
-            match &s.op {
-                Op::SetCr { ty, expr } => {
-                    let v = self.expr(f, expr, ctx, line)?;
-                    let slot = self.cr_slot(f, ty)?;
-                    f.cr[slot] = v;
-                }
-                Op::Save { slot, value } => {
-                    let v = self.value(f, value, ctx, line)?;
-                    if f.saves.len() <= *slot {
-                        f.saves.resize(*slot + 1, Value::Bool(false));
-                    }
-                    f.saves[*slot] = v;
-                }
-                Op::Store {
-                    place,
-                    value,
-                    negate,
-                } => {
-                    let mut v = self.value(f, value, ctx, line)?;
-                    if *negate {
-                        v = stdfn::not(&v);
-                    }
-                    // As the emitter: a store outside a subrange (an inline
-                    // `INT (0..100)`) is skipped and recorded.
-                    if let (Some((lo, hi)), Value::Int(x, _)) = (place.range, &v)
-                        && !(lo..=hi).contains(x)
-                    {
-                        self.fault(ctx, f, FaultKind::SubrangeViolation, line);
-                        continue;
-                    }
-                    self.write(f, place, v, ctx, line)?;
-                }
-                Op::SetIf { place, value, cond } => {
-                    if self.value(f, cond, ctx, line)?.as_bool() {
-                        self.write(f, place, Value::Bool(*value), ctx, line)?;
-                    }
-                }
-                Op::CallFb { cond, .. } => {
-                    if self.condition(f, cond, ctx, line)? {
-                        self.cal(f, &s.op, ctx, line)?;
-                    }
-                }
-                Op::Jump { label, cond } => {
-                    if self.condition(f, cond, ctx, line)? {
-                        pc = labels
-                            .get(*label)
-                            .copied()
-                            .filter(|p| *p != usize::MAX)
-                            .ok_or("internal: jump to a missing label")?;
-                    }
-                }
-                Op::Label(_) | Op::Nop => {}
-                Op::Return { cond } => {
-                    if self.condition(f, cond, ctx, line)? {
-                        break;
-                    }
-                }
+            match self.exec(f, s, &labels, ctx) {
+                Ok(Some(usize::MAX)) => break,
+                Ok(Some(to)) => pc = to,
+                Ok(None) => {}
+                Err(e) => return Err(self.located(pou, s, e)),
             }
         }
         Ok(())
+    }
+
+    /// Execute one statement: `Some(pc)` to jump there (`usize::MAX`: leave
+    /// the POU), `None` to go on with the next one.
+    fn exec(
+        &mut self,
+        f: &mut Frame,
+        s: &Stmt,
+        labels: &[usize],
+        ctx: &mut Cycle,
+    ) -> Result<Option<usize>, String> {
+        let line = s.line;
+        match &s.op {
+            Op::SetCr { ty, expr } => {
+                let v = self.expr(f, expr, ctx, line)?;
+                let slot = self.cr_slot(f, ty)?;
+                f.cr[slot] = v;
+            }
+            Op::Save { slot, value } => {
+                let v = self.value(f, value, ctx, line)?;
+                if f.saves.len() <= *slot {
+                    f.saves.resize(*slot + 1, Value::Bool(false));
+                }
+                f.saves[*slot] = v;
+            }
+            Op::Store {
+                place,
+                value,
+                negate,
+            } => {
+                let mut v = self.value(f, value, ctx, line)?;
+                if *negate {
+                    v = stdfn::not(&v);
+                }
+                // As the emitter: a store outside a subrange (an inline
+                // `INT (0..100)`) is skipped and recorded.
+                if let (Some((lo, hi)), Value::Int(x, _)) = (place.range, &v)
+                    && !(lo..=hi).contains(x)
+                {
+                    self.fault(ctx, f, FaultKind::SubrangeViolation, line);
+                    return Ok(None);
+                }
+                self.write(f, place, v, ctx, line)?;
+            }
+            Op::SetIf { place, value, cond } => {
+                if self.value(f, cond, ctx, line)?.as_bool() {
+                    self.write(f, place, Value::Bool(*value), ctx, line)?;
+                }
+            }
+            Op::CallFb { cond, .. } => {
+                if self.condition(f, cond, ctx, line)? {
+                    self.cal(f, &s.op, ctx, line)?;
+                }
+            }
+            Op::Jump { label, cond } => {
+                if self.condition(f, cond, ctx, line)? {
+                    return labels
+                        .get(*label)
+                        .copied()
+                        .filter(|p| *p != usize::MAX)
+                        .map(Some)
+                        .ok_or_else(|| "internal: jump to a missing label".into());
+                }
+            }
+            Op::Label(_) | Op::Nop => {}
+            Op::Return { cond } => {
+                if self.condition(f, cond, ctx, line)? {
+                    return Ok(Some(usize::MAX));
+                }
+            }
+        }
+        Ok(None)
     }
 }

@@ -21,22 +21,23 @@ mod calls;
 mod constants;
 mod expressions;
 mod flow;
+mod host;
 mod places;
 mod stdfn;
 mod values;
 
 pub use constants::parse_literal;
+pub use host::HostPlace;
 /// The runtime the interpreter runs on (for front ends without their own dependency).
 pub use il_std;
 pub use values::StdFb;
-pub use values::{Instance, Value, fmt_dur};
+pub use values::{Instance, Struct, Value, fmt_dur};
 
 use il_codegen::ast::PouKind;
 use il_codegen::diag::SourceFile;
 use il_codegen::sema::ir::{CheckedPou, Program, Storage, Var};
 use il_codegen::sema::types::{Elem, Ty};
 use il_std::Cycle;
-use places::Step;
 use values::wrap;
 
 /// Instructions one scan may execute before the interpreter gives up (an
@@ -71,6 +72,8 @@ pub struct Machine {
     names: Vec<&'static str>,
     inst: Instance,
     steps: u64,
+    /// The error of this scan already says where it comes from.
+    error_located: bool,
 }
 
 /// The state of one call of a POU: its variables, current results and saves.
@@ -117,6 +120,7 @@ impl Machine {
                 edge_mem: Vec::new(),
             },
             steps: 0,
+            error_located: false,
         };
         let Some(pou) = m
             .prog
@@ -167,88 +171,47 @@ impl Machine {
             .collect()
     }
 
-    /// Read a variable, or a member with a dotted path (`t1.Q`, `sub.x`).
+    /// Read a variable of the instance, or a part of one (`t1.Q`,
+    /// `tank.level`, `arr[2].x`); `None` for an unknown name and for the
+    /// process image (located variables, addresses: [`Machine::get_at`]).
     pub fn get(&self, name: &str) -> Option<Value> {
-        let mut parts = name.split('.');
-        let pou = self.pou();
-        let i = find_var(pou, parts.next()?)?;
-        if !held(&pou.vars[i]) {
+        let p = self.lookup(name).ok()?;
+        if p.location().is_some() {
             return None;
         }
-        let mut v = self.inst.vars[i].clone();
-        for f in parts {
-            v = self.field(&v, f)?;
-        }
-        Some(v)
+        // The process image is not read: any cycle will do.
+        Some(self.get_at(&Cycle::new(), &p))
     }
 
-    /// The declared type of a variable or dotted member.
+    /// The declared type of a variable, a part of one, or a direct address.
     pub fn type_of(&self, name: &str) -> Option<Ty> {
-        let mut parts = name.split('.');
-        let mut pou = self.pou();
-        let i = find_var(pou, parts.next()?)?;
-        let mut ty = pou.vars[i].ty.clone();
-        for f in parts {
-            let Ty::Fb(fb) = &ty else { return None };
-            if let Some(p) = self
-                .prog
-                .pous
-                .iter()
-                .find(|p| p.name.eq_ignore_ascii_case(fb))
-            {
-                pou = p;
-                ty = pou.vars[find_var(pou, f)?].ty.clone();
-            } else {
-                let s = il_std::signature::lookup_fb(fb)?;
-                let p = s
-                    .inputs
-                    .iter()
-                    .chain(s.outputs)
-                    .find(|p| p.name.eq_ignore_ascii_case(f))?;
-                ty = Ty::Elem(Elem::from_name(p.ty.name())?);
-            }
-        }
-        Some(ty)
+        self.lookup(name).ok().map(|p| p.ty)
     }
 
-    /// Write a variable or dotted member; the value must have its type.
+    /// Write a variable of the instance or a part of one; the value must have
+    /// its type. Located variables and addresses: [`Machine::set_at`].
     pub fn set(&mut self, name: &str, v: Value) -> Result<(), String> {
-        let ty = self
-            .type_of(name)
-            .ok_or_else(|| format!("no variable `{name}` in {}", self.pou().name))?;
-        let want = self.default_of(&ty)?;
-        if std::mem::discriminant(&want) != std::mem::discriminant(&v)
-            || matches!((&want, &v), (Value::Int(_, a), Value::Int(_, b)) if a != b)
-            || matches!((&want, &v), (Value::Time(_, a), Value::Time(_, b)) if a != b)
-        {
-            return Err(format!("`{name}` is {ty}, not {}", v.display()));
+        let p = self.lookup(name)?;
+        if let Some(l) = p.location() {
+            return Err(format!(
+                "`{name}` is in the process image ({}): set it with `set_at` and the cycle",
+                l.text
+            ));
         }
-        let mut parts: Vec<&str> = name.split('.').collect();
-        let first = parts.remove(0);
-        let i = find_var(self.pou(), first).ok_or_else(|| format!("no variable `{name}`"))?;
-        let steps: Vec<Step> = parts.iter().map(|f| Step::Field(f.to_string())).collect();
-        let mut root = std::mem::replace(&mut self.inst.vars[i], Value::Bool(false));
-        let ok = self.write_at(&mut root, &steps, v);
-        self.inst.vars[i] = root;
-        if ok {
-            Ok(())
-        } else {
-            Err(format!("cannot write `{name}`"))
-        }
+        self.set_at(&mut Cycle::new(), &p, v)
     }
 
     /// Parse `text` as a value of the type of variable `name` (IEC literal
-    /// forms: `TRUE`, `42`, `-1.5`, `T#10ms`, `16#FF`, `'text'`).
+    /// forms: `TRUE`, `42`, `-1.5`, `T#10ms`, `16#FF`, `'text'`, `Color#Red`).
     pub fn parse_value(&self, name: &str, text: &str) -> Result<Value, String> {
-        let ty = self
-            .type_of(name)
-            .ok_or_else(|| format!("no variable `{name}` in {}", self.pou().name))?;
-        parse_literal(&ty, text).ok_or_else(|| format!("`{text}` is not a valid {ty} value"))
+        let p = self.lookup(name)?;
+        self.parse_for(&p, text)
     }
 
     /// One scan (one call of the instance).
     pub fn scan(&mut self, ctx: &mut Cycle) -> Result<(), String> {
         self.steps = 0;
+        self.error_located = false;
         let mut inst = std::mem::replace(
             &mut self.inst,
             Instance {
@@ -277,6 +240,7 @@ impl Machine {
             .position(|p| p.name.eq_ignore_ascii_case(name) && p.kind == PouKind::Function)
             .ok_or_else(|| format!("no FUNCTION named `{name}`"))?;
         self.steps = 0;
+        self.error_located = false;
         let (r, outs, _) = self.call_function(p, args, Vec::new(), ctx)?;
         Ok((r, outs))
     }

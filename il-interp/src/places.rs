@@ -8,6 +8,7 @@ use il_codegen::sema::types::Elem;
 use il_std::{Cycle, FaultKind};
 
 /// A resolved step of a place's path.
+#[derive(Clone, Debug)]
 pub(crate) enum Step {
     Field(String),
     /// Flat index, or `None` when a subscript is out of range.
@@ -67,17 +68,6 @@ pub(crate) fn io_write(ctx: &mut Cycle, l: &Loc, v: &Value) {
 }
 
 impl Machine {
-    pub(crate) fn field(&self, v: &Value, f: &str) -> Option<Value> {
-        match v {
-            Value::Fb(inst) => {
-                let i = find_var(&self.prog.pous[inst.pou], f)?;
-                Some(inst.vars[i].clone())
-            }
-            Value::StdFb(b) => b.get(f),
-            _ => None,
-        }
-    }
-
     pub(crate) fn read_at(&self, v: &Value, steps: &[Step]) -> Option<Value> {
         let Some((first, rest)) = steps.split_first() else {
             return Some(v.clone());
@@ -88,6 +78,7 @@ impl Machine {
                 self.read_at(&inst.vars[i], rest)
             }
             (Step::Field(f), Value::StdFb(b)) if rest.is_empty() => b.get(f),
+            (Step::Field(f), Value::Struct(s)) => self.read_at(s.field(f)?, rest),
             (Step::Index(Some(k)), Value::Array(items)) => self.read_at(items.get(*k)?, rest),
             _ => None,
         }
@@ -106,6 +97,10 @@ impl Machine {
                 self.write_at(&mut inst.vars[i], rest, new)
             }
             (Step::Field(f), Value::StdFb(b)) if rest.is_empty() => b.set(f, &new),
+            (Step::Field(f), Value::Struct(s)) => match s.field_mut(f) {
+                Some(slot) => self.write_at(slot, rest, new),
+                None => false,
+            },
             (Step::Index(Some(k)), Value::Array(items)) => match items.get_mut(*k) {
                 Some(slot) => self.write_at(slot, rest, new),
                 None => false,

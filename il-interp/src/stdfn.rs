@@ -62,6 +62,11 @@ pub fn compare(a: &Value, b: &Value) -> Option<Ordering> {
         (Value::LReal(x), Value::LReal(y)) => x.partial_cmp(y),
         (Value::Time(x, _), Value::Time(y, _)) => x.partial_cmp(y),
         (Value::Str { units: x, .. }, Value::Str { units: y, .. }) => x.partial_cmp(y),
+        // Enumerations only compare for equality (EQ/NE; the Rust enum is
+        // `PartialEq` only): other values are unordered.
+        (Value::Enum { value: x, .. }, Value::Enum { value: y, .. }) => {
+            (x == y).then_some(Ordering::Equal)
+        }
         _ => None,
     }
 }

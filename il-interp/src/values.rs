@@ -27,10 +27,49 @@ pub enum Value {
     },
     /// Array elements, row-major over all dimensions.
     Array(Vec<Value>),
+    /// A value of a user enumeration: its type and the value's name, both as
+    /// declared (as [`Const::Enum`]; generated code holds a Rust enum).
+    Enum {
+        /// The enumeration type.
+        ty: String,
+        /// The value's name.
+        value: String,
+    },
+    /// A value of a user STRUCT: its fields in declaration order.
+    Struct(Box<Struct>),
     /// An instance of a user FUNCTION_BLOCK or PROGRAM.
     Fb(Box<Instance>),
     /// An instance of a standard function block (the real il-std block).
     StdFb(Box<StdFb>),
+}
+
+/// A value of a user STRUCT.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Struct {
+    /// The STRUCT type, as declared.
+    pub ty: String,
+    /// Each field's name (as declared) and value, in declaration order.
+    pub fields: Vec<(String, Value)>,
+}
+
+impl Struct {
+    /// The field named `name` (case-insensitive, as IEC names are).
+    pub fn field(&self, name: &str) -> Option<&Value> {
+        self.position(name).map(|i| &self.fields[i].1)
+    }
+
+    /// The field named `name`, to write.
+    pub fn field_mut(&mut self, name: &str) -> Option<&mut Value> {
+        self.position(name).map(|i| &mut self.fields[i].1)
+    }
+
+    fn position(&self, name: &str) -> Option<usize> {
+        self.fields.iter().position(|(n, _)| n == name).or_else(|| {
+            self.fields
+                .iter()
+                .position(|(n, _)| n.eq_ignore_ascii_case(name))
+        })
+    }
 }
 
 /// The memory of a user FUNCTION_BLOCK or PROGRAM instance.
@@ -98,8 +137,10 @@ impl Value {
     pub fn from_const(c: &Const) -> Value {
         match c {
             Const::Bool(b) => Value::Bool(*b),
-            // Unreachable: a machine refuses user types when it is built.
-            Const::Enum { .. } => Value::Bool(false),
+            Const::Enum { ty, value } => Value::Enum {
+                ty: ty.clone(),
+                value: value.clone(),
+            },
             Const::Int(v, Elem::BOOL) => Value::Bool(*v != 0),
             Const::Int(v, e) => Value::Int(wrap(*v, *e), *e),
             Const::Real(v, Elem::REAL) => {
@@ -174,6 +215,17 @@ impl Value {
             Value::Array(items) => {
                 let v: Vec<String> = items.iter().map(Value::display).collect();
                 format!("[{}]", v.join(", "))
+            }
+            // As the literal that names it (`--set` accepts the same text).
+            Value::Enum { ty, value } => format!("{ty}#{value}"),
+            // As a structure initialiser.
+            Value::Struct(s) => {
+                let v: Vec<String> = s
+                    .fields
+                    .iter()
+                    .map(|(n, v)| format!("{n} := {}", v.display()))
+                    .collect();
+                format!("({})", v.join(", "))
             }
             Value::Fb(_) | Value::StdFb(_) => "<instance>".to_string(),
         }

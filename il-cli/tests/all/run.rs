@@ -201,3 +201,177 @@ cycle  time  t1.ET  done
 "
     );
 }
+
+/// The tank controller (enumeration, structures, an array of structures, a
+/// subrange, TON, CTU, R_TRIG, a FUNCTION with a VAR_OUTPUT, jumps, located
+/// variables and direct addresses).
+const TANK: &str = include_str!("tank.il");
+
+/// The table's rows as cells, without the header.
+fn rows(out: &str) -> Vec<Vec<String>> {
+    out.lines()
+        .skip(1)
+        .map(|l| l.split_whitespace().map(str::to_string).collect())
+        .collect()
+}
+
+#[test]
+fn a_tank_controller_driven_through_its_inputs() {
+    let f = file("tank.il", TANK);
+    let o = ilc(&[
+        "run",
+        &f,
+        "--cycles",
+        "10",
+        "--step",
+        "10ms",
+        "--set",
+        "%IX0.0=TRUE@2",
+        "--set",
+        "%IW2=900@3",
+        "--set",
+        "%IX0.2=TRUE@4",
+        "--set",
+        "raw=50@8",
+        "--watch",
+        "state,tank.level,%QX0.0,drain,settle.ET,batches.CV,history[1],slot,valves[2].open",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert_eq!(
+        out.lines()
+            .next()
+            .unwrap()
+            .split_whitespace()
+            .collect::<Vec<_>>(),
+        [
+            "cycle",
+            "time",
+            "state",
+            "tank.level",
+            "%QX0.0",
+            "drain",
+            "settle.ET",
+            "batches.CV",
+            "history[1]",
+            "slot",
+            "valves[2].open"
+        ]
+    );
+    let r = rows(&out);
+    let col = |k: usize, c: usize| r[k - 1][c].as_str();
+    // Idle until the start button's rising edge at cycle 2: the pump runs.
+    assert_eq!((col(1, 2), col(1, 4)), ("TankState#Idle", "FALSE"));
+    assert_eq!((col(2, 2), col(2, 4)), ("TankState#Filling", "TRUE"));
+    // %IW2 = 900 raw is 90 %, above the high mark: the pump stops, it settles.
+    assert_eq!(
+        (col(3, 2), col(3, 3), col(3, 4)),
+        ("TankState#Settling", "90", "FALSE")
+    );
+    // The flush button at %IX0.2 opens valve 2 from cycle 4.
+    assert_eq!((col(3, 10), col(4, 10)), ("FALSE", "TRUE"));
+    // TON of 30 ms: ET grows by the 10 ms step, Q at cycle 6 starts draining.
+    assert_eq!(
+        (col(4, 6), col(5, 6), col(6, 6)),
+        ("T#10ms", "T#20ms", "T#30ms")
+    );
+    assert_eq!((col(6, 2), col(6, 5)), ("TankState#Draining", "TRUE"));
+    assert_eq!(col(5, 5), "FALSE");
+    // raw = 50 (the located variable's name) is 5 %: below the low mark, a batch is done.
+    assert_eq!(
+        (col(8, 2), col(8, 3), col(8, 5)),
+        ("TankState#Idle", "5", "FALSE")
+    );
+    assert_eq!((col(7, 7), col(8, 7), col(10, 7)), ("0", "1", "1"));
+    assert_eq!((col(8, 8), col(8, 9)), ("5", "2"));
+    assert_eq!(text(&o.stderr), "");
+}
+
+#[test]
+fn tank_values_of_user_types_members_and_the_default_watch() {
+    let f = file("tank_set.il", TANK);
+    let o = ilc(&[
+        "run",
+        &f,
+        "--cycles",
+        "2",
+        "--set",
+        "state=TankState#Filling",
+        "--set",
+        "valves[1].open=TRUE@2",
+        "--set",
+        "tank.high=50",
+        "--set",
+        "%IW2=700@2",
+        "--watch",
+        "state,tank.high,valves[1],%QX0.0,pump,raw,%IW2",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    let r = rows(&out);
+    assert_eq!(r[0][2], "TankState#Filling");
+    assert_eq!(r[0][3], "50");
+    assert!(out.contains("(open := FALSE, opened := 0)"), "{out}");
+    assert!(out.contains("(open := TRUE, opened := 0)"), "{out}");
+    // Filling with the level at 70 % >= 50 %: settling, the pump (%QX0.0) off.
+    assert_eq!(r[1][2], "TankState#Settling");
+    assert_eq!(&r[1][r[1].len() - 4..], ["FALSE", "FALSE", "700", "700"]);
+    assert_eq!(
+        (r[0][r[0].len() - 4].as_str(), r[0][r[0].len() - 3].as_str()),
+        ("TRUE", "TRUE")
+    );
+
+    // Without --watch: every variable but the FB instances, located ones too.
+    let o = ilc(&["run", &f, "--cycles", "1"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    let head: Vec<&str> = out.lines().next().unwrap().split_whitespace().collect();
+    for name in [
+        "start", "stop", "raw", "pump", "drain", "state", "tank", "valves",
+    ] {
+        assert!(head.contains(&name), "{name}: {head:?}");
+    }
+    for name in ["settle", "batches", "start_edge"] {
+        assert!(!head.contains(&name), "{name}: {head:?}");
+    }
+}
+
+#[test]
+fn tank_wrong_names_addresses_and_values() {
+    let f = file("tank_bad.il", TANK);
+    for (args, msg) in [
+        (
+            vec!["--watch", "tank.levl"],
+            "Tank has no member `levl`; did you mean `level`?",
+        ),
+        (
+            vec!["--watch", "stat"],
+            "no variable `stat` in TankCtl; did you mean `state`?",
+        ),
+        (vec!["--set", "state=Filing"], "did you mean `Filling`?"),
+        (vec!["--set", "state=3"], "is not a value of TankState"),
+        (vec!["--set", "%IX0.9=TRUE"], "bit 9 does not exist"),
+        (vec!["--set", "%IW99999=1"], "outside the process image"),
+        (vec!["--set", "%IW2=-5"], "not a valid WORD value"),
+        (
+            vec!["--set", "valves[3].open=TRUE"],
+            "outside the bounds 1..2",
+        ),
+        (
+            vec!["--set", "tank.level=300"],
+            "outside the subrange 0..100",
+        ),
+        (vec!["--set", "tank=1"], "set its members"),
+        (vec!["--watch", "settle"], "function block instance"),
+        (vec!["--watch", "settle.QQ"], "did you mean `Q`?"),
+        (vec!["--watch", "pump.x"], "has no members"),
+    ] {
+        let mut a = vec!["run", f.as_str(), "--cycles", "1"];
+        a.extend(args.iter().copied());
+        let o = ilc(&a);
+        assert_eq!(o.status.code(), Some(1), "{args:?}");
+        let err = text(&o.stderr);
+        assert!(err.contains(msg), "{args:?}: {err}");
+        assert!(text(&o.stdout).is_empty());
+    }
+}

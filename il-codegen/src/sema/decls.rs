@@ -167,7 +167,9 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
                     .init
                     .as_ref()
                     .or_else(|| fb_names.default_init(&decl.ty));
-                let init = init.and_then(|i| init_value(&mut cxs[*f], &env.types, i, &ty, range));
+                let init = init
+                    .and_then(|i| init_value(&mut cxs[*f], &env.types, i, &ty, range))
+                    .or_else(|| subrange_start(&ty, range));
                 for n in &decl.names {
                     check_ident(&mut cxs[*f], n);
                     if out.iter().any(|o| n.is(&o.name)) {

@@ -8,6 +8,16 @@ use super::types::Ty;
 use super::{Cx, stdfb};
 use crate::ast::{Initializer, LitKind, Literal, Operand};
 
+/// The initial value of a subrange variable or field declared without one:
+/// its lower limit (IEC Ed.2 2.3.3.2), decided here for the emitter and the
+/// interpreter alike. `None` where that is the type's default (0) anyway.
+pub(crate) fn subrange_start(ty: &Ty, range: Option<(i128, i128)>) -> Option<Init> {
+    match (ty, range) {
+        (Ty::Elem(e), Some((lo, _))) if lo != 0 => Some(Init::Const(Const::Int(lo, *e))),
+        _ => None,
+    }
+}
+
 pub(crate) fn init_value(
     cx: &mut Cx,
     types: &TypeTables,

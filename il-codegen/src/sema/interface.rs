@@ -131,7 +131,9 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
                 .init
                 .as_ref()
                 .or_else(|| fb_names.default_init(&decl.ty));
-            let init = init.and_then(|i| init_value(cx, types, i, &ty, range));
+            let init = init
+                .and_then(|i| init_value(cx, types, i, &ty, range))
+                .or_else(|| subrange_start(&ty, range));
             for name in &decl.names {
                 check_ident(cx, name);
                 let key = name.key();

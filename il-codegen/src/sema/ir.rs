@@ -10,6 +10,9 @@ use crate::ast::{PouKind, VarKind};
 /// A checked compilation unit: what the emitter and the interpreter consume.
 #[derive(Clone, Debug, Default)]
 pub struct Program {
+    /// The name of the source file it was checked from (as in diagnostics),
+    /// so that a consumer can say where a run-time error comes from.
+    pub file: String,
     /// User types declared in this file (TYPE ... END_TYPE).
     pub types: Vec<TypeDef>,
     /// The POUs, in source order.
@@ -465,6 +468,8 @@ pub struct Stmt {
     pub op: Op,
     /// IL source line (1-based), carried into a comment.
     pub line: u32,
+    /// Column (1-based) of the instruction on that line, for messages.
+    pub col: u32,
 }
 
 /// `Some((value, when))`: act when the BOOL value equals `when`.

@@ -1,6 +1,7 @@
 //! Semantic analysis: names, types, the type of the current result (CR) at
 //! every instruction, and control flow. Produces the checked [`ir::Program`].
 
+mod address;
 pub mod codes;
 mod configuration;
 mod decls;
@@ -21,6 +22,7 @@ pub mod types;
 
 use crate::ast::{self, Span};
 use crate::diag::{Diagnostic, SourceFile};
+pub use address::parse_address;
 pub use codes::CODES;
 
 /// Check a parsed unit. Returns the checked program (whatever could be
@@ -65,6 +67,7 @@ pub fn check_all(
             .map(|(_, c)| c.clone())
             .collect();
         let mut program = ir::Program {
+            file: cxs[f].file.name.clone(),
             types,
             pous: Vec::new(),
             configs,
@@ -124,11 +127,9 @@ impl Cx<'_> {
 /// programs are far shorter).
 const MAX_SUGGEST_LEN: usize = 64;
 
-/// Case-insensitive "did you mean": the closest of `candidates` to `name`.
-pub(crate) fn suggest<'a>(
-    name: &str,
-    candidates: impl IntoIterator<Item = &'a str>,
-) -> Option<&'a str> {
+/// Case-insensitive "did you mean": the closest of `candidates` to `name`
+/// (public for the tools that take names from users, like `ilc run`).
+pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
     // Bounded: no suggestion for a name no one types (a damaged or hostile
     // file), and no distance computed for a candidate whose length alone
     // rules it out, so the search is linear in the candidates.

@@ -2,8 +2,12 @@
 //! `plc` (the behaviour-test programs of `tests/plc`, asserting what
 //! `tests/tests/*.rs` assert for the generated code), `smoke` (every POU of
 //! `tests/plc` runs; features not covered by `plc`), `plcopen` (a PLCopen
-//! project of the shared corpus).
+//! project of the shared corpus), `user_types` (enumerations, structures,
+//! arrays, subranges, host paths), `addresses` (located variables and direct
+//! addresses in the process image).
 
+mod addresses;
 mod plc;
 mod plcopen;
 mod smoke;
+mod user_types;

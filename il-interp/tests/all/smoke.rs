@@ -38,18 +38,13 @@ fn every_plc_program_runs() {
                 Ok(mut m) => {
                     for _ in 0..3 {
                         if let Err(e) = m.scan(&mut ctx) {
-                            // User TYPEs are a documented limit.
-                            if !e.contains("not supported by the interpreter") {
-                                failures.push(format!("{name} {}: {e}", pou.name));
-                            }
+                            failures.push(format!("{name} {}: {e}", pou.name));
                             break;
                         }
                         ctx.advance(TIME::from_ms(10));
                     }
                     ran += 1;
                 }
-                // User TYPEs are a documented limit of the interpreter.
-                Err(e) if e.contains("not supported by the interpreter") => {}
                 Err(e) => failures.push(format!("{name} {}: {e}", pou.name)),
             }
         }

@@ -214,8 +214,9 @@ impl Pou<'_> {
                     t = T::Bool;
                 }
                 3 if Some(t) == self.has_fn && !self.in_function => {
-                    // Not an array element: see compiler-bugs/fn_arg_array_element.il.
-                    let saved = std::mem::take(&mut self.arrays);
+                    // Array elements, member paths and the process image as
+                    // arguments too (compiler-bugs/fn_arg_array_element.il is
+                    // fixed: arguments go into locals before the call).
                     let o = self.operand(t, false);
                     let f = self.operand(T::Bool, false);
                     if self.rng.chance(35) {
@@ -239,7 +240,6 @@ impl Pou<'_> {
                     } else {
                         self.emit(format!("Fn1 {o}, {f}"));
                     }
-                    self.arrays = saved;
                 }
                 _ => self.same_type_op(t, 0),
             }
@@ -376,6 +376,7 @@ impl Pou<'_> {
                 self.block(types, depth + 1);
                 self.label(&l);
             }
+            7 if !self.enums.is_empty() && self.rng.chance(60) => self.enum_block(),
             6 if depth == 0 && !self.in_function && self.rng.chance(15) => {
                 self.bool_cond();
                 let r = *self.rng.pick(&["RETC", "RETCN", "RETNC"]);

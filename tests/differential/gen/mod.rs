@@ -14,6 +14,7 @@
 #![allow(dead_code)]
 
 mod bodies;
+mod user;
 
 /// xorshift64*.
 pub struct Rng(u64);
@@ -168,6 +169,8 @@ pub struct Program {
     pub scans: Vec<Vec<Lit>>,
     /// Time advanced after each scan (ns).
     pub step_ns: i64,
+    /// The user-type and process-image features it uses (coverage summary).
+    pub kinds: Vec<&'static str>,
 }
 
 struct Pou<'r> {
@@ -186,6 +189,8 @@ struct Pou<'r> {
     max_loops: usize,
     /// Fn1 stores ENO, so a call may read it with `ENO =>`.
     fn_eno: bool,
+    /// Places of the enumeration `Col` (user.rs).
+    enums: Vec<String>,
 }
 
 fn int_lit(rng: &mut Rng, t: T) -> i128 {
@@ -282,6 +287,7 @@ pub fn generate(seed: u64) -> Program {
             in_function: true,
             max_loops: 0,
             fn_eno: false,
+            enums: Vec::new(),
         };
         p.vars.push(Var {
             name: "tmp".into(),
@@ -370,6 +376,7 @@ pub fn generate(seed: u64) -> Program {
             in_function: false,
             max_loops: 2,
             fn_eno,
+            enums: Vec::new(),
         };
         for _ in 0..1 + p.rng.below(4) {
             p.block(&[ft, T::Bool], 0);
@@ -422,12 +429,15 @@ pub fn generate(seed: u64) -> Program {
     fbs.push(("t1".into(), "TON"));
     fbs.push(("t2".into(), "TOF"));
     fbs.push(("t3".into(), "TP"));
+    let extras = user::extras(&mut rng, &types);
     let body = {
+        let mut readonly: Vec<String> = inputs.iter().map(|v| v.name.clone()).collect();
+        readonly.extend(extras.readonly.iter().cloned());
         let mut p = Pou {
             rng: &mut rng,
             lines: Vec::new(),
-            vars: [inputs.clone(), locals.clone()].concat(),
-            readonly: inputs.iter().map(|v| v.name.clone()).collect(),
+            vars: [inputs.clone(), locals.clone(), extras.vars.clone()].concat(),
+            readonly,
             labels: 0,
             loops: 0,
             fbs: fbs.clone(),
@@ -436,6 +446,7 @@ pub fn generate(seed: u64) -> Program {
             in_function: false,
             max_loops: n_loops,
             fn_eno,
+            enums: extras.enums.clone(),
         };
         let n = 3 + p.rng.below(8);
         for _ in 0..n {
@@ -453,13 +464,17 @@ pub fn generate(seed: u64) -> Program {
         .map(|(n, t)| format!("    {n} : {t};\n"))
         .collect();
     il.push_str(&format!(
-        "PROGRAM Main\nVAR_INPUT\n{}END_VAR\nVAR\n{}    arr : ARRAY[0..3] OF {};\n{}END_VAR\n{}\nEND_PROGRAM\n",
+        "PROGRAM Main\nVAR_INPUT\n{}END_VAR\nVAR\n{}    arr : ARRAY[0..3] OF {};\n{}{}END_VAR\n{}\nEND_PROGRAM\n",
         decls(&inputs),
         decls(&locals),
         arr_t.name(),
         fb_decls,
+        extras.decls,
         body
     ));
+    let il = format!("{}{il}", extras.types);
+    // Located inputs are driven like the VAR_INPUTs (through the image).
+    inputs.extend(extras.inputs.iter().cloned());
 
     let n_scans = 4 + rng.below(4);
     let mut scans = Vec::new();
@@ -471,5 +486,6 @@ pub fn generate(seed: u64) -> Program {
         inputs,
         scans,
         step_ns: *rng.pick(&[1_000_000i64, 5_000_000, 10_000_000]),
+        kinds: extras.kinds,
     }
 }

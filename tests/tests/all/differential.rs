@@ -22,6 +22,7 @@ mod generator;
 
 use generator::{Lit, Program, T};
 use il_codegen::diag::SourceFile;
+use il_codegen::sema::ir::Loc;
 use il_codegen::sema::types::Elem;
 use il_interp::{Machine, Value, load};
 use std::fmt::Write as _;
@@ -68,17 +69,38 @@ fn canon(v: &Value) -> String {
         Value::LReal(f) => format!("{f:?}"),
         Value::Time(ns, _) => ns.to_string(),
         Value::Array(items) => items.iter().map(canon).collect::<Vec<_>>().join(","),
+        Value::Enum { value, .. } => value.clone(),
+        Value::Struct(s) => {
+            let fields: Vec<String> = s.fields.iter().map(|(_, v)| canon(v)).collect();
+            format!("({})", fields.join(";"))
+        }
         other => other.display(),
     }
 }
 
 fn fault_text(ctx: &il_std::Cycle) -> String {
     format!(
-        "faults={} last={:?}",
+        "faults={} last={:?} io={}",
         ctx.fault_count(),
-        ctx.last_fault().map(|f| (f.kind, f.line))
+        ctx.last_fault().map(|f| (f.kind, f.line)),
+        io_text(ctx)
     )
 }
+
+/// The outputs and memory the generated programs use (the driver's `io`
+/// prints the same): located variables and direct addresses, byte by byte.
+fn io_text(ctx: &il_std::Cycle) -> String {
+    let mut s = String::new();
+    for a in [il_std::Area::Output, il_std::Area::Memory] {
+        for b in 0..IO_BYTES {
+            let _ = write!(s, "{:02x}", ctx.io.byte(a, b));
+        }
+    }
+    s
+}
+
+/// Bytes of each area that generated programs use (user.rs: slots of 8 bytes).
+const IO_BYTES: usize = 72;
 
 /// The variables compared: every variable of Main but its FB instances.
 fn watched(m: &Machine) -> Vec<String> {
@@ -95,9 +117,14 @@ fn interpret(prog: &il_codegen::sema::ir::Program, p: &Program) -> Result<Vec<St
     let names = watched(&m);
     let mut ctx = il_std::Cycle::new();
     let mut lines = Vec::new();
+    let places = p
+        .inputs
+        .iter()
+        .map(|v| m.lookup(&v.name))
+        .collect::<Result<Vec<_>, _>>()?;
     for (k, scan) in p.scans.iter().enumerate() {
-        for (v, l) in p.inputs.iter().zip(scan) {
-            m.set(&v.name, lit_value(v.ty, l))?;
+        for ((v, l), place) in p.inputs.iter().zip(scan).zip(&places) {
+            m.set_at(&mut ctx, place, lit_value(v.ty, l))?;
         }
         m.scan(&mut ctx)?;
         let mut line = format!("{k} {}", fault_text(&ctx));
@@ -114,15 +141,66 @@ fn interpret(prog: &il_codegen::sema::ir::Program, p: &Program) -> Result<Vec<St
     Ok(lines)
 }
 
+/// How the driver sets an input: a field of `Main`, or the process image
+/// where the checker placed the located variable.
+fn set_input(v: &generator::Var, l: &Lit, loc: Option<&Loc>) -> String {
+    let val = lit_rust(v.ty, l);
+    let Some(loc) = loc else {
+        return format!("m.{} = {val};", v.name);
+    };
+    let area = format!("il_std::Area::{:?}", loc.area);
+    let b = loc.byte;
+    if let Some(bit) = loc.bit {
+        return format!("ctx.io.set_bit({area}, {b}, {bit}, {val});");
+    }
+    let (set, conv) = match loc.elem {
+        Elem::REAL => ("set_dword", ".to_bits()"),
+        Elem::LREAL => ("set_lword", ".to_bits()"),
+        Elem::BYTE | Elem::SINT | Elem::USINT => ("set_byte", " as u8"),
+        Elem::WORD | Elem::INT | Elem::UINT => ("set_word", " as u16"),
+        Elem::DWORD | Elem::DINT | Elem::UDINT => ("set_dword", " as u32"),
+        _ => ("set_lword", " as u64"),
+    };
+    format!("ctx.io.{set}({area}, {b}, ({val}){conv});")
+}
+
+/// `Canon` for the program's user types (the interpreter's `canon` prints the same).
+fn canon_impls(prog: &il_codegen::sema::ir::Program) -> String {
+    use il_codegen::sema::ir::TypeDef;
+    let mut s = String::new();
+    for t in &prog.types {
+        match t {
+            TypeDef::Enum { name, .. } => {
+                let _ = writeln!(
+                    s,
+                    "impl crate::Canon for {name} {{ fn canon(&self) -> String {{ format!(\"{{self:?}}\") }} }}"
+                );
+            }
+            TypeDef::Struct { name, fields } => {
+                let parts: Vec<String> = fields
+                    .iter()
+                    .map(|f| format!("crate::Canon::canon(&self.{})", f.name))
+                    .collect();
+                let _ = writeln!(
+                    s,
+                    "impl crate::Canon for {name} {{ fn canon(&self) -> String {{ format!(\"({{}})\", [{}].join(\";\")) }} }}",
+                    parts.join(", ")
+                );
+            }
+        }
+    }
+    s
+}
+
 /// The Rust driver of one program: a module with the generated code and `run`.
-fn driver(i: usize, names: &[String], p: &Program) -> String {
+fn driver(i: usize, names: &[String], p: &Program, locs: &[Option<Loc>]) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "pub fn run(out: &mut String) {{");
     let _ = writeln!(s, "    let mut ctx = il_std::Cycle::new();");
     let _ = writeln!(s, "    let mut m = Main::default();");
     for (k, scan) in p.scans.iter().enumerate() {
-        for (v, l) in p.inputs.iter().zip(scan) {
-            let _ = writeln!(s, "    m.{} = {};", v.name, lit_rust(v.ty, l));
+        for ((v, l), loc) in p.inputs.iter().zip(scan).zip(locs) {
+            let _ = writeln!(s, "    {}", set_input(v, l, loc.as_ref()));
         }
         let _ = writeln!(s, "    m.call(&mut ctx);");
         let _ = write!(s, "    crate::line(out, {i}, {k}, &ctx, &[");
@@ -149,7 +227,10 @@ impl<T: Canon, const N: usize> Canon for [T; N] {
 }
 pub fn line(out: &mut String, i: usize, k: usize, ctx: &il_std::Cycle, vars: &[(&str, String)]) {
     use std::fmt::Write;
-    let _ = write!(out, "p{i} {k} faults={} last={:?}", ctx.fault_count(), ctx.last_fault().map(|f| (f.kind, f.line)));
+    let _ = write!(out, "p{i} {k} faults={} last={:?} io=", ctx.fault_count(), ctx.last_fault().map(|f| (f.kind, f.line)));
+    for a in [il_std::Area::Output, il_std::Area::Memory] {
+        for b in 0..IO_BYTES { let _ = write!(out, "{:02x}", ctx.io.byte(a, b)); }
+    }
     for (n, v) in vars { let _ = write!(out, " {n}={v}"); }
     out.push('\n');
 }
@@ -162,6 +243,9 @@ struct Case {
     expected: Vec<String>,
     rust: String,
     names: Vec<String>,
+    /// Where each input lives when it is located (the checker's decision).
+    locs: Vec<Option<Loc>>,
+    canon_impls: String,
 }
 
 /// Build one crate with every case and run it; the output lines per case.
@@ -189,9 +273,15 @@ fn build_and_run(dir: &Path, cases: &[Case]) -> Vec<Vec<String>> {
     .unwrap();
     let mut main = String::from("#![allow(clippy::all, dead_code)]\n");
     main.push_str(MAIN_RS);
+    let _ = writeln!(main, "const IO_BYTES: usize = {IO_BYTES};");
     for c in cases {
         let name = format!("p{}.rs", c.index);
-        let text = format!("{}\n{}", c.rust, driver(c.index, &c.names, &c.program));
+        let text = format!(
+            "{}\n{}\n{}",
+            c.rust,
+            c.canon_impls,
+            driver(c.index, &c.names, &c.program, &c.locs)
+        );
         write_if_changed(&src.join(&name), &text);
         let _ = writeln!(main, "#[path = {name:?}] mod p{};", c.index);
     }
@@ -249,7 +339,14 @@ fn prepare(index: usize, seed: u64, program: Program) -> Result<Case, String> {
     let file = SourceFile::new(format!("p{index}.il"), program.il.clone());
     let prog = load(&file).map_err(|e| format!("the checker refuses it:\n{e}"))?;
     let expected = interpret(&prog, &program).map_err(|e| format!("interpreter: {e}"))?;
-    let names = watched(&Machine::new(&prog, "Main")?);
+    let m = Machine::new(&prog, "Main")?;
+    let names = watched(&m);
+    let locs = program
+        .inputs
+        .iter()
+        .map(|v| m.lookup(&v.name).map(|p| p.location().cloned()))
+        .collect::<Result<Vec<_>, _>>()?;
+    let canon_impls = canon_impls(&prog);
     let rust = il_codegen::Program::new()
         .il(file.clone())
         .check()
@@ -263,6 +360,8 @@ fn prepare(index: usize, seed: u64, program: Program) -> Result<Case, String> {
         expected,
         rust,
         names,
+        locs,
+        canon_impls,
     })
 }
 
@@ -293,9 +392,13 @@ fn interpreter_agrees_with_generated_rust() {
     let base = env_num("IL_DIFF_SEED", 20_261_122);
     let mut cases = Vec::new();
     let mut refused = Vec::new();
+    let mut coverage: std::collections::BTreeMap<&str, usize> = Default::default();
     for i in 0..count {
         let seed = base.wrapping_add(i as u64);
         let p = generator::generate(seed);
+        for k in &p.kinds {
+            *coverage.entry(k).or_default() += 1;
+        }
         match prepare(i, seed, p) {
             Ok(c) => cases.push(c),
             Err(e) => refused.push(format!(
@@ -304,6 +407,9 @@ fn interpreter_agrees_with_generated_rust() {
             )),
         }
     }
+    // The generator's coverage of user types and the process image.
+    let summary: Vec<String> = coverage.iter().map(|(k, n)| format!("{k}: {n}")).collect();
+    println!("coverage of {count} programs: {}", summary.join(", "));
     let mut kinds: Vec<String> = refused
         .iter()
         .filter_map(|r| {
@@ -414,6 +520,7 @@ fn shrink(p: Program) -> (String, Program) {
                 inputs: p.inputs.clone(),
                 scans: p.scans.clone(),
                 step_ns: p.step_ns,
+                kinds: p.kinds.clone(),
             };
             if let Ok(c) = prepare(i, 0, q) {
                 cases.push(c);
@@ -550,6 +657,7 @@ fn regressions_agree() {
             inputs,
             scans: rows,
             step_ns,
+            kinds: Vec::new(),
         };
         cases.push(prepare(i, 0, p).unwrap_or_else(|e| panic!("{}: {e}", f.display())));
     }

@@ -126,6 +126,7 @@ pub(crate) fn check_pou(
         save_types: Vec::new(),
         jumped: vec![false; n],
         line: 0,
+        col: 0,
         addresses: Vec::new(),
     };
     // Fixpoint: the lattice per label is short (dead → literal → type → mixed),
@@ -286,6 +287,8 @@ struct Walk<'a, 'c> {
     save_types: Vec<Ty>,
     jumped: Vec<bool>,
     line: u32,
+    /// Column (1-based) of the instruction being walked.
+    col: u32,
     addresses: Vec<ir::Loc>,
 }
 
@@ -303,6 +306,13 @@ impl Walk<'_, '_> {
         }
     }
 
+    /// The statements pushed next come from the source at `span`.
+    fn at(&mut self, span: Span) {
+        let (line, col) = self.cx.file.line_col(span.lo);
+        self.line = line as u32;
+        self.col = col as u32;
+    }
+
     fn push(&mut self, op: Op) {
         if let Op::SetCr { ty, .. } = &op
             && !self.cr_types.contains(ty)
@@ -312,6 +322,7 @@ impl Walk<'_, '_> {
         self.out.push(ir::Stmt {
             op,
             line: self.line,
+            col: self.col,
         });
     }
 
@@ -331,7 +342,7 @@ impl Walk<'_, '_> {
                     if cr != Cr::Dead {
                         self.edge(l, &cr, id.span);
                     }
-                    self.line = self.cx.line(id.span);
+                    self.at(id.span);
                     // This round's edges (all from before the label) plus the
                     // previous round's backward edges.
                     let mut into = self.edges[l].clone();
@@ -346,7 +357,7 @@ impl Walk<'_, '_> {
                     warned_dead = false;
                 }
                 ast::Stmt::Instr(i) => {
-                    self.line = self.cx.line(i.span);
+                    self.at(i.span);
                     if cr == Cr::Dead {
                         if !warned_dead && self.final_pass {
                             self.cx

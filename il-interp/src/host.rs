@@ -1,0 +1,386 @@
+//! Places named by a host or a tool (`ilc run --set`, `--watch`): variables
+//! of the instance with member and element paths (`tank.level`,
+//! `valves[2].open`, `m[1, 2]`), located variables and direct addresses
+//! (`%IX0.0`, `%QW1`), which live in the process image of the cycle, exactly
+//! where generated code reads and writes them.
+
+use crate::places::{Step, io_read, io_write};
+use crate::values::Value;
+use crate::{Machine, find_var, held};
+use il_codegen::sema::ir::{Loc, Storage, TypeDef};
+use il_codegen::sema::types::{Elem, Ty};
+use il_codegen::sema::{parse_address, suggest};
+use il_std::Cycle;
+
+/// A resolved host place: [`Machine::lookup`] makes one, [`Machine::get_at`]
+/// and [`Machine::set_at`] use it.
+#[derive(Clone, Debug)]
+pub struct HostPlace {
+    /// The name as the host gave it.
+    pub text: String,
+    /// The type of the place.
+    pub ty: Ty,
+    /// Subrange bounds a store must respect.
+    pub range: Option<(i128, i128)>,
+    target: Target,
+}
+
+#[derive(Clone, Debug)]
+enum Target {
+    /// A variable of the instance and the steps into it.
+    Var(usize, Vec<Step>),
+    /// A place of the process image.
+    Addr(Loc),
+}
+
+impl HostPlace {
+    /// The process image place, for a direct address or a located variable.
+    pub fn location(&self) -> Option<&Loc> {
+        match &self.target {
+            Target::Addr(l) => Some(l),
+            Target::Var(..) => None,
+        }
+    }
+}
+
+/// A member: its declared name, type and subrange bounds.
+type Member = (String, Ty, Option<(i128, i128)>);
+
+/// One part of a path: `.name` or `[i, j]`.
+enum Part<'a> {
+    Field(&'a str),
+    Index(Vec<&'a str>),
+}
+
+fn is_ident(c: char) -> bool {
+    c.is_ascii_alphanumeric() || c == '_'
+}
+
+/// Split `a.b[1, 2].c` into its root and parts.
+fn split(text: &str) -> Result<(&str, Vec<Part<'_>>), String> {
+    let bad = || format!("`{text}` is not a variable path like `tank.level` or `valves[2].open`");
+    let end = text.find(|c: char| !is_ident(c)).unwrap_or(text.len());
+    let (root, mut rest) = text.split_at(end);
+    if root.is_empty() || root.starts_with(|c: char| c.is_ascii_digit()) {
+        return Err(bad());
+    }
+    let mut parts = Vec::new();
+    while !rest.is_empty() {
+        if let Some(r) = rest.strip_prefix('.') {
+            let end = r.find(|c: char| !is_ident(c)).unwrap_or(r.len());
+            if end == 0 {
+                return Err(bad());
+            }
+            parts.push(Part::Field(&r[..end]));
+            rest = &r[end..];
+        } else if let Some(r) = rest.strip_prefix('[') {
+            let close = r.find(']').ok_or_else(bad)?;
+            parts.push(Part::Index(r[..close].split(',').map(str::trim).collect()));
+            rest = &r[close + 1..];
+        } else {
+            return Err(bad());
+        }
+    }
+    Ok((root, parts))
+}
+
+/// ", did you mean `x`?" when a candidate is close.
+fn hint<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> String {
+    suggest(name, candidates)
+        .map(|s| format!("; did you mean `{s}`?"))
+        .unwrap_or_default()
+}
+
+impl Machine {
+    /// Resolve a variable path or a direct address of this instance. Every
+    /// error names what is wrong and, where one is close, the name meant.
+    pub fn lookup(&self, text: &str) -> Result<HostPlace, String> {
+        let text = text.trim();
+        let pou = self.pou();
+        if text.starts_with('%') {
+            let l = parse_address(text)?;
+            return Ok(HostPlace {
+                text: text.to_string(),
+                ty: Ty::Elem(l.elem),
+                range: None,
+                target: Target::Addr(l),
+            });
+        }
+        let (root, parts) = split(text)?;
+        let Some(i) = find_var(pou, root) else {
+            let names = pou
+                .vars
+                .iter()
+                .filter(|v| visible(v))
+                .map(|v| v.name.as_str());
+            return Err(format!(
+                "no variable `{root}` in {}{}",
+                pou.name,
+                hint(root, names)
+            ));
+        };
+        let var = &pou.vars[i];
+        if var.storage == Storage::Located {
+            let l = var
+                .location
+                .clone()
+                .ok_or("internal: located without address")?;
+            if !parts.is_empty() {
+                return Err(format!(
+                    "`{root}` is located at {}: it has no members",
+                    l.text
+                ));
+            }
+            return Ok(HostPlace {
+                text: text.to_string(),
+                ty: var.ty.clone(),
+                range: var.range,
+                target: Target::Addr(l),
+            });
+        }
+        if !held(var) {
+            return Err(format!(
+                "`{root}` lives only during a call of {} (a temporary); it cannot be set or watched",
+                pou.name
+            ));
+        }
+        let mut ty = var.ty.clone();
+        let mut range = var.range;
+        let mut steps = Vec::new();
+        for part in parts {
+            match part {
+                Part::Field(f) => {
+                    let (name, fty, frange) = self.member(&ty, f, text)?;
+                    steps.push(Step::Field(name));
+                    ty = fty;
+                    range = frange;
+                }
+                Part::Index(subs) => {
+                    let Ty::Array { dims, elem } = &ty else {
+                        return Err(format!("`{text}`: {ty} is not an array"));
+                    };
+                    if subs.len() != dims.len() {
+                        return Err(format!(
+                            "`{text}`: {} subscripts for an array of {} dimensions",
+                            subs.len(),
+                            dims.len()
+                        ));
+                    }
+                    let mut flat = 0usize;
+                    for (s, (lo, hi)) in subs.iter().zip(dims) {
+                        let k: i64 = s.parse().map_err(|_| {
+                            format!("`{text}`: the subscript `{s}` is not an integer")
+                        })?;
+                        if k < *lo || k > *hi {
+                            return Err(format!(
+                                "`{text}`: subscript {k} is outside the bounds {lo}..{hi}"
+                            ));
+                        }
+                        flat = flat * (hi - lo + 1) as usize + (k - lo) as usize;
+                    }
+                    steps.push(Step::Index(Some(flat)));
+                    ty = (**elem).clone();
+                    range = None;
+                }
+            }
+        }
+        Ok(HostPlace {
+            text: text.to_string(),
+            ty,
+            range,
+            target: Target::Var(i, steps),
+        })
+    }
+
+    /// The member `f` of a value of type `ty`: its declared name, type and subrange.
+    fn member(&self, ty: &Ty, f: &str, text: &str) -> Result<Member, String> {
+        let none = |names: Vec<&str>, of: &str| {
+            format!("`{text}`: {of} has no member `{f}`{}", hint(f, names))
+        };
+        match ty {
+            Ty::Struct(n) => match self.type_def(n)? {
+                TypeDef::Struct { fields, .. } => fields
+                    .iter()
+                    .find(|x| x.name.eq_ignore_ascii_case(f))
+                    .map(|x| (x.name.clone(), x.ty.clone(), x.range))
+                    .ok_or_else(|| none(fields.iter().map(|x| x.name.as_str()).collect(), n)),
+                TypeDef::Enum { .. } => Err(format!("`{text}`: {n} has no members")),
+            },
+            Ty::Fb(n) => {
+                if let Some(p) = self
+                    .prog
+                    .pous
+                    .iter()
+                    .find(|p| p.name.eq_ignore_ascii_case(n))
+                {
+                    let vars = p.vars.iter().filter(|v| held(v));
+                    let mut names = Vec::new();
+                    for v in vars {
+                        if v.name.eq_ignore_ascii_case(f) {
+                            return Ok((v.name.clone(), v.ty.clone(), v.range));
+                        }
+                        names.push(v.name.as_str());
+                    }
+                    return Err(none(names, n));
+                }
+                let s = il_std::signature::lookup_fb(n)
+                    .ok_or_else(|| format!("internal: no function block {n}"))?;
+                let params = || s.inputs.iter().chain(s.outputs);
+                let p = params()
+                    .find(|p| p.name.eq_ignore_ascii_case(f))
+                    .ok_or_else(|| none(params().map(|p| p.name).collect(), n))?;
+                let e = Elem::from_name(p.ty.name())
+                    .ok_or_else(|| format!("internal: type of {n}.{}", p.name))?;
+                Ok((p.name.to_string(), Ty::Elem(e), None))
+            }
+            _ => Err(format!("`{text}`: {ty} has no members")),
+        }
+    }
+
+    /// The current value of a host place (the process image is the cycle's).
+    pub fn get_at(&self, ctx: &Cycle, p: &HostPlace) -> Value {
+        match &p.target {
+            // A located variable's `Loc` has its declared type (`AT %IW2 :
+            // INT` reads as INT), as the checker resolved it.
+            Target::Addr(l) => io_read(ctx, l),
+            Target::Var(i, steps) => self
+                .read_at(&self.inst.vars[*i], steps)
+                .unwrap_or(Value::Bool(false)),
+        }
+    }
+
+    /// Write a host place; the value must have its type (and stay in its subrange).
+    pub fn set_at(&mut self, ctx: &mut Cycle, p: &HostPlace, v: Value) -> Result<(), String> {
+        if !self.fits(&v, &p.ty)? {
+            return Err(format!("`{}` is {}, not {}", p.text, p.ty, v.display()));
+        }
+        if let (Some((lo, hi)), Value::Int(x, _)) = (p.range, &v)
+            && !(lo..=hi).contains(x)
+        {
+            return Err(format!(
+                "`{}`: {x} is outside its subrange {lo}..{hi}",
+                p.text
+            ));
+        }
+        match &p.target {
+            Target::Addr(l) => {
+                io_write(ctx, l, &v);
+                Ok(())
+            }
+            Target::Var(i, steps) => {
+                let mut root = std::mem::replace(&mut self.inst.vars[*i], Value::Bool(false));
+                let ok = self.write_at(&mut root, steps, v);
+                self.inst.vars[*i] = root;
+                if ok {
+                    Ok(())
+                } else {
+                    Err(format!("cannot write `{}`", p.text))
+                }
+            }
+        }
+    }
+
+    /// Parse `text` as a value for a host place: IEC literal forms (`TRUE`,
+    /// `42`, `16#FF`, `T#10ms`, `'text'`) and enumeration values
+    /// (`TankState#Filling` or `Filling`).
+    pub fn parse_for(&self, p: &HostPlace, text: &str) -> Result<Value, String> {
+        let t = text.trim();
+        if let Ty::Enum(n) = &p.ty {
+            let TypeDef::Enum { name, values, .. } = self.type_def(n)? else {
+                return Err(format!("internal: `{n}` is not an enumeration"));
+            };
+            let bare = match t.split_once('#') {
+                Some((ty, v)) if ty.eq_ignore_ascii_case(name) => v,
+                Some((ty, _)) => {
+                    return Err(format!("`{t}` is a value of {ty}; `{}` is {name}", p.text));
+                }
+                None => t,
+            };
+            let names = || values.iter().map(|(v, _)| v.as_str());
+            return names()
+                .find(|v| v.eq_ignore_ascii_case(bare))
+                .map(|v| Value::Enum {
+                    ty: name.clone(),
+                    value: v.to_string(),
+                })
+                .ok_or_else(|| {
+                    format!(
+                        "`{t}` is not a value of {name} ({}){}",
+                        names().collect::<Vec<_>>().join(", "),
+                        hint(bare, names())
+                    )
+                });
+        }
+        if matches!(p.ty, Ty::Struct(_) | Ty::Array { .. } | Ty::Fb(_)) {
+            return Err(format!(
+                "`{}` is {}: set its members or elements one by one",
+                p.text, p.ty
+            ));
+        }
+        let v = crate::parse_literal(&p.ty, t)
+            .ok_or_else(|| format!("`{t}` is not a valid {} value (for `{}`)", p.ty, p.text))?;
+        if let (Some((lo, hi)), Value::Int(x, _)) = (p.range, &v)
+            && !(lo..=hi).contains(x)
+        {
+            return Err(format!(
+                "`{t}` is outside the subrange {lo}..{hi} of `{}`",
+                p.text
+            ));
+        }
+        Ok(v)
+    }
+
+    /// Whether `v` is a value of type `t`.
+    fn fits(&self, v: &Value, t: &Ty) -> Result<bool, String> {
+        Ok(match (v, t) {
+            (Value::Enum { ty, .. }, Ty::Enum(n)) => ty.eq_ignore_ascii_case(n),
+            (Value::Struct(s), Ty::Struct(n)) => s.ty.eq_ignore_ascii_case(n),
+            (Value::Array(items), Ty::Array { dims, elem }) => {
+                let n: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
+                items.len() as i64 == n && {
+                    let mut all = true;
+                    for x in items {
+                        all &= self.fits(x, elem)?;
+                    }
+                    all
+                }
+            }
+            (Value::Int(_, a), Ty::Elem(b)) | (Value::Time(_, a), Ty::Elem(b)) => a == b,
+            (Value::Bool(_), Ty::Elem(Elem::BOOL)) => true,
+            (Value::Real(_), Ty::Elem(Elem::REAL)) | (Value::LReal(_), Ty::Elem(Elem::LREAL)) => {
+                true
+            }
+            (Value::Str { wide, .. }, Ty::Str { wide: w, .. }) => wide == w,
+            (Value::Fb(_) | Value::StdFb(_), Ty::Fb(_)) => {
+                std::mem::discriminant(v) == std::mem::discriminant(&self.default_of(t)?)
+            }
+            _ => false,
+        })
+    }
+
+    /// The names a host can watch by default: every variable of the instance
+    /// that is not a function block instance, located ones included, in
+    /// declaration order.
+    pub fn watchable(&self) -> Vec<String> {
+        self.pou()
+            .vars
+            .iter()
+            .filter(|v| visible(v) && !is_instance(&v.ty))
+            .map(|v| v.name.clone())
+            .collect()
+    }
+}
+
+/// A variable a host can name: the instance's memory and its located variables.
+fn visible(v: &il_codegen::sema::ir::Var) -> bool {
+    held(v) || v.storage == Storage::Located
+}
+
+/// An FB instance, or an array of them.
+fn is_instance(t: &Ty) -> bool {
+    match t {
+        Ty::Fb(_) => true,
+        Ty::Array { elem, .. } => is_instance(elem),
+        _ => false,
+    }
+}
