@@ -37,6 +37,10 @@ pub fn literal_message(err: LiteralError, text: &str) -> String {
             "`{}` is not a unit of time: use {UNITS}",
             part(start, end).to_ascii_lowercase()
         ),
+        DurationUnitOverflow { start, end, limit } => format!(
+            "`{}` in `{text}`: after a larger unit it must be below {limit}; only the first unit may overflow (as in `T#90m`)",
+            part(start, end)
+        ),
         DurationUnitOrder | TrailingUnderscore | MissingFractionDigits => {
             format!("`{text}`: {err}")
         }

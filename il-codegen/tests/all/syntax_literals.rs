@@ -269,6 +269,15 @@ fn forms_outside_the_iec_grammar_are_refused() {
         body_err("LD T#1s1h", "IL0019", 4),
         "`1s1h`: units must go from days down to nanoseconds, each at most once"
     );
+    // Only the most significant unit may overflow (`T#61m` is fine).
+    assert_eq!(
+        body_err("LD T#1h_61m", "IL0019", 4),
+        "`61m` in `1h_61m`: after a larger unit it must be below 60; only the first unit may overflow (as in `T#90m`)"
+    );
+    assert_eq!(
+        body_err("LD T#1d24h", "IL0019", 4),
+        "`24h` in `1d24h`: after a larger unit it must be below 24; only the first unit may overflow (as in `T#90m`)"
+    );
     assert_eq!(
         body_err("LD T#1s_", "IL0019", 4),
         "`1s_`: a duration cannot end with `_`"

@@ -86,6 +86,15 @@ pub fn parse_duration(text: &str) -> Result<i64, LiteralError> {
         if last_rank != usize::MAX && rank <= last_rank {
             return Err(LiteralError::DurationUnitOrder);
         }
+        // What one unit of the next larger kind holds: 24 h, 60 m, 1000 ms ...
+        const LIMITS: [u32; 7] = [u32::MAX, 24, 60, 60, 1000, 1000, 1000];
+        if last_rank != usize::MAX && int_part >= i128::from(LIMITS[rank]) {
+            return Err(LiteralError::DurationUnitOverflow {
+                start,
+                end: i,
+                limit: LIMITS[rank],
+            });
+        }
         last_rank = rank;
         let ns = i128::from(ns);
         let frac_ns = (frac * ns * 2 + frac_scale) / (2 * frac_scale); // rounded half up

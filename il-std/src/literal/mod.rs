@@ -70,6 +70,16 @@ pub enum LiteralError {
     },
     /// Units not in descending order, or one twice (`T#1s1h`, `T#1s1s`).
     DurationUnitOrder,
+    /// A unit after the first at or over what the next larger unit holds
+    /// (`T#1h_61m`): only the most significant unit may overflow (`T#61m`).
+    DurationUnitOverflow {
+        /// Start of the number.
+        start: usize,
+        /// End of its unit.
+        end: usize,
+        /// The first value too large (60 for minutes).
+        limit: u32,
+    },
     /// A fraction on a unit other than the last (`T#1.5s3ms`).
     FractionNotLast,
     /// A `.` without digits after it (`T#1.s`, `TOD#12:00:00.`).
@@ -206,6 +216,10 @@ impl fmt::Display for LiteralError {
             DurationUnitOrder => {
                 f.write_str("units must go from days down to nanoseconds, each at most once")
             }
+            DurationUnitOverflow { limit, .. } => write!(
+                f,
+                "after a larger unit, a unit holds less than {limit} (only the first unit may overflow)"
+            ),
             FractionNotLast => f.write_str(
                 "only the last unit of a duration may have a fraction (`T#1.5s`)",
             ),

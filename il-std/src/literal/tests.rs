@@ -88,6 +88,12 @@ fn durations() {
     assert_eq!(parse_duration("+5s"), Ok(5000 * ms));
     assert_eq!(parse_duration("1d2h"), Ok((26 * 3600) * 1000 * ms));
     assert_eq!(parse_duration("25h"), Ok(25 * 3600 * 1000 * ms));
+    // Only the most significant unit may overflow.
+    assert_eq!(parse_duration("61m"), Ok(61 * 60 * 1000 * ms));
+    assert_eq!(
+        parse_duration("1h_59m_59s_999ms"),
+        Ok(((3600 + 59 * 60 + 59) * 1000 + 999) * ms)
+    );
     assert_eq!(parse_duration("1_000ms"), Ok(1000 * ms));
     assert_eq!(parse_duration("1S"), Ok(1000 * ms));
     assert_eq!(parse_duration("10US"), Ok(10_000));
@@ -114,6 +120,38 @@ fn durations() {
         ("1.5s3ms", FractionNotLast),
         ("1s1h", DurationUnitOrder),
         ("1s1s", DurationUnitOrder),
+        (
+            "1h_61m",
+            DurationUnitOverflow {
+                start: 3,
+                end: 6,
+                limit: 60,
+            },
+        ),
+        (
+            "1d24h",
+            DurationUnitOverflow {
+                start: 2,
+                end: 5,
+                limit: 24,
+            },
+        ),
+        (
+            "-2m60s",
+            DurationUnitOverflow {
+                start: 3,
+                end: 6,
+                limit: 60,
+            },
+        ),
+        (
+            "1s1000ms",
+            DurationUnitOverflow {
+                start: 2,
+                end: 8,
+                limit: 1000,
+            },
+        ),
         ("1s_", TrailingUnderscore),
         ("1.s", MissingFractionDigits),
         ("s", DurationNeedsNumber),
