@@ -6,7 +6,7 @@
 
 use crate::plc::Line;
 use crate::{SCAN, Timeline};
-use il_std::{Area, Cycle};
+use il_std::Cycle;
 
 /// Three seconds of the line, stopped for a moment at 1.5 s.
 pub fn run() -> Timeline {
@@ -39,7 +39,7 @@ pub fn run() -> Timeline {
             ran.join(" ")
         };
         // The valve is a located global: it lives in the process image.
-        let valve = ctx.io.bit(Area::Output, 0, 0);
+        let valve = Line::io_valve(&ctx); // valve AT %QX0.0
         tl.record(
             ctx.now(),
             &[

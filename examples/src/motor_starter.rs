@@ -1,11 +1,13 @@
 //! A motor starter with interlocks (`plc/motor_starter.il`, through
 //! build.rs). Its variables are located (`AT %IX0.0` ...), so the host
 //! talks to it through the process image `Cycle::io`, as a fieldbus driver
-//! would.
+//! would: by the IL variable's name (the generated `io_NAME`/`set_io_NAME`)
+//! or by the IEC address (`il_std::addr`), both typed.
 
 use crate::plc::MotorStarter;
 use crate::{SCAN, Timeline};
-use il_std::{Area, Cycle};
+use il_std::Cycle;
+use il_std::addr::{ix, mw, qx};
 
 /// The inputs, as bits of input byte 0 (`%IX0.0` .. `%IX0.4`).
 #[derive(Clone, Copy, Debug, Default)]
@@ -19,16 +21,11 @@ struct Panel {
 
 impl Panel {
     fn write(&self, ctx: &mut Cycle) {
-        let bits = [
-            self.start,
-            self.stop_ok,
-            self.overload,
-            self.guard_ok,
-            self.reset,
-        ];
-        for (bit, v) in (0u8..).zip(bits) {
-            ctx.io.set_bit(Area::Input, 0, bit, v);
-        }
+        MotorStarter::set_io_start_pb(ctx, self.start); // start_pb AT %IX0.0
+        MotorStarter::set_io_stop_pb(ctx, self.stop_ok); // stop_pb AT %IX0.1
+        ctx.io.set(ix(0, 2), self.overload); // %IX0.2, by its address
+        ctx.io.set(ix(0, 3), self.guard_ok);
+        ctx.io.set(ix(0, 4), self.reset);
     }
 }
 
@@ -128,9 +125,9 @@ pub fn run() -> Timeline {
         };
         p.write(&mut ctx);
         prg.call(&mut ctx);
-        let contactor = ctx.io.bit(Area::Output, 0, 0);
-        let lamp = ctx.io.bit(Area::Output, 0, 1);
-        let starts = ctx.io.word(Area::Memory, 4) as i16; // %MW2 = bytes 4..5
+        let contactor = MotorStarter::io_contactor(&ctx); // contactor AT %QX0.0
+        let lamp = ctx.io.get(qx(0, 1)); // %QX0.1: a bool
+        let starts = ctx.io.get(mw(2).int()); // %MW2 read as an INT: an i16
         tl.record(
             ctx.now(),
             &[

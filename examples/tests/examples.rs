@@ -189,3 +189,16 @@ fn bottling_runs_two_tasks_at_their_intervals() {
     // The located global %QX0.0 toggles with each fill while running.
     assert_eq!(tl.times_of("valve", "0")[..2], [200, 600]);
 }
+
+/// The README's and the guide's host snippet (they quote these lines): one
+/// scan with `start` pressed, then 10 ms of simulated time.
+#[test]
+fn the_readmes_host_drives_one_scan() {
+    use il_examples::readme_motor::Motor;
+    let mut ctx = il_std::Cycle::new();
+    let mut m = Motor::default();
+    m.start = true;
+    m.call(&mut ctx); // one scan
+    ctx.advance(il_std::TIME::from_ms(10)); // simulated time
+    assert!(m.run);
+}

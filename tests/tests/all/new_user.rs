@@ -198,8 +198,22 @@ fn a_new_users_crates_build_without_warnings_and_show_il_errors() {
 
     // 2. build.rs as the README writes it, a library including the files at
     //    its root and a binary including them in a `mod`.
-    let build_rs = "fn main() -> Result<(), il_codegen::Error> {\n    il_codegen::Builder::new()\n        .file(\"plc/types.il\")\n        .file(\"plc/tank.il\")\n        .compile()?;\n    Ok(())\n}\n";
-    let include = "include!(concat!(env!(\"OUT_DIR\"), \"/types.rs\"));\ninclude!(concat!(env!(\"OUT_DIR\"), \"/tank.rs\"));\n";
+    //    The README quotes these lines (il-cli's docs test checks it).
+    let build_rs = r#"
+// build.rs
+fn main() -> Result<(), il_codegen::Error> {
+    il_codegen::Builder::new()
+        .file("plc/types.il")
+        .file("plc/tank.il")
+        .compile()?;
+    Ok(())
+}
+"#;
+    let include = r#"
+// src/lib.rs, or inside a `mod` of src/main.rs
+include!(concat!(env!("OUT_DIR"), "/types.rs"));
+include!(concat!(env!("OUT_DIR"), "/tank.rs"));
+"#;
     let with_build = write_crate(
         &root,
         "tank-build",
