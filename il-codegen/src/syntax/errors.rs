@@ -392,10 +392,20 @@ pub fn parse_error(
                 _ if *tok == Tok::Nl => format!("the line ends too early{after}"),
                 _ => format!("unexpected {found}"),
             };
-            Some(
-                Diagnostic::error(code_, span, msg)
-                    .with_label(format!("expected {}", expected_list(expected))),
-            )
+            let mut d = Diagnostic::error(code_, span, msg)
+                .with_label(format!("expected {}", expected_list(expected)));
+            // A word shaped like a name where a name may stand, that the lexer
+            // did not read as one: a reserved keyword (`VAR on : BOOL`).
+            let word = snippet(span.lo as usize, span.hi as usize);
+            if has(expected, "IdentTok")
+                && word.bytes().next().is_some_and(|c| c.is_ascii_alphabetic())
+                && word.bytes().all(|c| c.is_ascii_alphanumeric() || c == b'_')
+            {
+                d.add_note(format!(
+                    "`{word}` is a reserved keyword of IEC 61131-3 and cannot be a name; rename it (e.g. `{word}_`)"
+                ));
+            }
+            Some(d)
         }
     }
 }

@@ -138,7 +138,10 @@ impl<'a> Lexer<'a> {
             self.line_start = true;
             return;
         }
-        if ST_KEYWORDS.contains(&up.as_str()) || self.assignment_follows(end) {
+        if ST_KEYWORDS.contains(&up.as_str())
+            || self.assignment_follows(end)
+            || self.st_call_follows(end)
+        {
             let line_end = self.src[start..]
                 .find('\n')
                 .map_or(self.b.len(), |e| start + e);
@@ -179,6 +182,17 @@ impl<'a> Lexer<'a> {
     }
 
     /// After a word at the start of a line: `:=` (possibly after `.a` / `[i]`)?
+    /// `fb(10, 20);` or `F(x);`: a Structured Text call statement, which IL
+    /// writes without the `;` (a `(`, then the line ends in `);`). Without
+    /// this, the `;` reads as a comment and each argument as an error.
+    pub(super) fn st_call_follows(&self, j: usize) -> bool {
+        let rest = &self.src[j..];
+        let line = &rest[..rest.find('\n').unwrap_or(rest.len())];
+        // A trailing IEC comment does not count.
+        let code = line.find("(*").map_or(line, |c| &line[..c]).trim_end();
+        line.trim_start().starts_with('(') && code.ends_with(");")
+    }
+
     pub(super) fn assignment_follows(&self, mut j: usize) -> bool {
         let b = self.b;
         loop {
