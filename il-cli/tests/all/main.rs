@@ -5,6 +5,7 @@
 mod cli;
 mod corpus;
 mod explain;
+mod lsp;
 mod plcopen;
 mod run;
 mod ui;
