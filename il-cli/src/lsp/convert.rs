@@ -84,7 +84,8 @@ impl LineIndex {
         }
         let mut units = 0;
         for (i, c) in text[lo..hi].char_indices() {
-            if units >= want {
+            // A column inside a surrogate pair lands on its character.
+            if units + c.len_utf16() > want {
                 return lo + i;
             }
             units += c.len_utf16();
