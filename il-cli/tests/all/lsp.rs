@@ -629,3 +629,37 @@ fn a_plcopen_project() {
     c.finish();
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn hover_on_a_standard_function() {
+    let dir = temp_dir("stdfn");
+    let main = uri(&dir.join("f.il"));
+    let text = "PROGRAM p\nVAR\n    x : INT;\nEND_VAR\n    LD x\n    LIMIT 0, 100\n    ST x\nEND_PROGRAM\n";
+    let mut c = Client::start(&[]);
+    c.initialize(&dir, json!({}));
+    c.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": main, "languageId": "il", "version": 1, "text": text}}),
+    );
+    assert_eq!(c.diagnostics_for(&main), Vec::<Value>::new());
+    let h = c.result("textDocument/hover", at(&main, text, "LIMIT", 2));
+    let t = hover_text(&h);
+    assert!(
+        t.contains("FUNCTION LIMIT(MN : ") && t.contains("standard function"),
+        "{t}"
+    );
+    // Formal parameter names of a standard function inside its call list.
+    let edited = text.replace("LIMIT 0, 100", "LIMIT(");
+    c.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": main, "version": 2}, "contentChanges": [{"text": edited}]}),
+    );
+    let items = c.result("textDocument/completion", at(&main, &edited, "LIMIT(", 6));
+    let names = labels(&items);
+    assert!(
+        names.contains(&"MN".into()) && names.contains(&"MX".into()),
+        "{items}"
+    );
+    c.finish();
+    let _ = std::fs::remove_dir_all(&dir);
+}
