@@ -28,6 +28,7 @@ use lsp_types::{
     CompletionOptions, HoverProviderCapability, InitializeParams, OneOf, RenameOptions,
     ServerCapabilities, TextDocumentSyncCapability, TextDocumentSyncKind, WorkDoneProgressOptions,
 };
+use serde_json::Value;
 
 use workspace::Workspace;
 
@@ -78,6 +79,10 @@ fn serve(conn: &Connection) -> Fallible<()> {
     if let Some(opts) = init.get("initializationOptions") {
         ws.settings.update(opts);
     }
+    ws.settings.hint_refresh = init
+        .pointer("/capabilities/workspace/inlayHint/refreshSupport")
+        .and_then(serde_json::Value::as_bool)
+        .unwrap_or(false);
     if let Ok(params) = serde_json::from_value::<InitializeParams>(init) {
         let mut roots: Vec<lsp_types::Uri> = params
             .workspace_folders
@@ -229,7 +234,16 @@ fn notification(conn: &Connection, ws: &mut Workspace, n: Notification) -> Falli
         note::DidChangeConfiguration::METHOD => {
             let p: lsp_types::DidChangeConfigurationParams =
                 n.extract(note::DidChangeConfiguration::METHOD)?;
+            let was = ws.settings.cr_type_hints;
             ws.settings.update(&p.settings);
+            if ws.settings.hint_refresh && was != ws.settings.cr_type_hints {
+                // The client's answer is ignored (see `serve`).
+                conn.sender.send(Message::Request(Request::new(
+                    lsp_server::RequestId::from("ilc/inlayHintRefresh".to_string()),
+                    req::InlayHintRefreshRequest::METHOD.to_string(),
+                    Value::Null,
+                )))?;
+            }
             Ok(false)
         }
         _ => Ok(false),

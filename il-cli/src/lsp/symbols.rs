@@ -3,7 +3,7 @@
 
 use lsp_types::{DocumentSymbol, SymbolInformation, SymbolKind, Uri};
 
-use super::index::{Kind, Outline};
+use super::index::{Kind, Outline, pou_symbol_kind};
 use super::workspace::Workspace;
 
 pub fn document(ws: &Workspace, uri: &Uri) -> Vec<DocumentSymbol> {
@@ -45,7 +45,7 @@ pub fn workspace(ws: &Workspace, query: &str) -> Vec<SymbolInformation> {
             Some(SymbolInformation {
                 name: s.name.clone(),
                 kind: match s.kind {
-                    Kind::Pou(_) => SymbolKind::FUNCTION,
+                    Kind::Pou(k) => pou_symbol_kind(k),
                     Kind::Var(_) => SymbolKind::VARIABLE,
                     Kind::Label => SymbolKind::KEY,
                     Kind::Type => SymbolKind::STRUCT,

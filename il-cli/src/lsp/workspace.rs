@@ -43,12 +43,15 @@ pub struct Analysis {
 pub struct Settings {
     /// Inlay hints with the CR type at the end of each instruction line.
     pub cr_type_hints: bool,
+    /// The client re-asks for inlay hints when told (`workspace/inlayHint/refresh`).
+    pub hint_refresh: bool,
 }
 
 impl Default for Settings {
     fn default() -> Self {
         Settings {
             cr_type_hints: true,
+            hint_refresh: false,
         }
     }
 }

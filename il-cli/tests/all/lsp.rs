@@ -161,9 +161,13 @@ impl Client {
     }
 
     fn initialize(&mut self, root: &Path, options: Value) -> Value {
+        self.initialize_with(root, options, json!({}))
+    }
+
+    fn initialize_with(&mut self, root: &Path, options: Value, caps: Value) -> Value {
         let r = self.result(
             "initialize",
-            json!({"processId": null, "rootUri": uri(root), "capabilities": {},
+            json!({"processId": null, "rootUri": uri(root), "capabilities": caps,
                    "initializationOptions": options}),
         );
         self.notify("initialized", json!({}));
@@ -234,7 +238,11 @@ fn an_editor_session() {
     let main = uri(&dir.join("main.il"));
 
     let mut c = Client::start(&[]);
-    let init = c.initialize(&dir, json!({}));
+    let init = c.initialize_with(
+        &dir,
+        json!({}),
+        json!({"workspace": {"inlayHint": {"refreshSupport": true}}}),
+    );
     let caps = &init["capabilities"];
     for cap in [
         "hoverProvider",
@@ -486,6 +494,14 @@ fn an_editor_session() {
         json!({"textDocument": {"uri": main}, "range": range}),
     );
     assert_eq!(hints, json!([]));
+    // The client was asked to fetch the hints again.
+    assert!(
+        c.notes
+            .iter()
+            .any(|m| m["method"] == "workspace/inlayHint/refresh"),
+        "{:?}",
+        c.notes
+    );
 
     c.finish();
     let _ = std::fs::remove_dir_all(&dir);

@@ -259,7 +259,7 @@ fn spec_key(t: &TypeSpec) -> Option<String> {
     }
 }
 
-fn pou_symbol_kind(k: ast::PouKind) -> SymbolKind {
+pub fn pou_symbol_kind(k: ast::PouKind) -> SymbolKind {
     match k {
         ast::PouKind::Function => SymbolKind::FUNCTION,
         ast::PouKind::FunctionBlock => SymbolKind::CLASS,
