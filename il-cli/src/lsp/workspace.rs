@@ -74,7 +74,8 @@ impl Settings {
 #[derive(Debug, Default)]
 pub struct Workspace {
     pub docs: Vec<Doc>,
-    /// By the URI's text.
+    /// By [`key`]: one file under two spellings of its URI (an editor's
+    /// `file:///c%3A/x.il`, the scan's `file:///C:/x.il`) is one document.
     by_uri: HashMap<String, usize>,
     pub analysis: Analysis,
     pub settings: Settings,
@@ -83,13 +84,22 @@ pub struct Workspace {
     published: Vec<Option<Vec<lsp_types::Diagnostic>>>,
 }
 
+/// The name of a document's file with a Windows drive letter in upper case.
+fn key(uri: &Uri) -> String {
+    let mut name = uri_to_name(uri);
+    if name.as_bytes().get(1) == Some(&b':') {
+        name[..1].make_ascii_uppercase();
+    }
+    name
+}
+
 /// Most `.il` files read from the workspace folders, and how deep.
 const MAX_FILES: usize = 2000;
 const MAX_DEPTH: usize = 8;
 
 impl Workspace {
     pub fn doc(&self, uri: &Uri) -> Option<usize> {
-        self.by_uri.get(uri.as_str()).copied()
+        self.by_uri.get(&key(uri)).copied()
     }
 
     /// The document and byte offset of a position (clamped to the text).
@@ -150,7 +160,7 @@ impl Workspace {
     fn insert(&mut self, uri: Uri, text: String, open: bool, on_disk: bool) -> usize {
         let name = uri_to_name(&uri);
         let k = self.docs.len();
-        self.by_uri.insert(uri.as_str().to_string(), k);
+        self.by_uri.insert(key(&uri), k);
         self.docs.push(Doc {
             uri,
             name,
@@ -164,6 +174,13 @@ impl Workspace {
     pub fn open(&mut self, uri: Uri, text: String) {
         match self.doc(&uri) {
             Some(k) => {
+                // Published under the editor's spelling of the URI.
+                if self.docs[k].uri != uri {
+                    self.docs[k].uri = uri;
+                    if let Some(p) = self.published.get_mut(k) {
+                        *p = None;
+                    }
+                }
                 self.docs[k].text = text;
                 self.docs[k].open = true;
             }
@@ -202,7 +219,7 @@ impl Workspace {
             .docs
             .iter()
             .enumerate()
-            .map(|(i, d)| (d.uri.as_str().to_string(), i))
+            .map(|(i, d)| (key(&d.uri), i))
             .collect();
         Some(uri.clone())
     }
@@ -246,5 +263,27 @@ impl Workspace {
             }
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_file_under_two_uris_is_one_document() {
+        let mut ws = Workspace::default();
+        ws.insert(
+            "file:///C:/plc/m.il".parse().unwrap(),
+            "a".into(),
+            false,
+            true,
+        );
+        let editor: Uri = "file:///c%3A/plc/m.il".parse().unwrap();
+        assert_eq!(ws.doc(&editor), Some(0));
+        ws.open(editor.clone(), "b".into());
+        assert_eq!(ws.docs.len(), 1);
+        assert_eq!(ws.docs[0].uri, editor);
+        assert_eq!(ws.docs[0].text, "b");
     }
 }
