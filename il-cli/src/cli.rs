@@ -20,6 +20,7 @@ Examples:
   cat a.il | ilc check -                 Read the source from standard input
   ilc run main.il --cycles 5 --watch q   Simulate 5 scans without compiling
   ilc explain IL0003                     What a diagnostic code means
+  ilc lsp                                Serve an editor (Language Server Protocol on stdio)
 
 Exit status:
   0  no errors (warnings may have been printed)
@@ -45,6 +46,19 @@ Examples:
 The files are checked together (a FUNCTION_BLOCK of one can be used in another).
 Nothing is written unless every file compiles; a file whose content did not
 change is not rewritten. The generated code needs the il-std crate.";
+
+const LSP_EXAMPLES: &str = "\
+Examples:
+  ilc lsp                     Started by the editor, which talks to it on stdin/stdout
+
+The editor sends the IL (.il) and PLCopen (.xml) documents it opens; the .il
+files of its workspace folders are read too, and all of them are checked as
+one program, as `ilc check a.il b.il` does. The server publishes the same
+diagnostics as `ilc check`, and answers hover (the CR type before and after
+an instruction, declarations, standard signatures), inlay hints (the CR type
+at the end of each instruction line; off with the client setting
+`inlayHints.crType: false`), go to definition, references, rename, document
+and workspace symbols and completion. editors/vscode holds a VS Code client.";
 
 /// The whole command line.
 pub fn command() -> Command {
@@ -173,6 +187,11 @@ pub fn command() -> Command {
                         .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
                         .default_value("auto"),
                 ),
+        )
+        .subcommand(
+            Command::new("lsp")
+                .about("Run the language server for editors (LSP over stdio)")
+                .after_long_help(LSP_EXAMPLES),
         )
         .subcommand(
             Command::new("explain")

@@ -3,6 +3,7 @@
 mod check;
 mod cli;
 mod emit;
+mod lsp;
 mod progress;
 mod run;
 
@@ -93,6 +94,7 @@ fn main() -> ExitCode {
             let code = run::run(&opts, &mut io::stdout().lock(), &mut io::stderr().lock());
             ExitCode::from(code)
         }
+        Some(("lsp", _)) => ExitCode::from(lsp::run()),
         Some(("explain", m)) => {
             let code = m.get_one::<String>("code").map_or("", String::as_str);
             match il_codegen::codes::lookup(code) {

@@ -6,6 +6,7 @@ mod cli;
 mod corpus;
 mod docs;
 mod explain;
+mod lsp;
 mod plcopen;
 mod run;
 mod ui;

@@ -87,6 +87,7 @@ impl Program {
             inputs: self.inputs,
             diagnostics,
             ir,
+            units,
             ok,
         }
     }
@@ -98,6 +99,7 @@ pub struct Checked {
     inputs: Vec<Input>,
     diagnostics: Vec<Vec<Diagnostic>>,
     ir: Vec<sema::ir::Program>,
+    units: Vec<crate::ast::CompilationUnit>,
     ok: bool,
 }
 
@@ -144,6 +146,20 @@ impl Checked {
     /// run on), or `None` when the program has errors.
     pub fn ir(&self) -> Option<&[sema::ir::Program]> {
         self.ok.then_some(self.ir.as_slice())
+    }
+
+    /// The IR of each input, whatever could be checked, also when the
+    /// program has errors (an input with syntax errors has an empty one).
+    /// For tools that show what the checker knows (the language server's
+    /// hover); never emit code from it: use [`Checked::ir`].
+    pub fn partial_ir(&self) -> &[sema::ir::Program] {
+        &self.ir
+    }
+
+    /// The syntax tree of each input's IL text (partial where it has syntax
+    /// errors), in the positions of [`Input::il_text`].
+    pub fn syntax(&self) -> &[crate::ast::CompilationUnit] {
+        &self.units
     }
 
     /// [`Checked::ir`], owned.

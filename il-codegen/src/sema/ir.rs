@@ -155,6 +155,53 @@ pub struct CheckedPou {
     pub save_types: Vec<Ty>,
     /// What the RETAIN snapshot of an FB/PROGRAM holds (empty: no snapshot).
     pub retained: Vec<(usize, Retained)>,
+    /// The CR the checker proved before and after every instruction and at
+    /// every label, in the order walked (an instruction inside parentheses
+    /// comes before the group that holds it). Not used for code: it is what
+    /// tools show (the language server's hover and inlay hints), decided here
+    /// once instead of being recomputed there.
+    pub cr_steps: Vec<CrStep>,
+}
+
+/// The CR at one instruction or label, as the checker proved it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CrStep {
+    /// The instruction (operator to last operand), or the label's name.
+    pub span: crate::ast::Span,
+    /// A label rather than an instruction.
+    pub label: bool,
+    /// Before the instruction; at a label, the CR falling through into it.
+    pub before: CrState,
+    /// After the instruction; at a label, the CR joined from every path.
+    pub after: CrState,
+    /// At a label whose paths disagree: each path's type and line
+    /// (`INT from line 3, BOOL from line 7`).
+    pub paths: Option<String>,
+}
+
+/// What the CR holds at a point of the body.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CrState {
+    /// No path reaches here (after JMP or RET, no label).
+    Dead,
+    /// No usable value, and why (`no value loaded`, `after CAL on line 4`).
+    Undefined(String),
+    /// An untyped literal (described: `the integer literal 5`): it takes its
+    /// type from its first typed use.
+    Literal(String),
+    /// A value of this type.
+    Typed(Ty),
+}
+
+impl std::fmt::Display for CrState {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CrState::Dead => f.write_str("unreachable"),
+            CrState::Undefined(why) => write!(f, "undefined ({why})"),
+            CrState::Literal(what) => f.write_str(what),
+            CrState::Typed(t) => write!(f, "{t}"),
+        }
+    }
 }
 
 /// How a variable is part of a RETAIN snapshot.

@@ -12,7 +12,10 @@ impl Walk<'_, '_> {
     /// 256 levels overflowed a 2 MiB thread (a debug `cargo test` thread)
     /// and aborted the process.
     pub(super) fn instr(&mut self, i: &ast::Instr, cr: Cr, in_parens: bool) -> Cr {
-        match &i.kind {
+        // Only the final pass records the CR for tools; the copy is kept
+        // out of this frame's hot path (see above).
+        let before = self.final_pass.then(|| Box::new(cr.clone()));
+        let after = match &i.kind {
             InstrKind::Deferred {
                 op,
                 negate,
@@ -21,7 +24,11 @@ impl Walk<'_, '_> {
                 close_span,
             } => self.deferred(i, cr, (*op, *negate), first.as_ref(), body, *close_span),
             _ => self.simple_instr(i, cr, in_parens),
+        };
+        if let Some(before) = before {
+            self.step(i.span, false, &before, &after);
         }
+        after
     }
 
     /// `OP( operand` / `OP(` ... `)`: see [`Walk::instr`].

@@ -125,6 +125,7 @@ pub(crate) fn check_pou(
         cr_types: Vec::new(),
         save_types: Vec::new(),
         jumped: vec![false; n],
+        cr_steps: Vec::new(),
         line: 0,
         col: 0,
         addresses: Vec::new(),
@@ -155,6 +156,7 @@ pub(crate) fn check_pou(
     w.final_pass = true;
     w.edges.iter_mut().for_each(Vec::clear);
     w.out.clear();
+    w.cr_steps.clear();
     w.walk(&pou.body);
     for (i, used) in w.jumped.iter().enumerate() {
         if !used {
@@ -183,6 +185,7 @@ pub(crate) fn check_pou(
         cr_types: w.cr_types,
         save_types: w.save_types,
         retained: super::configuration::retained(env, sig),
+        cr_steps: w.cr_steps,
     })
 }
 
@@ -250,6 +253,24 @@ fn join(edges: &[(Span, Class, u32)]) -> Cr {
     Cr::Undef(Why::Mixed(paths.join(", ")))
 }
 
+/// The CR as tools see it ([`ir::CrState`]).
+fn cr_state(cr: &Cr) -> ir::CrState {
+    match cr {
+        Cr::Dead => ir::CrState::Dead,
+        Cr::Undef(why) => ir::CrState::Undefined(match why {
+            Why::Start => "no value loaded".into(),
+            Why::Error => "after an error".into(),
+            Why::AfterCal(line) => format!("after CAL on line {line}"),
+            Why::Mixed(m) => match m.split_once('\u{0}') {
+                Some((label, _)) => format!("the paths into `{label}` disagree"),
+                None => m.clone(),
+            },
+        }),
+        Cr::Lit(l, _) => ir::CrState::Literal(describe(l)),
+        Cr::Val(t) => ir::CrState::Typed(t.clone()),
+    }
+}
+
 fn lit_fits(c: &Class, t: &Ty) -> bool {
     match (c, t) {
         // BOOL takes 0 and 1 in a store, but a label joining an integer path
@@ -286,6 +307,8 @@ struct Walk<'a, 'c> {
     cr_types: Vec<Ty>,
     save_types: Vec<Ty>,
     jumped: Vec<bool>,
+    /// The CR at every instruction and label, recorded on the final pass.
+    cr_steps: Vec<ir::CrStep>,
     line: u32,
     /// Column (1-based) of the instruction being walked.
     col: u32,
@@ -347,12 +370,14 @@ impl Walk<'_, '_> {
                     // previous round's backward edges.
                     let mut into = self.edges[l].clone();
                     into.extend(self.back_prev[l].iter().cloned());
+                    let before = cr;
                     cr = match join(&into) {
                         Cr::Undef(Why::Mixed(paths)) => {
                             Cr::Undef(Why::Mixed(format!("{}\u{0}{paths}", id.name)))
                         }
                         other => other,
                     };
+                    self.step(id.span, true, &before, &cr);
                     self.push(Op::Label(l));
                     warned_dead = false;
                 }
@@ -365,6 +390,7 @@ impl Walk<'_, '_> {
                                 .set_label("no label leads here after the JMP or RET above");
                         }
                         warned_dead = true;
+                        self.step(i.span, false, &Cr::Dead, &Cr::Dead);
                         continue;
                     }
                     self.push(Op::Nop);
@@ -372,6 +398,26 @@ impl Walk<'_, '_> {
                 }
             }
         }
+    }
+
+    /// On the final pass, record the CR before and after an instruction (or
+    /// at a label) for tools: [`ir::CrStep`].
+    #[inline(never)]
+    fn step(&mut self, span: Span, label: bool, before: &Cr, after: &Cr) {
+        if !self.final_pass {
+            return;
+        }
+        let paths = match after {
+            Cr::Undef(Why::Mixed(m)) if label => m.split_once('\u{0}').map(|(_, p)| p.to_string()),
+            _ => None,
+        };
+        self.cr_steps.push(ir::CrStep {
+            span,
+            label,
+            before: cr_state(before),
+            after: cr_state(after),
+            paths,
+        });
     }
 
     /// Record an edge into label `l` with the current CR; on the final pass,

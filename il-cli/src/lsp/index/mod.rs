@@ -1,0 +1,312 @@
+//! What the editor asks about, indexed once per check: every declared name
+//! (a [`Symbol`]), every place a name is written (a reference to its
+//! symbol or to a standard function or block), the CR the checker proved at
+//! every instruction, and each file's outline. Requests then look a position
+//! up by binary search instead of walking the tree.
+//!
+//! Names are resolved as the checker resolves them (case-insensitively, in
+//! the POU's own variables; members through the instance's type, which
+//! comes from the checked IR when the POU could be checked and from the
+//! declaration as written otherwise).
+
+mod declare;
+mod refs;
+
+use std::collections::HashMap;
+
+use il_codegen::Checked;
+use il_codegen::Input;
+use il_codegen::ast::{self, Span, TypeSpec};
+use il_codegen::sema::ir::{self, CrState};
+use il_codegen::sema::types::Ty;
+use il_interp::il_std::signature::{self as sig, FbSignature, Signature};
+use lsp_types::SymbolKind;
+
+pub type SymId = usize;
+
+/// What a symbol is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    Pou(ast::PouKind),
+    Var(ast::VarKind),
+    Label,
+    Type,
+    Field,
+    Config,
+}
+
+/// A declared name.
+#[derive(Debug)]
+pub struct Symbol {
+    pub name: String,
+    pub kind: Kind,
+    pub file: usize,
+    /// The name where it is declared, in the user's file.
+    pub span: Span,
+    /// The POU (or type, configuration) it belongs to.
+    pub container: Option<SymId>,
+    /// Its declaration as IL text (hover).
+    pub decl: String,
+    /// Markdown lines after the declaration (section, resolved type).
+    pub note: String,
+    /// For an instance of a FUNCTION_BLOCK or STRUCT (or an array of them):
+    /// the type's name, upper case, for its members.
+    pub ty: Option<String>,
+}
+
+/// What a written name refers to.
+#[derive(Clone, Copy, Debug)]
+pub enum Target {
+    Sym(SymId),
+    StdFn(&'static Signature),
+    StdFb(&'static FbSignature),
+    /// An input (index below `inputs.len()`) or output of a standard block.
+    StdMember(&'static FbSignature, usize),
+}
+
+/// The CR at one instruction or label ([`ir::CrStep`] in the user's file).
+#[derive(Debug)]
+pub struct Step {
+    pub span: Span,
+    pub label: bool,
+    pub before: CrState,
+    pub after: CrState,
+    pub paths: Option<String>,
+}
+
+/// One entry of a file's outline (document symbols).
+#[derive(Debug)]
+pub struct Outline {
+    pub name: String,
+    pub detail: Option<String>,
+    pub kind: SymbolKind,
+    pub span: Span,
+    pub sel: Span,
+    pub children: Vec<Outline>,
+}
+
+#[derive(Debug, Default)]
+pub struct FileIndex {
+    /// Every written name with what it refers to, sorted by position
+    /// (declarations included: they refer to themselves).
+    pub refs: Vec<(Span, Target)>,
+    /// Sorted by position.
+    pub steps: Vec<Step>,
+    /// Each POU's whole text and symbol, sorted.
+    pub pous: Vec<(Span, SymId)>,
+    pub outline: Vec<Outline>,
+}
+
+#[derive(Debug, Default)]
+pub struct Index {
+    pub symbols: Vec<Symbol>,
+    pub files: Vec<FileIndex>,
+    /// Every place each symbol is written: (file, span).
+    pub uses: Vec<Vec<(usize, Span)>>,
+    pub pou_by_name: HashMap<String, SymId>,
+    pub type_by_name: HashMap<String, SymId>,
+    /// (POU, STRUCT type or configuration, NAME) → its variable or field.
+    pub scope: HashMap<(SymId, String), SymId>,
+    /// (POU, LABEL) → the label.
+    pub labels: HashMap<(SymId, String), SymId>,
+    /// A POU's variables / a type's fields / a POU's labels, in order.
+    pub members: HashMap<SymId, Vec<SymId>>,
+    pub pou_labels: HashMap<SymId, Vec<SymId>>,
+}
+
+impl Index {
+    /// Index a checked program.
+    pub fn build(checked: &Checked) -> Index {
+        let mut ix = Index::default();
+        let n = checked.inputs().len();
+        ix.files = (0..n).map(|_| FileIndex::default()).collect();
+        let empty = ast::CompilationUnit::default();
+        let units = checked.syntax();
+        let irs = checked.partial_ir();
+        let mut pous_of_file = Vec::new();
+        for (f, input) in checked.inputs().iter().enumerate() {
+            let unit = units.get(f).unwrap_or(&empty);
+            let ir_pous: HashMap<String, &ir::CheckedPou> = irs
+                .get(f)
+                .map(|p| {
+                    p.pous
+                        .iter()
+                        .map(|c| (c.name.to_ascii_uppercase(), c))
+                        .collect()
+                })
+                .unwrap_or_default();
+            let b = Builder { input, f };
+            pous_of_file.push(b.declare(&mut ix, unit, &ir_pous));
+        }
+        for (f, input) in checked.inputs().iter().enumerate() {
+            let unit = units.get(f).unwrap_or(&empty);
+            let b = Builder { input, f };
+            b.resolve(&mut ix, unit, &pous_of_file[f]);
+            if let Some(p) = irs.get(f) {
+                for c in &p.pous {
+                    for s in &c.cr_steps {
+                        ix.files[f].steps.push(Step {
+                            span: b.map(s.span),
+                            label: s.label,
+                            before: s.before.clone(),
+                            after: s.after.clone(),
+                            paths: s.paths.clone(),
+                        });
+                    }
+                }
+            }
+            let file = &mut ix.files[f];
+            file.steps
+                .sort_by_key(|s| (s.span.lo, std::cmp::Reverse(s.span.hi)));
+            file.refs.sort_by_key(|(s, _)| (s.lo, s.hi));
+            file.refs.dedup_by_key(|(s, _)| *s);
+            file.pous.sort_by_key(|(s, _)| s.lo);
+        }
+        ix.uses = (0..ix.symbols.len()).map(|_| Vec::new()).collect();
+        for (f, file) in ix.files.iter().enumerate() {
+            for (span, t) in &file.refs {
+                if let Target::Sym(s) = t {
+                    ix.uses[*s].push((f, *span));
+                }
+            }
+        }
+        ix
+    }
+
+    /// The reference at byte `off` of file `f` (a name containing it, or
+    /// ending right at it: the cursor after a name).
+    pub fn ref_at(&self, f: usize, off: usize) -> Option<(Span, Target)> {
+        let refs = &self.files.get(f)?.refs;
+        let off = off as u32;
+        let i = refs.partition_point(|(s, _)| s.lo <= off);
+        let (s, t) = *refs.get(i.checked_sub(1)?)?;
+        (off >= s.lo && off <= s.hi).then_some((s, t))
+    }
+
+    /// The innermost instruction or label at byte `off` of file `f`.
+    pub fn step_at(&self, f: usize, off: usize) -> Option<&Step> {
+        let steps = &self.files.get(f)?.steps;
+        let off = off as u32;
+        let i = steps.partition_point(|s| s.span.lo <= off);
+        // Steps are sorted by start: the innermost holding `off` is the
+        // last one starting before it, unless that one ended already (the
+        // `)` of a group); groups nest, so a few steps back suffice.
+        steps[..i]
+            .iter()
+            .rev()
+            .take(256)
+            .find(|s| off >= s.span.lo && off <= s.span.hi)
+    }
+
+    /// The POU whose text holds byte `off` of file `f`.
+    pub fn pou_at(&self, f: usize, off: usize) -> Option<SymId> {
+        let pous = &self.files.get(f)?.pous;
+        let off = off as u32;
+        let i = pous.partition_point(|(s, _)| s.lo <= off);
+        let (s, id) = *pous.get(i.checked_sub(1)?)?;
+        (off <= s.hi).then_some(id)
+    }
+
+    /// A variable of POU `pou` by name, or the FUNCTION's own name (its result).
+    pub fn var_in(&self, pou: SymId, name: &str) -> Option<SymId> {
+        let key = name.to_ascii_uppercase();
+        self.scope.get(&(pou, key.clone())).copied().or_else(|| {
+            let p = &self.symbols[pou];
+            (p.kind == Kind::Pou(ast::PouKind::Function) && p.name.eq_ignore_ascii_case(name))
+                .then_some(pou)
+        })
+    }
+
+    /// The POU or STRUCT type named `key` (upper case).
+    pub fn type_sym(&self, key: &str) -> Option<SymId> {
+        self.pou_by_name
+            .get(key)
+            .or_else(|| self.type_by_name.get(key))
+            .copied()
+    }
+
+    /// Member `name` of an instance of type `key` (upper case).
+    pub fn member(&self, key: &str, name: &str) -> Option<Target> {
+        if let Some(t) = self.type_sym(key) {
+            return self
+                .scope
+                .get(&(t, name.to_ascii_uppercase()))
+                .map(|&m| Target::Sym(m));
+        }
+        let fb = sig::lookup_fb(key)?;
+        fb.inputs
+            .iter()
+            .chain(fb.outputs)
+            .position(|p| p.name.eq_ignore_ascii_case(name))
+            .map(|i| Target::StdMember(fb, i))
+    }
+}
+
+/// The type name of an instance of an FB or STRUCT (or an array of them).
+fn ty_key(t: &Ty) -> Option<String> {
+    match t {
+        Ty::Fb(n) | Ty::Struct(n) => Some(n.to_ascii_uppercase()),
+        Ty::Array { elem, .. } => ty_key(elem),
+        _ => None,
+    }
+}
+
+fn spec_key(t: &TypeSpec) -> Option<String> {
+    match t {
+        TypeSpec::Named(id) => Some(id.key()),
+        TypeSpec::Array { elem, .. } => spec_key(elem),
+        _ => None,
+    }
+}
+
+pub fn pou_symbol_kind(k: ast::PouKind) -> SymbolKind {
+    match k {
+        ast::PouKind::Function => SymbolKind::FUNCTION,
+        ast::PouKind::FunctionBlock => SymbolKind::CLASS,
+        ast::PouKind::Program => SymbolKind::MODULE,
+    }
+}
+
+/// Indexes one input; [`declare`] and [`refs`] add its methods.
+struct Builder<'a> {
+    input: &'a Input,
+    f: usize,
+}
+
+impl Builder<'_> {
+    /// A span of the IL text in the user's file.
+    fn map(&self, s: Span) -> Span {
+        match self.input {
+            Input::Il(_) => s,
+            Input::PlcOpen(i) => i.map.to_xml(s),
+        }
+    }
+
+    fn text(&self, s: Span) -> &str {
+        self.input.il_text().snippet(s)
+    }
+
+    fn add(&self, ix: &mut Index, sym: Symbol) -> SymId {
+        let id = ix.symbols.len();
+        ix.files[self.f].refs.push((sym.span, Target::Sym(id)));
+        ix.symbols.push(sym);
+        id
+    }
+}
+
+/// `TON (IN : BOOL, PT : TIME) → (Q : BOOL, ET : TIME)`, markdown.
+pub fn fb_signature(fb: &FbSignature) -> String {
+    let list = |ps: &[sig::FbParam]| {
+        ps.iter()
+            .map(|p| format!("{} : {}", p.name, p.ty.name()))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    format!(
+        "standard function block `{}`\n\n```il\nFUNCTION_BLOCK {}\n    VAR_INPUT {} END_VAR\n    VAR_OUTPUT {} END_VAR\n```",
+        fb.name,
+        fb.name,
+        list(fb.inputs),
+        list(fb.outputs)
+    )
+}

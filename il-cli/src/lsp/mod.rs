@@ -1,0 +1,357 @@
+//! `ilc lsp`: a Language Server Protocol server over stdio (the
+//! `lsp-server` crate does the JSON-RPC framing, `lsp-types` the messages).
+//!
+//! One thread: notifications update the documents, and the program is
+//! re-checked once the queue holds no more of them (a burst of edits costs
+//! one check), or before a request is answered, so every answer sees the
+//! latest text. A panic in a handler is caught, logged to stderr and
+//! answered with an error; the server goes on.
+
+mod completion;
+mod convert;
+mod diagnostics;
+mod hover;
+mod index;
+mod inlay;
+mod navigation;
+mod symbols;
+mod workspace;
+
+use std::error::Error;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use crossbeam_channel::TryRecvError;
+use lsp_server::{Connection, ErrorCode, Message, Notification, Request, Response};
+use lsp_types::notification::{self as note, Notification as _};
+use lsp_types::request::{self as req, Request as _};
+use lsp_types::{
+    CompletionOptions, HoverProviderCapability, InitializeParams, OneOf, RenameOptions,
+    ServerCapabilities, TextDocumentSyncCapability, TextDocumentSyncKind, WorkDoneProgressOptions,
+};
+use serde_json::Value;
+
+use workspace::Workspace;
+
+type Fallible<T> = Result<T, Box<dyn Error + Send + Sync>>;
+
+/// Serve on stdin/stdout until the client says `exit`. Returns the exit
+/// status (0 after `shutdown` then `exit`).
+pub fn run() -> u8 {
+    let (conn, io) = Connection::stdio();
+    let status = match serve(&conn) {
+        Ok(()) => 0,
+        Err(e) => {
+            eprintln!("ilc lsp: {e}");
+            1
+        }
+    };
+    drop(conn);
+    if let Err(e) = io.join() {
+        eprintln!("ilc lsp: {e}");
+    }
+    status
+}
+
+fn capabilities() -> ServerCapabilities {
+    ServerCapabilities {
+        text_document_sync: Some(TextDocumentSyncCapability::Kind(TextDocumentSyncKind::FULL)),
+        hover_provider: Some(HoverProviderCapability::Simple(true)),
+        definition_provider: Some(OneOf::Left(true)),
+        references_provider: Some(OneOf::Left(true)),
+        rename_provider: Some(OneOf::Right(RenameOptions {
+            prepare_provider: Some(true),
+            work_done_progress_options: WorkDoneProgressOptions::default(),
+        })),
+        document_symbol_provider: Some(OneOf::Left(true)),
+        workspace_symbol_provider: Some(OneOf::Left(true)),
+        completion_provider: Some(CompletionOptions {
+            trigger_characters: Some(vec![".".into(), " ".into(), "(".into(), ",".into()]),
+            ..Default::default()
+        }),
+        inlay_hint_provider: Some(OneOf::Left(true)),
+        ..Default::default()
+    }
+}
+
+fn serve(conn: &Connection) -> Fallible<()> {
+    let init = conn.initialize(serde_json::to_value(capabilities())?)?;
+    let mut ws = Workspace::default();
+    if let Some(opts) = init.get("initializationOptions") {
+        ws.settings.update(opts);
+    }
+    ws.settings.hint_refresh = init
+        .pointer("/capabilities/workspace/inlayHint/refreshSupport")
+        .and_then(serde_json::Value::as_bool)
+        .unwrap_or(false);
+    if let Ok(params) = serde_json::from_value::<InitializeParams>(init) {
+        let mut roots: Vec<lsp_types::Uri> = params
+            .workspace_folders
+            .unwrap_or_default()
+            .into_iter()
+            .map(|f| f.uri)
+            .collect();
+        #[allow(deprecated)] // older clients send only rootUri
+        if roots.is_empty()
+            && let Some(u) = params.root_uri
+        {
+            roots.push(u);
+        }
+        for r in roots {
+            if r.as_str().starts_with("file:") {
+                ws.scan(std::path::Path::new(&convert::uri_to_name(&r)));
+            }
+        }
+    }
+    let mut dirty = true;
+    loop {
+        let msg = if dirty {
+            match conn.receiver.try_recv() {
+                Ok(m) => m,
+                Err(TryRecvError::Empty) => {
+                    recheck(conn, &mut ws)?;
+                    dirty = false;
+                    continue;
+                }
+                Err(TryRecvError::Disconnected) => return Ok(()),
+            }
+        } else {
+            match conn.receiver.recv() {
+                Ok(m) => m,
+                Err(_) => return Ok(()),
+            }
+        };
+        match msg {
+            Message::Request(r) => {
+                if conn.handle_shutdown(&r)? {
+                    return Ok(());
+                }
+                if dirty {
+                    recheck(conn, &mut ws)?;
+                    dirty = false;
+                }
+                let method = r.method.clone();
+                let id = r.id.clone();
+                let resp =
+                    catch_unwind(AssertUnwindSafe(|| request(&ws, r))).unwrap_or_else(|_| {
+                        eprintln!(
+                            "ilc lsp: the handler of `{method}` panicked; the server goes on"
+                        );
+                        Response::new_err(
+                            id,
+                            ErrorCode::InternalError as i32,
+                            format!("internal error while answering `{method}`"),
+                        )
+                    });
+                conn.sender.send(resp.into())?;
+            }
+            Message::Notification(n) => {
+                if n.method == note::Exit::METHOD {
+                    return Ok(());
+                }
+                let method = n.method.clone();
+                match catch_unwind(AssertUnwindSafe(|| notification(conn, &mut ws, n))) {
+                    Ok(changed) => dirty |= changed?,
+                    Err(_) => {
+                        eprintln!("ilc lsp: the handler of `{method}` panicked; the server goes on")
+                    }
+                }
+            }
+            Message::Response(_) => {}
+        }
+    }
+}
+
+/// Check again and publish the diagnostics that changed. A panic in the
+/// checker is caught: the last analysis stays.
+fn recheck(conn: &Connection, ws: &mut Workspace) -> Fallible<()> {
+    if catch_unwind(AssertUnwindSafe(|| ws.check())).is_err() {
+        eprintln!("ilc lsp: the check panicked; keeping the last results");
+        return Ok(());
+    }
+    for (uri, diagnostics) in ws.take_changed_diagnostics() {
+        publish(conn, uri, diagnostics)?;
+    }
+    Ok(())
+}
+
+fn publish(
+    conn: &Connection,
+    uri: lsp_types::Uri,
+    diagnostics: Vec<lsp_types::Diagnostic>,
+) -> Fallible<()> {
+    let params = lsp_types::PublishDiagnosticsParams {
+        uri,
+        diagnostics,
+        version: None,
+    };
+    conn.sender.send(Message::Notification(Notification::new(
+        note::PublishDiagnostics::METHOD.to_string(),
+        params,
+    )))?;
+    Ok(())
+}
+
+/// Apply a notification; returns whether the documents changed.
+fn notification(conn: &Connection, ws: &mut Workspace, n: Notification) -> Fallible<bool> {
+    match n.method.as_str() {
+        note::DidOpenTextDocument::METHOD => {
+            let p: lsp_types::DidOpenTextDocumentParams =
+                n.extract(note::DidOpenTextDocument::METHOD)?;
+            ws.open(p.text_document.uri, p.text_document.text);
+            Ok(true)
+        }
+        note::DidChangeTextDocument::METHOD => {
+            let p: lsp_types::DidChangeTextDocumentParams =
+                n.extract(note::DidChangeTextDocument::METHOD)?;
+            let uri = p.text_document.uri;
+            let mut text = ws
+                .doc(&uri)
+                .map(|k| ws.docs[k].text.clone())
+                .unwrap_or_default();
+            for c in p.content_changes {
+                match c.range {
+                    None => text = c.text,
+                    // We ask for full sync; a client sending ranges anyway is served too.
+                    Some(r) => {
+                        let lines = convert::LineIndex::new(&text);
+                        let lo = lines.offset(&text, r.start);
+                        let hi = lines.offset(&text, r.end).max(lo);
+                        text.replace_range(lo..hi, &c.text);
+                    }
+                }
+            }
+            ws.change(&uri, text);
+            Ok(true)
+        }
+        note::DidCloseTextDocument::METHOD => {
+            let p: lsp_types::DidCloseTextDocumentParams =
+                n.extract(note::DidCloseTextDocument::METHOD)?;
+            if let Some(uri) = ws.close(&p.text_document.uri) {
+                publish(conn, uri, Vec::new())?;
+            }
+            Ok(true)
+        }
+        note::DidChangeConfiguration::METHOD => {
+            let p: lsp_types::DidChangeConfigurationParams =
+                n.extract(note::DidChangeConfiguration::METHOD)?;
+            let was = ws.settings.cr_type_hints;
+            ws.settings.update(&p.settings);
+            if ws.settings.hint_refresh && was != ws.settings.cr_type_hints {
+                // The client's answer is ignored (see `serve`).
+                conn.sender.send(Message::Request(Request::new(
+                    lsp_server::RequestId::from("ilc/inlayHintRefresh".to_string()),
+                    req::InlayHintRefreshRequest::METHOD.to_string(),
+                    Value::Null,
+                )))?;
+            }
+            Ok(false)
+        }
+        _ => Ok(false),
+    }
+}
+
+/// Answer a request (unknown methods get `MethodNotFound`).
+fn request(ws: &Workspace, r: Request) -> Response {
+    let id = r.id.clone();
+    let result: Result<serde_json::Value, (ErrorCode, String)> = (|| {
+        let bad =
+            |e: lsp_server::ExtractError<Request>| (ErrorCode::InvalidParams, format!("{e:?}"));
+        let json = |v: serde_json::Result<serde_json::Value>| {
+            v.map_err(|e| (ErrorCode::InternalError, e.to_string()))
+        };
+        match r.method.as_str() {
+            req::HoverRequest::METHOD => {
+                let p: lsp_types::HoverParams =
+                    r.extract(req::HoverRequest::METHOD).map_err(bad)?.1;
+                let tp = p.text_document_position_params;
+                json(serde_json::to_value(hover::hover(
+                    ws,
+                    &tp.text_document.uri,
+                    tp.position,
+                )))
+            }
+            req::GotoDefinition::METHOD => {
+                let p: lsp_types::GotoDefinitionParams =
+                    r.extract(req::GotoDefinition::METHOD).map_err(bad)?.1;
+                let tp = p.text_document_position_params;
+                json(serde_json::to_value(navigation::definition(
+                    ws,
+                    &tp.text_document.uri,
+                    tp.position,
+                )))
+            }
+            req::References::METHOD => {
+                let p: lsp_types::ReferenceParams =
+                    r.extract(req::References::METHOD).map_err(bad)?.1;
+                let tp = p.text_document_position;
+                json(serde_json::to_value(navigation::references(
+                    ws,
+                    &tp.text_document.uri,
+                    tp.position,
+                    p.context.include_declaration,
+                )))
+            }
+            req::PrepareRenameRequest::METHOD => {
+                let p: lsp_types::TextDocumentPositionParams =
+                    r.extract(req::PrepareRenameRequest::METHOD).map_err(bad)?.1;
+                json(serde_json::to_value(navigation::prepare_rename(
+                    ws,
+                    &p.text_document.uri,
+                    p.position,
+                )))
+            }
+            req::Rename::METHOD => {
+                let p: lsp_types::RenameParams = r.extract(req::Rename::METHOD).map_err(bad)?.1;
+                let tp = p.text_document_position;
+                let edit = navigation::rename(ws, &tp.text_document.uri, tp.position, &p.new_name)
+                    .map_err(|m| (ErrorCode::InvalidParams, m))?;
+                json(serde_json::to_value(edit))
+            }
+            req::DocumentSymbolRequest::METHOD => {
+                let p: lsp_types::DocumentSymbolParams = r
+                    .extract(req::DocumentSymbolRequest::METHOD)
+                    .map_err(bad)?
+                    .1;
+                json(serde_json::to_value(symbols::document(
+                    ws,
+                    &p.text_document.uri,
+                )))
+            }
+            req::WorkspaceSymbolRequest::METHOD => {
+                let p: lsp_types::WorkspaceSymbolParams = r
+                    .extract(req::WorkspaceSymbolRequest::METHOD)
+                    .map_err(bad)?
+                    .1;
+                json(serde_json::to_value(symbols::workspace(ws, &p.query)))
+            }
+            req::Completion::METHOD => {
+                let p: lsp_types::CompletionParams =
+                    r.extract(req::Completion::METHOD).map_err(bad)?.1;
+                let tp = p.text_document_position;
+                json(serde_json::to_value(completion::complete(
+                    ws,
+                    &tp.text_document.uri,
+                    tp.position,
+                )))
+            }
+            req::InlayHintRequest::METHOD => {
+                let p: lsp_types::InlayHintParams =
+                    r.extract(req::InlayHintRequest::METHOD).map_err(bad)?.1;
+                json(serde_json::to_value(inlay::hints(
+                    ws,
+                    &p.text_document.uri,
+                    p.range,
+                )))
+            }
+            // For the tests of the panic guard only: refused unless asked for.
+            "ilc/testPanic" if std::env::var_os("ILC_LSP_TEST_PANIC").is_some() => {
+                panic!("ilc/testPanic: a deliberate panic")
+            }
+            m => Err((ErrorCode::MethodNotFound, format!("`{m}` is not supported"))),
+        }
+    })();
+    match result {
+        Ok(v) => Response::new_ok(id, v),
+        Err((code, msg)) => Response::new_err(id, code as i32, msg),
+    }
+}

@@ -1,0 +1,289 @@
+//! The documents the server knows (open in the editor, or `.il` files of
+//! the workspace folders) and the result of checking them together.
+//!
+//! Every document belongs to one program, as with `ilc check a.il b.il`: an
+//! edit re-checks all of them (full sync), which costs what the front end
+//! costs; the index of that check then answers every request.
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use il_codegen::{Program, SourceFile};
+use lsp_types::Uri;
+
+use super::convert::{LineIndex, path_to_uri, uri_to_name};
+use super::diagnostics;
+use super::index::Index;
+
+/// One document.
+#[derive(Debug)]
+pub struct Doc {
+    pub uri: Uri,
+    /// The name in messages and the one deciding IL or PLCopen XML.
+    pub name: String,
+    pub text: String,
+    /// Open in the editor (its text is the editor's, not the disk's).
+    pub open: bool,
+    /// Found in a workspace folder (kept when the editor closes it).
+    pub on_disk: bool,
+}
+
+/// The result of one check of every document.
+#[derive(Debug, Default)]
+pub struct Analysis {
+    /// The line table of each document's text (the user's file).
+    pub lines: Vec<LineIndex>,
+    /// Each document's diagnostics, converted.
+    pub diagnostics: Vec<Vec<lsp_types::Diagnostic>>,
+    pub index: Index,
+}
+
+/// Client settings.
+#[derive(Clone, Debug)]
+pub struct Settings {
+    /// Inlay hints with the CR type at the end of each instruction line.
+    pub cr_type_hints: bool,
+    /// The client re-asks for inlay hints when told (`workspace/inlayHint/refresh`).
+    pub hint_refresh: bool,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            cr_type_hints: true,
+            hint_refresh: false,
+        }
+    }
+}
+
+impl Settings {
+    /// Read `{"inlayHints": {"crType": false}}`, also under an `ilc` key
+    /// (as VS Code sends its configuration section).
+    pub fn update(&mut self, v: &serde_json::Value) {
+        let v = v.get("ilc").unwrap_or(v);
+        if let Some(b) = v
+            .pointer("/inlayHints/crType")
+            .or_else(|| v.get("inlayHints.crType"))
+            .and_then(serde_json::Value::as_bool)
+        {
+            self.cr_type_hints = b;
+        }
+    }
+}
+
+#[derive(Debug, Default)]
+pub struct Workspace {
+    pub docs: Vec<Doc>,
+    /// By [`key`]: one file under two spellings of its URI (an editor's
+    /// `file:///c%3A/x.il`, the scan's `file:///C:/x.il`) is one document.
+    by_uri: HashMap<String, usize>,
+    pub analysis: Analysis,
+    pub settings: Settings,
+    /// The diagnostics last published per document (republished only when
+    /// they change).
+    published: Vec<Option<Vec<lsp_types::Diagnostic>>>,
+}
+
+/// The name of a document's file with a Windows drive letter in upper case.
+fn key(uri: &Uri) -> String {
+    let mut name = uri_to_name(uri);
+    if name.as_bytes().get(1) == Some(&b':') {
+        name[..1].make_ascii_uppercase();
+    }
+    name
+}
+
+/// Most `.il` files read from the workspace folders, and how deep.
+const MAX_FILES: usize = 2000;
+const MAX_DEPTH: usize = 8;
+
+impl Workspace {
+    pub fn doc(&self, uri: &Uri) -> Option<usize> {
+        self.by_uri.get(&key(uri)).copied()
+    }
+
+    /// The document and byte offset of a position (clamped to the text).
+    pub fn locate(&self, uri: &Uri, pos: lsp_types::Position) -> Option<(usize, usize)> {
+        let k = self.doc(uri)?;
+        let lines = self.analysis.lines.get(k)?;
+        Some((k, lines.offset(&self.docs[k].text, pos)))
+    }
+
+    /// The LSP range of a span of document `k`.
+    pub fn range(&self, k: usize, span: il_codegen::ast::Span) -> lsp_types::Range {
+        match (self.docs.get(k), self.analysis.lines.get(k)) {
+            (Some(d), Some(l)) => l.range(&d.text, span),
+            _ => lsp_types::Range::default(),
+        }
+    }
+
+    /// The location of a span of document `k`.
+    pub fn location(&self, k: usize, span: il_codegen::ast::Span) -> Option<lsp_types::Location> {
+        Some(lsp_types::Location::new(
+            self.docs.get(k)?.uri.clone(),
+            self.range(k, span),
+        ))
+    }
+
+    /// Add the `.il` files under a workspace folder (not its hidden folders,
+    /// `target` or `node_modules`).
+    pub fn scan(&mut self, root: &Path) {
+        let mut stack = vec![(root.to_path_buf(), 0)];
+        while let Some((dir, depth)) = stack.pop() {
+            let Ok(entries) = std::fs::read_dir(&dir) else {
+                continue;
+            };
+            let mut entries: Vec<_> = entries.flatten().map(|e| e.path()).collect();
+            entries.sort();
+            for p in entries {
+                let name = p.file_name().and_then(|n| n.to_str()).unwrap_or("");
+                if p.is_dir() {
+                    if depth < MAX_DEPTH
+                        && !name.starts_with('.')
+                        && name != "target"
+                        && name != "node_modules"
+                    {
+                        stack.push((p, depth + 1));
+                    }
+                } else if p.extension().is_some_and(|e| e.eq_ignore_ascii_case("il"))
+                    && self.docs.len() < MAX_FILES
+                    && let Some(uri) = path_to_uri(&p)
+                    && self.doc(&uri).is_none()
+                    && let Ok(f) = crate::check::read_source(&p.to_string_lossy())
+                {
+                    self.insert(uri, f.text, false, true);
+                }
+            }
+        }
+    }
+
+    fn insert(&mut self, uri: Uri, text: String, open: bool, on_disk: bool) -> usize {
+        let name = uri_to_name(&uri);
+        let k = self.docs.len();
+        self.by_uri.insert(key(&uri), k);
+        self.docs.push(Doc {
+            uri,
+            name,
+            text,
+            open,
+            on_disk,
+        });
+        k
+    }
+
+    pub fn open(&mut self, uri: Uri, text: String) {
+        match self.doc(&uri) {
+            Some(k) => {
+                // Published under the editor's spelling of the URI.
+                if self.docs[k].uri != uri {
+                    self.docs[k].uri = uri;
+                    if let Some(p) = self.published.get_mut(k) {
+                        *p = None;
+                    }
+                }
+                self.docs[k].text = text;
+                self.docs[k].open = true;
+            }
+            None => {
+                self.insert(uri, text, true, false);
+            }
+        }
+    }
+
+    pub fn change(&mut self, uri: &Uri, text: String) {
+        match self.doc(uri) {
+            Some(k) => self.docs[k].text = text,
+            None => {
+                self.insert(uri.clone(), text, true, false);
+            }
+        }
+    }
+
+    /// Closed in the editor: a workspace file goes back to its text on
+    /// disk; another document leaves the program. Returns the URI whose
+    /// diagnostics must be cleared.
+    pub fn close(&mut self, uri: &Uri) -> Option<Uri> {
+        let k = self.doc(uri)?;
+        if self.docs[k].on_disk {
+            self.docs[k].open = false;
+            if let Ok(f) = crate::check::read_source(&self.docs[k].name) {
+                self.docs[k].text = f.text;
+            }
+            return None;
+        }
+        self.docs.remove(k);
+        if k < self.published.len() {
+            self.published.remove(k);
+        }
+        self.by_uri = self
+            .docs
+            .iter()
+            .enumerate()
+            .map(|(i, d)| (key(&d.uri), i))
+            .collect();
+        Some(uri.clone())
+    }
+
+    /// Check every document as one program and index the result.
+    pub fn check(&mut self) {
+        let program = self.docs.iter().fold(Program::new(), |p, d| {
+            p.source(SourceFile::new(d.name.clone(), d.text.clone()))
+        });
+        let checked = program.check();
+        let lines: Vec<LineIndex> = self.docs.iter().map(|d| LineIndex::new(&d.text)).collect();
+        let diagnostics = checked
+            .diagnostics()
+            .iter()
+            .enumerate()
+            .map(|(k, ds)| diagnostics::convert(&self.docs, &lines, k, ds))
+            .collect();
+        let index = Index::build(&checked);
+        self.analysis = Analysis {
+            lines,
+            diagnostics,
+            index,
+        };
+    }
+
+    /// The documents whose diagnostics changed since they were last
+    /// published, with the new ones (empty: cleared).
+    pub fn take_changed_diagnostics(&mut self) -> Vec<(Uri, Vec<lsp_types::Diagnostic>)> {
+        self.published.resize(self.docs.len(), None);
+        let mut out = Vec::new();
+        for (k, d) in self.docs.iter().enumerate() {
+            let now = self
+                .analysis
+                .diagnostics
+                .get(k)
+                .cloned()
+                .unwrap_or_default();
+            if self.published[k].as_ref() != Some(&now) {
+                self.published[k] = Some(now.clone());
+                out.push((d.uri.clone(), now));
+            }
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_file_under_two_uris_is_one_document() {
+        let mut ws = Workspace::default();
+        ws.insert(
+            "file:///C:/plc/m.il".parse().unwrap(),
+            "a".into(),
+            false,
+            true,
+        );
+        let editor: Uri = "file:///c%3A/plc/m.il".parse().unwrap();
+        assert_eq!(ws.doc(&editor), Some(0));
+        ws.open(editor.clone(), "b".into());
+        assert_eq!(ws.docs.len(), 1);
+        assert_eq!(ws.docs[0].uri, editor);
+        assert_eq!(ws.docs[0].text, "b");
+    }
+}
