@@ -129,7 +129,7 @@ fn the_written_file_holds_exactly_the_expected_items() {
             other => panic!("unexpected item {}", other.to_token_stream()),
         }
     }
-    let long = format!("L{}end_FB", "ong_name_".repeat(40));
+    let long = format!("L{}end_FB", "ong_name_".repeat(27));
     let mut expected = vec!["enum Result".to_string(), "fn Some".to_string()];
     for fb in ["Option", "Default", "Self_", long.as_str(), "r#fn"] {
         expected.push(format!("struct {fb}"));
