@@ -162,10 +162,16 @@ pub(crate) fn resolve(
             Ext::Fixed => format!("{}", s.params.len()),
             _ => "at least 2".to_string(),
         };
-        return Err(err(
-            true,
-            format!("{} takes {want} arguments; this call gives {n}", s.name),
-        ));
+        let msg = if matches!(s.ext, Ext::Fixed) && s.params.len() == 1 {
+            // `ABS y`: in IL the one argument is the current result.
+            format!(
+                "{} takes 1 argument, the current result; with the operand this call gives {n} (write `LD` of the value, then `{}` alone)",
+                s.name, s.name
+            )
+        } else {
+            format!("{} takes {want} arguments; this call gives {n}", s.name)
+        };
+        return Err(err(true, msg));
     }
     // Bind the generic T from the typed arguments.
     let mut t: Option<Ty> = None;

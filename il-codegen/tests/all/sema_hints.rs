@@ -76,3 +76,58 @@ fn a_duplicate_pou_name_does_not_hide_the_errors_in_its_body() {
     assert_eq!(codes[1].0, "IL0106", "the duplicate's own body is checked");
     assert_eq!(codes[1].1 as usize, b.find("ST b").unwrap());
 }
+
+#[test]
+fn one_input_functions_given_an_operand_say_the_cr_is_the_argument() {
+    let src = "PROGRAM P\nVAR x, y : INT; END_VAR\n    ABS y\n    ST x\n    LD x\n    ABS y\n    ST x\nEND_PROGRAM\n";
+    let d = &check(&[("t.il", src)])[0];
+    assert_eq!(d.len(), 2, "{d:?}");
+    assert_eq!(d[0].code, "IL0108");
+    assert_eq!(
+        d[0].help.as_deref(),
+        Some(
+            "ABS takes one argument, the current result, not its operand: write `LD y`, then `ABS` alone"
+        )
+    );
+    assert_eq!(d[1].code, "IL0115");
+    assert!(
+        d[1].message
+            .starts_with("ABS takes 1 argument, the current result;"),
+        "{}",
+        d[1].message
+    );
+}
+
+#[test]
+fn a_label_no_path_leaves_a_value_at_is_worded_as_what_happened() {
+    let src = "FUNCTION_BLOCK F\nVAR t : TON; b : BOOL; END_VAR\n    CAL t\n    JMP l\nl:\n    ST b\nEND_FUNCTION_BLOCK\n";
+    let d = &check(&[("t.il", src)])[0];
+    let e: Vec<&Diagnostic> = d.iter().filter(|d| d.is_error()).collect();
+    assert_eq!(e.len(), 1, "{d:?}");
+    assert_eq!(e[0].code, "IL0109");
+    assert_eq!(
+        e[0].message,
+        "the current result is undefined at `l`: no path into it leaves a value"
+    );
+}
+
+#[test]
+fn st_calls_and_reserved_words_get_one_clear_error() {
+    let src = "FUNCTION_BLOCK F\nVAR_INPUT a, b : INT; END_VAR\n    LD a\n    ST b\nEND_FUNCTION_BLOCK\nPROGRAM P\nVAR fb : F; END_VAR\n    fb(10, 20);\nEND_PROGRAM\n";
+    let d = &check(&[("t.il", src)])[0];
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert_eq!(d[0].code, "IL0009");
+    assert!(d[0].message.contains("`fb(10, 20);`"), "{}", d[0].message);
+    let d = &check(&[(
+        "t.il",
+        "PROGRAM P\nVAR x : INT; on : BOOL; END_VAR\n    LD x\n    ST x\nEND_PROGRAM\n",
+    )])[0];
+    assert_eq!(d.len(), 1, "{d:?}");
+    assert!(
+        d[0].notes
+            .iter()
+            .any(|n| n.starts_with("`on` is a reserved keyword")),
+        "{:?}",
+        d[0]
+    );
+}

@@ -304,7 +304,21 @@ impl Walk<'_, '_> {
             let mut argv: Vec<(Arg, Span)> = Vec::new();
             match args {
                 CallArgs::NonFormal(list) if !formal_only => {
+                    let before = self.cx.diags.len();
                     let Some(first) = self.use_cr(&cr, span) else {
+                        // `ABS y` with no current result: the operand is not
+                        // the argument (the CR is), which is worth saying.
+                        let one = il_std::signature::lookup(&key).is_some_and(|s| {
+                            s.params.len() == 1 && matches!(s.ext, il_std::signature::Ext::Fixed)
+                        });
+                        if one && list.len() == 1 && self.cx.diags.len() > before {
+                            let operand = self.cx.file.snippet(list[0].span()).to_string();
+                            if let Some(d) = self.cx.diags.last_mut() {
+                                d.help = Some(format!(
+                                    "{name} takes one argument, the current result, not its operand: write `LD {operand}`, then `{name}` alone"
+                                ));
+                            }
+                        }
                         return bad;
                     };
                     argv.push((first, span));

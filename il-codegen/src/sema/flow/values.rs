@@ -37,11 +37,17 @@ impl Walk<'_, '_> {
                     format!("`{label}`")
                 };
                 let paths = paths.to_string();
-                if let Some(d) = self.err(
-                    CR_DISAGREES,
-                    span,
-                    format!("the current result has different types on the paths into {label}"),
-                ) {
+                // Every path (or the only one) leaves no value: say that, not
+                // that the paths disagree.
+                let none = paths.split(", ").all(|p| p.starts_with("undefined"));
+                let msg = if none {
+                    format!(
+                        "the current result is undefined at {label}: no path into it leaves a value"
+                    )
+                } else {
+                    format!("the current result has different types on the paths into {label}")
+                };
+                if let Some(d) = self.err(CR_DISAGREES, span, msg) {
                     d.notes.push(format!("the paths bring: {paths}"));
                     d.help =
                         Some("load a value after the label before using the current result".into());
