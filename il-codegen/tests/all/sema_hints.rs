@@ -131,3 +131,28 @@ fn st_calls_and_reserved_words_get_one_clear_error() {
         d[0]
     );
 }
+
+#[test]
+fn an_fb_parameter_named_twice_is_an_error_at_the_second() {
+    let src = "PROGRAM P\nVAR t : TON; x : BOOL; END_VAR\n    CAL t(IN := TRUE, PT := T#1s, in := FALSE, Q => x, Q => x)\nEND_PROGRAM\n";
+    let d = &check(&[("t.il", src)])[0];
+    let got: Vec<(&str, usize, &str)> = d
+        .iter()
+        .map(|d| (d.code, d.span.lo as usize, d.message.as_str()))
+        .collect();
+    assert_eq!(
+        got,
+        [
+            (
+                "IL0112",
+                src.find("in :=").unwrap(),
+                "parameter `in` is given twice"
+            ),
+            (
+                "IL0112",
+                src.rfind("Q =>").unwrap(),
+                "parameter `Q` is given twice"
+            ),
+        ]
+    );
+}

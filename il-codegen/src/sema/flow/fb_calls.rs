@@ -149,17 +149,22 @@ impl Walk<'_, '_> {
         let (inout_decl, _) = self.fb_refs(fb);
         match args {
             CallArgs::Formal(list) => {
+                // As for functions (`bind_formal`): a parameter named twice is
+                // an error at the second, not "the last one wins".
+                let mut seen = std::collections::HashSet::new();
                 for p in list {
+                    if !seen.insert(p.name.key()) {
+                        self.err(
+                            UNKNOWN_MEMBER,
+                            p.name.span,
+                            format!("parameter `{}` is given twice", p.name),
+                        );
+                        continue;
+                    }
                     if let Some((name, ty)) = inout_decl.iter().find(|(n, _)| p.name.is(n)) {
                         match &p.kind {
                             ParamKind::Input(o) => {
-                                if inouts.iter().any(|(n, _)| n == name) {
-                                    self.err(
-                                        DUPLICATE_DECL,
-                                        p.name.span,
-                                        format!("`{name}` is bound twice"),
-                                    );
-                                } else if let Some(pl) = self.inout_place(o, name, ty, fb) {
+                                if let Some(pl) = self.inout_place(o, name, ty, fb) {
                                     inouts.push((name.clone(), pl));
                                 }
                             }
