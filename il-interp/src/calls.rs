@@ -91,6 +91,7 @@ impl Machine {
         line: u32,
     ) -> Result<Value, String> {
         let Expr::CallStd {
+            en,
             call,
             args,
             ret,
@@ -100,6 +101,12 @@ impl Machine {
         else {
             return Err("internal: not a standard function call".into());
         };
+        // EN FALSE: not evaluated, the result is the type's default.
+        if let Some(en) = en
+            && !self.value(f, en, ctx, line)?.as_bool()
+        {
+            return self.default_of(ret);
+        }
         let mut vals = Vec::with_capacity(args.len());
         for a in args {
             vals.push(self.value(f, a, ctx, line)?);

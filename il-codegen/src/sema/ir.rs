@@ -479,6 +479,9 @@ pub enum Expr {
     },
     /// A call of an il-std function.
     CallStd {
+        /// `EN := value` of a formal call: evaluated only when TRUE, else the
+        /// result is the type's default (and `ENO =>` targets get FALSE).
+        en: Option<Value>,
         /// Which il-std function, and how to call it.
         call: StdCall,
         /// The arguments, CR first for the operator form.

@@ -578,3 +578,31 @@ fn div_mod_and_div_time_as_functions_record_the_fault() {
     assert_eq!(time(&f, "tq"), TIME::from_ms(500));
     assert_eq!(time(&f, "tr"), TIME::from_ms(250));
 }
+
+/// EN/ENO on standard functions and declared initial values of omitted
+/// inputs, as the generated code does (tests/tests/all/std_en_eno.rs).
+#[test]
+fn std_en_eno_and_declared_defaults() {
+    let run = |go: bool| {
+        let mut m = machine("std_en_eno.il", "StdEnEno");
+        m.set("go", Value::Bool(go)).unwrap();
+        m.set("x", i(20, Elem::INT)).unwrap();
+        m.set("r", m.parse_value("r", "2.5").unwrap()).unwrap();
+        m.scan(&mut Cycle::new()).unwrap();
+        (
+            [
+                int(&m, "limited"),
+                int(&m, "rounded"),
+                int(&m, "sum"),
+                int(&m, "sum_all"),
+            ],
+            [
+                boolean(&m, "ok"),
+                boolean(&m, "not_ok"),
+                boolean(&m, "conv_ok"),
+            ],
+        )
+    };
+    assert_eq!(run(false), ([0, 0, 23, 22], [false, true, false]));
+    assert_eq!(run(true), ([9, 2, 23, 22], [true, false, true]));
+}

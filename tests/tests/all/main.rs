@@ -29,6 +29,7 @@ mod rtc;
 mod runtime_faults;
 mod seeds;
 mod std_blocks;
+mod std_en_eno;
 mod std_funcs;
 mod ui;
 mod user_types;

@@ -89,93 +89,106 @@ impl PouEmitter<'_> {
                 quote!(if #en { #call } else { #(#eno_false)* #d })
             }
             Expr::CallStd {
+                en,
                 call,
                 args,
                 arg_types: _,
                 ret,
                 fault,
             } => {
-                let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
-                match (call, fault) {
-                    // REAL → integer out of range (or NaN) saturates, as the
-                    // plain function does, and is recorded as a fault.
-                    (StdCall::Plain(n), Some(k @ FaultKind::ConversionOutOfRange)) => {
-                        let t = rust_ty(ret);
-                        // The fault is the table's; the rounding is the
-                        // function's: TRUNC and REAL_TRUNC_* truncate.
-                        let f = if n.contains("TRUNC") {
-                            quote!(trunc_to_int_checked)
-                        } else {
-                            quote!(real_to_int_checked)
-                        };
-                        let a = &args[0];
-                        let fault = self.fault_of(*k, line);
-                        quote!({
-                            let (__v, __bad) = ::il_std::conv::#f::<#t>(#a as f64);
-                            if __bad { #fault; }
-                            __v
-                        })
-                    }
-                    // DIV, MOD, DIV_TIME by an integer zero: the `*_checked`
-                    // companion gives the result and the flag.
-                    (StdCall::Plain(n), Some(k @ FaultKind::DivisionByZero)) => {
-                        let f = format_ident!("{}_checked", n.to_ascii_lowercase());
-                        let fault = self.fault_of(*k, line);
-                        quote!({
-                            let (__v, __bad) = ::il_std::func::#f(#(#args),*);
-                            if __bad { #fault; }
-                            __v
-                        })
-                    }
-                    (StdCall::Plain(n), _) => {
-                        let f = format_ident!("{}", n);
-                        quote!(::il_std::func::#f(#(#args),*))
-                    }
-                    // A result longer than the first string's capacity is
-                    // truncated and recorded (CONCAT, step by step).
-                    (StdCall::Fold(n), Some(k @ FaultKind::StringOverflow)) => {
-                        let checked = format_ident!("{}_checked", n.to_ascii_lowercase());
-                        let fault = self.fault_of(*k, line);
-                        let mut it = args.into_iter();
-                        let mut acc = it.next().unwrap_or_default();
-                        for a in it {
-                            acc = quote!({
-                                let (__v, __bad) = ::il_std::func::#checked(#acc, #a);
+                let call = {
+                    let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
+                    match (call, fault) {
+                        // REAL → integer out of range (or NaN) saturates, as the
+                        // plain function does, and is recorded as a fault.
+                        (StdCall::Plain(n), Some(k @ FaultKind::ConversionOutOfRange)) => {
+                            let t = rust_ty(ret);
+                            // The fault is the table's; the rounding is the
+                            // function's: TRUNC and REAL_TRUNC_* truncate.
+                            let f = if n.contains("TRUNC") {
+                                quote!(trunc_to_int_checked)
+                            } else {
+                                quote!(real_to_int_checked)
+                            };
+                            let a = &args[0];
+                            let fault = self.fault_of(*k, line);
+                            quote!({
+                                let (__v, __bad) = ::il_std::conv::#f::<#t>(#a as f64);
                                 if __bad { #fault; }
                                 __v
+                            })
+                        }
+                        // DIV, MOD, DIV_TIME by an integer zero: the `*_checked`
+                        // companion gives the result and the flag.
+                        (StdCall::Plain(n), Some(k @ FaultKind::DivisionByZero)) => {
+                            let f = format_ident!("{}_checked", n.to_ascii_lowercase());
+                            let fault = self.fault_of(*k, line);
+                            quote!({
+                                let (__v, __bad) = ::il_std::func::#f(#(#args),*);
+                                if __bad { #fault; }
+                                __v
+                            })
+                        }
+                        (StdCall::Plain(n), _) => {
+                            let f = format_ident!("{}", n);
+                            quote!(::il_std::func::#f(#(#args),*))
+                        }
+                        // A result longer than the first string's capacity is
+                        // truncated and recorded (CONCAT, step by step).
+                        (StdCall::Fold(n), Some(k @ FaultKind::StringOverflow)) => {
+                            let checked = format_ident!("{}_checked", n.to_ascii_lowercase());
+                            let fault = self.fault_of(*k, line);
+                            let mut it = args.into_iter();
+                            let mut acc = it.next().unwrap_or_default();
+                            for a in it {
+                                acc = quote!({
+                                    let (__v, __bad) = ::il_std::func::#checked(#acc, #a);
+                                    if __bad { #fault; }
+                                    __v
+                                });
+                            }
+                            acc
+                        }
+                        (StdCall::Fold(n), _) => {
+                            let f = format_ident!("{}", n);
+                            let mut it = args.into_iter();
+                            let mut acc = it.next().unwrap_or_default();
+                            for a in it {
+                                acc = quote!(::il_std::func::#f(#acc, #a));
+                            }
+                            acc
+                        }
+                        (StdCall::Chain(n), _) => {
+                            let f = format_ident!("{}", n);
+                            let pairs = args.windows(2).map(|w| {
+                                let (a, b) = (&w[0], &w[1]);
+                                quote!(::il_std::func::#f(#a, #b))
                             });
+                            quote!(#(#pairs)&*)
                         }
-                        acc
-                    }
-                    (StdCall::Fold(n), _) => {
-                        let f = format_ident!("{}", n);
-                        let mut it = args.into_iter();
-                        let mut acc = it.next().unwrap_or_default();
-                        for a in it {
-                            acc = quote!(::il_std::func::#f(#acc, #a));
+                        // MUX returns the flag with the value: a selector out of
+                        // range (the table's InvalidArgument) is recorded.
+                        (StdCall::Mux, k) => {
+                            let fault =
+                                self.fault_of(k.unwrap_or(FaultKind::InvalidArgument), line);
+                            let k = &args[0];
+                            let ins = &args[1..];
+                            quote!({
+                                let (__v, __bad) = ::il_std::func::MUX(#k as i64, &[#(#ins),*]);
+                                if __bad { #fault; }
+                                __v
+                            })
                         }
-                        acc
                     }
-                    (StdCall::Chain(n), _) => {
-                        let f = format_ident!("{}", n);
-                        let pairs = args.windows(2).map(|w| {
-                            let (a, b) = (&w[0], &w[1]);
-                            quote!(::il_std::func::#f(#a, #b))
-                        });
-                        quote!(#(#pairs)&*)
+                };
+                // EN FALSE: not evaluated, the result is the type's default.
+                match en {
+                    Some(en) => {
+                        let en = self.value(en, line);
+                        let d = default_value(ret);
+                        quote!(if #en { #call } else { #d })
                     }
-                    // MUX returns the flag with the value: a selector out of
-                    // range (the table's InvalidArgument) is recorded.
-                    (StdCall::Mux, k) => {
-                        let fault = self.fault_of(k.unwrap_or(FaultKind::InvalidArgument), line);
-                        let k = &args[0];
-                        let ins = &args[1..];
-                        quote!({
-                            let (__v, __bad) = ::il_std::func::MUX(#k as i64, &[#(#ins),*]);
-                            if __bad { #fault; }
-                            __v
-                        })
-                    }
+                    None => call,
                 }
             }
         }

@@ -241,9 +241,14 @@ impl Walk<'_, '_> {
                             _ => {}
                         }
                     }
-                    for (k, (_, _, t)) in inputs.iter().enumerate() {
+                    // An input left out takes its declared initial value
+                    // (Ed.2 2.5.1.1), else the type's default.
+                    for (k, (i, _, t)) in inputs.iter().enumerate() {
                         if values[k].is_none() {
-                            values[k] = Some(Value::Const(default_const(t)));
+                            values[k] = Some(Value::Const(match &sig.vars[*i].init {
+                                Some(ir::Init::Const(c)) => c.clone(),
+                                _ => default_const(t),
+                            }));
                         }
                     }
                 }
@@ -336,25 +341,54 @@ impl Walk<'_, '_> {
                     return bad;
                 }
                 CallArgs::Formal(list) => {
-                    let count = list.len();
+                    // EN and ENO exist on every function, standard ones too.
+                    let count = list
+                        .iter()
+                        .filter(|p| !p.name.is("EN") && !p.name.is("ENO"))
+                        .count();
                     let (bound, ok) = self.bind_formal(list, |p| match &p.kind {
+                        ParamKind::Input(_) if p.name.is("EN") => Ok(Slot::En),
+                        ParamKind::Output { .. } if p.name.is("ENO") => Ok(Slot::Eno),
                         ParamKind::Input(_) => stdfn::formal_slot(&key, &p.name, count)
                             .map(Slot::Input)
                             .map_err(|m| (UNKNOWN_MEMBER, p.name.span, m)),
                         ParamKind::Output { .. } => Err((
                             UNSUPPORTED,
                             p.span,
-                            "standard functions have no outputs to read with `=>`".into(),
+                            "standard functions have no outputs to read with `=>` but ENO".into(),
                         )),
                     });
                     if !ok {
                         return bad;
                     }
                     let mut given = Vec::new();
+                    let mut en = None;
+                    let mut enos = Vec::new();
                     for (slot, p) in bound {
-                        if let (Slot::Input(pos), ParamKind::Input(o)) = (slot, &p.kind) {
-                            let Some(a) = self.operand(o) else { return bad };
-                            given.push((pos, a, o.span()));
+                        match (slot, &p.kind) {
+                            (Slot::Input(pos), ParamKind::Input(o)) => {
+                                let Some(a) = self.operand(o) else { return bad };
+                                given.push((pos, a, o.span()));
+                            }
+                            (Slot::En, ParamKind::Input(o)) => {
+                                let Some(a) = self.operand(o) else { return bad };
+                                en = Some(self.fit(a, &Ty::BOOL, o.span()));
+                            }
+                            (Slot::Eno, ParamKind::Output { negate, target }) => {
+                                let Some(place) = self.place_of(target, true) else {
+                                    return bad;
+                                };
+                                if place.ty != Ty::BOOL {
+                                    self.err(
+                                        TYPE_MISMATCH,
+                                        target.span(),
+                                        format!("`ENO` is BOOL, the variable is {}", place.ty),
+                                    );
+                                    return bad;
+                                }
+                                enos.push((place, *negate));
+                            }
+                            _ => {}
                         }
                     }
                     match stdfn::order_slots(&key, given) {
@@ -363,6 +397,12 @@ impl Walk<'_, '_> {
                             self.err(UNKNOWN_MEMBER, span, m);
                             return bad;
                         }
+                    }
+                    if en.is_some() || !enos.is_empty() {
+                        let Some(en) = en.unwrap_or(Some(Value::Const(Const::Bool(true)))) else {
+                            return bad;
+                        };
+                        return self.std_call_en(&key, argv, name.span, en, enos);
                     }
                 }
             }
@@ -415,6 +455,7 @@ impl Walk<'_, '_> {
         self.push(Op::SetCr {
             ty: ret.clone(),
             expr: Expr::CallStd {
+                en: None,
                 call: res.call,
                 args: values,
                 arg_types: res.params,
@@ -423,6 +464,54 @@ impl Walk<'_, '_> {
             },
         });
         ret
+    }
+
+    /// A standard function called with `EN :=` or `ENO =>`: the call runs
+    /// only when EN is TRUE (the result is then the type's default), and
+    /// each ENO target gets EN. The call's type cannot wait for its use, as
+    /// an all-literal call's does, so it is settled here.
+    fn std_call_en(
+        &mut self,
+        key: &str,
+        argv: Vec<(Arg, Span)>,
+        span: Span,
+        en: Value,
+        enos: Vec<(Place, bool)>,
+    ) -> Cr {
+        let cr = match self.std_call(key, argv, span) {
+            Cr::Lit(LitClass::Pending(p), _) => match self.materialize(&p, None) {
+                Some((_, ty)) => Cr::Val(ty),
+                None => return Cr::Undef(Why::Error),
+            },
+            cr => cr,
+        };
+        if !matches!(cr, Cr::Val(_)) {
+            return cr;
+        }
+        match self.out.last_mut() {
+            Some(ir::Stmt {
+                op:
+                    Op::SetCr {
+                        expr: Expr::CallStd { en: slot, .. },
+                        ..
+                    },
+                ..
+            }) => *slot = Some(en.clone()),
+            // std_call ends with the call it pushed; anything else is a bug
+            // here, reported rather than run without its EN.
+            _ => {
+                self.err(UNSUPPORTED, span, "EN of this call could not be applied");
+                return Cr::Undef(Why::Error);
+            }
+        }
+        for (place, negate) in enos {
+            self.push(Op::Store {
+                place,
+                value: en.clone(),
+                negate,
+            });
+        }
+        cr
     }
 
     pub(super) fn std_call(&mut self, key: &str, argv: Vec<(Arg, Span)>, span: Span) -> Cr {
