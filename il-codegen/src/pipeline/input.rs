@@ -2,6 +2,7 @@
 //! compiled together as one program, with every diagnostic pointing into
 //! the file the user wrote.
 
+use super::snippet::Snippet;
 use crate::diag::{Diagnostic, SourceFile};
 use crate::plcopen::Import;
 
@@ -12,6 +13,8 @@ pub enum Input {
     Il(SourceFile),
     /// A PLCopen TC6 XML project, translated to IL.
     PlcOpen(Box<Import>),
+    /// A bare instruction list, compiled as the body of a PROGRAM.
+    Snippet(Box<Snippet>),
 }
 
 impl Input {
@@ -24,6 +27,12 @@ impl Input {
     /// diagnostics of the input).
     pub fn plcopen(file: SourceFile) -> Input {
         Input::PlcOpen(Box::new(Import::new(file)))
+    }
+
+    /// A bare instruction list (no POU around it), compiled as the body of
+    /// a PROGRAM named after the file (`ilc check --snippet`).
+    pub fn snippet(file: SourceFile) -> Input {
+        Input::Snippet(Box::new(Snippet::new(file)))
     }
 
     /// PLCopen XML when the name ends in `.xml` (any case), IL otherwise.
@@ -40,6 +49,7 @@ impl Input {
         match self {
             Input::Il(f) => f,
             Input::PlcOpen(i) => &i.xml,
+            Input::Snippet(s) => &s.file,
         }
     }
 
@@ -48,6 +58,7 @@ impl Input {
         match self {
             Input::Il(f) => f,
             Input::PlcOpen(i) => &i.il,
+            Input::Snippet(s) => &s.il,
         }
     }
 
@@ -61,6 +72,7 @@ impl Input {
                 out.extend(diags.into_iter().map(|d| i.to_xml(d)));
                 out
             }
+            Input::Snippet(s) => s.finish(diags),
         };
         out.sort_by_key(|d| (d.span.lo, d.span.hi));
         crate::diag::limit(&mut out);

@@ -11,6 +11,7 @@
 #[cfg(feature = "build")]
 mod file;
 mod input;
+mod snippet;
 
 pub use input::{Input, is_xml_name};
 
@@ -46,6 +47,12 @@ impl Program {
     /// otherwise.
     pub fn source(self, file: SourceFile) -> Self {
         self.input(Input::by_extension(file))
+    }
+
+    /// With a bare instruction list, the body of a PROGRAM named after the
+    /// file ([`Input::snippet`]).
+    pub fn snippet(self, file: SourceFile) -> Self {
+        self.input(Input::snippet(file))
     }
 
     /// With an input.
@@ -234,6 +241,9 @@ impl Emitted<'_> {
             Input::Il(f) => {
                 file::format_file_with(&f.name, &self.tokens, None, |n| (n, f.line_text(n)))
             }
+            Input::Snippet(s) => file::format_file_with(&s.file.name, &self.tokens, None, |n| {
+                (s.line_of(n), s.il.line_text(n))
+            }),
             Input::PlcOpen(i) => {
                 let lines = i.xml_lines();
                 file::format_file_with(&i.xml.name, &self.tokens, Some("XML"), |n| {

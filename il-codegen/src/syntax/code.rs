@@ -69,6 +69,8 @@ crate::diag::codes::codes! {
         "A name needs at least one letter or digit: `_` alone (or `__`, `___` ...) is no IEC identifier, and in the generated Rust it would be the wildcard pattern.\n\n    VAR _ : INT; END_VAR\n\nName it: `VAR unused : INT; END_VAR`.";
     LONG_NAME = "IL0034", "a name longer than 255 characters",
         "Names (of variables, POUs, types, labels, operators) are at most 255 characters long, as in PLCopen XML. The limit keeps every message, suggestion and generated identifier bounded on damaged or generated input.\n\n    VAR a_name_of_three_hundred_characters_... : INT; END_VAR\n\nShorten the name.";
+    SNIPPET = "IL0036", "a `--snippet` file that needs declarations",
+        "`ilc check/emit/run --snippet FILE` compiles a bare instruction list, as in the standard's Table 51, as the body of a PROGRAM named after the file. Without declarations, only direct addresses and literals have a meaning; every other name is listed in this one error, and a file that declares a POU is no bare list.\n\n    START: LD  start_button\n           ANDN %MX5\n           ST  %QX2\n\nWrite `LD %IX1`, or declare the names in a PROGRAM and check the file without `--snippet`.";
     MACRO_TOO_LARGE = "IL0035", "an `il!` input over 16 MiB",
         "One `il!` call takes at most 16 MiB of IL (inline, or all its files together): the macro runs inside rustc on every build of the crate, and its tokens stay in rustc's memory. Larger programs belong in build.rs, whose output is written once and rebuilt only when the IL changes.\n\n    il_macros::il!(file = \"plc/huge.il\");   // 40 MiB\n\nCompile it with `il_codegen::Builder` in build.rs and `include!` the result.";
 }
