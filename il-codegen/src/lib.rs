@@ -13,6 +13,7 @@
 mod builder;
 pub mod codes;
 pub mod diag;
+pub mod dialect;
 pub mod plcopen;
 pub mod read;
 
@@ -36,5 +37,6 @@ pub mod syntax;
 
 pub use builder::{Builder, Error, output_paths, write_if_changed};
 pub use diag::{Diagnostic, SourceFile};
+pub use dialect::Standard;
 pub use emit::Options as EmitOptions;
 pub use pipeline::{Checked, Emitted, Input, Program};

@@ -21,6 +21,7 @@ use proc_macro2::TokenStream;
 #[derive(Clone, Debug, Default)]
 pub struct Program {
     inputs: Vec<Input>,
+    standard: crate::dialect::Standard,
 }
 
 impl Program {
@@ -56,18 +57,31 @@ impl Program {
         &self.inputs
     }
 
+    /// Check against this standard (default [`Standard::Iec2013`]:
+    /// 3rd-edition and vendor forms are accepted; [`Standard::Iec2003`]
+    /// refuses each of them).
+    ///
+    /// [`Standard::Iec2013`]: crate::Standard::Iec2013
+    /// [`Standard::Iec2003`]: crate::Standard::Iec2003
+    pub fn standard(mut self, standard: crate::dialect::Standard) -> Self {
+        self.standard = standard;
+        self
+    }
+
     /// Parse and check every input.
     pub fn check(self) -> Checked {
         let files: Vec<&SourceFile> = self.inputs.iter().map(Input::il_text).collect();
-        let (units, mut diags): (Vec<_>, Vec<Vec<Diagnostic>>) =
-            files.iter().map(|f| syntax::parse(f)).unzip();
+        let (units, mut diags): (Vec<_>, Vec<Vec<Diagnostic>>) = files
+            .iter()
+            .map(|f| syntax::parse_std(f, self.standard))
+            .unzip();
         // Files with syntax errors stay out of the semantic check (it would
         // mostly repeat them); the others are checked together.
         let clean: Vec<usize> = (0..files.len())
             .filter(|&i| !has_errors(&diags[i]))
             .collect();
         let pairs: Vec<_> = clean.iter().map(|&i| (files[i], &units[i])).collect();
-        let (programs, more) = sema::check_all(&pairs);
+        let (programs, more) = sema::check_all(&pairs, self.standard);
         let mut ir: Vec<sema::ir::Program> = files.iter().map(|_| Default::default()).collect();
         for ((&i, p), m) in clean.iter().zip(programs).zip(more) {
             ir[i] = p;
