@@ -134,6 +134,12 @@ impl Machine {
                 .get(*i)
                 .cloned()
                 .ok_or("internal: no such save slot")?,
+            // The checker's implicit widening, converted as `FROM_TO_TO` does.
+            IrValue::Widen(inner, w) => {
+                let x = self.value(f, inner, ctx, line)?;
+                crate::stdfn::convert(w.from, w.to, &x)
+                    .ok_or("internal: a widening the interpreter cannot convert")?
+            }
         })
     }
 

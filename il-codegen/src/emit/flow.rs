@@ -380,10 +380,11 @@ impl PouEmitter<'_> {
                         let v = self.value(v, line);
                         quote!(#path.#f = #v;)
                     });
-                    let outs = outputs.iter().map(|(n, target, neg)| {
+                    let outs = outputs.iter().map(|(n, target, neg, w)| {
                         let f = super::rust_ident(n);
                         let v = quote!(#path.#f);
-                        self.write(target, if *neg { quote!(!#v) } else { v }, line)
+                        let v = super::values::widened(if *neg { quote!(!#v) } else { v }, w);
+                        self.write(target, v, line)
                     });
                     return self.cond(
                         cond,
@@ -415,11 +416,12 @@ impl PouEmitter<'_> {
                     line,
                 );
                 let call = quote!(#io_lets #call #io_back);
-                let outs = outputs.iter().map(|(n, target, neg)| {
+                let outs = outputs.iter().map(|(n, target, neg, w)| {
                     let mut src = inst.clone();
                     src.path.push(crate::sema::ir::PathElem::Field(n.clone()));
                     let v = self.read(&src, line);
-                    self.write(target, if *neg { quote!(!#v) } else { v }, line)
+                    let v = super::values::widened(if *neg { quote!(!#v) } else { v }, w);
+                    self.write(target, v, line)
                 });
                 self.cond(cond, line, quote!({ #(#lets)* #call #(#outs)* }))
             }

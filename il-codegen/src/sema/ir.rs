@@ -370,6 +370,19 @@ pub enum Value {
     Read(Place),
     /// A saved outer CR of a deferred parenthesis.
     Saved(usize, Ty),
+    /// A value converted implicitly to a wider type (3rd edition).
+    Widen(Box<Value>, Widen),
+}
+
+/// An implicit widening conversion the checker applied (from its one table,
+/// [`super::widen::widens`]): lossless, so the emitter and the interpreter
+/// convert as the `FROM_TO_TO` function does and never fail.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Widen {
+    /// The value's type.
+    pub from: Elem,
+    /// The type it becomes.
+    pub to: Elem,
 }
 
 /// A computation whose result becomes the CR.
@@ -424,8 +437,9 @@ pub enum Expr {
         args: Vec<Value>,
         /// The types of all its VAR_OUTPUTs, in declaration order.
         out_types: Vec<Ty>,
-        /// The outputs read with `=>`: (index into `out_types`, target, complemented).
-        outputs: Vec<(usize, Place, bool)>,
+        /// The outputs read with `=>`: (index into `out_types`, target,
+        /// complemented, widened to the target's type).
+        outputs: Vec<(usize, Place, bool, Option<Widen>)>,
     },
     /// A call of an il-std function.
     CallStd {
@@ -511,8 +525,9 @@ pub enum Op {
         inst: Place,
         /// Inputs set before the call: (input name, value).
         inputs: Vec<(String, Value)>,
-        /// Outputs copied after the call: (output name, target, complemented).
-        outputs: Vec<(String, Place, bool)>,
+        /// Outputs copied after the call: (output name, target, complemented,
+        /// widened to the target's type).
+        outputs: Vec<(String, Place, bool, Option<Widen>)>,
         /// Places bound to the FB's VAR_IN_OUTs, in their declaration order.
         inouts: Vec<Place>,
         /// The FB's (non-located) VAR_EXTERNALs, in declaration order: the

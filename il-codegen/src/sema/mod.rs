@@ -18,6 +18,7 @@ pub(crate) mod size;
 mod stdfb;
 mod stdfn;
 pub mod types;
+pub mod widen;
 
 use crate::ast::{self, Span};
 use crate::diag::{Diagnostic, SourceFile};

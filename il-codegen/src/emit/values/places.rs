@@ -39,6 +39,7 @@ impl PouEmitter<'_> {
                 let id = format_ident!("__save_{}", i);
                 quote!(#id)
             }
+            Value::Widen(inner, w) => widened(self.value(inner, line), &Some(*w)),
         }
     }
 
@@ -185,6 +186,7 @@ impl PouEmitter<'_> {
     pub(super) fn inline_subscript(&self, s: &Value, p: &Place, first: bool) -> bool {
         match s {
             Value::Cr(_) | Value::Const(_) | Value::Saved(..) => true,
+            Value::Widen(v, _) => self.inline_subscript(v, p, first),
             Value::Read(q) => {
                 !Self::has_index(q)
                     && (first || q.root != p.root)
@@ -276,6 +278,7 @@ pub(super) fn value_elem(v: &Value) -> Option<Elem> {
         Value::Cr(t) | Value::Saved(_, t) => t.elem(),
         Value::Const(c) => c.ty().elem(),
         Value::Read(p) => p.ty.elem(),
+        Value::Widen(_, w) => Some(w.to),
     }
 }
 

@@ -140,7 +140,7 @@ impl Walk<'_, '_> {
         span: Span,
     ) -> (
         Vec<(String, Value)>,
-        Vec<(String, Place, bool)>,
+        Vec<(String, Place, bool, Option<ir::Widen>)>,
         Vec<(String, Place)>,
     ) {
         let mut ins = Vec::new();
@@ -208,14 +208,9 @@ impl Walk<'_, '_> {
                             let Some(place) = self.place_of(target, true) else {
                                 continue;
                             };
-                            if place.ty != ty {
-                                self.err(
-                                    TYPE_MISMATCH,
-                                    target.span(),
-                                    format!("`{name}` is {ty}, the variable is {}", place.ty),
-                                );
+                            let Ok(w) = self.output_fit(&name, &ty, &place, target.span()) else {
                                 continue;
-                            }
+                            };
                             if *negate && !ty.is_logic() {
                                 self.err(
                                     BAD_OPERATOR_TYPE,
@@ -226,7 +221,7 @@ impl Walk<'_, '_> {
                                 );
                                 continue;
                             }
-                            outs.push((name, place, *negate));
+                            outs.push((name, place, *negate, w));
                         }
                     }
                 }
