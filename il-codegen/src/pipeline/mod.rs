@@ -76,9 +76,15 @@ impl Program {
             .map(|f| syntax::parse_std(f, self.standard))
             .unzip();
         // Files with syntax errors stay out of the semantic check (it would
-        // mostly repeat them); the others are checked together.
+        // mostly repeat them); the others are checked together. A pragma
+        // refused by the strict standard is no damage to the syntax tree, so
+        // such a file is still checked (and gets its other refusals too).
         let clean: Vec<usize> = (0..files.len())
-            .filter(|&i| !has_errors(&diags[i]))
+            .filter(|&i| {
+                !diags[i]
+                    .iter()
+                    .any(|d| d.is_error() && d.code != crate::dialect::codes::PRAGMA)
+            })
             .collect();
         let pairs: Vec<_> = clean.iter().map(|&i| (files[i], &units[i])).collect();
         let (programs, more) = sema::check_all(&pairs, self.standard);

@@ -140,16 +140,36 @@ fn widening_is_refused_under_iec2003_one_by_one() {
     let lines: Vec<usize> = e.iter().map(|e| e.1).collect();
     assert_eq!(
         lines,
-        [7, 18, 31, 32, 33, 34, 36, 38, 41, 43, 45, 48, 50, 51, 52, 54, 54, 56, 58, 60],
+        [
+            7, 18, 31, 32, 33, 34, 36, 38, 41, 43, 45, 48, 50, 51, 52, 54, 54, 56, 58, 60
+        ],
         "{msgs:#?}"
     );
     for m in [
-        (31, "implicit conversion SINT → INT is a 3rd-edition feature"),
-        (18, "implicit conversion INT → DINT is a 3rd-edition feature"),
-        (34, "implicit conversion INT → LINT is a 3rd-edition feature"),
-        (38, "implicit conversion BOOL → WORD is a 3rd-edition feature"),
-        (48, "implicit conversion TIME → LTIME is a 3rd-edition feature"),
-        (56, "implicit conversion UINT → LREAL is a 3rd-edition feature"),
+        (
+            31,
+            "implicit conversion SINT → INT is a 3rd-edition feature",
+        ),
+        (
+            18,
+            "implicit conversion INT → DINT is a 3rd-edition feature",
+        ),
+        (
+            34,
+            "implicit conversion INT → LINT is a 3rd-edition feature",
+        ),
+        (
+            38,
+            "implicit conversion BOOL → WORD is a 3rd-edition feature",
+        ),
+        (
+            48,
+            "implicit conversion TIME → LTIME is a 3rd-edition feature",
+        ),
+        (
+            56,
+            "implicit conversion UINT → LREAL is a 3rd-edition feature",
+        ),
     ] {
         assert!(msgs.contains(&m), "{m:?} in {msgs:#?}");
     }
@@ -172,10 +192,22 @@ fn narrowing_and_lossy_conversions_stay_errors_that_name_the_function() {
     );
     // Not in the table: signed into unsigned, integer into bit string, DINT into REAL.
     for (src, msg) in [
-        ("    LD i\n    ST u", "`u` is UINT, but the current result is INT"),
-        ("    LD by\n    ST i", "`i` is INT, but the current result is BYTE"),
-        ("    LD d\n    ST r", "`r` is REAL, but the current result is DINT"),
-        ("    LD lr\n    ST r", "`r` is REAL, but the current result is LREAL; narrowing is never implicit: convert with LREAL_TO_REAL"),
+        (
+            "    LD i\n    ST u",
+            "`u` is UINT, but the current result is INT",
+        ),
+        (
+            "    LD by\n    ST i",
+            "`i` is INT, but the current result is BYTE",
+        ),
+        (
+            "    LD d\n    ST r",
+            "`r` is REAL, but the current result is DINT",
+        ),
+        (
+            "    LD lr\n    ST r",
+            "`r` is REAL, but the current result is LREAL; narrowing is never implicit: convert with LREAL_TO_REAL",
+        ),
     ] {
         let e = body(src);
         assert_eq!(e.len(), 1, "{src}: {e:#?}");

@@ -4,6 +4,7 @@
 //! `tests/plc` runs; features not covered by `plc`), `plcopen` (a PLCopen
 //! project of the shared corpus).
 
+mod dialect;
 mod plc;
 mod plcopen;
 mod smoke;

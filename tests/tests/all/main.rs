@@ -7,6 +7,7 @@
 mod addresses;
 mod annex_f;
 mod build_script;
+mod dialect;
 mod differential;
 mod edge_cases;
 mod edges_strings;

@@ -225,7 +225,8 @@ impl Walk<'_, '_> {
                                 let Some(place) = self.place_of(target, true) else {
                                     continue;
                                 };
-                                let Ok(w) = self.output_fit(&p.name.name, &ty, &place, target.span())
+                                let Ok(w) =
+                                    self.output_fit(&p.name.name, &ty, &place, target.span())
                                 else {
                                     continue;
                                 };
