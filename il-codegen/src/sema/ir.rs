@@ -357,6 +357,47 @@ pub enum PathElem {
         /// One subscript per dimension; the emitter checks them against `dims`.
         subs: Vec<Value>,
     },
+    /// A part of an integer or bit string (3rd edition: `v.3`, `v.%B1`):
+    /// always the last step. The checker proved `(index + 1) * bits(part)`
+    /// is at most the width of `whole`, so reading shifts and masks, and
+    /// writing reads the whole, replaces the part and writes the whole back.
+    Part {
+        /// The type of the place the part is taken from.
+        whole: Elem,
+        /// BOOL (a bit), BYTE, WORD or DWORD.
+        part: Elem,
+        /// Which part, counted in parts from the least significant.
+        index: u32,
+    },
+}
+
+impl PathElem {
+    /// Bits of the types a [`PathElem::Part`] joins: 1 for BOOL, 8 to 64
+    /// for the integers and bit strings.
+    pub fn part_bits(e: Elem) -> u32 {
+        use Elem::*;
+        match e {
+            BOOL => 1,
+            SINT | USINT | BYTE => 8,
+            INT | UINT | WORD => 16,
+            DINT | UDINT | DWORD => 32,
+            _ => 64,
+        }
+    }
+}
+
+impl Place {
+    /// A place ending in a partial access: the place of the whole and the
+    /// part (`None` for any other place).
+    pub fn split_part(&self) -> Option<(Place, Elem, Elem, u32)> {
+        let Some(PathElem::Part { whole, part, index }) = self.path.last() else {
+            return None;
+        };
+        let mut p = self.clone();
+        p.path.pop();
+        p.ty = Ty::Elem(*whole);
+        Some((p, *whole, *part, *index))
+    }
 }
 
 /// Something to read.

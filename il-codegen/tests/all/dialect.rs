@@ -232,3 +232,116 @@ fn the_wider_type_is_the_crs_after_an_operator() {
     assert_eq!(e.len(), 1, "{e:#?}");
     assert!(e[0].3.contains("convert with INT_TO_SINT"), "{e:#?}");
 }
+
+fn bits(lines: &str) -> Vec<(String, usize, usize, String)> {
+    bits_std(lines, Standard::default())
+}
+
+fn bits_std(lines: &str, std: Standard) -> Vec<(String, usize, usize, String)> {
+    errors_std(
+        &format!(
+            "PROGRAM p\nVAR b : BOOL; by : BYTE; w : WORD; d : DINT; s : SINT; lw : LWORD; r : REAL; t : TON; a : ARRAY[0..3] OF WORD; sub : INT(0..100); END_VAR\n{lines}\nEND_PROGRAM\n"
+        ),
+        std,
+    )
+}
+
+#[test]
+fn partial_access_is_accepted_as_operand_and_target() {
+    for src in [
+        "    LD w.15\n    AND d.%X31\n    ST b",
+        "    LD b\n    ST w.0\n    STN by.%X7\n    S lw.63\n    R s.7",
+        "    LD w.%B1\n    ST by",
+        "    LD lw.%D1\n    ST lw.%D0\n    LD lw.%W3\n    ST w",
+        "    LD t.ET\n    LD a[2].3\n    ST a[1].%X0",
+        "    LD by\n    ST w.%B0\n    ST d.%B3",
+        "    LD 1\n    ST w.3\n    LD 16#FF\n    ST d.%B2",
+    ] {
+        assert_eq!(bits(src), [], "{src}");
+    }
+}
+
+#[test]
+fn a_part_beyond_the_width_is_an_error_at_its_line() {
+    let cases = [
+        (
+            "    LD w.16\n    ST b",
+            "`w.16`: bit 16 is beyond WORD, which has bits 0..15 (16 bits)",
+        ),
+        (
+            "    LD b\n    ST by.%X8",
+            "`by.%X8`: bit 8 is beyond BYTE, which has bits 0..7 (8 bits)",
+        ),
+        (
+            "    LD d.%B4\n    ST by",
+            "`d.%B4`: byte 4 is beyond DINT, which has bytes 0..3 (32 bits)",
+        ),
+        (
+            "    LD w.%D0\n    ST d",
+            "`w.%D0`: WORD has no double words (16 bits)",
+        ),
+        (
+            "    LD lw.%W4\n    ST w",
+            "`lw.%W4`: word 4 is beyond LWORD, which has words 0..3 (64 bits)",
+        ),
+        (
+            "    LD r.0\n    ST b",
+            "`r.0`: partial access needs a bit string or an integer, not REAL",
+        ),
+        (
+            "    LD b.0\n    ST b",
+            "`b.0`: partial access needs a bit string or an integer, not BOOL",
+        ),
+        (
+            "    LD b\n    ST sub.0",
+            "`sub` is a subrange: its parts cannot be written",
+        ),
+    ];
+    for (src, msg) in cases {
+        let e = bits(src);
+        assert_eq!(e.len(), 1, "{src}: {e:#?}");
+        // The line of the access (the second line when the first loads b).
+        let line = if src.starts_with("    LD b\n") { 4 } else { 3 };
+        assert_eq!(
+            (e[0].0.as_str(), e[0].1, e[0].3.as_str()),
+            ("IL0135", line, msg),
+            "{src}"
+        );
+    }
+    // A part has the type of its size, checked (and widened) like any value.
+    assert_eq!(bits("    LD w.%B0\n    ST w"), [], "BYTE into WORD widens");
+    let e = bits("    LD w.%B0\n    ST s");
+    assert_eq!(
+        e[0].3, "`s` is SINT, but the current result is BYTE",
+        "{e:#?}"
+    );
+}
+
+#[test]
+fn partial_access_is_refused_under_iec2003() {
+    let e = bits_std("    LD w.3\n    ST d.%X0", Standard::Iec2003);
+    let msgs: Vec<(&str, usize, &str)> = e
+        .iter()
+        .map(|e| (e.0.as_str(), e.1, e.3.as_str()))
+        .collect();
+    assert_eq!(
+        msgs,
+        [
+            ("IL0303", 3, "partial access `w.3` is a 3rd-edition feature"),
+            (
+                "IL0303",
+                4,
+                "partial access `d.%X0` is a 3rd-edition feature"
+            ),
+        ]
+    );
+}
+
+#[test]
+fn a_part_cannot_be_bound_to_a_var_in_out() {
+    let e = errors(
+        "FUNCTION_BLOCK f\nVAR_IN_OUT x : BOOL; END_VAR\n    LD x\nEND_FUNCTION_BLOCK\nPROGRAM p\nVAR w : WORD; i : f; END_VAR\n    CAL i(x := w.3)\nEND_PROGRAM\n",
+    );
+    assert_eq!(e.len(), 1, "{e:#?}");
+    assert_eq!((e[0].0.as_str(), e[0].1), ("IL0130", 7));
+}

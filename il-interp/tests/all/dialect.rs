@@ -75,3 +75,60 @@ fn the_same_file_is_refused_under_iec2003() {
         "{e}"
     );
 }
+
+#[test]
+fn partial_access_reads_and_writes_bits_bytes_and_words() {
+    let prog = load(&file()).expect("compiles");
+    let mut ctx = Cycle::new();
+    let mut m = Machine::new(&prog, "Bits").expect("instance");
+    for (w, d, go, k) in [
+        (0x8001u16, -2i32, true, 0i16),
+        (0x7FFE, 0x1234_5678, false, 3),
+        (0xA5C3, i32::MIN, true, 9),
+    ] {
+        m.set("w", int(w.into(), Elem::WORD)).unwrap();
+        m.set("d", int(d.into(), Elem::DINT)).unwrap();
+        m.set("go", Value::Bool(go)).unwrap();
+        m.set("k", int(k.into(), Elem::INT)).unwrap();
+        m.set("st", int(0xF0, Elem::WORD)).unwrap();
+        m.set("neg", int(0, Elem::DINT)).unwrap();
+        m.set("arr", Value::Array(vec![int(0, Elem::BYTE); 4]))
+            .unwrap();
+        m.scan(&mut ctx).expect("scan");
+        let case = format!("w={w:#x} d={d:#x} go={go} k={k}");
+        let b = |x: bool| Value::Bool(x);
+        assert_eq!(get(&m, "b0"), b(w & 1 != 0), "{case}");
+        assert_eq!(get(&m, "b15"), b(w & 0x8000 != 0), "{case}");
+        assert_eq!(get(&m, "sign"), b(d < 0), "{case}");
+        assert_eq!(get(&m, "hi"), int((w >> 8).into(), Elem::BYTE), "{case}");
+        assert_eq!(
+            get(&m, "lo_word"),
+            int((d as u16).into(), Elem::WORD),
+            "{case}"
+        );
+        let mut st = 0x00F0u16 & !0b11 | u16::from(go) | (u16::from(!go) << 1);
+        if go {
+            st |= 0x8000;
+            st &= !0b100;
+        }
+        st = (st & !0x100) | (u16::from(go) << 8);
+        assert_eq!(get(&m, "st"), int(st.into(), Elem::WORD), "{case}");
+        let neg = i32::from_le_bytes([(w >> 8) as u8, 0, 0, 0xFF]);
+        assert_eq!(get(&m, "neg"), int(neg.into(), Elem::DINT), "{case}");
+        assert_eq!(get(&m, "inner3"), b(w & 8 != 0), "{case}");
+        let mut arr = [0u8; 4];
+        if (0..4).contains(&k) {
+            assert_eq!(get(&m, "elem"), b(w & 1 != 0), "{case}");
+            arr[k as usize] = (w as u8 & 0x7F) | (u8::from(go) << 7);
+        } else {
+            assert_eq!(get(&m, "elem"), b(false), "{case}");
+        }
+        let arr = Value::Array(arr.iter().map(|&x| int(x.into(), Elem::BYTE)).collect());
+        assert_eq!(get(&m, "arr"), arr, "{case}");
+    }
+    assert!(
+        ctx.faults()
+            .any(|f| f.kind == il_std::FaultKind::IndexOutOfRange),
+        "k = 9 records the fault"
+    );
+}

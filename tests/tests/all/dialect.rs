@@ -54,3 +54,81 @@ macro_rules! dialect_tests {
 
 dialect_tests!(via_build);
 dialect_tests!(via_macro);
+
+macro_rules! bit_tests {
+    ($name:ident, $m:ident) => {
+        mod $name {
+            use super::*;
+            use il_tests::$m::{Bits, BitsInStruct};
+
+            #[test]
+            fn partial_access_on_structure_members() {
+                let mut ctx = Cycle::new();
+                let mut f = BitsInStruct::default();
+                f.go = true;
+                f.call(&mut ctx);
+                assert_eq!((f.f.word, f.f.dint), (0x10, 1 << 30));
+                f.go = false;
+                f.call(&mut ctx);
+                assert_eq!((f.f.word, f.f.dint), (0, 0));
+            }
+
+            #[test]
+            fn partial_access_reads_and_writes_bits_bytes_and_words() {
+                let mut ctx = Cycle::new();
+                let mut f = Bits::default();
+                for (w, d, go, k) in [
+                    (0x8001u16, -2i32, true, 0i16),
+                    (0x7FFE, 0x1234_5678, false, 3),
+                    (0xA5C3, i32::MIN, true, 9), // k out of bounds
+                ] {
+                    f.w = w;
+                    f.d = d;
+                    f.go = go;
+                    f.k = k;
+                    f.arr = [0; 4];
+                    f.st = 0x00F0;
+                    f.neg = 0;
+                    f.call(&mut ctx);
+                    let case = format!("w={w:#x} d={d:#x} go={go} k={k}");
+                    assert_eq!(f.b0, w & 1 != 0, "{case}");
+                    assert_eq!(f.b15, w & 0x8000 != 0, "{case}");
+                    assert_eq!(f.sign, d < 0, "{case}");
+                    assert_eq!(f.hi, (w >> 8) as u8, "{case}");
+                    assert_eq!(f.lo_word, d as u16, "{case}");
+                    let mut st = 0x00F0u16 & !0b11 | u16::from(go) | (u16::from(!go) << 1);
+                    if go {
+                        st |= 0x8000;
+                        st &= !0b100;
+                    }
+                    let loc_bit = go;
+                    st = (st & !0x100) | (u16::from(loc_bit) << 8);
+                    assert_eq!(f.st, st, "{case}");
+                    assert_eq!(
+                        f.neg,
+                        i32::from_le_bytes([(w >> 8) as u8, 0, 0, 0xFF]),
+                        "{case}"
+                    );
+                    assert_eq!(f.inner3, w & 8 != 0, "{case}");
+                    if (0..4).contains(&k) {
+                        assert_eq!(f.elem, w & 1 != 0, "{case}");
+                        let mut arr = [0u8; 4];
+                        arr[k as usize] = (w as u8 & 0x7F) | (u8::from(go) << 7);
+                        assert_eq!(f.arr, arr, "{case}");
+                    } else {
+                        assert!(!f.elem, "an element out of bounds reads as 0: {case}");
+                        assert_eq!(f.arr, [0; 4], "{case}");
+                    }
+                }
+                assert!(
+                    ctx.faults()
+                        .any(|f| f.kind == il_std::FaultKind::IndexOutOfRange),
+                    "k = 9 records the fault"
+                );
+            }
+        }
+    };
+}
+
+bit_tests!(bits_via_build, via_build);
+bit_tests!(bits_via_macro, via_macro);

@@ -117,6 +117,14 @@ impl Walk<'_, '_> {
             return None;
         }
         let place = self.place_of(o, true)?;
+        if place.split_part().is_some() {
+            self.err(
+                BAD_IN_OUT,
+                o.span(),
+                format!("`{name}` is a VAR_IN_OUT of {callee}: a part of a variable (`x.3`) cannot be passed by reference"),
+            );
+            return None;
+        }
         if &place.ty != ty {
             self.err(
                 BAD_IN_OUT,

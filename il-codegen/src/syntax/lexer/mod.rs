@@ -59,6 +59,8 @@ pub enum Tok {
     Lit(Literal),
     /// A direct address: `%IX0.1`, `%MW10`.
     Addr(DirectAddress),
+    /// `%X3`, `%B1`, `%W0`, `%D1` right after a `.`: a partial access (3rd edition).
+    Part(AddrSize, u32),
     // Operators (operator field of a body line).
     /// `LD` (false) / `LDN` (true).
     Ld(bool),
