@@ -30,6 +30,7 @@ fn main() -> ExitCode {
                 &files,
                 format,
                 color,
+                cli::standard(m),
                 io::stderr().is_terminal(),
                 &mut io::stdout().lock(),
                 &mut io::stderr().lock(),
@@ -54,6 +55,7 @@ fn main() -> ExitCode {
                 &files,
                 dir.as_deref(),
                 color,
+                cli::standard(m),
                 io::stderr().is_terminal(),
                 &mut io::stdout().lock(),
                 &mut io::stderr().lock(),
@@ -89,6 +91,7 @@ fn main() -> ExitCode {
                 color: check::use_color(
                     m.get_one::<String>("color").map_or("auto", String::as_str),
                 ),
+                standard: cli::standard(m),
             };
             let code = run::run(&opts, &mut io::stdout().lock(), &mut io::stderr().lock());
             ExitCode::from(code)

@@ -16,28 +16,47 @@ enum Input {
     File(syn::LitStr),
 }
 
-/// What follows the IL: `, serde`.
-fn parse_flags(ps: syn::parse::ParseStream) -> syn::Result<bool> {
-    let mut serde = false;
+/// What may follow the IL: `, serde` and `, std = "iec2003"`.
+#[derive(Clone, Copy, Default)]
+struct Flags {
+    serde: bool,
+    standard: crate::Standard,
+}
+
+fn parse_flags(ps: syn::parse::ParseStream) -> syn::Result<Flags> {
+    let mut flags = Flags::default();
     while ps.parse::<Option<syn::Token![,]>>()?.is_some() {
         if ps.is_empty() {
             break;
         }
         let flag: syn::Ident = ps.parse()?;
-        if flag != "serde" {
+        if flag == "serde" {
+            flags.serde = true;
+        } else if flag == "std" {
+            let _: syn::Token![=] = ps.parse()?;
+            let name: syn::LitStr = ps.parse()?;
+            flags.standard = crate::Standard::from_name(&name.value()).ok_or_else(|| {
+                syn::Error::new(
+                    name.span(),
+                    format!(
+                        "unknown standard `{}`: use `std = \"iec2003\"` (2nd edition, strict) or `std = \"iec2013\"` (the default)",
+                        name.value()
+                    ),
+                )
+            })?;
+        } else {
             return Err(syn::Error::new(flag.span(), USAGE));
         }
-        serde = true;
     }
     if !ps.is_empty() {
         return Err(ps.error(USAGE));
     }
-    Ok(serde)
+    Ok(flags)
 }
 
-const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or a file relative to the crate, `il!(file = \"plc/motor.il\")`, optionally followed by `, serde`";
+const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or a file relative to the crate, `il!(file = \"plc/motor.il\")`, optionally followed by `, serde` and `, std = \"iec2003\"`";
 
-fn parse_input(tokens: TokenStream) -> syn::Result<(Input, bool)> {
+fn parse_input(tokens: TokenStream) -> syn::Result<(Input, Flags)> {
     syn::parse::Parser::parse2(
         |ps: syn::parse::ParseStream| {
             if ps.peek(syn::LitStr) {
@@ -81,13 +100,15 @@ pub fn expand(tokens: TokenStream) -> TokenStream {
 
 fn expand_inner(tokens: TokenStream) -> TokenStream {
     let mut first_line = None;
-    let (input, serde) = match parse_input(tokens) {
-        // syn's own messages ("expected identifier") say nothing about il!.
+    let (input, flags) = match parse_input(tokens) {
+        // syn's own messages ("expected identifier") say nothing about il!;
+        // ours (an unknown standard) do.
+        Err(e) if e.to_string().starts_with("unknown standard") => return e.to_compile_error(),
         Err(e) => return syn::Error::new(e.span(), USAGE).to_compile_error(),
         Ok(x) => x,
     };
     let opts = emit::Options {
-        serde,
+        serde: flags.serde,
         ..Default::default()
     };
     let (file, lit_span, track) = match input {
@@ -127,7 +148,7 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
             }
         }
     };
-    let checked = Program::new().il(file).check();
+    let checked = Program::new().standard(flags.standard).il(file).check();
     if let Some(mut emitted) = checked.emit(opts) {
         let items = emitted.pop().map(|e| e.tokens).unwrap_or_default();
         return quote!(#track #items);
@@ -205,5 +226,21 @@ mod tests {
         );
         let trailing = expand(quote!(#il, )).to_string();
         assert_eq!(trailing, plain);
+    }
+
+    #[test]
+    fn std_option_selects_the_standard() {
+        let il = "PROGRAM P\nVAR s : SINT; i : INT; END_VAR\n    LD s\n    ST i\nEND_PROGRAM\n";
+        let plain = expand(quote!(#il)).to_string();
+        assert!(!plain.contains("compile_error"), "{plain}");
+        assert_eq!(expand(quote!(#il, std = "iec2013")).to_string(), plain);
+        let strict = expand(quote!(#il, serde, std = "IEC2003")).to_string();
+        assert!(
+            strict.contains("compile_error") && strict.contains("IL0302"),
+            "{strict}"
+        );
+        assert!(strict.contains("implicit conversion SINT → INT is a 3rd-edition feature"));
+        let bad = expand(quote!(#il, std = "iec1993")).to_string();
+        assert!(bad.contains("unknown standard `iec1993`"), "{bad}");
     }
 }

@@ -132,3 +132,23 @@ macro_rules! bit_tests {
 
 bit_tests!(bits_via_build, via_build);
 bit_tests!(bits_via_macro, via_macro);
+
+/// The build-script `Builder` with `strict(true)` / `standard(..)`.
+#[test]
+fn builder_strict_refuses_what_the_default_accepts() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("dialect-builder");
+    let plc = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("plc/dialect.il");
+    let build =
+        |b: il_codegen::Builder| b.file(&plc).out_dir(&dir).cargo_directives(false).compile();
+    assert!(build(il_codegen::Builder::new()).is_ok());
+    assert!(build(il_codegen::Builder::new().strict(false)).is_ok());
+    for b in [
+        il_codegen::Builder::new().strict(true),
+        il_codegen::Builder::new().standard(il_codegen::Standard::Iec2003),
+    ] {
+        let e = build(b).expect_err("refused").to_string();
+        for code in ["IL0301", "IL0302", "IL0303"] {
+            assert!(e.contains(&format!("error[{code}]")), "{code} in {e}");
+        }
+    }
+}
