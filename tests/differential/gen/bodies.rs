@@ -376,6 +376,7 @@ impl Pou<'_> {
                 self.block(types, depth + 1);
                 self.label(&l);
             }
+            7 if self.rng.chance(50) => self.dialect_block(types),
             6 if depth == 0 && !self.in_function && self.rng.chance(15) => {
                 self.bool_cond();
                 let r = *self.rng.pick(&["RETC", "RETCN", "RETNC"]);

@@ -14,6 +14,7 @@
 #![allow(dead_code)]
 
 mod bodies;
+mod dialect;
 
 /// xorshift64*.
 pub struct Rng(u64);
