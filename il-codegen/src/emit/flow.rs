@@ -314,8 +314,18 @@ impl PouEmitter<'_> {
                 value,
                 negate,
             } => {
-                let v = self.value(value, line);
-                let v = if *negate { quote!(!#v) } else { v };
+                // STN complements in the CR's type, before a widening.
+                let v = match (negate, value) {
+                    (true, Value::Widen(inner, w)) => {
+                        let v = self.value(inner, line);
+                        super::values::widened(quote!(!#v), &Some(*w))
+                    }
+                    (true, v) => {
+                        let v = self.value(v, line);
+                        quote!(!#v)
+                    }
+                    (false, v) => self.value(v, line),
+                };
                 match (&place.range, place.ty.elem()) {
                     // A subrange store outside the bounds is skipped and recorded.
                     (Some((lo, hi)), Some(e)) => {

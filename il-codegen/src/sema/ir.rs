@@ -548,7 +548,8 @@ pub enum Op {
         place: Place,
         /// The value stored (usually the CR).
         value: Value,
-        /// `STN`: store the complement.
+        /// `STN`: store the complement, taken in the CR's type: when
+        /// `value` is a [`Value::Widen`], before the widening.
         negate: bool,
     },
     /// S / R on a BOOL: `if cond { place = value }`.

@@ -51,6 +51,8 @@ fn widening_keeps_every_value() {
             Value::Time(-2_500_000_000, Elem::LTIME),
             "{case}"
         );
+        assert_eq!(get(&m, "nw"), int(0xFF, Elem::WORD), "{case}");
+        assert_eq!(get(&m, "nb"), int(0, Elem::BYTE), "{case}");
     }
 }
 

@@ -31,7 +31,7 @@ fn a_failing_build_script_prints_the_rendered_diagnostics() {
     std::fs::create_dir_all(dir.join("plc")).unwrap();
     std::fs::write(
         dir.join("plc/bad.il"),
-        "PROGRAM Bad\nVAR n : INT; r : REAL; END_VAR\n    LD n\n    ADD r\n    ST n\nEND_PROGRAM\n",
+        "PROGRAM Bad\nVAR n : DINT; r : REAL; END_VAR\n    LD n\n    ADD r\n    ST n\nEND_PROGRAM\n",
     )
     .unwrap();
     std::fs::write(dir.join("src/lib.rs"), "").unwrap();

@@ -35,6 +35,8 @@ macro_rules! dialect_tests {
                     assert_eq!(f.ir, i as f32, "{case}");
                     assert!(!f.gt, "d = s, so d GT s is FALSE: {case}");
                     assert_eq!(f.lt, LTIME(-2_500_000_000), "{case}");
+                    assert_eq!(f.nw, 0x00FF, "STN: NOT BYTE#0, then widened: {case}");
+                    assert_eq!(f.nb, 0, "STN: NOT TRUE, then widened: {case}");
                 }
             }
 
