@@ -134,3 +134,26 @@ fn partial_access_reads_and_writes_bits_bytes_and_words() {
         "k = 9 records the fault"
     );
 }
+
+#[test]
+fn partial_access_on_a_function_result_and_a_var_in_out() {
+    let prog = load(&file()).expect("compiles");
+    let mut ctx = Cycle::new();
+    let mut m = Machine::new(&prog, "InOutBits").expect("instance");
+    for (w, n, want) in [
+        (0x8001, false, 0x8001),
+        (0, true, 4),
+        (0x7FFF, false, 0xFFFB),
+    ] {
+        let (r, _) = m
+            .call_function_named("SetBit", vec![int(w, Elem::WORD), Value::Bool(n)], &mut ctx)
+            .expect("call");
+        assert_eq!(r, int(want, Elem::WORD), "SetBit({w:#x}, {n})");
+    }
+    // Run alone, the interpreter keeps the VAR_IN_OUT as memory of the instance.
+    m.set("io", int(2, Elem::WORD)).unwrap();
+    m.scan(&mut ctx).expect("scan");
+    assert_eq!(get(&m, "b"), Value::Bool(true));
+    // r = SetBit(io, TRUE) after bit 8 of io was set: io became 0x102.
+    assert_eq!(get(&m, "r"), int(0x106, Elem::WORD));
+}

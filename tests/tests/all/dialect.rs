@@ -61,7 +61,21 @@ macro_rules! bit_tests {
     ($name:ident, $m:ident) => {
         mod $name {
             use super::*;
-            use il_tests::$m::{Bits, BitsInStruct};
+            use il_tests::$m::{Bits, BitsInStruct, InOutBits, SetBit};
+
+            #[test]
+            fn partial_access_on_a_function_result_and_a_var_in_out() {
+                let mut ctx = Cycle::new();
+                assert_eq!(SetBit(&mut ctx, 0x8001, false), 0x8001);
+                assert_eq!(SetBit(&mut ctx, 0x0000, true), 0x0004);
+                assert_eq!(SetBit(&mut ctx, 0x7FFF, false), 0xFFFB);
+                let mut f = InOutBits::default();
+                let mut io = 2u16;
+                f.call(&mut ctx, &mut io);
+                assert!(f.b);
+                assert_eq!(io, 0x102, "bit 8 set through the reference");
+                assert_eq!(f.r, 0x106);
+            }
 
             #[test]
             fn partial_access_on_structure_members() {
