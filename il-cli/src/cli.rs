@@ -61,6 +61,30 @@ at the end of each instruction line; off with the client setting
 and workspace symbols and completion. editors/vscode holds a VS Code client.";
 
 /// The whole command line.
+/// `--std=iec2003`: refuse the 3rd-edition and vendor forms (pragmas,
+/// implicit widening, partial access), each with an error naming it.
+fn std_arg() -> Arg {
+    Arg::new("std")
+        .long("std")
+        .value_name("STANDARD")
+        .help("Edition of IEC 61131-3 to check against")
+        .long_help(
+            "Edition of IEC 61131-3 to check against: `iec2013` (the default) accepts the \
+             3rd-edition and vendor forms real projects use (pragmas, implicit widening \
+             conversions, partial bit access); `iec2003` refuses each of them with an error \
+             that names it",
+        )
+        .value_parser(PossibleValuesParser::new(["iec2013", "iec2003"]))
+        .default_value("iec2013")
+}
+
+/// The standard `--std` selected.
+pub fn standard(m: &clap::ArgMatches) -> il_codegen::Standard {
+    m.get_one::<String>("std")
+        .and_then(|s| il_codegen::Standard::from_name(s))
+        .unwrap_or_default()
+}
+
 pub fn command() -> Command {
     Command::new("ilc")
         .version(env!("CARGO_PKG_VERSION"))
@@ -104,7 +128,8 @@ pub fn command() -> Command {
                         )
                         .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
                         .default_value("auto"),
-                ),
+                )
+                .arg(std_arg()),
         )
         .subcommand(
             Command::new("emit")
@@ -132,7 +157,8 @@ pub fn command() -> Command {
                         .help("Colour the diagnostics")
                         .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
                         .default_value("auto"),
-                ),
+                )
+                .arg(std_arg()),
         )
         .subcommand(
             Command::new("run")
@@ -186,7 +212,8 @@ pub fn command() -> Command {
                         .help("Colour the diagnostics")
                         .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
                         .default_value("auto"),
-                ),
+                )
+                .arg(std_arg()),
         )
         .subcommand(
             Command::new("lsp")

@@ -12,6 +12,7 @@ pub fn run(
     files: &[String],
     dir: Option<&Path>,
     color: bool,
+    standard: il_codegen::Standard,
     progress: bool,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -52,9 +53,10 @@ pub fn run(
         return false;
     }
     bar.stage("Compiling", err);
-    let program = sources
-        .into_iter()
-        .fold(il_codegen::Program::new(), il_codegen::Program::source);
+    let program = sources.into_iter().fold(
+        il_codegen::Program::new().standard(standard),
+        il_codegen::Program::source,
+    );
     let checked = program.check();
     let opts = il_codegen::emit::Options {
         line_markers: true,

@@ -26,6 +26,7 @@ pub struct Builder {
     out_dir: Option<PathBuf>,
     cargo_directives: Option<bool>,
     serde: bool,
+    standard: crate::Standard,
 }
 
 /// A failed build: every diagnostic of every file, rendered like rustc.
@@ -102,6 +103,26 @@ impl Builder {
         self
     }
 
+    /// Check against this edition of IEC 61131-3 (default
+    /// [`Standard::Iec2013`](crate::Standard::Iec2013): 3rd-edition and vendor
+    /// forms such as pragmas, implicit widening and partial bit access are
+    /// accepted). [`Standard::Iec2003`](crate::Standard::Iec2003) refuses each
+    /// of them with an error that names it.
+    pub fn standard(mut self, standard: crate::Standard) -> Self {
+        self.standard = standard;
+        self
+    }
+
+    /// `strict(true)` is [`Builder::standard`]`(Standard::Iec2003)`;
+    /// `strict(false)` the default, `Standard::Iec2013`.
+    pub fn strict(self, on: bool) -> Self {
+        self.standard(if on {
+            crate::Standard::Iec2003
+        } else {
+            crate::Standard::Iec2013
+        })
+    }
+
     /// Compile every file. Nothing is written unless every file compiles;
     /// each output is written atomically and only when its content changed.
     /// Returns the paths of the generated files.
@@ -158,7 +179,9 @@ impl Builder {
             return Err(Error { rendered: failed });
         }
         // All files form one program: a FUNCTION_BLOCK of one is usable in another.
-        let program = sources.into_iter().fold(Program::new(), Program::input);
+        let program = sources
+            .into_iter()
+            .fold(Program::new().standard(self.standard), Program::input);
         let checked = program.check();
         let opts = crate::emit::Options {
             serde: self.serde,

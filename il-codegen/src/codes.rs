@@ -11,6 +11,7 @@ pub fn all() -> impl Iterator<Item = &'static CodeInfo> {
         .chain(crate::diag::codes::CODES)
         .chain(crate::sema::CODES)
         .chain(crate::plcopen::CODES)
+        .chain(crate::dialect::CODES)
 }
 
 /// Look a code up (`IL0003`, case-insensitive).

@@ -20,31 +20,50 @@ enum Input {
     Files(Vec<syn::LitStr>),
 }
 
-/// What follows the IL: `, serde`.
-fn parse_flags(ps: syn::parse::ParseStream) -> syn::Result<bool> {
-    let mut serde = false;
+/// What may follow the IL: `, serde` and `, std = "iec2003"`.
+#[derive(Clone, Copy, Default)]
+struct Flags {
+    serde: bool,
+    standard: crate::Standard,
+}
+
+fn parse_flags(ps: syn::parse::ParseStream) -> syn::Result<Flags> {
+    let mut flags = Flags::default();
     while ps.parse::<Option<syn::Token![,]>>()?.is_some() {
         if ps.is_empty() {
             break;
         }
         let flag: syn::Ident = ps.parse()?;
-        if flag != "serde" {
+        if flag == "serde" {
+            flags.serde = true;
+        } else if flag == "std" {
+            let _: syn::Token![=] = ps.parse()?;
+            let name: syn::LitStr = ps.parse()?;
+            flags.standard = crate::Standard::from_name(&name.value()).ok_or_else(|| {
+                syn::Error::new(
+                    name.span(),
+                    format!(
+                        "unknown standard `{}`: use `std = \"iec2003\"` (2nd edition, strict) or `std = \"iec2013\"` (the default)",
+                        name.value()
+                    ),
+                )
+            })?;
+        } else {
             return Err(syn::Error::new(flag.span(), USAGE));
         }
-        serde = true;
     }
     if !ps.is_empty() {
         return Err(ps.error(USAGE));
     }
-    Ok(serde)
+    Ok(flags)
 }
 
 /// The most IL one `il!` call takes (IL0035): beyond it, build.rs.
 const MAX_MACRO_INPUT: usize = 16 << 20;
 
-const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or files relative to the crate, `il!(file = \"plc/motor.il\")` or `il!(files = [\"plc/types.il\", \"plc/tank.il\"])` (one program: a POU may use the TYPEs and FBs of every file), optionally followed by `, serde`";
+const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or files relative to the crate, `il!(file = \"plc/motor.il\")` or `il!(files = [\"plc/types.il\", \"plc/tank.il\"])` (one program: a POU may use the TYPEs and FBs of every file), optionally followed by `, serde` and `, std = \"iec2003\"`";
 
-fn parse_input(tokens: TokenStream) -> syn::Result<(Input, bool)> {
+fn parse_input(tokens: TokenStream) -> syn::Result<(Input, Flags)> {
     syn::parse::Parser::parse2(
         |ps: syn::parse::ParseStream| {
             if ps.peek(syn::LitStr) {
@@ -106,13 +125,15 @@ pub fn expand(tokens: TokenStream) -> TokenStream {
 
 fn expand_inner(tokens: TokenStream) -> TokenStream {
     let mut first_line = None;
-    let (input, serde) = match parse_input(tokens) {
-        // syn's own messages ("expected identifier") say nothing about il!.
+    let (input, flags) = match parse_input(tokens) {
+        // syn's own messages ("expected identifier") say nothing about il!;
+        // ours (an unknown standard) do.
+        Err(e) if e.to_string().starts_with("unknown standard") => return e.to_compile_error(),
         Err(e) => return syn::Error::new(e.span(), USAGE).to_compile_error(),
         Ok(x) => x,
     };
     let opts = emit::Options {
-        serde,
+        serde: flags.serde,
         ..Default::default()
     };
     // Each source with the literal its errors point at.
@@ -167,7 +188,9 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
     }
     let checked = sources
         .iter()
-        .fold(Program::new(), |p, (f, _)| p.source(f.clone()))
+        .fold(Program::new().standard(flags.standard), |p, (f, _)| {
+            p.source(f.clone())
+        })
         .check();
     if let Some(emitted) = checked.emit(opts) {
         let mut items = track;
@@ -186,13 +209,13 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
         }
     }
     let files: Vec<&SourceFile> = checked.inputs().iter().map(|i| i.il_text()).collect();
-    let stubs = stubs(&files, opts);
+    let stubs = stubs(&files, opts, flags.standard);
     quote!(#track #errors #stubs)
 }
 
 /// Items with the interfaces of every POU that could be checked, and empty
 /// bodies; emitted only next to `compile_error!`s.
-fn stubs(files: &[&SourceFile], opts: emit::Options) -> TokenStream {
+fn stubs(files: &[&SourceFile], opts: emit::Options, standard: crate::Standard) -> TokenStream {
     let parsed: Vec<_> = files.iter().map(|f| syntax::parse(f)).collect();
     // Files whose syntax errors left no items have nothing to stub.
     let pairs: Vec<_> = files
@@ -204,7 +227,7 @@ fn stubs(files: &[&SourceFile], opts: emit::Options) -> TokenStream {
     if pairs.is_empty() {
         return TokenStream::new();
     }
-    let (programs, diags) = sema::check_all(&pairs);
+    let (programs, diags) = sema::check_all(&pairs, standard);
     let mut program = sema::ir::Program::default();
     for p in programs {
         program.types.extend(p.types);
@@ -295,5 +318,21 @@ mod tests {
             &out[..200.min(out.len())]
         );
         assert!(!out.contains("struct"), "nothing is compiled");
+    }
+
+    #[test]
+    fn std_option_selects_the_standard() {
+        let il = "PROGRAM P\nVAR s : SINT; i : INT; END_VAR\n    LD s\n    ST i\nEND_PROGRAM\n";
+        let plain = expand(quote!(#il)).to_string();
+        assert!(!plain.contains("compile_error"), "{plain}");
+        assert_eq!(expand(quote!(#il, std = "iec2013")).to_string(), plain);
+        let strict = expand(quote!(#il, serde, std = "IEC2003")).to_string();
+        assert!(
+            strict.contains("compile_error") && strict.contains("IL0302"),
+            "{strict}"
+        );
+        assert!(strict.contains("implicit conversion SINT → INT is a 3rd-edition feature"));
+        let bad = expand(quote!(#il, std = "iec1993")).to_string();
+        assert!(bad.contains("unknown standard `iec1993`"), "{bad}");
     }
 }

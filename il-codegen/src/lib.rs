@@ -43,6 +43,7 @@
 mod builder;
 pub mod codes;
 pub mod diag;
+pub mod dialect;
 pub mod plcopen;
 pub mod read;
 
@@ -67,5 +68,6 @@ pub mod syntax;
 #[cfg(feature = "build")]
 pub use builder::{Builder, Error, output_paths, write_if_changed};
 pub use diag::{Diagnostic, SourceFile};
+pub use dialect::Standard;
 pub use emit::Options as EmitOptions;
 pub use pipeline::{Checked, Emitted, Input, Program};

@@ -43,9 +43,10 @@ impl Machine {
         if let Some(en) = en
             && !self.value(f, en, ctx, line)?.as_bool()
         {
-            for (k, place, neg) in outputs {
+            for (k, place, neg, w) in outputs {
                 if Some(*k) == *eno {
-                    self.write(f, place, Value::Bool(*neg), ctx, line)?;
+                    let v = widened(Value::Bool(*neg), w)?;
+                    self.write(f, place, v, ctx, line)?;
                 }
             }
             return self.default_of(ret);
@@ -74,9 +75,9 @@ impl Machine {
         for (place, v) in inouts.iter().zip(back) {
             self.write(f, place, v, ctx, line)?;
         }
-        for (k, place, neg) in outputs {
+        for (k, place, neg, w) in outputs {
             let v = outs.get(*k).cloned().ok_or("internal: output index")?;
-            let v = if *neg { stdfn::not(&v) } else { v };
+            let v = widened(if *neg { stdfn::not(&v) } else { v }, w)?;
             self.write(f, place, v, ctx, line)?;
         }
         Ok(r)
@@ -173,14 +174,14 @@ impl Machine {
         for (p, v) in places.iter().zip(back) {
             self.write(f, p, v, ctx, line)?;
         }
-        for (n, target, neg) in outputs {
+        for (n, target, neg, w) in outputs {
             let mut src = inst.clone();
             src.path.push(PathElem::Field(n.clone()));
             let mut v = self.read(f, &src, ctx, line)?;
             if *neg {
                 v = stdfn::not(&v);
             }
-            self.write(f, target, v, ctx, line)?;
+            self.write(f, target, widened(v, w)?, ctx, line)?;
         }
         Ok(())
     }
@@ -355,5 +356,14 @@ impl Machine {
             outs.into_iter().map(|(_, x)| x).collect(),
             back.into_iter().map(|(_, x)| x).collect(),
         ))
+    }
+}
+
+/// `v` converted by the checker's implicit widening of an output, if any.
+fn widened(v: Value, w: &Option<il_codegen::sema::ir::Widen>) -> Result<Value, String> {
+    match w {
+        Some(w) => stdfn::convert(w.from, w.to, &v)
+            .ok_or_else(|| "internal: a widening the interpreter cannot convert".into()),
+        None => Ok(v),
     }
 }

@@ -2,7 +2,7 @@
 
 use crate::values::Value;
 use crate::{Frame, Machine, STEP_LIMIT, stdfn};
-use il_codegen::sema::ir::{Op, Stmt};
+use il_codegen::sema::ir::{Op, Stmt, Value as IrValue};
 use il_std::{Cycle, FaultKind};
 
 impl Machine {
@@ -73,10 +73,17 @@ impl Machine {
                 value,
                 negate,
             } => {
-                let mut v = self.value(f, value, ctx, line)?;
-                if *negate {
-                    v = stdfn::not(&v);
-                }
+                // As the emitter: STN complements in the CR's type, before a
+                // widening.
+                let v = match (negate, value) {
+                    (true, IrValue::Widen(inner, w)) => {
+                        let x = stdfn::not(&self.value(f, inner, ctx, line)?);
+                        stdfn::convert(w.from, w.to, &x)
+                            .ok_or("internal: a widening the interpreter cannot convert")?
+                    }
+                    (true, v) => stdfn::not(&self.value(f, v, ctx, line)?),
+                    (false, v) => self.value(f, v, ctx, line)?,
+                };
                 // As the emitter: a store outside a subrange (an inline
                 // `INT (0..100)`) is skipped and recorded.
                 if let (Some((lo, hi)), Value::Int(x, _)) = (place.range, &v)

@@ -48,7 +48,13 @@ pub const STEP_LIMIT: u64 = 50_000_000;
 /// same rules as `il!`, build.rs and `ilc`); the error is the rendered
 /// diagnostics.
 pub fn load(file: &SourceFile) -> Result<Program, String> {
+    load_std(file, il_codegen::Standard::default())
+}
+
+/// [`load`] against a standard (`ilc run --std=iec2003`).
+pub fn load_std(file: &SourceFile, standard: il_codegen::Standard) -> Result<Program, String> {
     let diags = match il_codegen::Program::new()
+        .standard(standard)
         .il(file.clone())
         .check()
         .into_ir()

@@ -129,6 +129,12 @@ impl Machine {
                 .get(*i)
                 .cloned()
                 .ok_or("internal: no such save slot")?,
+            // The checker's implicit widening, converted as `FROM_TO_TO` does.
+            IrValue::Widen(inner, w) => {
+                let x = self.value(f, inner, ctx, line)?;
+                crate::stdfn::convert(w.from, w.to, &x)
+                    .ok_or("internal: a widening the interpreter cannot convert")?
+            }
         })
     }
 
@@ -145,6 +151,8 @@ impl Machine {
         for e in &p.path {
             match e {
                 PathElem::Field(n) => steps.push(Step::Field(n.clone())),
+                // `read`/`write` split a partial access off before they get here.
+                PathElem::Part { .. } => {}
                 PathElem::Index { dims, subs } => {
                     let mut flat: Option<usize> = Some(0);
                     for (s, (lo, hi)) in subs.iter().zip(dims) {
@@ -188,6 +196,10 @@ impl Machine {
         ctx: &mut Cycle,
         line: u32,
     ) -> Result<Value, String> {
+        if let Some((whole_place, _, part, index)) = p.split_part() {
+            let w = self.read(f, &whole_place, ctx, line)?;
+            return Ok(part_read(&w, part, index));
+        }
         if let Root::Addr(l) = &p.root {
             return Ok(io_read(ctx, l));
         }
@@ -217,6 +229,12 @@ impl Machine {
         ctx: &mut Cycle,
         line: u32,
     ) -> Result<(), String> {
+        if let Some((whole_place, whole, part, index)) = p.split_part() {
+            // As the emitter: read the whole, replace the part, write it back.
+            let w = self.read(f, &whole_place, ctx, line)?;
+            let new = part_write(&w, &v, whole, part, index);
+            return self.write(f, &whole_place, new, ctx, line);
+        }
         if let Root::Addr(l) = &p.root {
             io_write(ctx, l, &v);
             return Ok(());
@@ -253,4 +271,41 @@ pub(crate) fn self_root<'a>(f: &'a mut Frame, r: &Root) -> Result<&'a mut Value,
             .ok_or_else(|| "internal: bad variable".into()),
         Root::Addr(_) => Err("internal: process image is not an instance".into()),
     }
+}
+
+/// The mask of a part's bits and its shift in the whole.
+fn part_mask(part: Elem, index: u32) -> (u64, u32) {
+    let bits = PathElem::part_bits(part);
+    let mask = if bits >= 64 {
+        u64::MAX
+    } else {
+        (1u64 << bits) - 1
+    };
+    (mask, index * bits)
+}
+
+fn raw_bits(v: &Value) -> u64 {
+    match v {
+        Value::Int(x, _) => *x as u64,
+        Value::Bool(b) => u64::from(*b),
+        other => other.as_i64() as u64,
+    }
+}
+
+/// Part `index` of `w` (a partial access, `v.3` / `v.%B1`).
+fn part_read(w: &Value, part: Elem, index: u32) -> Value {
+    let (mask, shift) = part_mask(part, index);
+    let x = (raw_bits(w) >> shift) & mask;
+    if part == Elem::BOOL {
+        Value::Bool(x != 0)
+    } else {
+        Value::Int(x as i128, part)
+    }
+}
+
+/// `w` (of type `whole`) with part `index` replaced by `v`.
+fn part_write(w: &Value, v: &Value, whole: Elem, part: Elem, index: u32) -> Value {
+    let (mask, shift) = part_mask(part, index);
+    let x = (raw_bits(w) & !(mask << shift)) | ((raw_bits(v) & mask) << shift);
+    Value::Int(crate::values::wrap(x as i128, whole), whole)
 }

@@ -1,11 +1,11 @@
-// Stub: a FUNCTION whose body has a type mistake (ADD of INT and REAL);
+// Stub: a FUNCTION whose body has a type mistake (ADD of DINT and REAL);
 // `main` calls it. Only the IL error may appear.
 use il_std::Cycle;
 
 il_macros::il!(r#"
 FUNCTION SCALE : INT
 VAR_INPUT
-    raw : INT;
+    raw : DINT;
     gain : REAL;
 END_VAR
     LD raw

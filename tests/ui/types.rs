@@ -102,13 +102,14 @@ END_VAR
 END_FUNCTION_BLOCK
 "#); }
 
-// Types: LD of an INT, then ADD of a REAL (no implicit conversion in IEC 61131-3).
-mod type_mismatch_int_add_real { il_macros::il!(r#"
+// Types: LD of a DINT, then ADD of a REAL (DINT → REAL loses precision, so
+// it is no implicit conversion; INT → REAL would be).
+mod type_mismatch_dint_add_real { il_macros::il!(r#"
 FUNCTION_BLOCK Fb
 VAR
-    count : INT;
+    count : DINT;
     gain : REAL;
-    total : INT;
+    total : DINT;
 END_VAR
     LD count
     ADD gain

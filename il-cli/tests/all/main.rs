@@ -4,6 +4,7 @@
 
 mod cli;
 mod corpus;
+mod dialect;
 mod docs;
 mod explain;
 mod lsp;

@@ -312,8 +312,16 @@ pub enum Accessor {
     Field(Ident),
     /// Subscripts: literals, variables or direct addresses.
     Index(Vec<Operand>, Span),
-    /// `.%X3` / `.3` bit access on a bit string (3rd edition).
-    Bit(u32, Span),
+    /// Partial access (3rd edition): `.3` (size `Default`), `.%X3`, `.%B1`,
+    /// `.%W0`, `.%D1`: the `index`-th bit, byte, word or double word.
+    Part {
+        /// `Default` for `.3`, else the letter after `%`.
+        size: AddrSize,
+        /// Which part, counted from the least significant one.
+        index: u32,
+        /// The number (and `%X` etc.).
+        span: Span,
+    },
 }
 
 /// The memory area of a direct address.

@@ -314,8 +314,18 @@ impl PouEmitter<'_> {
                 value,
                 negate,
             } => {
-                let v = self.value(value, line);
-                let v = if *negate { quote!(!#v) } else { v };
+                // STN complements in the CR's type, before a widening.
+                let v = match (negate, value) {
+                    (true, Value::Widen(inner, w)) => {
+                        let v = self.value(inner, line);
+                        super::values::widened(quote!(!#v), &Some(*w))
+                    }
+                    (true, v) => {
+                        let v = self.value(v, line);
+                        quote!(!#v)
+                    }
+                    (false, v) => self.value(v, line),
+                };
                 match (&place.range, place.ty.elem()) {
                     // A subrange store outside the bounds is skipped and recorded.
                     (Some((lo, hi)), Some(e)) => {
@@ -380,10 +390,11 @@ impl PouEmitter<'_> {
                         let v = self.value(v, line);
                         quote!(#path.#f = #v;)
                     });
-                    let outs = outputs.iter().map(|(n, target, neg)| {
+                    let outs = outputs.iter().map(|(n, target, neg, w)| {
                         let f = super::rust_ident(n);
                         let v = quote!(#path.#f);
-                        self.write(target, if *neg { quote!(!#v) } else { v }, line)
+                        let v = super::values::widened(if *neg { quote!(!#v) } else { v }, w);
+                        self.write(target, v, line)
                     });
                     return self.cond(
                         cond,
@@ -415,11 +426,12 @@ impl PouEmitter<'_> {
                     line,
                 );
                 let call = quote!(#io_lets #call #io_back);
-                let outs = outputs.iter().map(|(n, target, neg)| {
+                let outs = outputs.iter().map(|(n, target, neg, w)| {
                     let mut src = inst.clone();
                     src.path.push(crate::sema::ir::PathElem::Field(n.clone()));
                     let v = self.read(&src, line);
-                    self.write(target, if *neg { quote!(!#v) } else { v }, line)
+                    let v = super::values::widened(if *neg { quote!(!#v) } else { v }, w);
+                    self.write(target, v, line)
                 });
                 self.cond(cond, line, quote!({ #(#lets)* #call #(#outs)* }))
             }

@@ -11,7 +11,7 @@
 #[cfg(feature = "build")]
 mod file;
 mod input;
-mod snippet;
+pub mod snippet;
 
 pub use input::{Input, is_xml_name};
 
@@ -25,6 +25,7 @@ use proc_macro2::TokenStream;
 #[derive(Clone, Debug, Default)]
 pub struct Program {
     inputs: Vec<Input>,
+    standard: crate::dialect::Standard,
 }
 
 impl Program {
@@ -66,18 +67,37 @@ impl Program {
         &self.inputs
     }
 
+    /// Check against this standard (default [`Standard::Iec2013`]:
+    /// 3rd-edition and vendor forms are accepted; [`Standard::Iec2003`]
+    /// refuses each of them).
+    ///
+    /// [`Standard::Iec2013`]: crate::Standard::Iec2013
+    /// [`Standard::Iec2003`]: crate::Standard::Iec2003
+    pub fn standard(mut self, standard: crate::dialect::Standard) -> Self {
+        self.standard = standard;
+        self
+    }
+
     /// Parse and check every input.
     pub fn check(self) -> Checked {
         let files: Vec<&SourceFile> = self.inputs.iter().map(Input::il_text).collect();
-        let (units, mut diags): (Vec<_>, Vec<Vec<Diagnostic>>) =
-            files.iter().map(|f| syntax::parse(f)).unzip();
+        let (units, mut diags): (Vec<_>, Vec<Vec<Diagnostic>>) = files
+            .iter()
+            .map(|f| syntax::parse_std(f, self.standard))
+            .unzip();
         // Files with syntax errors stay out of the semantic check (it would
-        // mostly repeat them); the others are checked together.
+        // mostly repeat them); the others are checked together. A pragma
+        // refused by the strict standard is no damage to the syntax tree, so
+        // such a file is still checked (and gets its other refusals too).
         let clean: Vec<usize> = (0..files.len())
-            .filter(|&i| !has_errors(&diags[i]))
+            .filter(|&i| {
+                !diags[i]
+                    .iter()
+                    .any(|d| d.is_error() && d.code != crate::dialect::codes::PRAGMA)
+            })
             .collect();
         let pairs: Vec<_> = clean.iter().map(|&i| (files[i], &units[i])).collect();
-        let (programs, more) = sema::check_all(&pairs);
+        let (programs, more) = sema::check_all(&pairs, self.standard);
         let mut ir: Vec<sema::ir::Program> = files.iter().map(|_| Default::default()).collect();
         for ((&i, p), m) in clean.iter().zip(programs).zip(more) {
             ir[i] = p;

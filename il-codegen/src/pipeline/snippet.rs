@@ -116,7 +116,7 @@ impl Snippet {
 
     /// A span of the wrapped text in the file (the added lines map to its
     /// start and end).
-    fn to_file(&self, s: Span) -> Span {
+    pub fn to_file(&self, s: Span) -> Span {
         let len = self.file.text.len();
         let f = |o: u32| (o.saturating_sub(self.prefix) as usize).min(len);
         Span::new(f(s.lo), f(s.hi))

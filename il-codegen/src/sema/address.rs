@@ -29,6 +29,7 @@ pub fn parse_address(text: &str) -> Result<Loc, String> {
     let mut cx = Cx {
         file: &file,
         diags: Vec::new(),
+        standard: Default::default(),
     };
     match resolve_addr(&mut cx, &addr, None) {
         Some(l) if cx.diags.is_empty() => Ok(l),

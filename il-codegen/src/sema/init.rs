@@ -27,7 +27,23 @@ pub(crate) fn init_value(
 ) -> Option<Init> {
     match (init, ty) {
         (Initializer::Simple(Operand::Lit(lit)), Ty::Elem(_) | Ty::Str { .. }) => {
-            match coerce(&lit_class(lit), ty) {
+            let class = lit_class(lit);
+            // 3rd edition: a typed literal of a narrower type (`x : DINT := INT#5`).
+            let widened = match (&class, ty) {
+                (LitClass::Typed(c), Ty::Elem(e)) if c.ty() != *ty => {
+                    super::widen::widen_const(c, *e).inspect(|_| {
+                        cx.feature(
+                            crate::dialect::Feature::Widening {
+                                from: c.ty().to_string(),
+                                to: ty.to_string(),
+                            },
+                            lit.span,
+                        )
+                    })
+                }
+                _ => None,
+            };
+            match widened.map_or_else(|| coerce(&class, ty), Ok) {
                 Ok(Const::Int(v, e)) if range.is_some_and(|(lo, hi)| v < lo || v > hi) => {
                     let (lo, hi) = range.unwrap_or_default();
                     cx.err(

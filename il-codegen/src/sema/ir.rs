@@ -407,6 +407,47 @@ pub enum PathElem {
         /// One subscript per dimension; the emitter checks them against `dims`.
         subs: Vec<Value>,
     },
+    /// A part of an integer or bit string (3rd edition: `v.3`, `v.%B1`):
+    /// always the last step. The checker proved `(index + 1) * bits(part)`
+    /// is at most the width of `whole`, so reading shifts and masks, and
+    /// writing reads the whole, replaces the part and writes the whole back.
+    Part {
+        /// The type of the place the part is taken from.
+        whole: Elem,
+        /// BOOL (a bit), BYTE, WORD or DWORD.
+        part: Elem,
+        /// Which part, counted in parts from the least significant.
+        index: u32,
+    },
+}
+
+impl PathElem {
+    /// Bits of the types a [`PathElem::Part`] joins: 1 for BOOL, 8 to 64
+    /// for the integers and bit strings.
+    pub fn part_bits(e: Elem) -> u32 {
+        use Elem::*;
+        match e {
+            BOOL => 1,
+            SINT | USINT | BYTE => 8,
+            INT | UINT | WORD => 16,
+            DINT | UDINT | DWORD => 32,
+            _ => 64,
+        }
+    }
+}
+
+impl Place {
+    /// A place ending in a partial access: the place of the whole and the
+    /// part (`None` for any other place).
+    pub fn split_part(&self) -> Option<(Place, Elem, Elem, u32)> {
+        let Some(PathElem::Part { whole, part, index }) = self.path.last() else {
+            return None;
+        };
+        let mut p = self.clone();
+        p.path.pop();
+        p.ty = Ty::Elem(*whole);
+        Some((p, *whole, *part, *index))
+    }
 }
 
 /// Something to read.
@@ -420,6 +461,19 @@ pub enum Value {
     Read(Place),
     /// A saved outer CR of a deferred parenthesis.
     Saved(usize, Ty),
+    /// A value converted implicitly to a wider type (3rd edition).
+    Widen(Box<Value>, Widen),
+}
+
+/// An implicit widening conversion the checker applied (from its one table,
+/// [`super::widen::widens`]): lossless, so the emitter and the interpreter
+/// convert as the `FROM_TO_TO` function does and never fail.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Widen {
+    /// The value's type.
+    pub from: Elem,
+    /// The type it becomes.
+    pub to: Elem,
 }
 
 /// A computation whose result becomes the CR.
@@ -474,8 +528,9 @@ pub enum Expr {
         args: Vec<Value>,
         /// The types of all its VAR_OUTPUTs, in declaration order.
         out_types: Vec<Ty>,
-        /// The outputs read with `=>`: (index into `out_types`, target, complemented).
-        outputs: Vec<(usize, Place, bool)>,
+        /// The outputs read with `=>`: (index into `out_types`, target,
+        /// complemented, widened to the target's type).
+        outputs: Vec<(usize, Place, bool, Option<Widen>)>,
     },
     /// A call of an il-std function.
     CallStd {
@@ -548,7 +603,8 @@ pub enum Op {
         place: Place,
         /// The value stored (usually the CR).
         value: Value,
-        /// `STN`: store the complement.
+        /// `STN`: store the complement, taken in the CR's type: when
+        /// `value` is a [`Value::Widen`], before the widening.
         negate: bool,
     },
     /// S / R on a BOOL: `if cond { place = value }`.
@@ -566,8 +622,9 @@ pub enum Op {
         inst: Place,
         /// Inputs set before the call: (input name, value).
         inputs: Vec<(String, Value)>,
-        /// Outputs copied after the call: (output name, target, complemented).
-        outputs: Vec<(String, Place, bool)>,
+        /// Outputs copied after the call: (output name, target, complemented,
+        /// widened to the target's type).
+        outputs: Vec<(String, Place, bool, Option<Widen>)>,
         /// Places bound to the FB's VAR_IN_OUTs, in their declaration order.
         inouts: Vec<Place>,
         /// The FB's (non-located) VAR_EXTERNALs, in declaration order: the

@@ -19,6 +19,7 @@ pub(crate) mod size;
 mod stdfb;
 mod stdfn;
 pub mod types;
+pub mod widen;
 
 use crate::ast::{self, Span};
 use crate::diag::{Diagnostic, SourceFile};
@@ -29,7 +30,7 @@ pub use codes::CODES;
 /// checked) and the diagnostics; the program may be emitted only when no
 /// diagnostic is an error.
 pub fn check(file: &SourceFile, unit: &ast::CompilationUnit) -> (ir::Program, Vec<Diagnostic>) {
-    let (mut programs, mut diags) = check_all(&[(file, unit)]);
+    let (mut programs, mut diags) = check_all(&[(file, unit)], Default::default());
     (
         programs.pop().unwrap_or_default(),
         diags.pop().unwrap_or_default(),
@@ -37,15 +38,18 @@ pub fn check(file: &SourceFile, unit: &ast::CompilationUnit) -> (ir::Program, Ve
 }
 
 /// Check several files as one program (a FUNCTION_BLOCK of one file used in
-/// another). Returns one program and one diagnostic list per file.
+/// another) against a standard. Returns one program and one diagnostic
+/// list per file.
 pub fn check_all(
     units: &[(&SourceFile, &ast::CompilationUnit)],
+    standard: crate::dialect::Standard,
 ) -> (Vec<ir::Program>, Vec<Vec<Diagnostic>>) {
     let mut cxs: Vec<Cx> = units
         .iter()
         .map(|(file, _)| Cx {
             file,
             diags: Vec::new(),
+            standard,
         })
         .collect();
     let asts: Vec<&ast::CompilationUnit> = units.iter().map(|(_, u)| *u).collect();
@@ -97,9 +101,17 @@ pub fn check_all(
 pub(crate) struct Cx<'a> {
     pub file: &'a SourceFile,
     pub diags: Vec<Diagnostic>,
+    /// Under the 2nd edition each 3rd-edition form is an error ([`Cx::feature`]).
+    pub standard: crate::dialect::Standard,
 }
 
 impl Cx<'_> {
+    /// A 3rd-edition form is used at `span`: an error under the 2nd edition.
+    pub fn feature(&mut self, feature: crate::dialect::Feature, span: Span) {
+        if let Some(d) = self.standard.refuse(feature, span) {
+            self.diags.push(d);
+        }
+    }
     pub fn line(&self, span: Span) -> u32 {
         self.file.line_of(span.lo) as u32
     }

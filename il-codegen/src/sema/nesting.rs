@@ -188,6 +188,7 @@ mod tests {
         let mut cxs = vec![Cx {
             file: &file,
             diags: Vec::new(),
+            standard: Default::default(),
         }];
         let env = super::super::decls::collect(&mut cxs, &[&unit]);
         check_nesting(&mut cxs, &env, &[&unit]);

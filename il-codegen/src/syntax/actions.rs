@@ -46,9 +46,11 @@ pub fn instr(kind: InstrKind, lo: usize, op_hi: usize, hi: usize) -> Instr {
 
 pub fn bit_access(ctx: &mut Ctx, l: Literal) -> Accessor {
     match l.kind {
-        LitKind::Int(n) if (0..=63).contains(&n) && l.type_prefix.is_none() => {
-            Accessor::Bit(n as u32, l.span)
-        }
+        LitKind::Int(n) if (0..=63).contains(&n) && l.type_prefix.is_none() => Accessor::Part {
+            size: AddrSize::Default,
+            index: n as u32,
+            span: l.span,
+        },
         _ => {
             ctx.diags.push(
                 Diagnostic::error(
@@ -58,7 +60,11 @@ pub fn bit_access(ctx: &mut Ctx, l: Literal) -> Accessor {
                 )
                 .with_label("not a field or bit"),
             );
-            Accessor::Bit(0, l.span)
+            Accessor::Part {
+                size: AddrSize::Default,
+                index: 0,
+                span: l.span,
+            }
         }
     }
 }

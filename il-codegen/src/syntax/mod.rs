@@ -25,6 +25,15 @@ pub static CODES: &[CodeInfo] = code::CODES;
 /// Parse a whole file. Always returns a tree (possibly partial) and every
 /// syntax diagnostic of the file, sorted by position.
 pub fn parse(file: &SourceFile) -> (CompilationUnit, Vec<Diagnostic>) {
+    parse_std(file, crate::dialect::Standard::default())
+}
+
+/// [`parse`] against a standard: under the 2nd edition the 3rd-edition
+/// forms the front end recognises (pragmas) are errors.
+pub fn parse_std(
+    file: &SourceFile,
+    standard: crate::dialect::Standard,
+) -> (CompilationUnit, Vec<Diagnostic>) {
     if file.text.len() > u32::MAX as usize {
         let d = Diagnostic::error(
             code::TOO_LARGE,
@@ -35,7 +44,7 @@ pub fn parse(file: &SourceFile) -> (CompilationUnit, Vec<Diagnostic>) {
         .with_help("split the program into several files");
         return (CompilationUnit::default(), vec![d]);
     }
-    let (toks, mut diags) = lexer::lex(&file.text);
+    let (toks, mut diags) = lexer::lex_std(&file.text, standard);
     let mut ctx = actions::Ctx::default();
     let result = grammar::UnitParser::new().parse(&mut ctx, toks.iter().cloned());
     let unit = match result {

@@ -6,6 +6,7 @@ mod checked;
 mod syntax_common;
 
 mod corpus_configurations;
+mod dialect;
 mod front_end_robustness;
 mod golden_emit;
 mod plcopen_corpus;

@@ -36,7 +36,7 @@ fn a_pending_call_reaching_a_label_takes_its_default_type() {
         e,
         [(
             "IL0106".to_string(),
-            "`x` is INT, but the current result is DINT".to_string()
+            "`x` is INT, but the current result is DINT; narrowing is never implicit: convert with DINT_TO_INT".to_string()
         )]
     );
     assert_eq!(

@@ -205,7 +205,14 @@ fn operands_with_paths_indexes_and_bits() {
             assert!(v.base.is("a"));
             assert_eq!(v.path.len(), 4);
             assert!(matches!(&v.path[1], Accessor::Index(ix, _) if ix.len() == 2));
-            assert!(matches!(v.path[3], Accessor::Bit(3, _)));
+            assert!(matches!(
+                v.path[3],
+                Accessor::Part {
+                    size: AddrSize::Default,
+                    index: 3,
+                    ..
+                }
+            ));
         }
         other => panic!("{other:?}"),
     }

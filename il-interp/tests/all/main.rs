@@ -7,6 +7,7 @@
 //! addresses in the process image).
 
 mod addresses;
+mod dialect;
 mod plc;
 mod plcopen;
 mod smoke;

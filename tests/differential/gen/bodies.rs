@@ -377,6 +377,7 @@ impl Pou<'_> {
                 self.label(&l);
             }
             7 if !self.enums.is_empty() && self.rng.chance(60) => self.enum_block(),
+            7 if self.rng.chance(50) => self.dialect_block(types),
             6 if depth == 0 && !self.in_function && self.rng.chance(15) => {
                 self.bool_cond();
                 let r = *self.rng.pick(&["RETC", "RETCN", "RETNC"]);

@@ -14,6 +14,7 @@
 #![allow(dead_code)]
 
 mod bodies;
+mod dialect;
 mod user;
 
 /// xorshift64*.

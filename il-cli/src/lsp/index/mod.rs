@@ -279,6 +279,7 @@ impl Builder<'_> {
         match self.input {
             Input::Il(_) => s,
             Input::PlcOpen(i) => i.map.to_xml(s),
+            Input::Snippet(n) => n.to_file(s),
         }
     }
 

@@ -183,7 +183,7 @@ impl Builder<'_> {
                         self.operand(ix, pou, o);
                     }
                 }
-                Accessor::Bit(..) => ty = None,
+                Accessor::Part { .. } => ty = None,
             }
         }
         ty

@@ -9,7 +9,7 @@ impl PouEmitter<'_> {
         name: &str,
         args: &[Value],
         inouts: &[Place],
-        outputs: &[(usize, Place, bool)],
+        outputs: &[(usize, Place, bool, Option<Widen>)],
         out_types: &[Ty],
         line: u32,
     ) -> TokenStream {
@@ -50,9 +50,9 @@ impl PouEmitter<'_> {
             let d = default_value(t);
             quote!(let mut #id: #ty = #d;)
         });
-        let stores = outputs.iter().map(|(k, place, neg)| {
+        let stores = outputs.iter().map(|(k, place, neg, w)| {
             let id = &ids[*k];
-            let v = if *neg { quote!(!#id) } else { quote!(#id) };
+            let v = widened(if *neg { quote!(!#id) } else { quote!(#id) }, w);
             self.write(place, v, line)
         });
         quote!({

@@ -82,9 +82,10 @@ impl PouEmitter<'_> {
                 let eno_false =
                     outputs
                         .iter()
-                        .filter(|(k, _, _)| Some(*k) == *eno)
-                        .map(|(_, place, neg)| {
-                            self.write(place, if *neg { quote!(true) } else { quote!(false) }, line)
+                        .filter(|(k, ..)| Some(*k) == *eno)
+                        .map(|(_, place, neg, w)| {
+                            let v = widened(if *neg { quote!(true) } else { quote!(false) }, w);
+                            self.write(place, v, line)
                         });
                 quote!(if #en { #call } else { #(#eno_false)* #d })
             }

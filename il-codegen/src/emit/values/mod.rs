@@ -5,7 +5,7 @@
 use super::{PouEmitter, item_ident, local_ident, rust_ident, rust_ty};
 use crate::ast::Area;
 use crate::sema::ir::{
-    BinOp, Const, Expr, Init, Loc, PathElem, Place, Root, StdCall, Storage, Value,
+    BinOp, Const, Expr, Init, Loc, PathElem, Place, Root, StdCall, Storage, Value, Widen,
 };
 use crate::sema::types::{Elem, Ty};
 use il_std::FaultKind;
@@ -19,3 +19,16 @@ mod places;
 
 pub(crate) use constants::{constant, cr_ident, default_value, heap_init_value, init_value};
 pub(crate) use places::{area, io_read, io_write};
+
+/// `v` converted by the checker's implicit widening, if it recorded one:
+/// every widening of its table is a `From` in Rust (`i32::from(i16)`,
+/// `u8::from(bool)`, `f64::from(u32)`, `LTIME::from(TIME)`).
+pub(crate) fn widened(v: TokenStream, w: &Option<Widen>) -> TokenStream {
+    match w {
+        Some(w) => {
+            let to = w.to.rust();
+            quote!(<#to>::from(#v))
+        }
+        None => v,
+    }
+}

@@ -39,6 +39,7 @@ impl PouEmitter<'_> {
                 let id = format_ident!("__save_{}", i);
                 quote!(#id)
             }
+            Value::Widen(inner, w) => widened(self.value(inner, line), &Some(*w)),
         }
     }
 
@@ -148,6 +149,8 @@ impl PouEmitter<'_> {
                         at_binding = true;
                     }
                 }
+                // `read`/`write` split a partial access off before they get here.
+                PathElem::Part { .. } => {}
             }
         }
         // `__pK` alone is a reference; with a path after it, auto-deref applies.
@@ -174,7 +177,7 @@ impl PouEmitter<'_> {
             PathElem::Index { dims, subs } => subs.iter().zip(dims).any(|(s, &(lo, hi))| {
                 !matches!(s, Value::Const(Const::Int(n, _)) if *n >= lo as i128 && *n <= hi as i128)
             }),
-            PathElem::Field(_) => false,
+            PathElem::Field(_) | PathElem::Part { .. } => false,
         }
         })
     }
@@ -185,6 +188,7 @@ impl PouEmitter<'_> {
     pub(super) fn inline_subscript(&self, s: &Value, p: &Place, first: bool) -> bool {
         match s {
             Value::Cr(_) | Value::Const(_) | Value::Saved(..) => true,
+            Value::Widen(v, _) => self.inline_subscript(v, p, first),
             Value::Read(q) => {
                 !Self::has_index(q)
                     && (first || q.root != p.root)
@@ -205,6 +209,11 @@ impl PouEmitter<'_> {
     }
 
     pub(crate) fn read(&self, p: &Place, line: u32) -> TokenStream {
+        if let Some((whole_place, whole, part, index)) = p.split_part() {
+            let w = self.read(&whole_place, line);
+            let _ = whole;
+            return part_read(w, part, index);
+        }
         if let Root::Addr(l) = &p.root {
             return io_read(l);
         }
@@ -218,6 +227,12 @@ impl PouEmitter<'_> {
 
     /// Store `value` (already evaluated tokens) into a place.
     pub(crate) fn write(&self, p: &Place, value: TokenStream, line: u32) -> TokenStream {
+        if let Some((whole_place, whole, part, index)) = p.split_part() {
+            // Read the whole, replace the part, write the whole back.
+            let w = self.read(&whole_place, line);
+            let new = part_write(w, value, whole, part, index);
+            return self.write(&whole_place, new, line);
+        }
         if let Root::Addr(l) = &p.root {
             return io_write(l, value);
         }
@@ -276,6 +291,7 @@ pub(super) fn value_elem(v: &Value) -> Option<Elem> {
         Value::Cr(t) | Value::Saved(_, t) => t.elem(),
         Value::Const(c) => c.ty().elem(),
         Value::Read(p) => p.ty.elem(),
+        Value::Widen(_, w) => Some(w.to),
     }
 }
 
@@ -349,4 +365,56 @@ pub(crate) fn io_write(l: &Loc, v: TokenStream) -> TokenStream {
         _ => (quote!(set_lword), quote!(__v as u64)),
     };
     quote!({ let __v: #ty = #v; __ctx.io.#set(#a, #b, #conv); })
+}
+
+/// A `u64` mask as a hex literal (what a reader of the generated code expects).
+fn hex(v: u64) -> Literal {
+    format!("{v:#x}u64")
+        .parse()
+        .unwrap_or_else(|_| Literal::u64_suffixed(v))
+}
+
+/// The mask of a part's bits and its shift in the whole.
+fn part_mask(part: Elem, index: u32) -> (u64, u32) {
+    let bits = PathElem::part_bits(part);
+    let mask = if bits >= 64 {
+        u64::MAX
+    } else {
+        (1u64 << bits) - 1
+    };
+    (mask, index * bits)
+}
+
+/// Part `index` of the value `w` of type `whole`: a shift and a mask in
+/// `u64` (the checker proved the part lies inside the whole, so neither
+/// can overflow).
+pub(super) fn part_read(w: TokenStream, part: Elem, index: u32) -> TokenStream {
+    let (mask, shift) = part_mask(part, index);
+    let shift = Literal::u32_unsuffixed(shift);
+    if part == Elem::BOOL {
+        return quote!({ let __w = #w; ((__w as u64 >> #shift) & 1) != 0 });
+    }
+    let mask = hex(mask);
+    let t = part.rust();
+    quote!({ let __w = #w; ((__w as u64 >> #shift) & #mask) as #t })
+}
+
+/// The value `w` of type `whole` with part `index` replaced by `v`.
+pub(super) fn part_write(
+    w: TokenStream,
+    v: TokenStream,
+    whole: Elem,
+    part: Elem,
+    index: u32,
+) -> TokenStream {
+    let (mask, shift) = part_mask(part, index);
+    let keep = hex(!(mask << shift));
+    let mask = hex(mask);
+    let shift = Literal::u32_unsuffixed(shift);
+    let t = whole.rust();
+    quote!({
+        let __w = #w;
+        let __v = #v;
+        ((__w as u64 & #keep) | ((__v as u64 & #mask) << #shift)) as #t
+    })
 }

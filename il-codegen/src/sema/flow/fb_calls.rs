@@ -117,6 +117,14 @@ impl Walk<'_, '_> {
             return None;
         }
         let place = self.place_of(o, true)?;
+        if place.split_part().is_some() {
+            self.err(
+                BAD_IN_OUT,
+                o.span(),
+                format!("`{name}` is a VAR_IN_OUT of {callee}: a part of a variable (`x.3`) cannot be passed by reference"),
+            );
+            return None;
+        }
         if &place.ty != ty {
             self.err(
                 BAD_IN_OUT,
@@ -140,7 +148,7 @@ impl Walk<'_, '_> {
         span: Span,
     ) -> (
         Vec<(String, Value)>,
-        Vec<(String, Place, bool)>,
+        Vec<(String, Place, bool, Option<ir::Widen>)>,
         Vec<(String, Place)>,
     ) {
         let mut ins = Vec::new();
@@ -215,14 +223,9 @@ impl Walk<'_, '_> {
                             let Some(place) = self.place_of(target, true) else {
                                 continue;
                             };
-                            if place.ty != ty {
-                                self.err(
-                                    TYPE_MISMATCH,
-                                    target.span(),
-                                    format!("`{name}` is {ty}, the variable is {}", place.ty),
-                                );
+                            let Ok(w) = self.output_fit(&name, &ty, &place, target.span()) else {
                                 continue;
-                            }
+                            };
                             if *negate && !ty.is_logic() {
                                 self.err(
                                     BAD_OPERATOR_TYPE,
@@ -233,7 +236,7 @@ impl Walk<'_, '_> {
                                 );
                                 continue;
                             }
-                            outs.push((name, place, *negate));
+                            outs.push((name, place, *negate, w));
                         }
                     }
                 }

@@ -225,18 +225,12 @@ impl Walk<'_, '_> {
                                 let Some(place) = self.place_of(target, true) else {
                                     continue;
                                 };
-                                if place.ty != ty {
-                                    self.err(
-                                        TYPE_MISMATCH,
-                                        target.span(),
-                                        format!(
-                                            "`{}` is {ty}, the variable is {}",
-                                            p.name, place.ty
-                                        ),
-                                    );
+                                let Ok(w) =
+                                    self.output_fit(&p.name.name, &ty, &place, target.span())
+                                else {
                                     continue;
-                                }
-                                outputs.push((k, place, *negate));
+                                };
+                                outputs.push((k, place, *negate, w));
                             }
                             _ => {}
                         }

@@ -336,6 +336,30 @@ impl Walk<'_, '_> {
         self.col = col as u32;
     }
 
+    /// A 3rd-edition form at `span` (an error under the 2nd edition).
+    fn feature(&mut self, feature: crate::dialect::Feature, span: Span) {
+        if self.final_pass {
+            self.cx.feature(feature, span);
+        }
+    }
+
+    /// `value` of type `from` widened to `to` (3rd edition), when the
+    /// table has that widening.
+    fn widen(&mut self, value: Value, from: &Ty, to: &Ty, span: Span) -> Option<Value> {
+        let w = super::widen::widening(from, to)?;
+        self.feature(
+            crate::dialect::Feature::Widening {
+                from: from.to_string(),
+                to: to.to_string(),
+            },
+            span,
+        );
+        Some(match value {
+            Value::Const(c) => Value::Const(super::widen::widen_const(&c, w.to)?),
+            v => Value::Widen(Box::new(v), w),
+        })
+    }
+
     fn push(&mut self, op: Op) {
         if let Op::SetCr { ty, .. } = &op
             && !self.cr_types.contains(ty)

@@ -85,15 +85,36 @@ impl Walk<'_, '_> {
             });
             return Cr::Val(Ty::Elem(*te));
         }
+        // A typed literal of another type meets the CR like a typed value
+        // (`LD int_v / ADD DINT#5` widens the CR to DINT).
+        let typed = |a: Arg, other: &Arg| match (a, other) {
+            (Arg::Lit(LitClass::Typed(c), _), Arg::Typed(_, t)) if c.ty() != *t => {
+                let ty = c.ty();
+                Arg::Typed(Value::Const(c), ty)
+            }
+            (a, _) => a,
+        };
+        let rhs = typed(rhs, &lhs);
+        let lhs = typed(lhs, &rhs);
         let (ty, lv, rv) = match (lhs, rhs) {
             (Arg::Typed(lv, t), Arg::Typed(rv, u)) => {
-                if t != u {
+                if t == u {
+                    (t, lv, rv)
+                } else if let Some(w) = super::super::widen::wider(&t, &u) {
+                    // 3rd edition: both sides go to the wider type, and so does the CR.
+                    let (Some(lv), Some(rv)) = (
+                        self.widen_to(lv, &t, &w, span),
+                        self.widen_to(rv, &u, &w, span),
+                    ) else {
+                        return bad;
+                    };
+                    (w, lv, rv)
+                } else {
                     if let Some(d) = self.err(TYPE_MISMATCH, span, format!("{} of {t} and {u}: the current result and the operand must have the same type", op.name())) {
                         d.help = conversion_hint(&u, &t);
                     }
                     return bad;
                 }
-                (t, lv, rv)
             }
             (Arg::Typed(lv, t), Arg::Lit(l, s)) => match self.lit_value(&l, &t, s, TYPE_MISMATCH) {
                 Some(v) => (t, lv, v),
@@ -126,6 +147,17 @@ impl Walk<'_, '_> {
             },
         });
         Cr::Val(res)
+    }
+}
+
+impl Walk<'_, '_> {
+    /// `v` of type `t` as a value of `to` (`t` itself, or widened).
+    fn widen_to(&mut self, v: Value, t: &Ty, to: &Ty, span: Span) -> Option<Value> {
+        if t == to {
+            Some(v)
+        } else {
+            self.widen(v, t, to, span)
+        }
     }
 }
 

@@ -204,13 +204,24 @@ impl Walk<'_, '_> {
                     path.push(PathElem::Index { dims, subs: vals });
                     ty = elem;
                 }
-                Accessor::Bit(_, span) => {
-                    self.err(
-                        UNSUPPORTED,
-                        *span,
-                        "bit access (`x.3`) is not supported yet",
-                    );
-                    return None;
+                Accessor::Part { size, index, span } => {
+                    let (whole, part) = self.part_of(v, &ty, *size, *index, *span)?;
+                    if write && range.is_some() {
+                        // Writing a bit could leave the subrange.
+                        self.err(
+                            BAD_PART,
+                            *span,
+                            format!("`{}` is a subrange: its parts cannot be written", v.base),
+                        );
+                        return None;
+                    }
+                    range = None;
+                    path.push(PathElem::Part {
+                        whole,
+                        part,
+                        index: *index,
+                    });
+                    ty = Ty::Elem(part);
                 }
             }
         }
@@ -239,6 +250,59 @@ impl Walk<'_, '_> {
             ty,
             range,
         })
+    }
+
+    /// The types of a partial access `.n` / `.%Xn` / `.%Bn` ... of a place
+    /// of type `ty`: (whole, part), checked against the width.
+    fn part_of(
+        &mut self,
+        v: &VarRef,
+        ty: &Ty,
+        size: ast::AddrSize,
+        index: u32,
+        span: Span,
+    ) -> Option<(Elem, Elem)> {
+        let text = self.cx.file.snippet(v.span).to_string();
+        self.feature(crate::dialect::Feature::PartialAccess(text.clone()), v.span);
+        let part = match size {
+            ast::AddrSize::Default | ast::AddrSize::X => Elem::BOOL,
+            ast::AddrSize::B => Elem::BYTE,
+            ast::AddrSize::W => Elem::WORD,
+            ast::AddrSize::D | ast::AddrSize::L => Elem::DWORD,
+        };
+        let whole = match ty {
+            Ty::Elem(e) if e.is_int() || e.is_bitstring() => *e,
+            _ => {
+                self.err(
+                    BAD_PART,
+                    span,
+                    format!("`{text}`: partial access needs a bit string or an integer, not {ty}"),
+                );
+                return None;
+            }
+        };
+        let width = PathElem::part_bits(whole);
+        let bits = PathElem::part_bits(part);
+        let count = width / bits;
+        if index >= count {
+            let what = match part {
+                Elem::BOOL => "bit",
+                Elem::BYTE => "byte",
+                Elem::WORD => "word",
+                _ => "double word",
+            };
+            let msg = if count == 0 {
+                format!("`{text}`: {ty} has no {what}s ({width} bits)")
+            } else {
+                format!(
+                    "`{text}`: {what} {index} is beyond {ty}, which has {what}s 0..{} ({width} bits)",
+                    count - 1
+                )
+            };
+            self.err(BAD_PART, span, msg);
+            return None;
+        }
+        Some((whole, part))
     }
 
     /// A member of an FB type: (declared name, type, is it an input).

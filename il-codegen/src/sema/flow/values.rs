@@ -101,38 +101,73 @@ impl Walk<'_, '_> {
         if let Arg::Typed(v, t) = &arg
             && t != ty
         {
-            {
-                let src = if matches!(v, Value::Cr(_) | Value::Saved(..)) {
-                    "the current result"
-                } else {
-                    "the value"
-                };
-                if let Some(d) = self.err(
-                    TYPE_MISMATCH,
-                    span,
-                    format!("{dest} is {ty}, but {src} is {t}"),
-                ) {
-                    d.help = conversion_hint(t, ty);
-                }
-                return None;
+            if let Some(w) = self.widen(v.clone(), t, ty, span) {
+                return Some(w);
             }
+            let src = if matches!(v, Value::Cr(_) | Value::Saved(..)) {
+                "the current result"
+            } else {
+                "the value"
+            };
+            let msg = format!("{dest} is {ty}, but {src} is {t}{}", narrowing(t, ty));
+            if let Some(d) = self.err(TYPE_MISMATCH, span, msg) {
+                d.help = conversion_hint(t, ty);
+            }
+            return None;
         }
         self.fit(arg, ty, span)
     }
 
-    /// Make an argument a value of type `ty`.
+    /// Make an argument a value of type `ty` (widened implicitly when the
+    /// 3rd edition's table allows it).
     pub(super) fn fit(&mut self, arg: Arg, ty: &Ty, span: Span) -> Option<Value> {
         match arg {
             Arg::Typed(v, t) if t == *ty => Some(v),
-            Arg::Typed(_, t) => {
-                if let Some(d) = self.err(TYPE_MISMATCH, span, format!("expected {ty}, found {t}"))
-                {
+            Arg::Typed(v, t) => {
+                if let Some(w) = self.widen(v, &t, ty, span) {
+                    return Some(w);
+                }
+                let msg = format!("expected {ty}, found {t}{}", narrowing(&t, ty));
+                if let Some(d) = self.err(TYPE_MISMATCH, span, msg) {
                     d.help = conversion_hint(&t, ty);
                 }
                 None
             }
             Arg::Lit(l, s) => self.lit_value(&l, ty, s, LITERAL_RANGE),
         }
+    }
+
+    /// An output of type `ty` read with `=>` into `place`: `Ok(None)` when
+    /// the types agree, `Ok(Some(w))` when it widens (3rd edition), `Err` (reported) otherwise.
+    pub(super) fn output_fit(
+        &mut self,
+        name: &str,
+        ty: &Ty,
+        place: &Place,
+        span: Span,
+    ) -> Result<Option<ir::Widen>, ()> {
+        if place.ty == *ty {
+            return Ok(None);
+        }
+        if let Some(w) = super::super::widen::widening(ty, &place.ty) {
+            self.feature(
+                crate::dialect::Feature::Widening {
+                    from: ty.to_string(),
+                    to: place.ty.to_string(),
+                },
+                span,
+            );
+            return Ok(Some(w));
+        }
+        let msg = format!(
+            "`{name}` is {ty}, the variable is {}{}",
+            place.ty,
+            narrowing(ty, &place.ty)
+        );
+        if let Some(d) = self.err(TYPE_MISMATCH, span, msg) {
+            d.help = conversion_hint(ty, &place.ty);
+        }
+        Err(())
     }
 
     /// A pending call as an argument where no type is expected: emit it
@@ -213,6 +248,14 @@ impl Walk<'_, '_> {
         if let LitClass::Pending(p) = l {
             return self.materialize(p, Some(ty)).map(|(v, _)| v);
         }
+        // A typed literal (`INT#5`) meeting a wider type is widened like a
+        // typed value; the checker folds the conversion.
+        if let LitClass::Typed(c) = l
+            && c.ty() != *ty
+            && let Some(v) = self.widen(Value::Const(c.clone()), &c.ty(), ty, span)
+        {
+            return Some(v);
+        }
         match coerce(l, ty) {
             Ok(c) => Some(Value::Const(c)),
             Err(m) => {
@@ -220,5 +263,17 @@ impl Walk<'_, '_> {
                 None
             }
         }
+    }
+}
+
+/// "; narrowing is never implicit: use DINT_TO_INT" when `to` widens into
+/// `from` (so the user meant a lossy conversion, which must be written).
+pub(super) fn narrowing(from: &Ty, to: &Ty) -> String {
+    match (from, to) {
+        (Ty::Elem(f), Ty::Elem(t)) if super::super::widen::widens(*t, *f) => format!(
+            "; narrowing is never implicit: convert with {}",
+            super::super::widen::conversion_name(*f, *t)
+        ),
+        _ => String::new(),
     }
 }

@@ -330,6 +330,31 @@ impl<'a> Lexer<'a> {
     pub(super) fn address(&mut self, start: usize) {
         let b = self.b;
         let mut i = start + 1;
+        if start > 0 && b[start - 1] == b'.' && matches!(self.last_tok(), Some(Tok::Dot)) {
+            // `v.%X3`, `v.%B1`, `v.%W0`, `v.%D1`: a part of `v` (3rd edition).
+            let size = match b.get(i).map(u8::to_ascii_uppercase) {
+                Some(b'X') => Some(AddrSize::X),
+                Some(b'B') => Some(AddrSize::B),
+                Some(b'W') => Some(AddrSize::W),
+                Some(b'D') => Some(AddrSize::D),
+                _ => None,
+            };
+            let digits = b[(i + 1).min(b.len())..]
+                .iter()
+                .take_while(|c| c.is_ascii_digit())
+                .count();
+            if let Some(size) = size
+                && digits > 0
+                && !b.get(i + 1 + digits).is_some_and(|&c| is_ident(c))
+            {
+                let end = i + 1 + digits;
+                // 64 bits at most: anything longer is out of range anyway.
+                let n = self.src[i + 1..end].parse::<u32>().unwrap_or(u32::MAX);
+                self.pos = end;
+                self.push(start, Tok::Part(size, n), end);
+                return;
+            }
+        }
         let area = match b.get(i).map(u8::to_ascii_uppercase) {
             Some(b'I') => Some(Area::Input),
             Some(b'Q') => Some(Area::Output),

@@ -62,6 +62,8 @@ pub enum Tok {
     Lit(Literal),
     /// A direct address: `%IX0.1`, `%MW10`.
     Addr(DirectAddress),
+    /// `%X3`, `%B1`, `%W0`, `%D1` right after a `.`: a partial access (3rd edition).
+    Part(AddrSize, u32),
     // Operators (operator field of a body line).
     /// `LD` (false) / `LDN` (true).
     Ld(bool),
@@ -210,6 +212,8 @@ pub struct Lexer<'a> {
     nest_reported: bool,
     out: Vec<Spanned>,
     diags: Vec<Diagnostic>,
+    /// Pragmas are errors under the 2nd edition.
+    standard: crate::dialect::Standard,
 }
 
 fn is_ident_start(c: u8) -> bool {
@@ -225,6 +229,11 @@ fn span(lo: usize, hi: usize) -> Span {
 
 /// Lex a whole file. Returns the tokens and the lexer's diagnostics.
 pub fn lex(src: &str) -> (Vec<Spanned>, Vec<Diagnostic>) {
+    lex_std(src, crate::dialect::Standard::default())
+}
+
+/// [`lex`] against a standard (pragmas are errors under the 2nd edition).
+pub fn lex_std(src: &str, standard: crate::dialect::Standard) -> (Vec<Spanned>, Vec<Diagnostic>) {
     let mut lx = Lexer {
         src,
         b: src.as_bytes(),
@@ -245,6 +254,7 @@ pub fn lex(src: &str) -> (Vec<Spanned>, Vec<Diagnostic>) {
         nest_reported: false,
         out: Vec::new(),
         diags: Vec::new(),
+        standard,
     };
     if src.starts_with('\u{feff}') {
         lx.pos = 3;
@@ -359,17 +369,28 @@ impl<'a> Lexer<'a> {
                     }
                 }
                 b'{' => {
+                    // A pragma (Ed.2 2.1.5): ignored wherever a comment may stand.
                     let start = self.pos;
-                    let end = self.src[start..]
-                        .find('}')
-                        .map_or(self.b.len(), |e| start + e + 1);
-                    self.diag(
-                        code::PRAGMA,
-                        start,
-                        end,
-                        "pragmas `{ ... }` are not part of IEC 61131-3 Instruction List",
-                        "pragma ignored",
-                    );
+                    let end = match self.src[start..].find('}') {
+                        Some(e) => start + e + 1,
+                        None => {
+                            self.diag(
+                                code::PRAGMA,
+                                start,
+                                start + 1,
+                                "this pragma is never closed",
+                                "pragma starts here",
+                            )
+                            .help = Some("close it with `}`".into());
+                            self.b.len()
+                        }
+                    };
+                    if let Some(d) = self
+                        .standard
+                        .refuse(crate::dialect::Feature::Pragma, span(start, end))
+                    {
+                        self.diags.push(d);
+                    }
                     if let Some(i) = self.src[start..end].find('\n') {
                         nl.get_or_insert(start + i);
                     }

@@ -1,0 +1,109 @@
+//! Which edition of IEC 61131-3 the compiler accepts. By default it takes the
+//! 3rd-edition and vendor forms that real projects use (pragmas, implicit
+//! widening conversions, partial bit access); [`Standard::Iec2003`] refuses
+//! each of them with an error that names the form. Each stage that accepts
+//! such a form calls [`Standard::refuse`] at that point, so the form is
+//! decided once, where it is recognised.
+
+use crate::ast::Span;
+use crate::diag::Diagnostic;
+
+pub mod codes;
+pub use codes::CODES;
+
+/// The edition of IEC 61131-3 a program is checked against.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Standard {
+    /// The 3rd edition (2013) and the vendor forms of CODESYS-family tools
+    /// and Beremiz: pragmas, implicit widening, partial access. The default.
+    #[default]
+    Iec2013,
+    /// Strictly the 2nd edition (2003): each 3rd-edition form is an error.
+    Iec2003,
+}
+
+impl Standard {
+    /// The standard named `iec2003`/`2003`/`ed2` or `iec2013`/`2013`/`ed3`
+    /// (case-insensitive), as `--std=` and `il!(..., std = "...")` take it.
+    pub fn from_name(name: &str) -> Option<Standard> {
+        match name.to_ascii_lowercase().as_str() {
+            "iec2003" | "2003" | "ed2" => Some(Standard::Iec2003),
+            "iec2013" | "2013" | "ed3" => Some(Standard::Iec2013),
+            _ => None,
+        }
+    }
+
+    /// The name [`Standard::from_name`] reads.
+    pub fn name(self) -> &'static str {
+        match self {
+            Standard::Iec2013 => "iec2013",
+            Standard::Iec2003 => "iec2003",
+        }
+    }
+
+    /// Whether 3rd-edition forms are errors.
+    pub fn strict(self) -> bool {
+        self == Standard::Iec2003
+    }
+
+    /// The error for a 3rd-edition form at `span`, when this standard
+    /// refuses it (`None`: the form is accepted).
+    pub fn refuse(self, feature: Feature, span: Span) -> Option<Diagnostic> {
+        self.strict().then(|| feature.diagnostic(span))
+    }
+}
+
+impl std::str::FromStr for Standard {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        Standard::from_name(s)
+            .ok_or_else(|| format!("unknown standard `{s}`: use `iec2003` or `iec2013`"))
+    }
+}
+
+/// A 3rd-edition or vendor form that [`Standard::Iec2003`] refuses.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Feature {
+    /// `{ ... }`.
+    Pragma,
+    /// A value of type `from` used where `to` is expected (the names as IEC
+    /// spells them).
+    Widening {
+        /// The value's type.
+        from: String,
+        /// The wider type it becomes.
+        to: String,
+    },
+    /// `v.3`, `v.%X3`, `v.%B1` ...: as written.
+    PartialAccess(String),
+}
+
+impl Feature {
+    /// The error naming the form.
+    pub fn diagnostic(&self, span: Span) -> Diagnostic {
+        let (code, msg, label, help) = match self {
+            Feature::Pragma => (
+                codes::PRAGMA,
+                "pragmas `{ ... }` are a 3rd-edition feature".to_string(),
+                "pragma",
+                "remove the pragma, or check with the default standard (iec2013)".to_string(),
+            ),
+            Feature::Widening { from, to } => (
+                codes::IMPLICIT_CONVERSION,
+                format!("implicit conversion {from} → {to} is a 3rd-edition feature"),
+                "converted implicitly",
+                format!("convert explicitly with {from}_TO_{to}"),
+            ),
+            Feature::PartialAccess(text) => (
+                codes::PARTIAL_ACCESS,
+                format!("partial access `{text}` is a 3rd-edition feature"),
+                "partial access",
+                "mask and shift with AND and SHR, or check with the default standard (iec2013)"
+                    .to_string(),
+            ),
+        };
+        Diagnostic::error(code, span, msg)
+            .with_label(label)
+            .with_help(help)
+    }
+}
