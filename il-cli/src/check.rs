@@ -49,7 +49,7 @@ pub fn run(
     paths: &[String],
     format: Format,
     color: bool,
-    standard: il_codegen::Standard,
+    front: crate::cli::Front,
     progress: bool,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -73,10 +73,7 @@ pub fn run(
     // Builder: a FUNCTION_BLOCK of one file may be used in another.
     // A `.xml` file is a PLCopen project: its IL is checked with the rest and
     // its diagnostics point into the XML.
-    let program = files.into_iter().fold(
-        il_codegen::Program::new().standard(standard),
-        il_codegen::Program::source,
-    );
+    let program = front.program(files);
     let checked = program.check();
     bar.clear(err);
     for (input, diags) in checked.reports() {

@@ -19,6 +19,7 @@ Examples:
   ilc check --color always a.il | less -R
   cat a.il | ilc check -                 Read the source from standard input
   ilc run main.il --cycles 5 --watch q   Simulate 5 scans without compiling
+  ilc check --snippet table51.il         A bare instruction list, no POU around it
   ilc explain IL0003                     What a diagnostic code means
   ilc lsp                                Serve an editor (Language Server Protocol on stdio)
 
@@ -60,7 +61,6 @@ at the end of each instruction line; off with the client setting
 `inlayHints.crType: false`), go to definition, references, rename, document
 and workspace symbols and completion. editors/vscode holds a VS Code client.";
 
-/// The whole command line.
 /// `--std=iec2003`: refuse the 3rd-edition and vendor forms (pragmas,
 /// implicit widening, partial access), each with an error naming it.
 fn std_arg() -> Arg {
@@ -78,13 +78,57 @@ fn std_arg() -> Arg {
         .default_value("iec2013")
 }
 
-/// The standard `--std` selected.
-pub fn standard(m: &clap::ArgMatches) -> il_codegen::Standard {
-    m.get_one::<String>("std")
-        .and_then(|s| il_codegen::Standard::from_name(s))
-        .unwrap_or_default()
+/// `--snippet`: the file is a bare instruction list.
+fn snippet_arg() -> Arg {
+    Arg::new("snippet")
+        .long("snippet")
+        .action(ArgAction::SetTrue)
+        .help("Each file is a bare instruction list, the body of a PROGRAM named after the file")
+        .long_help(
+            "Each file is a bare instruction list with no POU around it, like the standard's \
+             Table 51 (`START: LD %IX1 / ANDN %MX5 / ST %QX2`): it is compiled as the body \
+             of a PROGRAM named after the file. Only direct addresses and literals need no \
+             declaration; an error lists every other name",
+        )
 }
 
+/// How the sources become a program: `--std` and `--snippet`.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Front {
+    /// `--std`: the edition the program is checked against.
+    pub standard: il_codegen::Standard,
+    /// `--snippet`: each file is the body of a PROGRAM.
+    pub snippet: bool,
+}
+
+impl Front {
+    /// `--std` and `--snippet` as given.
+    pub fn of(m: &clap::ArgMatches) -> Front {
+        Front {
+            standard: m
+                .get_one::<String>("std")
+                .and_then(|s| il_codegen::Standard::from_name(s))
+                .unwrap_or_default(),
+            snippet: m.get_flag("snippet"),
+        }
+    }
+
+    /// A program of `files`, each read as these options say.
+    pub fn program(self, files: Vec<il_codegen::SourceFile>) -> il_codegen::Program {
+        files.into_iter().fold(
+            il_codegen::Program::new().standard(self.standard),
+            |p, f| {
+                if self.snippet {
+                    p.snippet(f)
+                } else {
+                    p.source(f)
+                }
+            },
+        )
+    }
+}
+
+/// The whole command line.
 pub fn command() -> Command {
     Command::new("ilc")
         .version(env!("CARGO_PKG_VERSION"))
@@ -129,7 +173,8 @@ pub fn command() -> Command {
                         .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
                         .default_value("auto"),
                 )
-                .arg(std_arg()),
+                .arg(std_arg())
+                .arg(snippet_arg()),
         )
         .subcommand(
             Command::new("emit")
@@ -158,7 +203,8 @@ pub fn command() -> Command {
                         .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
                         .default_value("auto"),
                 )
-                .arg(std_arg()),
+                .arg(std_arg())
+                .arg(snippet_arg()),
         )
         .subcommand(
             Command::new("run")
@@ -213,7 +259,8 @@ pub fn command() -> Command {
                         .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
                         .default_value("auto"),
                 )
-                .arg(std_arg()),
+                .arg(std_arg())
+                .arg(snippet_arg()),
         )
         .subcommand(
             Command::new("lsp")

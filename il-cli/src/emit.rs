@@ -12,7 +12,7 @@ pub fn run(
     files: &[String],
     dir: Option<&Path>,
     color: bool,
-    standard: il_codegen::Standard,
+    front: crate::cli::Front,
     progress: bool,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -53,10 +53,7 @@ pub fn run(
         return false;
     }
     bar.stage("Compiling", err);
-    let program = sources.into_iter().fold(
-        il_codegen::Program::new().standard(standard),
-        il_codegen::Program::source,
-    );
+    let program = front.program(sources);
     let checked = program.check();
     let opts = il_codegen::emit::Options {
         line_markers: true,

@@ -31,7 +31,7 @@ fn main() -> ExitCode {
                 &files,
                 format,
                 color,
-                cli::standard(m),
+                cli::Front::of(m),
                 io::stderr().is_terminal(),
                 &mut io::stdout().lock(),
                 &mut io::stderr().lock(),
@@ -56,7 +56,7 @@ fn main() -> ExitCode {
                 &files,
                 dir.as_deref(),
                 color,
-                cli::standard(m),
+                cli::Front::of(m),
                 io::stderr().is_terminal(),
                 &mut io::stdout().lock(),
                 &mut io::stderr().lock(),
@@ -92,7 +92,7 @@ fn main() -> ExitCode {
                 color: check::use_color(
                     m.get_one::<String>("color").map_or("auto", String::as_str),
                 ),
-                standard: cli::standard(m),
+                front: cli::Front::of(m),
             };
             let code = run::run(&opts, &mut io::stdout().lock(), &mut io::stderr().lock());
             ExitCode::from(code)

@@ -91,8 +91,8 @@ pub struct Options {
     /// Empty: every variable of the program.
     pub watch: Vec<String>,
     pub color: bool,
-    /// `--std`: the edition the program is checked against.
-    pub standard: il_codegen::Standard,
+    /// `--std` and `--snippet`.
+    pub front: crate::cli::Front,
 }
 
 /// Run and print; the exit status (0 fine, 1 error).
@@ -110,9 +110,7 @@ pub fn run(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> u8 {
 
 fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), String> {
     // A `.xml` file is a PLCopen project: its IL POUs are run.
-    let program = il_codegen::Program::new()
-        .standard(o.standard)
-        .source(crate::check::read_source(&o.file)?);
+    let program = o.front.program(vec![crate::check::read_source(&o.file)?]);
     let checked = program.check();
     let _ = write!(err, "{}", checked.render(o.color));
     let Some([prog]) = checked.ir() else {

@@ -402,3 +402,42 @@ fn emit_refuses_two_inputs_with_one_output_name() {
             .contains("pub struct Q")
     );
 }
+
+/// `--snippet`: the standard's Table 51, a bare instruction list, checked,
+/// run (the fan follows the button unless inhibited) and emitted.
+#[test]
+fn snippet_files_check_run_and_emit() {
+    let path = temp_file(
+        "table51.il",
+        b"START: LD %IX1       (* PUSH BUTTON *)\n       ANDN %MX5      (* NOT INHIBITED *)\n       ST %QX2        (* FAN ON *)\n",
+    );
+    let o = ilc(&["check", "--snippet", &path]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let o = ilc(&[
+        "run",
+        "--snippet",
+        &path,
+        "--cycles",
+        "3",
+        "--set",
+        "%IX0.1=TRUE@2",
+        "--set",
+        "%MX0.5=TRUE@3",
+        "--watch",
+        "%QX0.2",
+    ]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let fan: Vec<String> = stdout(&o)
+        .lines()
+        .skip(1)
+        .map(|l| l.split_whitespace().last().unwrap_or("").to_string())
+        .collect();
+    assert_eq!(fan, ["FALSE", "TRUE", "FALSE"], "{}", stdout(&o));
+    let o = ilc(&["emit", "--snippet", &path]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(stdout(&o).contains("pub struct table51"), "{}", stdout(&o));
+    // Without --snippet the same file is instructions outside a POU.
+    let o = ilc(&["check", &path]);
+    assert_eq!(code(&o), 1);
+    assert!(stderr(&o).contains("IL0011"), "{}", stderr(&o));
+}

@@ -421,3 +421,62 @@ pub enum LitKind {
         value: Ident,
     },
 }
+
+impl Instr {
+    /// Every operand of the instruction, nested ones (inside parentheses,
+    /// call lists and subscripts) included, in source order.
+    pub fn each_operand(&self, f: &mut dyn FnMut(&Operand)) {
+        fn args(a: &CallArgs, f: &mut dyn FnMut(&Operand)) {
+            match a {
+                CallArgs::NonFormal(list) => list.iter().for_each(|o| operand(o, f)),
+                CallArgs::Formal(list) => {
+                    for p in list {
+                        match &p.kind {
+                            ParamKind::Input(o) | ParamKind::Output { target: o, .. } => {
+                                operand(o, f)
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        fn operand(o: &Operand, f: &mut dyn FnMut(&Operand)) {
+            f(o);
+            if let Operand::Var(v) = o {
+                for a in &v.path {
+                    if let Accessor::Index(subs, _) = a {
+                        subs.iter().for_each(|s| operand(s, f));
+                    }
+                }
+            }
+        }
+        match &self.kind {
+            InstrKind::Load { operand: o, .. }
+            | InstrKind::Expr { operand: o, .. }
+            | InstrKind::Store { target: o, .. }
+            | InstrKind::Set { target: o }
+            | InstrKind::Reset { target: o }
+            | InstrKind::FbInput { instance: o, .. } => operand(o, f),
+            InstrKind::Deferred { first, body, .. } => {
+                if let Some(o) = first {
+                    operand(o, f);
+                }
+                for s in body {
+                    if let Stmt::Instr(i) = s {
+                        i.each_operand(f);
+                    }
+                }
+            }
+            InstrKind::Call {
+                target, args: a, ..
+            } => {
+                operand(target, f);
+                if let Some(a) = a {
+                    args(a, f);
+                }
+            }
+            InstrKind::FnCall { args: a, .. } => args(a, f),
+            InstrKind::Not | InstrKind::Jump { .. } | InstrKind::Return { .. } => {}
+        }
+    }
+}

@@ -20,6 +20,8 @@ pub struct Snippet {
     prefix: u32,
     /// Problems of the snippet as a whole (a POU declared in it).
     diagnostics: Vec<Diagnostic>,
+    /// The names it uses that would need a declaration.
+    names: Vec<(String, Span)>,
 }
 
 /// Words that start a declaration: a file with one is not a bare list.
@@ -53,12 +55,42 @@ impl Snippet {
             file.name.clone(),
             format!("{head}{}\nEND_PROGRAM\n", file.text),
         );
-        Snippet {
+        let mut s = Snippet {
             prefix: head.len() as u32,
             file,
             il,
             diagnostics,
+            names: Vec::new(),
+        };
+        s.names = s.undeclared();
+        s
+    }
+
+    /// The names the list uses (not direct addresses, literals or labels),
+    /// each once, with its first place in the file: none has a declaration.
+    /// From the syntax tree, since the checker stops looking at operands
+    /// after the first error on a path.
+    fn undeclared(&self) -> Vec<(String, Span)> {
+        let (unit, _) = crate::syntax::parse(&self.il);
+        let mut names: Vec<(String, Span)> = Vec::new();
+        for item in &unit.items {
+            let crate::ast::Item::Pou(p) = item else {
+                continue;
+            };
+            for st in &p.body {
+                let crate::ast::Stmt::Instr(i) = st else {
+                    continue;
+                };
+                i.each_operand(&mut |o| {
+                    if let crate::ast::Operand::Var(v) = o
+                        && !names.iter().any(|(n, _)| v.base.is(n))
+                    {
+                        names.push((v.base.name.clone(), self.to_file(v.base.span)));
+                    }
+                });
+            }
         }
+        names
     }
 
     /// The PROGRAM's name.
@@ -75,18 +107,15 @@ impl Snippet {
     /// need a declaration become one error.
     pub fn finish(&self, diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
         let mut out = self.diagnostics.clone();
-        let mut names: Vec<(String, Span)> = Vec::new();
+        let names = &self.names;
         for mut d in diags {
+            // "Unknown variable", once per name and path: one error below.
+            if d.code == UNKNOWN_NAME && !names.is_empty() {
+                continue;
+            }
             d.span = self.to_file(d.span);
             for (s, _) in &mut d.secondary {
                 *s = self.to_file(*s);
-            }
-            if d.code == UNKNOWN_NAME {
-                let name = self.file.snippet(d.span).to_string();
-                if !names.iter().any(|(n, _)| n.eq_ignore_ascii_case(&name)) {
-                    names.push((name, d.span));
-                }
-                continue;
             }
             out.push(d);
         }
