@@ -51,9 +51,10 @@ fn a_number_stored_into_a_bool_suggests_a_comparison_first() {
         h[0].1
     );
     assert!(h[0].1.ends_with("`INT_TO_BOOL`"), "{}", h[0].1);
-    // Between numbers, the conversion alone.
-    let h = helps("PROGRAM P\nVAR r : REAL; n : INT; END_VAR\n    LD n\n    ST r\nEND_PROGRAM\n");
-    assert_eq!(h[0].1, "convert with `INT_TO_REAL`");
+    // Between numbers, the conversion alone (INT → REAL widens by itself;
+    // DINT → REAL would lose digits).
+    let h = helps("PROGRAM P\nVAR r : REAL; n : DINT; END_VAR\n    LD n\n    ST r\nEND_PROGRAM\n");
+    assert_eq!(h[0].1, "convert with `DINT_TO_REAL`");
 }
 
 #[test]

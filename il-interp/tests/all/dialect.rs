@@ -150,10 +150,13 @@ fn partial_access_on_a_function_result_and_a_var_in_out() {
             .expect("call");
         assert_eq!(r, int(want, Elem::WORD), "SetBit({w:#x}, {n})");
     }
-    // Run alone, the interpreter keeps the VAR_IN_OUT as memory of the instance.
-    m.set("io", int(2, Elem::WORD)).unwrap();
+    // A VAR_IN_OUT lives only during a call: InOutHost binds it to `w := 2`.
+    assert!(m.set("io", int(2, Elem::WORD)).is_err());
+    let mut m = Machine::new(&prog, "InOutHost").expect("instance");
     m.scan(&mut ctx).expect("scan");
     assert_eq!(get(&m, "b"), Value::Bool(true));
-    // r = SetBit(io, TRUE) after bit 8 of io was set: io became 0x102.
+    // Bit 8 of io was set through the in-out: w became 0x102, and
+    // r = SetBit(io, TRUE) = 0x106.
+    assert_eq!(get(&m, "w"), int(0x102, Elem::WORD));
     assert_eq!(get(&m, "r"), int(0x106, Elem::WORD));
 }

@@ -124,12 +124,27 @@ impl Pou<'_> {
                     )
                 }
             } else {
-                self.rng.pick(&self.vars_of(t)).clone()
+                // Not a direct address: `%IW4.3` reads as a bit address.
+                let wholes: Vec<String> = self
+                    .vars_of(t)
+                    .into_iter()
+                    .filter(|n| !n.starts_with('%'))
+                    .collect();
+                if wholes.is_empty() {
+                    return;
+                }
+                self.rng.pick(&wholes).clone()
             };
             self.emit(format!("LD {whole}.{part}{k}"));
             self.finish_expr(size);
         } else {
-            let targets = self.writable(t);
+            // Parts of a subrange cannot be written (IL0135): user.rs names
+            // its subrange variables `sub`, `rec.s` and `recs[..].s`.
+            let targets: Vec<String> = self
+                .writable(t)
+                .into_iter()
+                .filter(|n| !n.starts_with('%') && n != "sub" && !n.ends_with(".s"))
+                .collect();
             if targets.is_empty() {
                 return;
             }
