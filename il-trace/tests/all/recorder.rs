@@ -53,7 +53,10 @@ impl Visit for Plant {
 
 /// Runs 6 scans of 10 ms, changing the plant, and returns the dump and
 /// the expected values of some variables per scan.
-fn record() -> (Vec<u8>, Vec<(bool, i16, f32, i64, i64, i8)>) {
+/// Per scan: run, level, flow, state, delay.ET (ns), table[1,1].
+type Expected = (bool, i16, f32, i64, i64, i8);
+
+fn record() -> (Vec<u8>, Vec<Expected>) {
     let mut ctx = Cycle::new();
     let mut p = Plant::default();
     p.delay.PT = TIME::from_ms(20);
