@@ -3,8 +3,10 @@
 mod check;
 mod cli;
 mod emit;
+mod plot;
 mod progress;
 mod run;
+mod wave;
 
 use std::io::{self, IsTerminal};
 use std::process::ExitCode;
@@ -89,6 +91,8 @@ fn main() -> ExitCode {
                 color: check::use_color(
                     m.get_one::<String>("color").map_or("auto", String::as_str),
                 ),
+                vcd: m.get_one::<String>("vcd").map(std::path::PathBuf::from),
+                plot: m.get_one::<String>("plot").map(std::path::PathBuf::from),
             };
             let code = run::run(&opts, &mut io::stdout().lock(), &mut io::stderr().lock());
             ExitCode::from(code)

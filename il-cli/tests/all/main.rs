@@ -8,3 +8,4 @@ mod explain;
 mod plcopen;
 mod run;
 mod ui;
+mod waves;
