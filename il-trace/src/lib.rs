@@ -96,6 +96,7 @@ pub struct Recorder<W: Write> {
     signals: Vec<Signal>,
     started: bool,
     last_tick: Option<u64>,
+    finished: bool,
 }
 
 impl<W: Write> Recorder<W> {
@@ -117,6 +118,7 @@ impl<W: Write> Recorder<W> {
             signals: Vec::new(),
             started: false,
             last_tick: None,
+            finished: false,
         })
     }
 
@@ -141,6 +143,9 @@ impl<W: Write> Recorder<W> {
                 io::ErrorKind::InvalidInput,
                 format!("sample time {tick} {} goes backwards", self.unit),
             ));
+        }
+        if self.finished {
+            return Err(io::Error::other("sample after finish"));
         }
         let first = !self.started;
         let mut pass = Pass {
@@ -219,17 +224,22 @@ impl<W: Write> Recorder<W> {
         }
     }
 
-    /// Flush; the dump is complete (a writer that needs closing, such as a
-    /// file, is closed when the recorder is dropped). Pass `&mut Vec<u8>` or
-    /// `&mut File` to [`Recorder::new`] to keep using it afterwards.
-    pub fn finish(mut self) -> io::Result<()> {
+    /// Flush; the dump is complete. Later samples are refused.
+    pub fn finish(&mut self) -> io::Result<()> {
         if !self.started {
             // A header with no samples is still a valid (empty) dump.
             self.out.add_module(&self.top)?;
             self.out.upscope()?;
             self.out.enddefinitions()?;
+            self.started = true;
         }
+        self.finished = true;
         self.out.flush()
+    }
+
+    /// The writer, e.g. to [`AtomicFile::commit`] it after [`Recorder::finish`].
+    pub fn get_mut(&mut self) -> &mut W {
+        self.out.writer()
     }
 }
 
@@ -413,8 +423,8 @@ impl AtomicFile {
         })
     }
 
-    /// Flush, sync and rename the file into place.
-    pub fn commit(mut self) -> io::Result<()> {
+    /// Flush, sync and rename the file into place (once).
+    pub fn commit(&mut self) -> io::Result<()> {
         let done = match self.file.take() {
             Some(f) => f
                 .into_inner()
