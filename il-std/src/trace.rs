@@ -87,16 +87,9 @@ pub trait Visit {
     fn visit(&self, v: &mut dyn Visitor);
 }
 
-/// An enumeration generated from IEC, as a [`Value::Enum`].
-pub trait Enumeration {
-    /// The integer value.
-    fn value(&self) -> i64;
-    /// The name as declared.
-    fn name(&self) -> &'static str;
-}
-
 /// A Rust value of an IEC type, as a [`Value`]; generated code uses it with
-/// the IEC type name it knows (`u16` is both `UINT` and `WORD`).
+/// the IEC type name it knows (`u16` is both `UINT` and `WORD`); generated
+/// enumerations implement it as [`Value::Enum`].
 pub trait AsValue {
     /// The value to offer a [`Visitor`].
     fn as_value(&self) -> Value<'_>;

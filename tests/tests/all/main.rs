@@ -30,5 +30,6 @@ mod runtime_faults;
 mod seeds;
 mod std_blocks;
 mod std_funcs;
+mod trace;
 mod ui;
 mod user_types;
