@@ -14,6 +14,8 @@ use plotters::prelude::*;
 enum Kind {
     Bool,
     Number,
+    /// TIME and the like: drawn in the time axis' unit.
+    Time,
     /// Enumerations (their value, named) and strings (named only).
     Bus,
 }
@@ -71,8 +73,7 @@ impl Collect<'_> {
             Value::Int { value, .. } => (Kind::Number, value as f64, None),
             Value::UInt { value, .. } => (Kind::Number, value as f64, None),
             Value::Real(r) => (Kind::Number, r, None),
-            // Durations in ms, dates in days.
-            Value::Time(ns) => (Kind::Number, ns as f64 / 1e6, None),
+            Value::Time(ns) => (Kind::Time, ns as f64, None),
             Value::Date(d) => (Kind::Number, d as f64, None),
             Value::Enum { value, name } => (Kind::Bus, value as f64, Some(name.to_string())),
             Value::Str(b) => (
@@ -225,10 +226,12 @@ impl Plot {
         axis: bool,
         unit: &str,
     ) -> Result<(), Box<dyn std::error::Error>> {
+        // Durations in the unit of the time axis.
+        let scale = if s.kind == Kind::Time { 1.0 / per } else { 1.0 };
         let (lo, hi) = match s.kind {
             Kind::Bool => (0.0, 1.0),
             _ => {
-                let ys = s.changes.iter().map(|c| c.1);
+                let ys = s.changes.iter().map(|c| c.1 * scale);
                 let lo = ys.clone().fold(f64::INFINITY, f64::min);
                 let hi = ys.fold(f64::NEG_INFINITY, f64::max);
                 if lo.is_finite() && hi > lo {
@@ -246,7 +249,7 @@ impl Plot {
             .margin_top(4)
             .margin_bottom(4)
             .x_label_area_size(if axis { AXIS } else { 0 })
-            .y_label_area_size(56)
+            .y_label_area_size(64)
             .build_cartesian_2d(0.0..end, (lo - pad)..(hi + pad))?;
         let mut mesh = chart.configure_mesh();
         mesh.disable_y_mesh()
@@ -260,21 +263,23 @@ impl Plot {
         if axis {
             mesh.x_desc(format!("time ({unit})"));
         }
-        if s.kind == Kind::Number {
-            mesh.y_labels(3).y_label_formatter(&|y| {
-                if y.fract() == 0.0 {
-                    format!("{y:.0}")
-                } else {
-                    format!("{y:.2}")
-                }
-            });
+        let suffix = if s.kind == Kind::Time { unit } else { "" };
+        let fmt_y = |y: &f64| {
+            if y.fract() == 0.0 {
+                format!("{y:.0}{suffix}")
+            } else {
+                format!("{y:.2}{suffix}")
+            }
+        };
+        if matches!(s.kind, Kind::Number | Kind::Time) {
+            mesh.y_labels(3).y_label_formatter(&fmt_y);
         } else {
             mesh.y_labels(0);
         }
         mesh.draw()?;
         let color = match s.kind {
             Kind::Bool => RGBColor(0, 110, 60),
-            Kind::Number => RGBColor(20, 70, 170),
+            Kind::Number | Kind::Time => RGBColor(20, 70, 170),
             Kind::Bus => RGBColor(150, 70, 0),
         };
         // A value holds from its change until the next one.
@@ -282,12 +287,12 @@ impl Plot {
         for (i, (t, y, _)) in s.changes.iter().enumerate() {
             let x = *t as f64 / per;
             if i > 0 {
-                pts.push((x, s.changes[i - 1].1));
+                pts.push((x, s.changes[i - 1].1 * scale));
             }
-            pts.push((x, *y));
+            pts.push((x, *y * scale));
         }
         if let Some((_, y, _)) = s.changes.last() {
-            pts.push((end, *y));
+            pts.push((end, *y * scale));
         }
         chart.draw_series(LineSeries::new(pts, color.stroke_width(2)))?;
         if s.kind == Kind::Bus {
