@@ -454,3 +454,49 @@ fn plot_is_svg_with_one_lane_per_signal() {
     // The enumeration's values are written on its lane.
     assert!(texts.iter().any(|(_, t)| t == "Fast"), "{texts:?}");
 }
+
+/// The README's timing diagram is what the command beside it draws
+/// (refresh with `IL_BLESS=1`).
+#[test]
+fn readme_picture_is_up_to_date() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..");
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    let cmd = "ilc run examples/plc/traffic_light.il --program TrafficLight --cycles 36 --step 500ms \\\n    --set enable=TRUE --set enable=FALSE@29 \\\n    --watch enable,red,yellow,green,phase,step.ET --plot docs/traffic-light-timing.svg";
+    assert!(
+        readme.contains(cmd),
+        "README.md no longer shows the command"
+    );
+    let out = dir().join("readme.svg").display().to_string();
+    let src = root
+        .join("examples/plc/traffic_light.il")
+        .display()
+        .to_string();
+    let o = ilc(&[
+        "run",
+        &src,
+        "--program",
+        "TrafficLight",
+        "--cycles",
+        "36",
+        "--step",
+        "500ms",
+        "--set",
+        "enable=TRUE",
+        "--set",
+        "enable=FALSE@29",
+        "--watch",
+        "enable,red,yellow,green,phase,step.ET",
+        "--plot",
+        &out,
+    ]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let got = std::fs::read_to_string(&out).unwrap();
+    let committed = root.join("docs/traffic-light-timing.svg");
+    if std::env::var_os("IL_BLESS").is_some() {
+        std::fs::write(&committed, &got).unwrap();
+    }
+    assert!(
+        std::fs::read_to_string(&committed).ok().as_deref() == Some(got.as_str()),
+        "docs/traffic-light-timing.svg is out of date; refresh it with `IL_BLESS=1 cargo test -p il-cli --test all waves`"
+    );
+}
