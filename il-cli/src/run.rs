@@ -14,8 +14,8 @@ Examples:
 
   ilc run tank.il --cycles 10 --set %IX0.0=TRUE@2 --set %IW2=500 --watch state,tank.level,%QX0.0
   ilc run tank.il --set valves[2].open=TRUE --set state=TankState#Filling --watch valves[2]
-  ilc run motor.il --cycles 8 --set start=TRUE@2 --set start=FALSE@3 --vcd motor.vcd
-  ilc run motor.il --cycles 8 --set start=TRUE@2 --watch start,run --plot motor.svg
+  ilc run motor.il --program Motor --cycles 8 --set start=TRUE@2 --set start=FALSE@3 --vcd motor.vcd
+  ilc run motor.il --program Motor --cycles 8 --set start=TRUE@2 --watch start,run --plot motor.svg
 
 Cycles are numbered from 1; scan k runs at time (k-1) * step. A --set without
 @CYCLE is written before scan 1. Names are variables with members and elements
