@@ -254,6 +254,11 @@ fn bits(b: u64, w: u32) -> impl Iterator<Item = vcd::Value> {
         .map(move |k| vcd::Value::from(b >> k & 1 == 1))
 }
 
+/// A vector's declared width: 1 to 64 bits.
+fn width(bits: u8) -> u32 {
+    u32::from(bits).clamp(1, 64)
+}
+
 /// A name with no whitespace (VCD separates tokens by it).
 fn clean(name: &str) -> String {
     name.chars().filter(|c| !c.is_whitespace()).collect()
@@ -310,8 +315,8 @@ impl<W: Write> Pass<'_, W> {
         let tick = self.rec.tick_ns;
         let (kind, enc) = match value {
             Value::Bool(b) => (Kind::Wire(1), Enc::Bits(b as u64)),
-            Value::Int { value, bits } => (Kind::Wire(bits as u32), Enc::Bits(value as u64)),
-            Value::UInt { value, bits } => (Kind::Wire(bits as u32), Enc::Bits(value)),
+            Value::Int { value, bits } => (Kind::Wire(width(bits)), Enc::Bits(value as u64)),
+            Value::UInt { value, bits } => (Kind::Wire(width(bits)), Enc::Bits(value)),
             Value::Real(r) => (Kind::Real, Enc::Real(r.to_bits())),
             Value::Time(ns) => (Kind::Integer, Enc::Bits((ns / tick) as u64)),
             Value::Date(d) => (Kind::Integer, Enc::Bits(d as u64)),
