@@ -155,6 +155,7 @@ impl<W: Write> Recorder<W> {
             depth: 0,
             changes: Vec::new(),
             err: None,
+            path: Vec::new(),
         };
         if first {
             let top = pass.rec.top.clone();
@@ -293,6 +294,8 @@ struct Pass<'r, W: Write> {
     depth: usize,
     changes: Vec<(usize, Enc, Option<String>)>,
     err: Option<io::Error>,
+    /// The scopes entered, for naming enumeration values in comments.
+    path: Vec<String>,
 }
 
 impl<W: Write> Pass<'_, W> {
@@ -309,6 +312,16 @@ impl<W: Write> Pass<'_, W> {
         if self.first {
             self.try_io(|o| o.add_module(&name));
         }
+        self.path.push(name);
+    }
+
+    /// `tank.state = Filling`: the variable's path below the top scope.
+    fn note(&self, name: &str, value: &str) -> String {
+        let mut p = self.path.join(".");
+        if !p.is_empty() {
+            p.push('.');
+        }
+        format!("{p}{name} = {value}")
     }
 
     fn signal(&mut self, name: String, value: Value<'_>) {
@@ -339,8 +352,8 @@ impl<W: Write> Pass<'_, W> {
                 Ok(())
             });
             if let Value::Enum { name: v, .. } = value {
-                self.changes
-                    .push((i, enc.clone(), Some(format!("{name} = {v}"))));
+                let note = self.note(&name, v);
+                self.changes.push((i, enc.clone(), Some(note)));
             }
             if let Some(id) = id {
                 self.rec.signals.push(Signal {
@@ -360,7 +373,7 @@ impl<W: Write> Pass<'_, W> {
             }
             Some(s) if s.last != enc => {
                 let note = match value {
-                    Value::Enum { name: v, .. } => Some(format!("{name} = {v}")),
+                    Value::Enum { name: v, .. } => Some(self.note(&name, v)),
                     _ => None,
                 };
                 self.changes.push((i, enc, note));
@@ -388,6 +401,7 @@ impl<W: Write> Visitor for Pass<'_, W> {
             return;
         }
         self.depth -= 1;
+        self.path.pop();
         if self.first {
             self.try_io(|o| o.upscope());
         }

@@ -196,3 +196,35 @@ fn atomic_file_appears_only_on_commit() {
     assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 1);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn enumeration_comments_name_the_path() {
+    let mut buf = Vec::new();
+    let mut rec = Recorder::new(&mut buf, "plant", TIME::from_ms(1)).unwrap();
+    for (k, name) in ["Idle", "Idle", "Filling"].iter().enumerate() {
+        rec.sample_with(TIME::from_ms(k as i64), |v| {
+            v.enter("tank");
+            v.var(
+                "state",
+                "TankState",
+                Value::Enum {
+                    value: k as i64,
+                    name,
+                },
+            );
+            v.leave();
+        })
+        .unwrap();
+    }
+    rec.finish().unwrap();
+    let d = read::parse(&buf[..]).unwrap();
+    assert_eq!(
+        d.comments,
+        [
+            (0, "tank.state = Idle".to_string()),
+            (1, "tank.state = Idle".to_string()),
+            (2, "tank.state = Filling".to_string())
+        ]
+    );
+    assert_eq!(d.signal("plant.tank.state").unwrap().changes.len(), 3);
+}
