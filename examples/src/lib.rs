@@ -13,6 +13,7 @@
 //! | [`batch_weigh`] | `plc/batch_weigh.il` | build.rs | a FUNCTION with EN/ENO, BCD, parentheses, a recorded fault |
 //! | [`stair_light`] | inline in `src/stair_light.rs` | `il!` | TOF, TIME comparison |
 //! | [`readme_motor`] | `motor.il` (the README's) | `il!(file = ...)` | R_TRIG, a forward jump |
+//! | [`trace_motor`] | `motor.il` | `il!(file = ...)` | `visit` and il-trace: a VCD waveform of every variable |
 //! | [`bottling`] | `plc/bottling.il` | build.rs | a CONFIGURATION of two tasks, VAR_GLOBAL/VAR_EXTERNAL, a located global |
 //!
 //! `build.rs` compiles every `plc/*.il` file with [`il_codegen::Builder`]
@@ -46,6 +47,7 @@ pub mod conveyor;
 pub mod motor_starter;
 pub mod readme_motor;
 pub mod stair_light;
+pub mod trace_motor;
 pub mod traffic_light;
 
 /// The programs of `plc/*.il`, compiled by `build.rs` (one program: the
@@ -75,6 +77,7 @@ pub const ALL: &[(&str, Example)] = &[
     ("stair_light", stair_light::run),
     ("readme_motor", readme_motor::run),
     ("bottling", bottling::run),
+    ("trace_motor", trace_motor::run),
 ];
 
 /// One value of a time-line column, formatted for a narrow column.

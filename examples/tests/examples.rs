@@ -202,3 +202,47 @@ fn the_readmes_host_drives_one_scan() {
     ctx.advance(il_std::TIME::from_ms(10)); // simulated time
     assert!(m.run);
 }
+
+/// The recorded waveform, read back, holds what the time-line shows.
+#[test]
+fn trace_motor_records_every_variable_as_vcd() {
+    use il_trace::read::{self, Sample};
+    let mut buf = Vec::new();
+    let tl = il_examples::trace_motor::record(&mut buf).unwrap();
+    let d = read::parse(&buf[..]).unwrap();
+    // SCAN is 100 ms: the timescale is 100 ms's coarsest whole unit, ms.
+    assert_eq!(d.timescale, Some((1, vcd::TimescaleUnit::MS)));
+    let paths: Vec<String> = d.signals.iter().map(|s| s.path.join(".")).collect();
+    assert_eq!(
+        paths,
+        [
+            "motor.start",
+            "motor.stop",
+            "motor.run",
+            "motor.starts",
+            "motor.edge.CLK",
+            "motor.edge.Q"
+        ]
+    );
+    let run = d.signal("motor.run").unwrap();
+    let starts = d.signal("motor.starts").unwrap();
+    for (t, want_run, want_starts) in [
+        (0, 0, 0),
+        (200, 1, 1),
+        (900, 1, 1),
+        (1000, 0, 1),
+        (1500, 1, 2),
+    ] {
+        assert_eq!(run.at(t), Some(&Sample::Bits(want_run)), "run at {t} ms");
+        assert_eq!(
+            starts.at(t),
+            Some(&Sample::Bits(want_starts)),
+            "starts at {t} ms"
+        );
+    }
+    // The rising edge lasts one scan.
+    let q = d.signal("motor.edge.Q").unwrap();
+    assert_eq!(q.at(200), Some(&Sample::Bits(1)));
+    assert_eq!(q.at(300), Some(&Sample::Bits(0)));
+    assert!(tl.to_string().contains("press start again"));
+}

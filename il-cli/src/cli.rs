@@ -252,6 +252,18 @@ pub fn command() -> Command {
                         .action(ArgAction::Append),
                 )
                 .arg(
+                    Arg::new("vcd")
+                        .long("vcd")
+                        .value_name("FILE")
+                        .help("Also write the watched variables as a VCD waveform (GTKWave, Surfer)"),
+                )
+                .arg(
+                    Arg::new("plot")
+                        .long("plot")
+                        .value_name("FILE")
+                        .help("Also draw a timing diagram of the watched variables as SVG"),
+                )
+                .arg(
                     Arg::new("color")
                         .long("color")
                         .value_name("WHEN")

@@ -4,8 +4,10 @@ mod check;
 mod cli;
 mod emit;
 mod lsp;
+mod plot;
 mod progress;
 mod run;
+mod wave;
 
 use std::io::{self, IsTerminal};
 use std::process::ExitCode;
@@ -93,6 +95,8 @@ fn main() -> ExitCode {
                     m.get_one::<String>("color").map_or("auto", String::as_str),
                 ),
                 front: cli::Front::of(m),
+                vcd: m.get_one::<String>("vcd").map(std::path::PathBuf::from),
+                plot: m.get_one::<String>("plot").map(std::path::PathBuf::from),
             };
             let code = run::run(&opts, &mut io::stdout().lock(), &mut io::stderr().lock());
             ExitCode::from(code)

@@ -14,6 +14,8 @@ Examples:
 
   ilc run tank.il --cycles 10 --set %IX0.0=TRUE@2 --set %IW2=500 --watch state,tank.level,%QX0.0
   ilc run tank.il --set valves[2].open=TRUE --set state=TankState#Filling --watch valves[2]
+  ilc run motor.il --program Motor --cycles 8 --set start=TRUE@2 --set start=FALSE@3 --vcd motor.vcd
+  ilc run motor.il --program Motor --cycles 8 --set start=TRUE@2 --watch start,run --plot motor.svg
 
 Cycles are numbered from 1; scan k runs at time (k-1) * step. A --set without
 @CYCLE is written before scan 1. Names are variables with members and elements
@@ -22,6 +24,15 @@ Cycles are numbered from 1; scan k runs at time (k-1) * step. A --set without
 Values are IL literals (TRUE, 42, 16#FF, 1.5, T#10ms, 'text', TankState#Filling).
 The table shows every watched variable after each scan; faults (division by
 zero, index out of range) are reported on stderr.
+
+--vcd FILE writes the same values as a Value Change Dump (IEEE 1364) for
+GTKWave or Surfer: one $scope per program and FB instance/STRUCT, BOOL as 1-bit
+wires, integers as vectors of their width, REAL/LREAL as real, TIME as an
+integer counting the timescale unit, enumerations as their value (named in a
+$comment), with the timescale the coarsest of s/ms/us/ns that divides --step.
+--plot FILE draws a timing diagram (SVG): one lane per watched signal, BOOL as
+high/low, numbers as stepped values, time in ms or s. Both files are written
+whole at the end of the run, or not at all.
 
 Exit status: 0 ran, 1 the program has errors or a name/value is wrong,
 2 the command line itself is wrong.";
@@ -93,6 +104,10 @@ pub struct Options {
     pub color: bool,
     /// `--std` and `--snippet`.
     pub front: crate::cli::Front,
+    /// `--vcd FILE`.
+    pub vcd: Option<std::path::PathBuf>,
+    /// `--plot FILE`.
+    pub plot: Option<std::path::PathBuf>,
 }
 
 /// Run and print; the exit status (0 fine, 1 error).
@@ -181,6 +196,14 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
     let mut header = vec!["cycle".to_string(), "time".to_string()];
     header.extend(watch.iter().map(|p| p.text.clone()));
     let mut rows = Vec::new();
+    let mut waves = crate::wave::Waves::new(
+        prog,
+        &m.pou().name,
+        &watch,
+        o.step,
+        o.vcd.as_ref(),
+        o.plot.as_ref(),
+    )?;
     let mut ctx = Cycle::new();
     let mut faults_seen = 0u64;
     let mut fault_lines = Vec::new();
@@ -194,10 +217,12 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
         m.scan(&mut ctx)
             .map_err(|e| format!("cycle {k} (time {}): {e}", fmt_dur(now.0)))?;
         let mut row = vec![k.to_string(), fmt_dur(now.0)];
-        for w in &watch {
-            row.push(m.get_at(&ctx, w).display());
-        }
+        let values: Vec<Value> = watch.iter().map(|w| m.get_at(&ctx, w)).collect();
+        row.extend(values.iter().map(Value::display));
         rows.push(row);
+        if let Some(w) = &mut waves {
+            w.sample(now, &values)?;
+        }
         let new = ctx.fault_count() - faults_seen;
         if new > 0 {
             let recent: Vec<_> = ctx.faults().copied().collect();
@@ -241,6 +266,9 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
     for r in &rows {
         text.push_str(&line(r));
         text.push('\n');
+    }
+    if let Some(w) = waves {
+        w.finish()?;
     }
     out.write_all(text.as_bytes())
         .map_err(|e| format!("cannot write the table: {e}"))?;

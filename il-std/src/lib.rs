@@ -63,6 +63,7 @@ pub mod signature;
 mod string;
 mod task;
 mod time;
+pub mod trace;
 mod types;
 
 #[cfg(feature = "std")]

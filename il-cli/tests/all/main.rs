@@ -11,3 +11,4 @@ mod lsp;
 mod plcopen;
 mod run;
 mod ui;
+mod waves;

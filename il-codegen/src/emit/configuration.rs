@@ -198,6 +198,23 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
         io_accessors.extend(super::io::accessors_in(&prefix, &r.globals));
     }
     io_accessors.extend(super::io::accessors(&c.globals));
+    // Globals not located (those are in `Cycle::io`), the unnamed resource's
+    // programs, then each named resource as a scope.
+    let mut top_programs = Vec::new();
+    let mut named = Vec::new();
+    for r in &c.resources {
+        let progs: Vec<&str> = r.programs.iter().map(|p| p.name.as_str()).collect();
+        match &r.name {
+            None => top_programs.extend(progs.iter().map(|p| (None, *p))),
+            Some(rn) => named.push((rn.as_str(), unlocated(&r.globals), progs)),
+        }
+    }
+    let mut globals = unlocated(&c.globals);
+    // The unnamed resource's globals are flattened into the struct too.
+    for r in c.resources.iter().filter(|r| r.name.is_none()) {
+        globals.extend(unlocated(&r.globals));
+    }
+    let visit = super::visit::config(&name, &globals, &top_programs, &named);
     let doc = format!(
         " IEC 61131-3 CONFIGURATION `{}`, generated from Instruction List: its globals and program instances. Call [`{}::run`] once per host cycle with the current time in the context.",
         c.name, name
@@ -227,6 +244,7 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
 
         #sub_items
         #retain
+        #visit
 
         #[allow(dead_code, non_snake_case, unused_mut, unused_variables, clippy::all)]
         impl #name {
@@ -319,6 +337,10 @@ fn retain_items(c: &ConfigDef, name: &proc_macro2::Ident, opts: super::Options) 
 
 /// Fields and initialisers for globals (not located: those are in the
 /// process image) and program instances.
+fn unlocated(gs: &[Var]) -> Vec<&Var> {
+    gs.iter().filter(|v| v.location.is_none()).collect()
+}
+
 fn members(globals: &[Var], programs: &[(String, String)]) -> (TokenStream, TokenStream) {
     let mut fields = TokenStream::new();
     let mut inits = TokenStream::new();

@@ -10,6 +10,7 @@ mod flow;
 mod io;
 mod names;
 mod values;
+mod visit;
 
 use crate::ast::{PouKind, VarKind};
 use crate::sema::ir::{CheckedPou, Program, Storage};
@@ -359,6 +360,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 )
             };
             let retain = retain_items(pou, opts);
+            let visit = visit::pou(&name, &fields);
             let serde = serde_derive(opts);
             // The generic trait fits blocks called with the context alone.
             let trait_impl = (inouts.is_empty() && externals.is_empty()).then(|| {
@@ -400,6 +402,7 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 }
 
                 #trait_impl
+                #visit
                 #ext_item
                 #retain
             }
@@ -539,6 +542,7 @@ fn emit_type(t: &crate::sema::ir::TypeDef, opts: Options) -> TokenStream {
                 let v = values::init_value(&f.ty, f.init.as_ref());
                 quote!(#fid: #v,)
             });
+            let visit = visit::strukt(name, fields);
             quote! {
                 #[doc = #doc]
                 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -552,6 +556,8 @@ fn emit_type(t: &crate::sema::ir::TypeDef, opts: Options) -> TokenStream {
                         Self { #(#inits)* }
                     }
                 }
+
+                #visit
             }
         }
         TypeDef::Enum {
@@ -562,6 +568,7 @@ fn emit_type(t: &crate::sema::ir::TypeDef, opts: Options) -> TokenStream {
             let id = item_ident(name);
             let doc =
                 format!(" IEC 61131-3 enumeration `{name}`, generated from Instruction List.");
+            let visit = visit::enumeration(name, values);
             let vals = values.iter().enumerate().map(|(i, (v, disc))| {
                 let vid = rust_ident(v);
                 let d = disc.map(|n| {
@@ -577,6 +584,8 @@ fn emit_type(t: &crate::sema::ir::TypeDef, opts: Options) -> TokenStream {
                 #serde
                 #[allow(dead_code, non_camel_case_types, clippy::all)]
                 pub enum #id { #(#vals)* }
+
+                #visit
             }
         }
     }

@@ -90,6 +90,20 @@ impl Fast {
         self.seen = __s_seen;
     }
 }
+#[allow(dead_code, unused_variables, clippy::all)]
+impl Fast {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.var("enable", "BOOL", ::il_std::trace::AsValue::as_value(&self.enable));
+        v.var("seen", "DINT", ::il_std::trace::AsValue::as_value(&self.seen));
+    }
+}
+impl ::il_std::trace::Visit for Fast {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        Fast::visit(self, v)
+    }
+}
 /// The globals `Fast` uses (its VAR_EXTERNALs), passed to every call.
 #[allow(dead_code, non_snake_case, non_camel_case_types)]
 pub struct Fast__Ext<'a> {
@@ -141,6 +155,17 @@ impl Slow {
             (*__ext.ticks) = 0i32;
         }
         // 28: keep:
+    }
+}
+#[allow(dead_code, unused_variables, clippy::all)]
+impl Slow {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {}
+}
+impl ::il_std::trace::Visit for Slow {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        Slow::visit(self, v)
     }
 }
 /// The globals `Slow` uses (its VAR_EXTERNALs), passed to every call.
@@ -198,6 +223,30 @@ impl ::core::default::Default for Plant__Cpu {
             fast: ::core::default::Default::default(),
             slow: ::core::default::Default::default(),
         }
+    }
+}
+#[allow(dead_code, unused_variables, clippy::all)]
+impl Plant {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.var("ticks", "DINT", ::il_std::trace::AsValue::as_value(&self.ticks));
+        v.var("run", "BOOL", ::il_std::trace::AsValue::as_value(&self.run));
+        v.var("fast_seen", "DINT", ::il_std::trace::AsValue::as_value(&self.fast_seen));
+        v.var("limit", "DINT", ::il_std::trace::AsValue::as_value(&self.limit));
+        v.enter("Cpu");
+        v.enter("fast");
+        ::il_std::trace::Visit::visit(&self.Cpu.fast, v);
+        v.leave();
+        v.enter("slow");
+        ::il_std::trace::Visit::visit(&self.Cpu.slow, v);
+        v.leave();
+        v.leave();
+    }
+}
+impl ::il_std::trace::Visit for Plant {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        Plant::visit(self, v)
     }
 }
 #[allow(dead_code, non_snake_case, unused_mut, unused_variables, clippy::all)]

@@ -120,3 +120,19 @@ impl ::il_std::FunctionBlock for Dispatch {
         Dispatch::call(self, ctx)
     }
 }
+#[allow(dead_code, unused_variables, clippy::all)]
+impl Dispatch {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.var("start_mid", "BOOL", ::il_std::trace::AsValue::as_value(&self.start_mid));
+        v.var("i", "INT", ::il_std::trace::AsValue::as_value(&self.i));
+        v.var("j", "INT", ::il_std::trace::AsValue::as_value(&self.j));
+        v.var("n", "INT", ::il_std::trace::AsValue::as_value(&self.n));
+    }
+}
+impl ::il_std::trace::Visit for Dispatch {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        Dispatch::visit(self, v)
+    }
+}

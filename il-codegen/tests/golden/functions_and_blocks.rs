@@ -135,3 +135,26 @@ impl ::il_std::FunctionBlock for Filler {
         Filler::call(self, ctx)
     }
 }
+#[allow(dead_code, unused_variables, clippy::all)]
+impl Filler {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.var("level", "INT", ::il_std::trace::AsValue::as_value(&self.level));
+        v.var("start", "BOOL", ::il_std::trace::AsValue::as_value(&self.start));
+        v.var("valve", "BOOL", ::il_std::trace::AsValue::as_value(&self.valve));
+        for (__i0, __e1) in self.history.iter().enumerate() {
+            let __ix = [(__i0 as i64).wrapping_add(1i64)];
+            v.elem("history", &__ix, "INT", ::il_std::trace::AsValue::as_value(__e1));
+        }
+        v.enter("delay");
+        ::il_std::trace::Visit::visit(&self.delay, v);
+        v.leave();
+        v.var("slot", "INT", ::il_std::trace::AsValue::as_value(&self.slot));
+    }
+}
+impl ::il_std::trace::Visit for Filler {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        Filler::visit(self, v)
+    }
+}

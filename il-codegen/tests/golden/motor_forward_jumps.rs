@@ -93,3 +93,22 @@ impl ::il_std::FunctionBlock for Motor {
         Motor::call(self, ctx)
     }
 }
+#[allow(dead_code, unused_variables, clippy::all)]
+impl Motor {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.var("start", "BOOL", ::il_std::trace::AsValue::as_value(&self.start));
+        v.var("stop", "BOOL", ::il_std::trace::AsValue::as_value(&self.stop));
+        v.var("run", "BOOL", ::il_std::trace::AsValue::as_value(&self.run));
+        v.var("starts", "INT", ::il_std::trace::AsValue::as_value(&self.starts));
+        v.enter("edge");
+        ::il_std::trace::Visit::visit(&self.edge, v);
+        v.leave();
+    }
+}
+impl ::il_std::trace::Visit for Motor {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        Motor::visit(self, v)
+    }
+}

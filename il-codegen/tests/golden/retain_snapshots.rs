@@ -75,6 +75,23 @@ impl ::il_std::FunctionBlock for Odometer {
         Odometer::call(self, ctx)
     }
 }
+#[allow(dead_code, unused_variables, clippy::all)]
+impl Odometer {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.var("pulse", "BOOL", ::il_std::trace::AsValue::as_value(&self.pulse));
+        v.var("total", "UDINT", ::il_std::trace::AsValue::as_value(&self.total));
+        v.enter("edge");
+        ::il_std::trace::Visit::visit(&self.edge, v);
+        v.leave();
+    }
+}
+impl ::il_std::trace::Visit for Odometer {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        Odometer::visit(self, v)
+    }
+}
 /// The RETAIN variables of `Odometer` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.
 #[derive(Clone, Debug, PartialEq)]
 #[allow(dead_code, non_snake_case, non_camel_case_types)]
@@ -186,6 +203,33 @@ impl ::il_std::FunctionBlock for Line {
         Line::call(self, ctx)
     }
 }
+#[allow(dead_code, unused_variables, clippy::all)]
+impl Line {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        for (__i0, __e1) in self.pulses.iter().enumerate() {
+            let __ix = [(__i0 as i64).wrapping_add(0i64)];
+            v.elem("pulses", &__ix, "BOOL", ::il_std::trace::AsValue::as_value(__e1));
+        }
+        v.var("shifts", "INT", ::il_std::trace::AsValue::as_value(&self.shifts));
+        v.enter("main");
+        ::il_std::trace::Visit::visit(&self.main, v);
+        v.leave();
+        for (__i0, __e1) in self.axes.iter().enumerate() {
+            let __ix = [(__i0 as i64).wrapping_add(0i64)];
+            v.enter_elem("axes", &__ix);
+            ::il_std::trace::Visit::visit(__e1, v);
+            v.leave();
+        }
+        v.var("scratch", "INT", ::il_std::trace::AsValue::as_value(&self.scratch));
+    }
+}
+impl ::il_std::trace::Visit for Line {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        Line::visit(self, v)
+    }
+}
 /// The RETAIN variables of `Line` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.
 #[derive(Clone, Debug, PartialEq)]
 #[allow(dead_code, non_snake_case, non_camel_case_types)]
@@ -279,6 +323,22 @@ impl OnlyNested {
 impl ::il_std::FunctionBlock for OnlyNested {
     fn call(&mut self, ctx: &mut ::il_std::Cycle) {
         OnlyNested::call(self, ctx)
+    }
+}
+#[allow(dead_code, unused_variables, clippy::all)]
+impl OnlyNested {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.enter("wheel");
+        ::il_std::trace::Visit::visit(&self.wheel, v);
+        v.leave();
+        v.var("x", "BOOL", ::il_std::trace::AsValue::as_value(&self.x));
+    }
+}
+impl ::il_std::trace::Visit for OnlyNested {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        OnlyNested::visit(self, v)
     }
 }
 /// The RETAIN variables of `OnlyNested` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.

@@ -32,5 +32,6 @@ mod seeds;
 mod std_blocks;
 mod std_en_eno;
 mod std_funcs;
+mod trace;
 mod ui;
 mod user_types;

@@ -1,0 +1,311 @@
+//! `ilc run --vcd` and `--plot`: the watched variables of each scan offered
+//! to an `il_std::trace::Visitor`, as generated code offers its variables,
+//! so that the dump is written by the same recorder a host uses (il-trace).
+
+use std::path::PathBuf;
+
+use il_codegen::sema::ir::{Program, TypeDef};
+use il_codegen::sema::types::{Elem, Ty};
+use il_interp::il_std::TIME;
+use il_interp::il_std::trace::{Value as TValue, Visitor};
+use il_interp::{HostPlace, Value};
+use il_trace::{AtomicFile, Recorder};
+
+use crate::plot::{Lanes, Plot};
+
+/// The watched places grouped by the scopes their names go through, in the
+/// order they were first named: `t1.Q, start, t1.ET` is `t1 { Q, ET }, start`.
+#[derive(Default)]
+struct Tree {
+    items: Vec<Item>,
+}
+
+enum Item {
+    /// Watched place `i`, under its last name.
+    Leaf(usize, String),
+    Scope(String, Tree),
+}
+
+impl Tree {
+    fn insert(&mut self, scopes: &[String], leaf: usize, name: String) {
+        match scopes.split_first() {
+            None => self.items.push(Item::Leaf(leaf, name)),
+            Some((s, rest)) => {
+                let found = self.items.iter_mut().find_map(|it| match it {
+                    Item::Scope(n, t) if n == s => Some(t),
+                    _ => None,
+                });
+                match found {
+                    Some(t) => t.insert(rest, leaf, name),
+                    None => {
+                        let mut t = Tree::default();
+                        t.insert(rest, leaf, name);
+                        self.items.push(Item::Scope(s.clone(), t));
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// `a.b[1].c` → `["a", "b[1]"]`, `"c"`; a direct address (`%IX0.0`) is one name.
+fn split_path(text: &str) -> (Vec<String>, String) {
+    let text: String = text.chars().filter(|c| !c.is_whitespace()).collect();
+    if text.starts_with('%') {
+        return (Vec::new(), text);
+    }
+    let mut parts = Vec::new();
+    let (mut depth, mut start) = (0usize, 0usize);
+    for (i, c) in text.char_indices() {
+        match c {
+            '[' => depth += 1,
+            ']' => depth = depth.saturating_sub(1),
+            '.' if depth == 0 => {
+                parts.push(text[start..i].to_string());
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    let last = text[start..].to_string();
+    (parts, last)
+}
+
+/// What is recorded of a run.
+pub struct Waves<'p> {
+    prog: &'p Program,
+    top: String,
+    tree: Tree,
+    tys: Vec<Ty>,
+    vcd: Option<(PathBuf, Recorder<AtomicFile>)>,
+    plot: Option<(PathBuf, Lanes)>,
+}
+
+impl<'p> Waves<'p> {
+    /// `None` when neither output is asked for.
+    pub fn new(
+        prog: &'p Program,
+        top: &str,
+        watch: &[HostPlace],
+        step: TIME,
+        vcd: Option<&PathBuf>,
+        plot: Option<&PathBuf>,
+    ) -> Result<Option<Waves<'p>>, String> {
+        if vcd.is_none() && plot.is_none() {
+            return Ok(None);
+        }
+        let mut tree = Tree::default();
+        for (i, p) in watch.iter().enumerate() {
+            let (scopes, name) = split_path(&p.text);
+            tree.insert(&scopes, i, name);
+        }
+        let vcd = match vcd {
+            Some(path) => {
+                let f = AtomicFile::create(path)
+                    .map_err(|e| format!("--vcd {}: {e}", path.display()))?;
+                let rec = Recorder::new(f, top, step)
+                    .map_err(|e| format!("--vcd {}: {e}", path.display()))?;
+                Some((path.clone(), rec))
+            }
+            None => None,
+        };
+        Ok(Some(Waves {
+            prog,
+            top: top.to_string(),
+            tree,
+            tys: watch.iter().map(|p| p.ty.clone()).collect(),
+            vcd,
+            plot: plot.map(|p| (p.clone(), Lanes::new(step))),
+        }))
+    }
+
+    /// Record the values of the watched places after the scan at `now`.
+    pub fn sample(&mut self, now: TIME, values: &[Value]) -> Result<(), String> {
+        let offer = |v: &mut dyn Visitor| {
+            offer_tree(v, &self.tree, values, &self.tys, self.prog);
+        };
+        if let Some((path, rec)) = &mut self.vcd {
+            rec.sample_with(now, offer)
+                .map_err(|e| format!("--vcd {}: {e}", path.display()))?;
+        }
+        if let Some((_, lanes)) = &mut self.plot {
+            lanes.sample(now, offer);
+        }
+        Ok(())
+    }
+
+    /// Write the files (each complete, or not at all).
+    pub fn finish(self) -> Result<(), String> {
+        if let Some((path, mut rec)) = self.vcd {
+            let err = |e: std::io::Error| format!("--vcd {}: {e}", path.display());
+            rec.finish().map_err(err)?;
+            rec.get_mut().commit().map_err(err)?;
+        }
+        if let Some((path, lanes)) = self.plot {
+            Plot::new(&self.top, lanes)
+                .write(&path)
+                .map_err(|e| format!("--plot {}: {e}", path.display()))?;
+        }
+        Ok(())
+    }
+}
+
+fn offer_tree(v: &mut dyn Visitor, t: &Tree, values: &[Value], tys: &[Ty], prog: &Program) {
+    for it in &t.items {
+        match it {
+            Item::Leaf(i, name) => {
+                if let (Some(x), Some(ty)) = (values.get(*i), tys.get(*i)) {
+                    offer(v, name, ty, x, prog);
+                }
+            }
+            Item::Scope(name, sub) => {
+                v.enter(name);
+                offer_tree(v, sub, values, tys, prog);
+                v.leave();
+            }
+        }
+    }
+}
+
+fn type_def<'a>(prog: &'a Program, name: &str) -> Option<&'a TypeDef> {
+    prog.types.iter().find(|d| match d {
+        TypeDef::Struct { name: n, .. } | TypeDef::Enum { name: n, .. } => {
+            n.eq_ignore_ascii_case(name)
+        }
+    })
+}
+
+/// The integer value of an enumeration value, as the generated Rust enum's
+/// discriminant: explicit, or one more than the previous one.
+fn enum_value(prog: &Program, ty: &str, value: &str) -> i64 {
+    if let Some(TypeDef::Enum { values, .. }) = type_def(prog, ty) {
+        let mut next = 0i128;
+        for (n, d) in values {
+            let x = d.unwrap_or(next);
+            if n.eq_ignore_ascii_case(value) {
+                return x as i64;
+            }
+            next = x + 1;
+        }
+    }
+    0
+}
+
+/// Offer one value named `name` of type `ty`: a scalar as a variable, a
+/// STRUCT as a scope of its fields, an array element by element.
+fn offer(v: &mut dyn Visitor, name: &str, ty: &Ty, x: &Value, prog: &Program) {
+    match (ty, x) {
+        (Ty::Struct(_), Value::Struct(_)) => {
+            v.enter(name);
+            fields(v, ty, x, prog);
+            v.leave();
+        }
+        (Ty::Array { dims, elem }, Value::Array(items)) => {
+            let mut ix: Vec<i64> = dims.iter().map(|(lo, _)| *lo).collect();
+            for item in items {
+                match (&**elem, item) {
+                    (Ty::Struct(_), Value::Struct(_)) => {
+                        v.enter_elem(name, &ix);
+                        fields(v, elem, item, prog);
+                        v.leave();
+                    }
+                    // Instances are not watched; nested arrays are not IEC.
+                    (Ty::Fb(_) | Ty::Array { .. }, _) => {}
+                    _ => scalar(elem, item, prog, &mut |t, s| v.elem(name, &ix, t, s)),
+                }
+                // Row-major: the last index runs fastest.
+                for (k, (lo, hi)) in dims.iter().enumerate().rev() {
+                    if ix[k] < *hi {
+                        ix[k] += 1;
+                        break;
+                    }
+                    ix[k] = *lo;
+                }
+            }
+        }
+        (Ty::Fb(_), _) => {}
+        _ => scalar(ty, x, prog, &mut |t, s| v.var(name, t, s)),
+    }
+}
+
+fn fields(v: &mut dyn Visitor, ty: &Ty, x: &Value, prog: &Program) {
+    let (Ty::Struct(n), Value::Struct(s)) = (ty, x) else {
+        return;
+    };
+    let Some(TypeDef::Struct { fields, .. }) = type_def(prog, n) else {
+        return;
+    };
+    for (f, (_, fx)) in fields.iter().zip(&s.fields) {
+        offer(v, &f.name, &f.ty, fx, prog);
+    }
+}
+
+/// An elementary, string or enumeration value as the trace value generated
+/// code would give for it.
+fn scalar(ty: &Ty, x: &Value, prog: &Program, put: &mut dyn FnMut(&str, TValue<'_>)) {
+    let tname = ty.to_string();
+    let signed = |e: Elem| matches!(e, Elem::SINT | Elem::INT | Elem::DINT | Elem::LINT);
+    match x {
+        Value::Bool(b) => put(&tname, TValue::Bool(*b)),
+        Value::Int(n, e) => {
+            let bits = match e {
+                Elem::SINT | Elem::USINT | Elem::BYTE => 8,
+                Elem::INT | Elem::UINT | Elem::WORD => 16,
+                Elem::DINT | Elem::UDINT | Elem::DWORD => 32,
+                _ => 64,
+            };
+            if signed(*e) {
+                put(
+                    &tname,
+                    TValue::Int {
+                        value: *n as i64,
+                        bits,
+                    },
+                )
+            } else {
+                put(
+                    &tname,
+                    TValue::UInt {
+                        value: *n as u64,
+                        bits,
+                    },
+                )
+            }
+        }
+        Value::Real(f) => put(&tname, TValue::Real(*f as f64)),
+        Value::LReal(f) => put(&tname, TValue::Real(*f)),
+        Value::Time(n, Elem::DATE) => put(&tname, TValue::Date(*n)),
+        Value::Time(n, _) => put(&tname, TValue::Time(*n)),
+        Value::Enum { ty: et, value } => put(
+            &tname,
+            TValue::Enum {
+                value: enum_value(prog, et, value),
+                name: value,
+            },
+        ),
+        Value::Str { units, wide: false } => {
+            let bytes: Vec<u8> = units.iter().map(|&u| u as u8).collect();
+            put(&tname, TValue::Str(&bytes))
+        }
+        Value::Str { units, wide: true } => put(&tname, TValue::WStr(units)),
+        Value::Array(_) | Value::Struct(_) | Value::Fb(_) | Value::StdFb(_) => {}
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::split_path;
+
+    #[test]
+    fn paths_split_at_dots_outside_brackets() {
+        let s = |t: &str| split_path(t);
+        assert_eq!(s("start"), (vec![], "start".to_string()));
+        assert_eq!(s("t1.Q"), (vec!["t1".to_string()], "Q".to_string()));
+        assert_eq!(
+            s("valves[2].open"),
+            (vec!["valves[2]".to_string()], "open".to_string())
+        );
+        assert_eq!(s("m[1, 2]"), (vec![], "m[1,2]".to_string()));
+        assert_eq!(s("%IX0.0"), (vec![], "%IX0.0".to_string()));
+    }
+}
