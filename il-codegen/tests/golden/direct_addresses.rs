@@ -129,3 +129,16 @@ impl ::il_std::FunctionBlock for Io {
         Io::call(self, ctx)
     }
 }
+#[allow(dead_code, unused_variables, clippy::all)]
+impl Io {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.var("w", "WORD", ::il_std::trace::AsValue::as_value(&self.w));
+    }
+}
+impl ::il_std::trace::Visit for Io {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        Io::visit(self, v)
+    }
+}

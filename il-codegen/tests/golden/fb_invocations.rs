@@ -96,3 +96,28 @@ impl ::il_std::FunctionBlock for Station {
         Station::call(self, ctx)
     }
 }
+#[allow(dead_code, unused_variables, clippy::all)]
+impl Station {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.var("go", "BOOL", ::il_std::trace::AsValue::as_value(&self.go));
+        v.var("a", "BOOL", ::il_std::trace::AsValue::as_value(&self.a));
+        v.var("b", "BOOL", ::il_std::trace::AsValue::as_value(&self.b));
+        v.var("q", "BOOL", ::il_std::trace::AsValue::as_value(&self.q));
+        v.enter("c");
+        ::il_std::trace::Visit::visit(&self.c, v);
+        v.leave();
+        v.enter("t");
+        ::il_std::trace::Visit::visit(&self.t, v);
+        v.leave();
+        v.enter("edge");
+        ::il_std::trace::Visit::visit(&self.edge, v);
+        v.leave();
+    }
+}
+impl ::il_std::trace::Visit for Station {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        Station::visit(self, v)
+    }
+}

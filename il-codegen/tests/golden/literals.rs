@@ -93,3 +93,20 @@ impl ::il_std::FunctionBlock for Literals {
         Literals::call(self, ctx)
     }
 }
+#[allow(dead_code, unused_variables, clippy::all)]
+impl Literals {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.var("a", "BOOL", ::il_std::trace::AsValue::as_value(&self.a));
+        v.var("r", "REAL", ::il_std::trace::AsValue::as_value(&self.r));
+        v.var("n", "INT", ::il_std::trace::AsValue::as_value(&self.n));
+        v.var("t", "TIME", ::il_std::trace::AsValue::as_value(&self.t));
+        v.var("w", "WORD", ::il_std::trace::AsValue::as_value(&self.w));
+    }
+}
+impl ::il_std::trace::Visit for Literals {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        Literals::visit(self, v)
+    }
+}

@@ -9,6 +9,19 @@ pub enum TankState {
     Filling,
     Full,
 }
+#[allow(dead_code, clippy::all)]
+impl ::il_std::trace::AsValue for TankState {
+    fn as_value(&self) -> ::il_std::trace::Value<'_> {
+        ::il_std::trace::Value::Enum {
+            value: *self as i64,
+            name: match self {
+                TankState::Idle => "Idle",
+                TankState::Filling => "Filling",
+                TankState::Full => "Full",
+            },
+        }
+    }
+}
 /// IEC 61131-3 STRUCT `Point`, generated from Instruction List.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
@@ -20,6 +33,13 @@ pub struct Point {
 impl ::core::default::Default for Point {
     fn default() -> Self {
         Self { x: 0i16, y: 7i16 }
+    }
+}
+#[allow(dead_code, unused_variables, clippy::all)]
+impl ::il_std::trace::Visit for Point {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.var("x", "INT", ::il_std::trace::AsValue::as_value(&self.x));
+        v.var("y", "INT", ::il_std::trace::AsValue::as_value(&self.y));
     }
 }
 /// IEC 61131-3 STRUCT `Tank`, generated from Instruction List.
@@ -38,6 +58,16 @@ impl ::core::default::Default for Tank {
             corner: ::core::default::Default::default(),
             state: TankState::Idle,
         }
+    }
+}
+#[allow(dead_code, unused_variables, clippy::all)]
+impl ::il_std::trace::Visit for Tank {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.var("level", "INT", ::il_std::trace::AsValue::as_value(&self.level));
+        v.enter("corner");
+        ::il_std::trace::Visit::visit(&self.corner, v);
+        v.leave();
+        v.var("state", "TankState", ::il_std::trace::AsValue::as_value(&self.state));
     }
 }
 /// IEC 61131-3 FUNCTION `Scale`, generated from Instruction List.
@@ -333,5 +363,48 @@ impl Plant {
 impl ::il_std::FunctionBlock for Plant {
     fn call(&mut self, ctx: &mut ::il_std::Cycle) {
         Plant::call(self, ctx)
+    }
+}
+#[allow(dead_code, unused_variables, clippy::all)]
+impl Plant {
+    /// Offer every variable to `v` (see `il_std::trace`): name, IEC
+    /// type and value, going into instances, STRUCTs and arrays.
+    pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        v.var("demand", "INT", ::il_std::trace::AsValue::as_value(&self.demand));
+        v.var("ref", "INT", ::il_std::trace::AsValue::as_value(&self.r#ref));
+        v.var("state", "TankState", ::il_std::trace::AsValue::as_value(&self.state));
+        v.enter("main");
+        ::il_std::trace::Visit::visit(&self.main, v);
+        v.leave();
+        for (__i0, __e1) in self.tanks.iter().enumerate() {
+            let __ix = [(__i0 as i64).wrapping_add(1i64)];
+            v.enter_elem("tanks", &__ix);
+            ::il_std::trace::Visit::visit(__e1, v);
+            v.leave();
+        }
+        for (__i0, __e1) in self.grid.iter().enumerate() {
+            for (__i1, __e2) in __e1.iter().enumerate() {
+                let __ix = [
+                    (__i0 as i64).wrapping_add(0i64),
+                    (__i1 as i64).wrapping_add(0i64),
+                ];
+                v.elem("grid", &__ix, "INT", ::il_std::trace::AsValue::as_value(__e2));
+            }
+        }
+        for (__i0, __e1) in self.timers.iter().enumerate() {
+            let __ix = [(__i0 as i64).wrapping_add(1i64)];
+            v.enter_elem("timers", &__ix);
+            ::il_std::trace::Visit::visit(__e1, v);
+            v.leave();
+        }
+        v.var("pct", "INT", ::il_std::trace::AsValue::as_value(&self.pct));
+        v.var("i", "INT", ::il_std::trace::AsValue::as_value(&self.i));
+        v.var("sum", "DINT", ::il_std::trace::AsValue::as_value(&self.sum));
+        v.var("ok", "BOOL", ::il_std::trace::AsValue::as_value(&self.ok));
+    }
+}
+impl ::il_std::trace::Visit for Plant {
+    fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
+        Plant::visit(self, v)
     }
 }
