@@ -193,6 +193,8 @@ fn bottling_runs_two_tasks_at_their_intervals() {
 /// The README's and the guide's host snippet (they quote these lines): one
 /// scan with `start` pressed, then 10 ms of simulated time.
 #[test]
+// The README shows the host's steps one by one, as a host writes them.
+#[allow(clippy::field_reassign_with_default)]
 fn the_readmes_host_drives_one_scan() {
     use il_examples::readme_motor::Motor;
     let mut ctx = il_std::Cycle::new();
