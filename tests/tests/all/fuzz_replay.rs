@@ -9,11 +9,17 @@
 //! debug build, far above the slowest input): the hang inputs of earlier
 //! defects (exponential instance trees and type graphs, many diagnostics on
 //! one long line) took minutes, and a run over budget fails the test with its
-//! input named instead of hanging CI.
+//! input named instead of hanging CI. And a memory budget
+//! (`targets::memory_budget`, max(64 MiB, 2000 x the input)): the peak
+//! allocation of each run is counted per thread by the allocator installed
+//! here (for this whole test binary: a thread-local add per allocation).
 
 #[path = "../../../fuzz/src/lib.rs"]
 #[allow(dead_code)]
 mod targets;
+
+#[global_allocator]
+static ALLOC: targets::Counting = targets::Counting;
 
 use std::path::{Path, PathBuf};
 
