@@ -2,6 +2,17 @@
 //! run under the reference interpreter and as generated Rust, compared variable
 //! by variable after every scan (plus the fault count and the last fault).
 //!
+//! Values are compared by their canonical text: integers, TIME and dates by
+//! their inner integer, strings byte by byte (hex), REAL/LREAL by Rust's
+//! shortest round-trip text (`{:?}`), which is NaN-aware equality: exact for
+//! every non-NaN value (`-0.0` and `0.0` differ, so do any two bit patterns
+//! that are not NaN) and any NaN equal to any NaN (sign and payload of a NaN
+//! are not compared: IEEE 754 leaves them open, and LLVM may fold them).
+//!
+//! Each run prints a coverage table (generated constructs, `gen/coverage.rs`,
+//! and how many programs used each) and fails at 500 programs or more when
+//! one of them was used by none.
+//!
 //! All programs of a run are compiled into ONE temporary crate (one build).
 //! CI: a fixed seed and 500 programs. The long run:
 //!
