@@ -17,16 +17,24 @@ pub const TARGETS: &[(&str, Target)] = &[
     ("pipeline", pipeline),
 ];
 
-/// How one run of a target ended when run under a time budget.
+/// How one run of a target ended when run under a time and memory budget.
 #[derive(Debug, PartialEq)]
 pub enum Outcome {
-    /// Returned within the budget.
+    /// Returned within the budgets.
     Ok,
     /// Panicked: a bug (the panic message is printed by the panic hook).
     Panicked,
     /// Still running when the budget ran out: a hang or a superlinear path,
     /// which in a compiler that runs inside users' builds is a bug too.
     TooSlow,
+    /// Returned, but its peak allocation was over [`memory_budget`]: memory
+    /// that grows faster than the input is a bug for the same reason.
+    TooBig {
+        /// Peak bytes allocated (live at once) during the run.
+        peak: usize,
+        /// The budget for this input.
+        budget: usize,
+    },
 }
 
 /// The time budget of one run: `IL_FUZZ_BUDGET_SECS`, or `default_secs`.
@@ -39,24 +47,119 @@ pub fn budget(default_secs: u64) -> std::time::Duration {
     )
 }
 
-/// Run `target` on `data` in a thread of its own and wait at most `budget`.
+/// The memory budget of one run on an input of `len` bytes: the larger of a
+/// floor (`IL_FUZZ_MEM_MIB`, default 64 MiB: the fixed cost of the pipeline
+/// on small inputs, a few MiB, with a wide margin) and 2000 times the input
+/// (linear memory with a generous constant: the checked IR, the emitted
+/// tokens and the formatted text of a 4 KiB input stay far below it).
+pub fn memory_budget(len: usize) -> usize {
+    let floor_mib: usize = std::env::var("IL_FUZZ_MEM_MIB")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(64);
+    (floor_mib << 20).max(len.saturating_mul(2000))
+}
+
+/// A global allocator that counts the bytes live on each thread and their
+/// peak (thread-local, so runs on other threads do not mix in). Install it
+/// with `#[global_allocator]` in a binary (the drive, the libFuzzer targets,
+/// the replay test); without it every peak reads 0 and no memory budget
+/// applies.
+pub struct Counting;
+
+thread_local! {
+    static LIVE: std::cell::Cell<isize> = const { std::cell::Cell::new(0) };
+    static PEAK: std::cell::Cell<isize> = const { std::cell::Cell::new(0) };
+}
+
+fn note(delta: isize) {
+    // `try_with`: an allocation during thread teardown is not counted.
+    let _ = LIVE.try_with(|l| {
+        let now = l.get() + delta;
+        l.set(now);
+        let _ = PEAK.try_with(|p| p.set(p.get().max(now)));
+    });
+}
+
+// SAFETY: every call is forwarded unchanged to the system allocator; the
+// counting touches only const-initialised thread-locals without destructors
+// (no allocation, no unwinding).
+unsafe impl std::alloc::GlobalAlloc for Counting {
+    unsafe fn alloc(&self, l: std::alloc::Layout) -> *mut u8 {
+        note(l.size() as isize);
+        unsafe { std::alloc::System.alloc(l) }
+    }
+    unsafe fn alloc_zeroed(&self, l: std::alloc::Layout) -> *mut u8 {
+        note(l.size() as isize);
+        unsafe { std::alloc::System.alloc_zeroed(l) }
+    }
+    unsafe fn dealloc(&self, p: *mut u8, l: std::alloc::Layout) {
+        note(-(l.size() as isize));
+        unsafe { std::alloc::System.dealloc(p, l) }
+    }
+    unsafe fn realloc(&self, p: *mut u8, l: std::alloc::Layout, new: usize) -> *mut u8 {
+        note(new as isize - l.size() as isize);
+        unsafe { std::alloc::System.realloc(p, l, new) }
+    }
+}
+
+/// Run `target` on `data` on this thread and return its peak allocation
+/// (bytes live at once above what was live before; 0 without [`Counting`]).
+pub fn peak_of(target: Target, data: &[u8]) -> usize {
+    let base = LIVE.with(|l| l.get());
+    PEAK.with(|p| p.set(base));
+    target(data);
+    (PEAK.with(|p| p.get()) - base).max(0) as usize
+}
+
+/// For the libFuzzer binaries: run `target` and panic (a finding libFuzzer
+/// saves) when its peak allocation is over [`memory_budget`].
+pub fn within_memory(target: Target, data: &[u8]) {
+    let peak = peak_of(target, data);
+    let budget = memory_budget(data.len());
+    assert!(
+        peak <= budget,
+        "memory budget exceeded: peak {peak} bytes for an input of {} bytes (budget {budget})",
+        data.len()
+    );
+}
+
+/// Run `target` on `data` in a thread of its own and wait at most `budget`;
+/// the peak allocation is checked against [`memory_budget`].
 /// A run over budget is reported, not waited for: its thread is left behind
 /// (the caller stops soon after with the input saved).
 pub fn run_within(target: Target, data: Vec<u8>, budget: std::time::Duration) -> Outcome {
+    run_measured(target, data, budget).0
+}
+
+/// [`run_within`], with the run's peak allocation in bytes.
+pub fn run_measured(
+    target: Target,
+    data: Vec<u8>,
+    budget: std::time::Duration,
+) -> (Outcome, usize) {
+    let mem_budget = memory_budget(data.len());
     let (tx, rx) = std::sync::mpsc::channel();
     let spawned = std::thread::Builder::new()
         .name("fuzz-run".into())
         .spawn(move || {
-            let r = std::panic::catch_unwind(|| target(&data));
-            let _ = tx.send(r.is_ok());
+            let r = std::panic::catch_unwind(|| peak_of(target, &data));
+            let _ = tx.send(r.ok());
         });
     if spawned.is_err() {
-        return Outcome::Panicked;
+        return (Outcome::Panicked, 0);
     }
     match rx.recv_timeout(budget) {
-        Ok(true) => Outcome::Ok,
-        Ok(false) | Err(std::sync::mpsc::RecvTimeoutError::Disconnected) => Outcome::Panicked,
-        Err(std::sync::mpsc::RecvTimeoutError::Timeout) => Outcome::TooSlow,
+        Ok(Some(peak)) if peak > mem_budget => (
+            Outcome::TooBig {
+                peak,
+                budget: mem_budget,
+            },
+            peak,
+        ),
+        Ok(Some(peak)) => (Outcome::Ok, peak),
+        Ok(None) | Err(std::sync::mpsc::RecvTimeoutError::Disconnected) => (Outcome::Panicked, 0),
+        Err(std::sync::mpsc::RecvTimeoutError::Timeout) => (Outcome::TooSlow, 0),
     }
 }
 

@@ -7,12 +7,20 @@
 //!
 //! DIRs default to `regressions`, `../tests/plc`, `../tests/plc-hostile` and
 //! `../../shared/corpus`.
-//! Deterministic for a given SEED and seed files. A panic stops the run and
-//! leaves the input in `artifacts/TARGET/drive-crash-<run>`; a run longer than
-//! the budget (`IL_FUZZ_BUDGET_SECS`, default 10 s) stops it too, with the
-//! input in `artifacts/TARGET/drive-slow-<run>`, instead of waiting forever.
+//! Deterministic for a given SEED and seed files. Every input runs under a
+//! time budget (`IL_FUZZ_BUDGET_SECS`, default 2 s: inputs are at most 4 KiB
+//! and take milliseconds) and a memory budget (`il_fuzz::memory_budget`: the
+//! peak allocation of the run, counted by the allocator installed here, at
+//! most max(64 MiB, 2000 x the input)). A finding is saved and the run goes
+//! on: a panic in `artifacts/TARGET/drive-crash-<run>`, a run over the time
+//! budget in `drive-slow-<run>` (not waited for), one over the memory budget
+//! in `drive-big-<run>`; the run stops after 10 findings and exits 1 if there
+//! was any. The summary gives the largest peak allocation seen.
 
 use std::path::{Path, PathBuf};
+
+#[global_allocator]
+static ALLOC: il_fuzz::Counting = il_fuzz::Counting;
 
 /// xorshift64*: small and good enough for choosing mutations.
 struct Rng(u64);
@@ -156,10 +164,13 @@ fn main() {
         }
     }
     assert!(!seeds.is_empty(), "no seed files");
-    let budget = il_fuzz::budget(10);
+    let budget = il_fuzz::budget(2);
     let mut rng = Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
     let start = std::time::Instant::now();
     let mut data = Vec::new();
+    let mut findings = 0;
+    let mut max_peak = (0usize, 0usize);
+    let mut done = 0;
     for run in 0..runs {
         // Mostly mutate the previous input further; restart from a seed often.
         if run % 8 == 0 {
@@ -171,10 +182,15 @@ fn main() {
         }
         mutate(&mut rng, &seeds, &mut data);
         let input = data.clone();
-        let outcome = il_fuzz::run_within(target, input.clone(), budget);
+        let (outcome, peak) = il_fuzz::run_measured(target, input.clone(), budget);
+        done = run + 1;
+        if peak > max_peak.0 {
+            max_peak = (peak, input.len());
+        }
         if outcome != il_fuzz::Outcome::Ok {
             let what = match outcome {
                 il_fuzz::Outcome::TooSlow => "slow",
+                il_fuzz::Outcome::TooBig { .. } => "big",
                 _ => "crash",
             };
             let dir = Path::new("artifacts").join(name);
@@ -182,18 +198,30 @@ fn main() {
             let path = dir.join(format!("drive-{what}-{run}"));
             let _ = std::fs::write(&path, &input);
             eprintln!(
-                "{what} at run {run} (budget {budget:?}): input in {}",
+                "{what} at run {run} ({outcome:?}, time budget {budget:?}): input in {}",
                 path.display()
             );
-            std::process::exit(1);
+            findings += 1;
+            if findings >= 10 {
+                break;
+            }
+            // Restart from a seed rather than mutate the finding further.
+            data = seeds[rng.below(seeds.len())].clone();
+            data.truncate(4096);
         }
         if run > 0 && run % 100_000 == 0 {
             eprintln!("{run} runs, {:.0} s", start.elapsed().as_secs_f64());
         }
     }
     println!(
-        "{name}: {runs} runs, seed {seed}, {} seed files, {:.1} s, no crash",
+        "{name}: {done} runs, seed {seed}, {} seed files, {:.1} s, {findings} findings, \
+         largest peak allocation {:.1} MiB (input of {} bytes)",
         seeds.len(),
-        start.elapsed().as_secs_f64()
+        start.elapsed().as_secs_f64(),
+        max_peak.0 as f64 / (1 << 20) as f64,
+        max_peak.1
     );
+    if findings > 0 {
+        std::process::exit(1);
+    }
 }

@@ -62,7 +62,10 @@ impl SourceFile {
     /// Characters in `text[..offset]` (offset clamped to the text).
     fn chars_before(&self, offset: usize) -> usize {
         let offset = offset.min(self.text.len());
-        let block = offset / CHAR_BLOCK;
+        // The text's end in a text of whole blocks has no entry of its own:
+        // count it from the last block (its base was once 0 there, and a
+        // column at the end of a 4096-byte file underflowed).
+        let block = (offset / CHAR_BLOCK).min(self.block_chars.len().saturating_sub(1));
         let base = self.block_chars.get(block).copied().unwrap_or(0) as usize;
         let rest = &self.text.as_bytes()[block * CHAR_BLOCK..offset];
         base + rest.iter().filter(|&&b| starts_char(b)).count()

@@ -359,3 +359,23 @@ fn deep_nesting_does_not_overflow_the_stack() {
     let _ = exercise("comments.il", "(*".repeat(N));
     let _ = exercise("closers.il", ")\n".repeat(N));
 }
+
+/// A column at the very end of a text whose length is a whole number of the
+/// line table's 256-byte blocks (the fuzzer's 4096-byte inputs): it once
+/// subtracted with overflow (found by `drive pipeline`, seed 61).
+#[test]
+fn column_at_the_end_of_whole_blocks() {
+    for len in [256usize, 512, 4096] {
+        for tail in ["", "\n", "é"] {
+            let mut text = "x".repeat(len - tail.len() - 3);
+            text.push_str("\nab");
+            text.push_str(tail);
+            assert_eq!(text.len(), len);
+            let f = il_codegen::diag::SourceFile::new("t.il", text.clone());
+            let (line, col) = f.line_col(len as u32);
+            let last_line = text.rsplit('\n').next().unwrap();
+            assert_eq!(line, text.matches('\n').count() + 1, "{len} {tail:?}");
+            assert_eq!(col, last_line.chars().count() + 1, "{len} {tail:?}");
+        }
+    }
+}

@@ -90,6 +90,12 @@ impl Pou<'_> {
             choices.extend(["ADD", "SUB", "MULK", "DIVK"]);
         }
         let op = *self.rng.pick(&choices);
+        if t == T::Time {
+            self.mark("TIME arithmetic");
+        }
+        if matches!(op, "DIV" | "MOD") {
+            self.mark("DIV/MOD");
+        }
         match op {
             "NOT" => self.emit("NOT"),
             "MULK" | "DIVK" => {
@@ -114,6 +120,7 @@ impl Pou<'_> {
                     // extensible function with an operand list: CR op a op b
                     let (a, b) = (self.operand(t, false), self.operand(t, false));
                     self.emit(format!("{op} {a}, {b}"));
+                    self.mark("operand list (ADD a, b)");
                     return;
                 }
                 if depth < 3 && op != "&N" && op != "&" && self.rng.chance(18) {
@@ -143,6 +150,11 @@ impl Pou<'_> {
 
     /// `op(` ... `)` whose inner expression has type `inner`.
     pub(super) fn paren(&mut self, op: &str, inner: T, _outer: T, depth: usize) {
+        self.mark("deferred parentheses");
+        if self.open_parens > 0 {
+            self.mark("nested parentheses");
+        }
+        self.open_parens += 1;
         let o = self.typed_operand(inner);
         if self.rng.chance(50) {
             self.emit(format!("{op}( {o}"));
@@ -154,6 +166,7 @@ impl Pou<'_> {
             self.same_type_op(inner, depth + 1);
         }
         self.emit(")");
+        self.open_parens -= 1;
     }
 
     pub(super) fn store(&mut self, t: T) {
@@ -193,25 +206,48 @@ impl Pou<'_> {
         }
         for _ in 0..1 + self.rng.below(4) {
             match self.rng.below(10) {
-                0 if t != T::Bool && t != T::Time => {
-                    // conversion
-                    let to = *self.rng.pick(&[NUMERIC, BITS, &[T::Bool]].concat());
+                0 if t == T::Time => {
+                    let to = *self.rng.pick(&[T::Dint, T::Lint, T::Lreal]);
+                    self.emit(format!("TIME_TO_{}", to.name()));
+                    self.mark("TIME conversion");
+                    t = to;
+                }
+                0 if t != T::Bool => {
+                    // conversion (to TIME from the signed integers too)
+                    let mut to = *self.rng.pick(&[NUMERIC, BITS, &[T::Bool]].concat());
+                    if matches!(t, T::Int | T::Dint | T::Lint) && self.rng.chance(15) {
+                        to = T::Time;
+                        self.mark("TIME conversion");
+                    }
                     if to != t && (t.is_num() || t.is_bits()) {
                         self.emit(format!("{}_TO_{}", t.name(), to.name()));
+                        self.mark("conversion");
+                        if t.is_real() && to.is_int() {
+                            self.mark("REAL to integer conversion");
+                        }
                         t = to;
                     }
                 }
-                1 => self.std_fn(t),
+                1 => t = self.std_fn(t),
                 2 if t != T::Bool => {
                     // comparison, then BOOL
                     let op = *self.rng.pick(&["GT", "GE", "EQ", "NE", "LE", "LT"]);
+                    if t == T::Time {
+                        self.mark("TIME comparison");
+                    }
                     if self.rng.chance(20) {
+                        self.mark("comparison in parentheses");
                         self.paren(op, t, T::Bool, 1);
                     } else {
                         let o = self.operand(t, false);
                         self.emit(format!("{op} {o}"));
                     }
                     t = T::Bool;
+                }
+                3 if Some(t) == self.fn2 && !self.in_function && self.rng.chance(40) => {
+                    if !self.fn2_call(t) {
+                        self.same_type_op(t, 0);
+                    }
                 }
                 3 if Some(t) == self.has_fn && !self.in_function => {
                     // Array elements, member paths and the process image as
@@ -237,8 +273,10 @@ impl Pou<'_> {
                             self.emit(format!("    flag := {f}"));
                         }
                         self.emit(")");
+                        self.mark("FUNCTION, formal with EN/ENO");
                     } else {
                         self.emit(format!("Fn1 {o}, {f}"));
+                        self.mark("FUNCTION, operator form");
                     }
                 }
                 _ => self.same_type_op(t, 0),
@@ -247,25 +285,60 @@ impl Pou<'_> {
         t
     }
 
-    pub(super) fn std_fn(&mut self, t: T) {
-        if t.is_real() && self.rng.chance(25) {
-            let e = self.rng.below(4);
-            self.emit(format!("EXPT {e}"));
-            return;
+    /// A standard function on a CR of type `t`; returns the new CR type.
+    pub(super) fn std_fn(&mut self, t: T) -> T {
+        if t.is_real() && self.rng.chance(70) {
+            match self.rng.below(5) {
+                0 => {
+                    // an integer or a real exponent
+                    let e = if self.rng.chance(50) {
+                        format!("{}", self.rng.below(4))
+                    } else {
+                        self.operand(t, false)
+                    };
+                    self.emit(format!("EXPT {e}"));
+                    self.mark("EXPT");
+                }
+                1 => {
+                    self.emit("SQRT");
+                    self.mark("SQRT");
+                }
+                2 => {
+                    let f = *self
+                        .rng
+                        .pick(&["SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN"]);
+                    self.emit(f);
+                    self.mark("SIN/COS/TAN/ASIN/ACOS/ATAN");
+                }
+                3 => {
+                    let f = *self.rng.pick(&["LN", "LOG", "EXP"]);
+                    self.emit(f);
+                    self.mark("LN/LOG/EXP");
+                }
+                _ => {
+                    self.emit("TRUNC");
+                    self.mark("TRUNC");
+                    return T::Dint;
+                }
+            }
+            return t;
         }
         if t.is_num() || t == T::Time {
             match self.rng.below(4) {
                 0 => {
                     let (a, b) = (self.literal(t, false), self.literal(t, false));
                     self.emit(format!("LIMIT {a}, {b}"));
+                    self.mark("LIMIT/MAX/MIN");
                 }
                 1 => {
                     let o = self.operand(t, false);
                     self.emit(format!("MAX {o}"));
+                    self.mark("LIMIT/MAX/MIN");
                 }
                 2 => {
                     let o = self.operand(t, false);
                     self.emit(format!("MIN {o}"));
+                    self.mark("LIMIT/MAX/MIN");
                 }
                 _ if t.is_signed() || t.is_real() => self.emit("ABS"),
                 _ => self.emit("MOVE"),
@@ -274,10 +347,12 @@ impl Pou<'_> {
             let op = *self.rng.pick(&["SHL", "SHR", "ROL", "ROR"]);
             let n = self.rng.below(70);
             self.emit(format!("{op} {n}"));
+            self.mark("shift/rotate");
         } else if t == T::Bool {
             let o = self.operand(T::Bool, false);
             self.emit(format!("XOR {o}"));
         }
+        t
     }
 
     pub(super) fn finish_expr(&mut self, t: T) {
@@ -288,6 +363,7 @@ impl Pou<'_> {
                 let v = self.rng.pick(&w).clone();
                 let sr = if self.rng.chance(50) { "S" } else { "R" };
                 self.emit(format!("{sr} {v}"));
+                self.mark("S/R");
             }
         }
     }
@@ -312,10 +388,12 @@ impl Pou<'_> {
                 self.bool_cond();
                 let j = *self.rng.pick(&["JMPC", "JMPCN", "JMPNC"]);
                 self.emit(format!("{j} {l}"));
+                self.mark("forward jump");
                 if self.rng.chance(50) {
                     self.block(types, depth + 1);
                     self.label(&l);
                 } else {
+                    self.mark("forward jump carrying the CR");
                     // CR (BOOL) carried to the label from both paths.
                     let o = self.operand(T::Bool, false);
                     self.emit(format!("LD {o}"));
@@ -339,6 +417,7 @@ impl Pou<'_> {
                 self.emit(format!("ST {c}"));
                 self.emit(format!("LT {n}"));
                 self.emit(format!("JMPC Loop{k}"));
+                self.mark("backward loop");
             }
             2 | 3 if !self.fbs.is_empty() => self.fb_call(),
             4 => {
@@ -349,6 +428,7 @@ impl Pou<'_> {
                     // The first operand typed: literals alone would make the result DINT/LREAL.
                     let (a, b) = (self.typed_operand(t), self.operand(t, false));
                     self.emit(format!("SEL {a}, {b}"));
+                    self.mark("SEL");
                 } else {
                     let ints: Vec<String> = self
                         .vars
@@ -365,6 +445,7 @@ impl Pou<'_> {
                     let mut ops: Vec<String> = (0..n).map(|_| self.operand(t, false)).collect();
                     ops[0] = self.typed_operand(t);
                     self.emit(format!("MUX {}", ops.join(", ")));
+                    self.mark("MUX");
                 }
                 self.finish_expr(t);
             }
@@ -373,138 +454,23 @@ impl Pou<'_> {
                 let l = format!("L{}", self.labels);
                 self.labels += 1;
                 self.emit(format!("JMP {l}"));
+                self.mark("unconditional JMP");
                 self.block(types, depth + 1);
                 self.label(&l);
             }
             7 if !self.enums.is_empty() && self.rng.chance(60) => self.enum_block(),
             7 if self.rng.chance(50) => self.dialect_block(types),
+            8 if self.strings && self.rng.chance(80) => self.string_block(),
+            9 if self.dates && self.rng.chance(70) => self.date_block(),
             6 if depth == 0 && !self.in_function && self.rng.chance(15) => {
                 self.bool_cond();
                 let r = *self.rng.pick(&["RETC", "RETCN", "RETNC"]);
                 self.emit(r);
+                self.mark("RETC/RETCN in a PROGRAM");
             }
             _ => {
                 let t = self.expr(types);
                 self.finish_expr(t);
-            }
-        }
-    }
-
-    pub(super) fn fb_call(&mut self) {
-        let k = self.rng.below(self.fbs.len());
-        let (inst, ty) = self.fbs[k].clone();
-        let b = self.vars_of(T::Bool);
-        let bv = |s: &mut Self| s.rng.pick(&b).clone();
-        match ty {
-            "TON" | "TOF" | "TP" => {
-                if self.rng.chance(50) {
-                    let (x, pt) = (bv(self), self.literal(T::Time, false));
-                    self.emit(format!("CAL {inst}(IN := {x}, PT := {pt})"));
-                } else {
-                    let pt = self.literal(T::Time, false);
-                    self.emit(format!("LD {pt}"));
-                    self.emit(format!("PT {inst}"));
-                    let x = bv(self);
-                    self.emit(format!("LD {x}"));
-                    self.emit(format!("IN {inst}"));
-                }
-                self.emit(format!("LD {inst}.Q"));
-                self.store(T::Bool);
-                if !self.writable(T::Time).is_empty() {
-                    self.emit(format!("LD {inst}.ET"));
-                    self.store(T::Time);
-                }
-            }
-            "CTU" => {
-                if self.rng.chance(50) {
-                    let (x, r) = (bv(self), bv(self));
-                    let pv = 1 + self.rng.below(5);
-                    self.emit(format!("CAL {inst}(CU := {x}, R := {r}, PV := {pv})"));
-                } else {
-                    let x = bv(self);
-                    self.emit(format!("LD {x}"));
-                    self.emit(format!("CU {inst}"));
-                }
-                self.emit(format!("LD {inst}.Q"));
-                self.store(T::Bool);
-                self.emit(format!("LD {inst}.CV"));
-                self.store(T::Int);
-            }
-            "R_TRIG" | "F_TRIG" => {
-                let x = bv(self);
-                self.emit(format!("LD {x}"));
-                self.emit(format!("CLK {inst}"));
-                self.emit(format!("LD {inst}.Q"));
-                self.store(T::Bool);
-            }
-            "RS" => {
-                let (s, r) = (bv(self), bv(self));
-                self.emit(format!("LD {s}"));
-                self.emit(format!("S {inst}"));
-                self.emit(format!("LD {r}"));
-                self.emit(format!("R1 {inst}"));
-                self.emit(format!("LD {inst}.Q1"));
-                self.store(T::Bool);
-            }
-            "CTD" => {
-                let (x, l) = (bv(self), bv(self));
-                let pv = 1 + self.rng.below(5);
-                if self.rng.chance(50) {
-                    self.emit(format!("CAL {inst}(CD := {x}, LD := {l}, PV := {pv})"));
-                } else {
-                    self.emit(format!("LD {pv}"));
-                    self.emit(format!("PV {inst}"));
-                    self.emit(format!("LD {l}"));
-                    self.emit(format!("LD {inst}"));
-                    self.emit(format!("LD {x}"));
-                    self.emit(format!("CD {inst}"));
-                }
-                self.emit(format!("LD {inst}.Q"));
-                self.store(T::Bool);
-                self.emit(format!("LD {inst}.CV"));
-                self.store(T::Int);
-            }
-            "CTUD" => {
-                let (u, d, r, l) = (bv(self), bv(self), bv(self), bv(self));
-                let pv = 1 + self.rng.below(5);
-                self.emit(format!(
-                    "CAL {inst}(CU := {u}, CD := {d}, R := {r}, LD := {l}, PV := {pv})"
-                ));
-                self.emit(format!("LD {inst}.QU"));
-                self.store(T::Bool);
-                self.emit(format!("LD {inst}.QD"));
-                self.store(T::Bool);
-                self.emit(format!("LD {inst}.CV"));
-                self.store(T::Int);
-            }
-            "SR" => {
-                let (s, r) = (bv(self), bv(self));
-                self.emit(format!("LD {s}"));
-                self.emit(format!("S1 {inst}"));
-                self.emit(format!("LD {r}"));
-                self.emit(format!("R {inst}"));
-                self.emit(format!("LD {inst}.Q1"));
-                self.store(T::Bool);
-            }
-            _ => {
-                // user block Blk(x : T, en : BOOL) => (y : T, q : BOOL)
-                let t = self.has_fn.unwrap_or(T::Int);
-                let (x, en) = (self.operand(t, false), bv(self));
-                if self.rng.chance(25) {
-                    self.bool_cond();
-                    let c = *self.rng.pick(&["CALC", "CALCN", "CALNC"]);
-                    self.emit(format!("{c} {inst}(x := {x}, en := {en})"));
-                } else if self.rng.chance(50) {
-                    self.emit(format!("CAL {inst}(x := {x}, en := {en})"));
-                } else {
-                    self.emit(format!("LD {x}"));
-                    self.emit(format!("ST {inst}.x"));
-                    self.emit(format!("CAL {inst}"));
-                }
-                self.emit(format!("LD {inst}.y"));
-                self.store(t);
-                self.emit(format!("LD {inst}.q"));
-                self.store(T::Bool);
             }
         }
     }

@@ -10,11 +10,21 @@
 //! counters, edges, bistables) by CAL with formal lists and by input
 //! operators, arrays with variable (possibly out-of-range) subscripts, and
 //! integer DIV/MOD by (runtime) zero.
+//!
+//! Also (calls.rs, text.rs): a second FUNCTION `Fn2` with VAR_IN_OUT and
+//! VAR_OUTPUT called formally (with `=>`) and non-formally, every FB call
+//! form (formal with outputs, non-formal list, members then CAL, input
+//! operators, CALC/CALCN), RET, STRING functions and comparisons, DATE/TOD/DT
+//! functions, TIME conversions and REAL math. Each program lists the
+//! constructs it used (`Program::kinds`, `coverage::CONSTRUCTS`).
 
 #![allow(dead_code)]
 
 mod bodies;
 mod dialect;
+mod calls;
+pub mod coverage;
+mod text;
 mod user;
 
 /// xorshift64*.
@@ -192,6 +202,45 @@ struct Pou<'r> {
     fn_eno: bool,
     /// Places of the enumeration `Col` (user.rs).
     enums: Vec<String>,
+    /// `Fn2` (VAR_IN_OUT, VAR_OUTPUT) exists, of this type (calls.rs).
+    fn2: Option<T>,
+    /// The string and date variables of text.rs exist.
+    strings: bool,
+    dates: bool,
+    /// Constructs used (coverage.rs).
+    kinds: Vec<&'static str>,
+    /// Deferred parentheses open where the next instruction goes.
+    open_parens: usize,
+}
+
+impl<'r> Pou<'r> {
+    fn new(rng: &'r mut Rng, vars: Vec<Var>, readonly: &[&str]) -> Pou<'r> {
+        Pou {
+            rng,
+            lines: Vec::new(),
+            vars,
+            readonly: readonly.iter().map(|s| s.to_string()).collect(),
+            labels: 0,
+            loops: 0,
+            fbs: Vec::new(),
+            has_fn: None,
+            arrays: Vec::new(),
+            in_function: false,
+            max_loops: 0,
+            fn_eno: false,
+            enums: Vec::new(),
+            fn2: None,
+            strings: false,
+            dates: false,
+            kinds: Vec::new(),
+            open_parens: 0,
+        }
+    }
+    pub(super) fn mark(&mut self, k: &'static str) {
+        if !self.kinds.contains(&k) {
+            self.kinds.push(k);
+        }
+    }
 }
 
 fn int_lit(rng: &mut Rng, t: T) -> i128 {
@@ -257,6 +306,7 @@ pub fn generate(seed: u64) -> Program {
             .collect::<Vec<_>>(),
     );
     let mut il = String::new();
+    let mut kinds: Vec<&'static str> = Vec::new();
 
     let fn_eno = rng.chance(50);
     // FUNCTION Fn1 : ft
@@ -275,21 +325,8 @@ pub fn generate(seed: u64) -> Program {
                 ty: T::Bool,
             },
         ];
-        let mut p = Pou {
-            rng: &mut rng,
-            lines: Vec::new(),
-            vars: vars.clone(),
-            readonly: vec!["a".into(), "b".into(), "flag".into()],
-            labels: 0,
-            loops: 0,
-            fbs: Vec::new(),
-            has_fn: None,
-            arrays: Vec::new(),
-            in_function: true,
-            max_loops: 0,
-            fn_eno: false,
-            enums: Vec::new(),
-        };
+        let mut p = Pou::new(&mut rng, vars.clone(), &["a", "b", "flag"]);
+        p.in_function = true;
         p.vars.push(Var {
             name: "tmp".into(),
             ty: ft,
@@ -314,7 +351,9 @@ pub fn generate(seed: u64) -> Program {
             p.emit("RETC");
             p.emit("LD tmp");
             p.emit("ST Fn1");
+            p.mark("RETC in a FUNCTION");
         }
+        kinds.extend(p.kinds.iter().copied());
         il.push_str(&format!(
             "FUNCTION Fn1 : {}\nVAR_INPUT\n{}END_VAR\nVAR\n    tmp : {};\n    tb : BOOL;\nEND_VAR\n{}\nEND_FUNCTION\n\n",
             ft.name(),
@@ -322,6 +361,14 @@ pub fn generate(seed: u64) -> Program {
             ft.name(),
             p.lines.join("\n")
         ));
+    }
+
+    // FUNCTION Fn2 : ft, with VAR_IN_OUT and VAR_OUTPUT (calls.rs)
+    let with_fn2 = rng.chance(50);
+    if with_fn2 {
+        let (text, k) = calls::fn2(&mut rng, ft);
+        il.push_str(&text);
+        kinds.extend(k);
     }
 
     // FUNCTION_BLOCK Blk
@@ -364,24 +411,23 @@ pub fn generate(seed: u64) -> Program {
                 ty: T::Int,
             },
         ];
-        let mut p = Pou {
-            rng: &mut rng,
-            lines: Vec::new(),
-            vars: [ins.clone(), outs.clone(), locals.clone()].concat(),
-            readonly: vec!["x".into(), "en".into()],
-            labels: 0,
-            loops: 0,
-            fbs: vec![("rt".into(), "R_TRIG")],
-            has_fn: Some(ft),
-            arrays: Vec::new(),
-            in_function: false,
-            max_loops: 2,
-            fn_eno,
-            enums: Vec::new(),
-        };
+        let mut p = Pou::new(
+            &mut rng,
+            [ins.clone(), outs.clone(), locals.clone()].concat(),
+            &["x", "en"],
+        );
+        p.fbs = vec![("rt".into(), "R_TRIG")];
+        p.has_fn = Some(ft);
+        p.max_loops = 2;
+        p.fn_eno = fn_eno;
+        p.fn2 = with_fn2.then_some(ft);
         for _ in 0..1 + p.rng.below(4) {
             p.block(&[ft, T::Bool], 0);
         }
+        if p.rng.chance(30) {
+            p.ret_block(&[ft, T::Bool]);
+        }
+        kinds.extend(p.kinds.iter().copied());
         il.push_str(&format!(
             "FUNCTION_BLOCK Blk\nVAR_INPUT\n{}END_VAR\nVAR_OUTPUT\n{}END_VAR\nVAR\n{}    rt : R_TRIG;\nEND_VAR\n{}\nEND_FUNCTION_BLOCK\n\n",
             decls(&ins),
@@ -431,33 +477,53 @@ pub fn generate(seed: u64) -> Program {
     fbs.push(("t2".into(), "TOF"));
     fbs.push(("t3".into(), "TP"));
     let extras = user::extras(&mut rng, &types);
+    let with_strings = rng.chance(50);
+    let with_dates = rng.chance(40);
+    let text_decls = text::decls(with_strings, with_dates);
     let body = {
         let mut readonly: Vec<String> = inputs.iter().map(|v| v.name.clone()).collect();
         readonly.extend(extras.readonly.iter().cloned());
-        let mut p = Pou {
-            rng: &mut rng,
-            lines: Vec::new(),
-            vars: [inputs.clone(), locals.clone(), extras.vars.clone()].concat(),
-            readonly,
-            labels: 0,
-            loops: 0,
-            fbs: fbs.clone(),
-            has_fn: Some(ft),
-            arrays: arrays.clone(),
-            in_function: false,
-            max_loops: n_loops,
-            fn_eno,
-            enums: extras.enums.clone(),
-        };
+        let ro: Vec<&str> = readonly.iter().map(String::as_str).collect();
+        let mut p = Pou::new(
+            &mut rng,
+            [
+                inputs.clone(),
+                locals.clone(),
+                extras.vars.clone(),
+                text::vars(with_strings, with_dates),
+            ]
+            .concat(),
+            &ro,
+        );
+        p.fbs = fbs.clone();
+        p.has_fn = Some(ft);
+        p.arrays = arrays.clone();
+        p.max_loops = n_loops;
+        p.fn_eno = fn_eno;
+        p.enums = extras.enums.clone();
+        p.fn2 = with_fn2.then_some(ft);
+        p.strings = with_strings;
+        p.dates = with_dates;
         let n = 3 + p.rng.below(8);
         for _ in 0..n {
             p.block(&types, 0);
         }
+        // The string and date variables get a block or two of their own.
+        if p.strings {
+            for _ in 0..1 + p.rng.below(2) {
+                p.string_block();
+            }
+        }
+        if p.dates {
+            p.date_block();
+        }
         if p.rng.chance(30) {
             p.bool_cond();
             p.emit("RETC");
+            p.mark("RETC/RETCN in a PROGRAM");
             p.block(&types, 2);
         }
+        kinds.extend(p.kinds.iter().copied());
         p.lines.join("\n")
     };
     let fb_decls: String = fbs
@@ -470,7 +536,7 @@ pub fn generate(seed: u64) -> Program {
         decls(&locals),
         arr_t.name(),
         fb_decls,
-        extras.decls,
+        extras.decls + &text_decls,
         body
     ));
     let il = format!("{}{il}", extras.types);
@@ -487,6 +553,11 @@ pub fn generate(seed: u64) -> Program {
         inputs,
         scans,
         step_ns: *rng.pick(&[1_000_000i64, 5_000_000, 10_000_000]),
-        kinds: extras.kinds,
+        kinds: {
+            kinds.extend(extras.kinds);
+            kinds.sort();
+            kinds.dedup();
+            kinds
+        },
     }
 }

@@ -2,6 +2,17 @@
 //! run under the reference interpreter and as generated Rust, compared variable
 //! by variable after every scan (plus the fault count and the last fault).
 //!
+//! Values are compared by their canonical text: integers, TIME and dates by
+//! their inner integer, strings byte by byte (hex), REAL/LREAL by Rust's
+//! shortest round-trip text (`{:?}`), which is NaN-aware equality: exact for
+//! every non-NaN value (`-0.0` and `0.0` differ, so do any two bit patterns
+//! that are not NaN) and any NaN equal to any NaN (sign and payload of a NaN
+//! are not compared: IEEE 754 leaves them open, and LLVM may fold them).
+//!
+//! Each run prints a coverage table (generated constructs, `gen/coverage.rs`,
+//! and how many programs used each) and fails at 500 programs or more when
+//! one of them was used by none.
+//!
 //! All programs of a run are compiled into ONE temporary crate (one build).
 //! CI: a fixed seed and 500 programs. The long run:
 //!
@@ -68,6 +79,8 @@ fn canon(v: &Value) -> String {
         Value::Real(f) => format!("{f:?}"),
         Value::LReal(f) => format!("{f:?}"),
         Value::Time(ns, _) => ns.to_string(),
+        // Hex units: strings may hold line breaks, and the lines are the protocol.
+        Value::Str { units, .. } => units.iter().map(|u| format!("{u:02x}")).collect(),
         Value::Array(items) => items.iter().map(canon).collect::<Vec<_>>().join(","),
         Value::Enum { value, .. } => value.clone(),
         Value::Struct(s) => {
@@ -195,6 +208,16 @@ fn canon_impls(prog: &il_codegen::sema::ir::Program) -> String {
 /// The Rust driver of one program: a module with the generated code and `run`.
 fn driver(i: usize, names: &[String], p: &Program, locs: &[Option<Loc>]) -> String {
     let mut s = String::new();
+    // The watched variables once, not once per scan: the generated crate is
+    // a third smaller, and its build is most of this test's time.
+    let _ = writeln!(
+        s,
+        "fn vars(m: &Main) -> Vec<(&'static str, String)> {{ vec!["
+    );
+    for n in names {
+        let _ = writeln!(s, "(\"{n}\", crate::Canon::canon(&m.{n})),");
+    }
+    let _ = writeln!(s, "] }}");
     let _ = writeln!(s, "pub fn run(out: &mut String) {{");
     let _ = writeln!(s, "    let mut ctx = il_std::Cycle::new();");
     let _ = writeln!(s, "    let mut m = Main::default();");
@@ -203,11 +226,7 @@ fn driver(i: usize, names: &[String], p: &Program, locs: &[Option<Loc>]) -> Stri
             let _ = writeln!(s, "    {}", set_input(v, l, loc.as_ref()));
         }
         let _ = writeln!(s, "    m.call(&mut ctx);");
-        let _ = write!(s, "    crate::line(out, {i}, {k}, &ctx, &[");
-        for n in names {
-            let _ = write!(s, "(\"{n}\", crate::Canon::canon(&m.{n})), ");
-        }
-        let _ = writeln!(s, "]);");
+        let _ = writeln!(s, "    crate::line(out, {i}, {k}, &ctx, &vars(&m));");
         let _ = writeln!(s, "    ctx.advance(il_std::TIME({}i64));", p.step_ns);
     }
     s.push_str("}\n");
@@ -222,10 +241,16 @@ ints!(i8, i16, i32, i64, u8, u16, u32, u64);
 impl Canon for f32 { fn canon(&self) -> String { format!("{self:?}") } }
 impl Canon for f64 { fn canon(&self) -> String { format!("{self:?}") } }
 impl Canon for il_std::TIME { fn canon(&self) -> String { self.0.to_string() } }
+impl Canon for il_std::DATE { fn canon(&self) -> String { self.0.to_string() } }
+impl Canon for il_std::TOD { fn canon(&self) -> String { self.0.to_string() } }
+impl Canon for il_std::DT { fn canon(&self) -> String { self.0.to_string() } }
+impl<const N: usize> Canon for il_std::STRING<N> {
+    fn canon(&self) -> String { self.as_bytes().iter().map(|u| format!("{u:02x}")).collect() }
+}
 impl<T: Canon, const N: usize> Canon for [T; N] {
     fn canon(&self) -> String { self.iter().map(Canon::canon).collect::<Vec<_>>().join(",") }
 }
-pub fn line(out: &mut String, i: usize, k: usize, ctx: &il_std::Cycle, vars: &[(&str, String)]) {
+pub fn line(out: &mut String, i: usize, k: usize, ctx: &il_std::Cycle, vars: &[(&'static str, String)]) {
     use std::fmt::Write;
     let _ = write!(out, "p{i} {k} faults={} last={:?} io=", ctx.fault_count(), ctx.last_fault().map(|f| (f.kind, f.line)));
     for a in [il_std::Area::Output, il_std::Area::Memory] {
@@ -407,9 +432,7 @@ fn interpreter_agrees_with_generated_rust() {
             )),
         }
     }
-    // The generator's coverage of user types and the process image.
-    let summary: Vec<String> = coverage.iter().map(|(k, n)| format!("{k}: {n}")).collect();
-    println!("coverage of {count} programs: {}", summary.join(", "));
+    print_coverage(count, &coverage);
     let mut kinds: Vec<String> = refused
         .iter()
         .filter_map(|r| {
@@ -461,6 +484,36 @@ fn interpreter_agrees_with_generated_rust() {
         "{} mismatches; first: {}",
         mismatches.len(),
         mismatches[0]
+    );
+    let unused: Vec<&str> = generator::coverage::CONSTRUCTS
+        .iter()
+        .copied()
+        .filter(|k| !coverage.contains_key(k))
+        .collect();
+    assert!(
+        count < 500 || unused.is_empty(),
+        "constructs no generated program used: {unused:?}"
+    );
+}
+
+/// The coverage table: construct -> how many programs used it (marks that
+/// are not in `CONSTRUCTS` are printed too, and fail the test: the list and
+/// the generator must agree).
+fn print_coverage(count: usize, coverage: &std::collections::BTreeMap<&str, usize>) {
+    println!("coverage of {count} generated programs (construct: programs using it):");
+    let list = generator::coverage::CONSTRUCTS;
+    let width = list.iter().map(|k| k.len()).max().unwrap_or(0);
+    for k in list {
+        let n = coverage.get(k).copied().unwrap_or(0);
+        println!(
+            "  {k:width$}  {n:>6}{}",
+            if n == 0 { "  <- none" } else { "" }
+        );
+    }
+    let stray: Vec<&&str> = coverage.keys().filter(|k| !list.contains(k)).collect();
+    assert!(
+        stray.is_empty(),
+        "marks missing from coverage::CONSTRUCTS: {stray:?}"
     );
 }
 

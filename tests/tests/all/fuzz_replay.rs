@@ -9,11 +9,17 @@
 //! debug build, far above the slowest input): the hang inputs of earlier
 //! defects (exponential instance trees and type graphs, many diagnostics on
 //! one long line) took minutes, and a run over budget fails the test with its
-//! input named instead of hanging CI.
+//! input named instead of hanging CI. And a memory budget
+//! (`targets::memory_budget`, max(64 MiB, 2000 x the input)): the peak
+//! allocation of each run is counted per thread by the allocator installed
+//! here (for this whole test binary: a thread-local add per allocation).
 
 #[path = "../../../fuzz/src/lib.rs"]
 #[allow(dead_code)]
 mod targets;
+
+#[global_allocator]
+static ALLOC: targets::Counting = targets::Counting;
 
 use std::path::{Path, PathBuf};
 
@@ -43,10 +49,14 @@ fn every_target_over_the_seed_and_regression_corpus() {
     inputs.extend(files(&root.join("../shared/corpus")));
     let budget = targets::budget(30);
     let mut runs = 0;
+    let mut largest = (0, 0, String::new());
     for path in &inputs {
         let data = std::fs::read(path).expect("read a corpus file");
         for (name, target) in targets::TARGETS {
-            let outcome = targets::run_within(*target, data.clone(), budget);
+            let (outcome, peak) = targets::run_measured(*target, data.clone(), budget);
+            if peak > largest.0 {
+                largest = (peak, data.len(), format!("{name} on {}", path.display()));
+            }
             assert_eq!(
                 outcome,
                 targets::Outcome::Ok,
@@ -57,4 +67,10 @@ fn every_target_over_the_seed_and_regression_corpus() {
         }
     }
     println!("{runs} runs over {} inputs", inputs.len());
+    println!(
+        "largest peak allocation: {:.1} MiB, {} (an input of {} bytes)",
+        largest.0 as f64 / (1 << 20) as f64,
+        largest.2,
+        largest.1
+    );
 }
