@@ -21,9 +21,9 @@
 #![allow(dead_code)]
 
 mod bodies;
-mod dialect;
 mod calls;
 pub mod coverage;
+mod dialect;
 mod text;
 mod user;
 
