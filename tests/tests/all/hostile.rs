@@ -130,12 +130,19 @@ fn the_written_file_holds_exactly_the_expected_items() {
         }
     }
     let long = format!("L{}end_FB", "ong_name_".repeat(27));
-    let mut expected = vec!["enum Result".to_string(), "fn Some".to_string()];
+    let mut expected = vec![
+        "enum Result".to_string(),
+        "impl :: il_std :: trace :: AsValue for Result".to_string(),
+        "fn Some".to_string(),
+    ];
     for fb in ["Option", "Default", "Self_", long.as_str(), "r#fn"] {
         expected.push(format!("struct {fb}"));
         expected.push(format!("impl :: core :: default :: Default for {fb}"));
+        // `call` and friends, then `visit` (emit/visit.rs)
+        expected.push(format!("impl for {fb}"));
         expected.push(format!("impl for {fb}"));
         expected.push(format!("impl :: il_std :: FunctionBlock for {fb}"));
+        expected.push(format!("impl :: il_std :: trace :: Visit for {fb}"));
     }
     names.sort();
     expected.sort();
