@@ -250,106 +250,79 @@ fn notification(conn: &Connection, ws: &mut Workspace, n: Notification) -> Falli
     }
 }
 
+/// What a request handler gives: the answer, or an LSP error.
+type Answer<T> = Result<T, (ErrorCode, String)>;
+
+/// `r`'s parameters as those of request `R`, handed to `f`, and its answer
+/// as JSON: every typed request goes through here.
+fn answer<R: req::Request>(
+    r: Request,
+    f: impl FnOnce(R::Params) -> Answer<R::Result>,
+) -> Answer<Value> {
+    let (_, p) = r
+        .extract::<R::Params>(R::METHOD)
+        .map_err(|e| (ErrorCode::InvalidParams, format!("{e:?}")))?;
+    serde_json::to_value(f(p)?).map_err(|e| (ErrorCode::InternalError, e.to_string()))
+}
+
 /// Answer a request (unknown methods get `MethodNotFound`).
 fn request(ws: &Workspace, r: Request) -> Response {
     let id = r.id.clone();
-    let result: Result<serde_json::Value, (ErrorCode, String)> = (|| {
-        let bad =
-            |e: lsp_server::ExtractError<Request>| (ErrorCode::InvalidParams, format!("{e:?}"));
-        let json = |v: serde_json::Result<serde_json::Value>| {
-            v.map_err(|e| (ErrorCode::InternalError, e.to_string()))
-        };
-        match r.method.as_str() {
-            req::HoverRequest::METHOD => {
-                let p: lsp_types::HoverParams =
-                    r.extract(req::HoverRequest::METHOD).map_err(bad)?.1;
-                let tp = p.text_document_position_params;
-                json(serde_json::to_value(hover::hover(
-                    ws,
-                    &tp.text_document.uri,
-                    tp.position,
-                )))
-            }
-            req::GotoDefinition::METHOD => {
-                let p: lsp_types::GotoDefinitionParams =
-                    r.extract(req::GotoDefinition::METHOD).map_err(bad)?.1;
-                let tp = p.text_document_position_params;
-                json(serde_json::to_value(navigation::definition(
-                    ws,
-                    &tp.text_document.uri,
-                    tp.position,
-                )))
-            }
-            req::References::METHOD => {
-                let p: lsp_types::ReferenceParams =
-                    r.extract(req::References::METHOD).map_err(bad)?.1;
-                let tp = p.text_document_position;
-                json(serde_json::to_value(navigation::references(
-                    ws,
-                    &tp.text_document.uri,
-                    tp.position,
-                    p.context.include_declaration,
-                )))
-            }
-            req::PrepareRenameRequest::METHOD => {
-                let p: lsp_types::TextDocumentPositionParams =
-                    r.extract(req::PrepareRenameRequest::METHOD).map_err(bad)?.1;
-                json(serde_json::to_value(navigation::prepare_rename(
-                    ws,
-                    &p.text_document.uri,
-                    p.position,
-                )))
-            }
-            req::Rename::METHOD => {
-                let p: lsp_types::RenameParams = r.extract(req::Rename::METHOD).map_err(bad)?.1;
-                let tp = p.text_document_position;
-                let edit = navigation::rename(ws, &tp.text_document.uri, tp.position, &p.new_name)
-                    .map_err(|m| (ErrorCode::InvalidParams, m))?;
-                json(serde_json::to_value(edit))
-            }
-            req::DocumentSymbolRequest::METHOD => {
-                let p: lsp_types::DocumentSymbolParams = r
-                    .extract(req::DocumentSymbolRequest::METHOD)
-                    .map_err(bad)?
-                    .1;
-                json(serde_json::to_value(symbols::document(
-                    ws,
-                    &p.text_document.uri,
-                )))
-            }
-            req::WorkspaceSymbolRequest::METHOD => {
-                let p: lsp_types::WorkspaceSymbolParams = r
-                    .extract(req::WorkspaceSymbolRequest::METHOD)
-                    .map_err(bad)?
-                    .1;
-                json(serde_json::to_value(symbols::workspace(ws, &p.query)))
-            }
-            req::Completion::METHOD => {
-                let p: lsp_types::CompletionParams =
-                    r.extract(req::Completion::METHOD).map_err(bad)?.1;
-                let tp = p.text_document_position;
-                json(serde_json::to_value(completion::complete(
-                    ws,
-                    &tp.text_document.uri,
-                    tp.position,
-                )))
-            }
-            req::InlayHintRequest::METHOD => {
-                let p: lsp_types::InlayHintParams =
-                    r.extract(req::InlayHintRequest::METHOD).map_err(bad)?.1;
-                json(serde_json::to_value(inlay::hints(
-                    ws,
-                    &p.text_document.uri,
-                    p.range,
-                )))
-            }
-            // For the tests of the panic guard only: refused unless asked for.
-            "ilc/testPanic" if std::env::var_os("ILC_LSP_TEST_PANIC").is_some() => {
-                panic!("ilc/testPanic: a deliberate panic")
-            }
-            m => Err((ErrorCode::MethodNotFound, format!("`{m}` is not supported"))),
+    let method = r.method.clone();
+    let result: Answer<Value> = match method.as_str() {
+        req::HoverRequest::METHOD => answer::<req::HoverRequest>(r, |p| {
+            let tp = p.text_document_position_params;
+            Ok(hover::hover(ws, &tp.text_document.uri, tp.position))
+        }),
+        req::GotoDefinition::METHOD => answer::<req::GotoDefinition>(r, |p| {
+            let tp = p.text_document_position_params;
+            Ok(navigation::definition(ws, &tp.text_document.uri, tp.position).map(Into::into))
+        }),
+        req::References::METHOD => answer::<req::References>(r, |p| {
+            let tp = p.text_document_position;
+            let decl = p.context.include_declaration;
+            Ok(Some(navigation::references(
+                ws,
+                &tp.text_document.uri,
+                tp.position,
+                decl,
+            )))
+        }),
+        req::PrepareRenameRequest::METHOD => answer::<req::PrepareRenameRequest>(r, |p| {
+            Ok(navigation::prepare_rename(
+                ws,
+                &p.text_document.uri,
+                p.position,
+            ))
+        }),
+        req::Rename::METHOD => answer::<req::Rename>(r, |p| {
+            let tp = p.text_document_position;
+            navigation::rename(ws, &tp.text_document.uri, tp.position, &p.new_name)
+                .map_err(|m| (ErrorCode::InvalidParams, m))
+        }),
+        req::DocumentSymbolRequest::METHOD => answer::<req::DocumentSymbolRequest>(r, |p| {
+            Ok(Some(symbols::document(ws, &p.text_document.uri).into()))
+        }),
+        req::WorkspaceSymbolRequest::METHOD => answer::<req::WorkspaceSymbolRequest>(r, |p| {
+            Ok(Some(lsp_types::WorkspaceSymbolResponse::Flat(
+                symbols::workspace(ws, &p.query),
+            )))
+        }),
+        req::Completion::METHOD => answer::<req::Completion>(r, |p| {
+            let tp = p.text_document_position;
+            Ok(Some(
+                completion::complete(ws, &tp.text_document.uri, tp.position).into(),
+            ))
+        }),
+        req::InlayHintRequest::METHOD => answer::<req::InlayHintRequest>(r, |p| {
+            Ok(Some(inlay::hints(ws, &p.text_document.uri, p.range)))
+        }),
+        // For the tests of the panic guard only: refused unless asked for.
+        "ilc/testPanic" if std::env::var_os("ILC_LSP_TEST_PANIC").is_some() => {
+            panic!("ilc/testPanic: a deliberate panic")
         }
-    })();
+        m => Err((ErrorCode::MethodNotFound, format!("`{m}` is not supported"))),
+    };
     match result {
         Ok(v) => Response::new_ok(id, v),
         Err((code, msg)) => Response::new_err(id, code as i32, msg),
