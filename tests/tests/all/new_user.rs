@@ -10,76 +10,25 @@
 //! `cargo test`). They must build without a single warning: generated code
 //! in a binary, inside a `mod`, glob-imported, uses few of its items.
 
-use il_tests::tank_macro::{Tank, TankState};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-/// The host loop both crates run (and the in-workspace test mirrors): the
-/// pump fills 50 raw units per 100 ms scan; draining empties 100 a scan.
-const MAIN: &str = r#"
-use plc::*;
+/// The main.rs of both crates: the shared host loop, printed.
+const MAIN: &str = "use plc::*;\ninclude!(\"host.rs\");\n\nfn main() {\n    for line in run() {\n        println!(\"{line}\");\n    }\n}\n";
 
-fn main() {
-    let mut ctx = il_std::Cycle::new();
-    let mut tank = Tank::default();
-    let mut raw: i16 = 0;
-    for scan in 0..40 {
-        Tank::set_io_raw_level(&mut ctx, raw);
-        ctx.io.set(il_std::addr::ix(0, 1), scan >= 30); // drain_req AT %IX0.1
-        tank.call(&mut ctx);
-        if Tank::io_pump(&ctx) {
-            raw += 50;
-        } else if tank.state == TankState::Draining {
-            raw -= 100;
-        }
-        ctx.advance(il_std::TIME::from_ms(100));
-        println!(
-            "scan {scan}: {:?} level {} pump {} lamp {} fills {}",
-            tank.state,
-            tank.reading.level,
-            Tank::io_pump(&ctx),
-            ctx.io.get(il_std::addr::qx(0, 2)),
-            tank.fills.CV
-        );
-    }
+/// The same loop in this workspace, through `il!(files = [...])`.
+mod host {
+    use il_tests::tank_macro::{Tank, TankState};
+    include!("../../new-user/host.rs");
 }
-"#;
 
 fn plc_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("new-user/plc")
 }
 
-/// The same run in this workspace, through `il!(files = [...])`.
-fn run_here() -> Vec<String> {
-    let mut ctx = il_std::Cycle::new();
-    let mut tank = Tank::default();
-    let mut raw: i16 = 0;
-    let mut lines = Vec::new();
-    for scan in 0..40 {
-        Tank::set_io_raw_level(&mut ctx, raw);
-        ctx.io.set(il_std::addr::ix(0, 1), scan >= 30);
-        tank.call(&mut ctx);
-        if Tank::io_pump(&ctx) {
-            raw += 50;
-        } else if tank.state == TankState::Draining {
-            raw -= 100;
-        }
-        ctx.advance(il_std::TIME::from_ms(100));
-        lines.push(format!(
-            "scan {scan}: {:?} level {} pump {} lamp {} fills {}",
-            tank.state,
-            tank.reading.level,
-            Tank::io_pump(&ctx),
-            ctx.io.get(il_std::addr::qx(0, 2)),
-            tank.fills.CV
-        ));
-    }
-    lines
-}
-
 #[test]
 fn the_tank_from_two_files_fills_holds_and_drains() {
-    let lines = run_here();
+    let lines = host::run();
     // 18 scans of 50 reach 900 raw = 90 %, the high mark.
     assert!(lines[17].contains("Filling") && lines[17].contains("pump true"));
     assert!(lines[18].contains("Full") && lines[18].contains("pump false"));
@@ -116,6 +65,7 @@ fn write_crate(root: &Path, name: &str, cargo_extra: &str, files: &[(&str, &str)
     for f in ["types.il", "tank.il"] {
         std::fs::copy(plc_dir().join(f), dir.join("plc").join(f)).unwrap();
     }
+    std::fs::copy(plc_dir().join("../host.rs"), dir.join("src/host.rs")).unwrap();
     for (path, text) in files {
         std::fs::write(dir.join(path), text).unwrap();
     }
@@ -161,7 +111,7 @@ fn builds_clean_and_runs(dir: &Path, target: &Path) {
     );
     let stdout = text(&out.stdout);
     let got: Vec<&str> = stdout.lines().collect();
-    assert_eq!(got, run_here(), "{}", dir.display());
+    assert_eq!(got, host::run(), "{}", dir.display());
 }
 
 /// `tank.il` with an INT stored into the BOOL `pump`; returns the line and
