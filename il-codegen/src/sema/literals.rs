@@ -26,6 +26,8 @@ pub(crate) struct Pending {
     pub key: String,
     pub args: Vec<(PendArg, Span)>,
     pub span: Span,
+    /// `EN :=` of a formal call (see [`super::ir::Expr::CallStd`]).
+    pub en: Option<super::ir::Value>,
 }
 
 #[derive(Clone, Debug, PartialEq)]

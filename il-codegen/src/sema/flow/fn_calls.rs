@@ -400,7 +400,7 @@ impl Walk<'_, '_> {
                     }
                 }
             }
-            return self.std_call(&key, argv, name.span);
+            return self.std_call(&key, argv, name.span, None);
         }
         let is_var = self.sig.var(&name.name).is_some();
         let mut cands: Vec<String> = self
@@ -444,12 +444,17 @@ impl Walk<'_, '_> {
     }
 
     /// `CR := F(values)` for a resolved standard function; the CR's type.
-    pub(super) fn push_std_call(&mut self, res: stdfn::Resolved, values: Vec<Value>) -> Ty {
+    pub(super) fn push_std_call(
+        &mut self,
+        res: stdfn::Resolved,
+        values: Vec<Value>,
+        en: Option<Value>,
+    ) -> Ty {
         let ret = res.ret.clone();
         self.push(Op::SetCr {
             ty: ret.clone(),
             expr: Expr::CallStd {
-                en: None,
+                en,
                 call: res.call,
                 args: values,
                 arg_types: res.params,
@@ -462,8 +467,7 @@ impl Walk<'_, '_> {
 
     /// A standard function called with `EN :=` or `ENO =>`: the call runs
     /// only when EN is TRUE (the result is then the type's default), and
-    /// each ENO target gets EN. The call's type cannot wait for its use, as
-    /// an all-literal call's does, so it is settled here.
+    /// each ENO target gets EN.
     fn std_call_en(
         &mut self,
         key: &str,
@@ -472,43 +476,27 @@ impl Walk<'_, '_> {
         en: Value,
         enos: Vec<(Place, bool)>,
     ) -> Cr {
-        let cr = match self.std_call(key, argv, span) {
-            Cr::Lit(LitClass::Pending(p), _) => match self.materialize(&p, None) {
-                Some((_, ty)) => Cr::Val(ty),
-                None => return Cr::Undef(Why::Error),
-            },
-            cr => cr,
-        };
-        if !matches!(cr, Cr::Val(_)) {
-            return cr;
-        }
-        match self.out.last_mut() {
-            Some(ir::Stmt {
-                op:
-                    Op::SetCr {
-                        expr: Expr::CallStd { en: slot, .. },
-                        ..
-                    },
-                ..
-            }) => *slot = Some(en.clone()),
-            // std_call ends with the call it pushed; anything else is a bug
-            // here, reported rather than run without its EN.
-            _ => {
-                self.err(UNSUPPORTED, span, "EN of this call could not be applied");
-                return Cr::Undef(Why::Error);
+        let cr = self.std_call(key, argv, span, Some(en.clone()));
+        if matches!(cr, Cr::Val(_)) {
+            for (place, negate) in enos {
+                self.push(Op::Store {
+                    place,
+                    value: en.clone(),
+                    negate,
+                });
             }
-        }
-        for (place, negate) in enos {
-            self.push(Op::Store {
-                place,
-                value: en.clone(),
-                negate,
-            });
         }
         cr
     }
 
-    pub(super) fn std_call(&mut self, key: &str, argv: Vec<(Arg, Span)>, span: Span) -> Cr {
+    /// `en`: `EN :=` of a formal call.
+    pub(super) fn std_call(
+        &mut self,
+        key: &str,
+        argv: Vec<(Arg, Span)>,
+        span: Span,
+        en: Option<Value>,
+    ) -> Cr {
         let bad = Cr::Undef(Why::Error);
         let mut settled = Vec::new();
         for (a, s) in argv {
@@ -535,7 +523,16 @@ impl Walk<'_, '_> {
                 key: key.to_string(),
                 args,
                 span,
+                en,
             };
+            // A call with EN runs in a branch of its own: its type cannot
+            // wait for its use, as an all-literal call's does.
+            if p.en.is_some() {
+                return match self.materialize(&p, None) {
+                    Some((_, ty)) => Cr::Val(ty),
+                    None => bad,
+                };
+            }
             return Cr::Lit(LitClass::Pending(Box::new(p)), span);
         }
         match stdfn::resolve(key, &shapes, None) {
@@ -547,7 +544,7 @@ impl Walk<'_, '_> {
                     };
                     values.push(v);
                 }
-                Cr::Val(self.push_std_call(res, values))
+                Cr::Val(self.push_std_call(res, values, en))
             }
             Err(e) => {
                 let code = if e.count { ARG_COUNT } else { TYPE_MISMATCH };

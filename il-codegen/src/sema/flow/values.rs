@@ -233,7 +233,7 @@ impl Walk<'_, '_> {
             };
             values.push(v);
         }
-        let ret = self.push_std_call(res, values);
+        let ret = self.push_std_call(res, values, p.en.clone());
         Some((Value::Cr(ret.clone()), ret))
     }
 
