@@ -233,10 +233,15 @@ pub fn pipeline(data: &[u8]) {
     assert!(!has_errors(diags), "code emitted despite errors");
     let c = compiled.remove(0);
     assert!(!has_errors(&c.warnings), "compile succeeded with an error");
-    let tokens = syn::parse2::<syn::File>(c.tokens.clone())
-        .unwrap_or_else(|e| panic!("emitted tokens do not parse: {e}\n{}", c.tokens));
+    // The emitter writes text; `il!` parses it into tokens once.
+    let ts: proc_macro2::TokenStream = c
+        .text
+        .parse()
+        .unwrap_or_else(|e| panic!("emitted text does not lex: {e}\n{}", c.text));
+    let tokens = syn::parse2::<syn::File>(ts.clone())
+        .unwrap_or_else(|e| panic!("emitted text does not parse: {e}\n{}", c.text));
     assert_items(&tokens, &c.pous);
-    assert_no_unsafe(c.tokens.clone());
+    assert_no_unsafe(ts.clone());
     // The file writer: formatted, with `// N: <IL line>` comments.
     let text = c.file_text();
     let parsed = syn::parse_file(&text)
@@ -244,7 +249,7 @@ pub fn pipeline(data: &[u8]) {
     // The comments must not have changed the code: the file holds exactly
     // the emitted tokens less the line markers (which became comments), as
     // the formatter prints them.
-    let emitted = syn::parse2::<syn::File>(strip_markers(c.tokens))
+    let emitted = syn::parse2::<syn::File>(strip_markers(ts))
         .unwrap_or_else(|e| panic!("emitted tokens without markers do not parse: {e}"));
     assert!(
         prettyplease::unparse(&parsed) == prettyplease::unparse(&emitted),

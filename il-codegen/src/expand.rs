@@ -194,7 +194,8 @@ fn expand_inner(tokens: TokenStream) -> TokenStream {
         .check();
     if let Some(emitted) = checked.emit(opts) {
         let mut items = track;
-        items.extend(emitted.into_iter().map(|e| e.tokens));
+        let text: String = emitted.iter().map(|e| e.text.as_str()).collect();
+        items.extend(tokens_of(&text));
         return items;
     }
     let mut errors = TokenStream::new();
@@ -266,8 +267,22 @@ fn stubs(files: &[&SourceFile], opts: emit::Options, standard: crate::Standard) 
         }
     }
     program.configs = configs;
-    let _ = Span::call_site();
-    emit::program(&program, opts)
+    tokens_of(&emit::program(&program, opts))
+}
+
+/// The emitted Rust text as tokens (parsed once, here). Text that does not
+/// parse is a bug of the emitter, never of the user's IL: it becomes a
+/// `compile_error!` that says so, not a panic.
+fn tokens_of(text: &str) -> TokenStream {
+    match text.parse::<TokenStream>() {
+        Ok(t) => t,
+        Err(e) => {
+            let msg = format!(
+                "internal error in the IL compiler (please report it with the IL source): the generated Rust does not parse: {e}"
+            );
+            quote!(::core::compile_error!(#msg);)
+        }
+    }
 }
 
 #[cfg(test)]

@@ -10,11 +10,10 @@
 //!   loop over the code between labels, `__pc` holding the next block.
 
 use super::PouEmitter;
+use super::text::{Out, join, tail};
 use crate::ast::PouKind;
 use crate::sema::ir::{Op, PathElem, Stmt, Value};
 use crate::sema::types::Ty;
-use proc_macro2::{Delimiter, Group, Ident, Punct, Spacing, Span, TokenStream, TokenTree};
-use quote::{format_ident, quote};
 
 /// Deeper nesting than this falls back to the dispatcher (rustc and
 /// prettyplease recurse on nested blocks).
@@ -111,25 +110,16 @@ fn structure(stmts: &[Stmt], label_pos: &[Option<usize>]) -> Option<Vec<Region>>
     Some(regions)
 }
 
-fn label_lifetime(l: usize) -> TokenStream {
-    lifetime(&format!("__l{l}"))
+fn label_lifetime(l: usize) -> String {
+    format!("'__l{l}")
 }
 
-fn loop_lifetime(l: usize) -> TokenStream {
-    lifetime(&format!("__c{l}"))
-}
-
-fn lifetime(name: &str) -> TokenStream {
-    let mut t = TokenStream::new();
-    t.extend([
-        TokenTree::Punct(Punct::new('\'', Spacing::Joint)),
-        TokenTree::Ident(Ident::new(name, Span::call_site())),
-    ]);
-    t
+fn loop_lifetime(l: usize) -> String {
+    format!("'__c{l}")
 }
 
 impl PouEmitter<'_> {
-    pub(crate) fn body(&self) -> TokenStream {
+    pub(crate) fn body(&self, o: &mut Out) {
         let mut stmts: &[Stmt] = &self.pou.body;
         // A RET at the very end is where the body ends anyway.
         if let Some(Stmt {
@@ -174,15 +164,17 @@ impl PouEmitter<'_> {
         match (&mode, regions) {
             (Mode::Structured { .. }, Some(regions)) => {
                 let mut next = 0;
-                self.nested(stmts, 0, stmts.len(), &regions, &mut next, &mode)
+                self.nested(o, stmts, 0, stmts.len(), &regions, &mut next, &mode)
             }
             (Mode::Dispatch { .. }, _) => {
                 let segments: Vec<&[Stmt]> =
                     stmts.split(|s| matches!(s.op, Op::Label(_))).collect();
                 let last = segments.len() - 1;
                 let mut base = 0;
-                let arms = segments.iter().enumerate().map(|(k, seg)| {
-                    let code = self.seq(seg, base, &mode);
+                o.code("let mut __pc: usize = 0; '__dispatch: loop { match __pc {");
+                for (k, seg) in segments.iter().enumerate() {
+                    o.code(&format!("{k} => {{"));
+                    self.seq(o, seg, base, &mode);
                     base += seg.len() + 1;
                     let ends = matches!(
                         seg.last(),
@@ -192,122 +184,96 @@ impl PouEmitter<'_> {
                         })
                     );
                     let next = k + 1;
-                    let tail = if ends {
-                        quote!()
+                    if ends {
+                        o.code("}");
                     } else if k == last {
-                        quote!(break '__dispatch;)
+                        o.code("break '__dispatch; }");
                     } else {
-                        quote!(__pc = #next;)
-                    };
-                    quote!(#k => { #code #tail })
-                });
-                let arms: Vec<_> = arms.collect();
-                quote! {
-                    let mut __pc: usize = 0;
-                    '__dispatch: loop {
-                        match __pc {
-                            #(#arms)*
-                            _ => break '__dispatch,
-                        }
+                        o.code(&format!("__pc = {next}; }}"));
                     }
                 }
+                o.code("_ => break '__dispatch, } }");
             }
-            _ => self.seq(stmts, 0, &mode),
+            _ => self.seq(o, stmts, 0, &mode),
         }
     }
 
     /// Statements `[lo, hi)` with the regions that start at or after
     /// `regions[*next]` and lie inside `[lo, hi)`, as nested blocks/loops.
+    #[allow(clippy::too_many_arguments)]
     fn nested(
         &self,
+        o: &mut Out,
         stmts: &[Stmt],
         lo: usize,
         hi: usize,
         regions: &[Region],
         next: &mut usize,
         mode: &Mode,
-    ) -> TokenStream {
-        let mut out = TokenStream::new();
+    ) {
         let mut at = lo;
         while let Some(r) = regions.get(*next).copied().filter(|r| r.lo < hi) {
             *next += 1;
-            out.extend(self.seq(&stmts[at..r.lo], at, mode));
-            let inner = self.nested(stmts, r.lo, r.hi, regions, next, mode);
+            self.seq(o, &stmts[at..r.lo], at, mode);
             if r.is_loop {
                 let lt = loop_lifetime(r.label);
-                let mut body = inner;
+                o.code(&format!("{lt}: loop {{"));
+                self.nested(o, stmts, r.lo, r.hi, regions, next, mode);
                 // Falling off the end of the region leaves the loop.
                 if !matches!(
                     stmts[r.hi - 1].op,
                     Op::Jump { cond: None, .. } | Op::Return { cond: None }
                 ) {
-                    body.extend(quote!(break #lt;));
+                    o.code(&format!("break {lt};"));
                 }
-                out.extend(lt);
-                out.extend([
-                    TokenTree::Punct(Punct::new(':', Spacing::Alone)),
-                    TokenTree::Ident(Ident::new("loop", Span::call_site())),
-                    TokenTree::Group(Group::new(Delimiter::Brace, body)),
-                ]);
+                o.code("}");
             } else {
-                out.extend(label_lifetime(r.label));
-                out.extend([
-                    TokenTree::Punct(Punct::new(':', Spacing::Alone)),
-                    TokenTree::Group(Group::new(Delimiter::Brace, inner)),
-                ]);
+                o.code(&format!("{}: {{", label_lifetime(r.label)));
+                self.nested(o, stmts, r.lo, r.hi, regions, next, mode);
+                o.code("}");
             }
             at = r.hi;
         }
-        out.extend(self.seq(&stmts[at..hi], at, mode));
-        out
+        self.seq(o, &stmts[at..hi], at, mode);
     }
 
     /// Straight-line statements; `base` is the position of the first in the body.
-    fn seq(&self, stmts: &[Stmt], base: usize, mode: &Mode) -> TokenStream {
-        let mut out = TokenStream::new();
+    fn seq(&self, o: &mut Out, stmts: &[Stmt], base: usize, mode: &Mode) {
         let mut last_line = 0;
         for (k, s) in stmts.iter().enumerate() {
             if self.opts.line_markers && s.line != last_line && s.line != 0 {
-                let n = proc_macro2::Literal::u32_unsuffixed(s.line);
-                out.extend(quote!(__il_line!(#n);));
+                o.code(&format!("__il_line!({});", s.line));
                 last_line = s.line;
             }
-            out.extend(self.stmt(s, base + k, mode));
+            o.code(&self.stmt(s, base + k, mode));
         }
-        out
     }
 
-    fn cond(
-        &self,
-        c: &Option<(crate::sema::ir::Value, bool)>,
-        line: u32,
-        body: TokenStream,
-    ) -> TokenStream {
+    fn cond(&self, c: &Option<(crate::sema::ir::Value, bool)>, line: u32, body: String) -> String {
         match c {
             None => body,
             Some((v, true)) => {
                 let v = self.value(v, line);
-                quote!(if #v { #body })
+                format!("if {v} {{ {body} }}")
             }
             Some((v, false)) => {
                 let v = self.value(v, line);
-                quote!(if !#v { #body })
+                format!("if !{v} {{ {body} }}")
             }
         }
     }
 
-    fn stmt(&self, s: &Stmt, pos: usize, mode: &Mode) -> TokenStream {
+    fn stmt(&self, s: &Stmt, pos: usize, mode: &Mode) -> String {
         let line = s.line;
         match &s.op {
             Op::SetCr { ty, expr } => {
                 let id = super::values::cr_ident(ty);
                 let e = self.expr(expr, line);
-                quote!(#id = #e;)
+                format!("{id} = {e};")
             }
             Op::Save { slot, value } => {
-                let id = format_ident!("__save_{}", slot);
                 let v = self.value(value, line);
-                quote!(#id = #v;)
+                format!("__save_{slot} = {v};")
             }
             Op::Store {
                 place,
@@ -318,11 +284,11 @@ impl PouEmitter<'_> {
                 let v = match (negate, value) {
                     (true, Value::Widen(inner, w)) => {
                         let v = self.value(inner, line);
-                        super::values::widened(quote!(!#v), &Some(*w))
+                        super::values::widened(format!("!{v}"), &Some(*w))
                     }
                     (true, v) => {
                         let v = self.value(v, line);
-                        quote!(!#v)
+                        format!("!{v}")
                     }
                     (false, v) => self.value(v, line),
                 };
@@ -334,21 +300,19 @@ impl PouEmitter<'_> {
                             crate::emit::values::constant(&crate::sema::ir::Const::Int(*lo, e)),
                             crate::emit::values::constant(&crate::sema::ir::Const::Int(*hi, e)),
                         );
-                        let w = self.write(place, quote!(__r), line);
+                        let w = self.write(place, "__r".to_string(), line);
                         let fault = self.fault("SubrangeViolation", line);
-                        quote!({ let __r: #ty = #v; if __r >= #lo && __r <= #hi { #w } else { #fault; } })
+                        format!(
+                            "{{ let __r: {ty} = {v}; if __r >= {lo} && __r <= {hi} {{ {w} }} else {{ {fault}; }} }}"
+                        )
                     }
                     _ => self.write(place, v, line),
                 }
             }
             Op::SetIf { place, value, cond } => {
                 let c = self.value(cond, line);
-                let w = self.write(
-                    place,
-                    if *value { quote!(true) } else { quote!(false) },
-                    line,
-                );
-                quote!(if #c { #w })
+                let w = self.write(place, value.to_string(), line);
+                format!("if {c} {{ {w} }}")
             }
             Op::CallFb {
                 inst,
@@ -361,19 +325,21 @@ impl PouEmitter<'_> {
                 let (io_lets, io_args, io_back) = self.bind_inouts(inouts, Some(inst), line);
                 let ext = (!externals.is_empty()).then(|| {
                     let Ty::Fb(fb) = &inst.ty else {
-                        return quote!();
+                        return String::new();
                     };
                     let st = super::names::ext_ident(fb);
                     let fields = externals.iter().map(|(e, constant)| {
                         let id = super::rust_ident(e);
                         if *constant {
-                            quote!(#id: &*__ext.#id)
+                            format!("{id}: &*__ext.{id}")
                         } else {
-                            quote!(#id: &mut *__ext.#id)
+                            format!("{id}: &mut *__ext.{id}")
                         }
                     });
-                    quote!(#st { #(#fields,)* })
+                    format!(", {st} {{ {} }}", join(fields, ", "))
                 });
+                let ext = ext.unwrap_or_default();
+                let io_args = tail(io_args);
                 // An instance that is a plain path, with inputs that do not
                 // read it: set the inputs in place, call, copy the outputs.
                 if !inst
@@ -388,82 +354,83 @@ impl PouEmitter<'_> {
                     let sets = inputs.iter().map(|(n, v)| {
                         let f = super::rust_ident(n);
                         let v = self.value(v, line);
-                        quote!(#path.#f = #v;)
+                        format!("{path}.{f} = {v};")
                     });
+                    let sets: String = sets.collect();
                     let outs = outputs.iter().map(|(n, target, neg, w)| {
                         let f = super::rust_ident(n);
-                        let v = quote!(#path.#f);
-                        let v = super::values::widened(if *neg { quote!(!#v) } else { v }, w);
+                        let v = format!("{path}.{f}");
+                        let v = super::values::widened(if *neg { format!("!{v}") } else { v }, w);
                         self.write(target, v, line)
                     });
+                    let outs: String = outs.collect();
                     return self.cond(
                         cond,
                         line,
-                        quote!({
-                            #(#sets)*
-                            #io_lets
-                            #path.call(__ctx, #(#io_args,)* #ext);
-                            #io_back
-                            #(#outs)*
-                        }),
+                        format!(
+                            "{{ {sets} {io_lets} {path}.call(__ctx{io_args}{ext}); {io_back} {outs} }}"
+                        ),
                     );
                 }
                 // Inputs are evaluated before the instance is borrowed.
-                let ids: Vec<_> = (0..inputs.len())
-                    .map(|k| format_ident!("__in{}", k))
+                let lets: String = inputs
+                    .iter()
+                    .enumerate()
+                    .map(|(k, (_, v))| format!("let __in{k} = {};", self.value(v, line)))
                     .collect();
-                let lets = inputs.iter().zip(&ids).map(|((_, v), id)| {
-                    let v = self.value(v, line);
-                    quote!(let #id = #v;)
-                });
-                let sets = inputs.iter().zip(&ids).map(|((n, _), id)| {
-                    let f = super::rust_ident(n);
-                    quote!(__fb.#f = #id;)
-                });
+                let sets: String = inputs
+                    .iter()
+                    .enumerate()
+                    .map(|(k, (n, _))| format!("__fb.{} = __in{k};", super::rust_ident(n)))
+                    .collect();
                 let call = self.with_fb(
                     inst,
-                    quote!(#(#sets)* __fb.call(__ctx, #(#io_args,)* #ext);),
+                    format!("{sets} __fb.call(__ctx{io_args}{ext});"),
                     line,
                 );
-                let call = quote!(#io_lets #call #io_back);
-                let outs = outputs.iter().map(|(n, target, neg, w)| {
-                    let mut src = inst.clone();
-                    src.path.push(crate::sema::ir::PathElem::Field(n.clone()));
-                    let v = self.read(&src, line);
-                    let v = super::values::widened(if *neg { quote!(!#v) } else { v }, w);
-                    self.write(target, v, line)
-                });
-                self.cond(cond, line, quote!({ #(#lets)* #call #(#outs)* }))
+                let outs: String = outputs
+                    .iter()
+                    .map(|(n, target, neg, w)| {
+                        let mut src = inst.clone();
+                        src.path.push(crate::sema::ir::PathElem::Field(n.clone()));
+                        let v = self.read(&src, line);
+                        let v = super::values::widened(if *neg { format!("!{v}") } else { v }, w);
+                        self.write(target, v, line)
+                    })
+                    .collect();
+                self.cond(
+                    cond,
+                    line,
+                    format!("{{ {lets} {io_lets} {call} {io_back} {outs} }}"),
+                )
             }
-            Op::Label(_) | Op::Nop => quote!(),
+            Op::Label(_) | Op::Nop => String::new(),
             Op::Jump { label, cond } => {
                 let go = match mode {
                     Mode::Dispatch { block_of_label } => {
                         let b = block_of_label[*label];
-                        quote!(__pc = #b; continue '__dispatch;)
+                        format!("__pc = {b}; continue '__dispatch;")
                     }
                     Mode::Structured { label_pos } => {
                         if label_pos[*label].is_some_and(|p| p < pos) {
-                            let lt = loop_lifetime(*label);
-                            quote!(continue #lt;)
+                            format!("continue {};", loop_lifetime(*label))
                         } else {
-                            let lt = label_lifetime(*label);
-                            quote!(break #lt;)
+                            format!("break {};", label_lifetime(*label))
                         }
                     }
-                    Mode::Straight => quote!(),
+                    Mode::Straight => String::new(),
                 };
                 self.cond(cond, line, go)
             }
             Op::Return { cond } => {
                 let r = if self.pou.kind == PouKind::Function {
-                    quote!(return __ret;)
+                    "return __ret;"
                 } else if self.has_cached() {
-                    quote!(break '__body;)
+                    "break '__body;"
                 } else {
-                    quote!(return;)
+                    "return;"
                 };
-                self.cond(cond, line, r)
+                self.cond(cond, line, r.to_string())
             }
         }
     }

@@ -3,14 +3,14 @@
 //! host writes `Tank::set_io_level(&mut ctx, 500)` with the variable's own
 //! Rust type instead of byte offsets into `Cycle::io`.
 
+use super::rust_ident;
+use super::text::{doc, str_lit};
 use super::values::{io_read, io_write};
 use crate::sema::ir::{CheckedPou, Loc, Var};
-use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
 
 /// The `il_std::Located` entries of a POU: its located variables, then the
 /// direct addresses its code uses.
-pub(super) fn addresses(pou: &CheckedPou) -> Vec<TokenStream> {
+pub(super) fn addresses(pou: &CheckedPou) -> Vec<String> {
     let located = pou
         .vars
         .iter()
@@ -23,50 +23,54 @@ pub(super) fn addresses(pou: &CheckedPou) -> Vec<TokenStream> {
 }
 
 /// An `il_std::Located` entry of an `ADDRESSES` table.
-pub(super) fn located(name: &str, l: &Loc) -> TokenStream {
+pub(super) fn located(name: &str, l: &Loc) -> String {
     let area = super::values::area(l);
-    let (text, byte, ty) = (&l.text, l.byte, l.elem.name());
+    let (name, text, byte, ty) = (
+        str_lit(name),
+        str_lit(&l.text),
+        l.byte,
+        str_lit(l.elem.name()),
+    );
     let bit = match l.bit {
-        Some(b) => quote!(::core::option::Option::Some(#b)),
-        None => quote!(::core::option::Option::None),
+        Some(b) => format!("::core::option::Option::Some({b})"),
+        None => "::core::option::Option::None".to_string(),
     };
-    quote!(::il_std::Located { name: #name, address: #text, area: #area, byte: #byte, bit: #bit, ty: #ty })
+    format!(
+        "::il_std::Located {{ name: {name}, address: {text}, area: {area}, byte: {byte}, bit: {bit}, ty: {ty} }}"
+    )
 }
 
 /// `io_NAME(ctx) -> T` and `set_io_NAME(ctx, v: T)` for every located
 /// variable: the same reads and writes the generated code does, typed.
-pub(super) fn accessors(vars: &[Var]) -> TokenStream {
+pub(super) fn accessors(vars: &[Var]) -> String {
     accessors_in("", vars)
 }
 
 /// [`accessors`] with the names prefixed (a RESOURCE's globals take
 /// `RES_`, so that two resources may each locate a global `x`).
-pub(super) fn accessors_in(prefix: &str, vars: &[Var]) -> TokenStream {
-    let mut out = TokenStream::new();
+pub(super) fn accessors_in(prefix: &str, vars: &[Var]) -> String {
+    let mut out = String::new();
     for v in vars {
         let Some(l) = &v.location else { continue };
-        let get = format_ident!("io_{prefix}{}", v.name);
-        let set = format_ident!("set_io_{prefix}{}", v.name);
+        let get = rust_ident(&format!("io_{prefix}{}", v.name));
+        let set = rust_ident(&format!("set_io_{prefix}{}", v.name));
         let ty = l.elem.rust();
-        let (read, write) = (io_read(l), io_write(l, quote!(__value)));
-        let gdoc = format!(
+        let (read, write) = (io_read(l), io_write(l, "__value".to_string()));
+        let gdoc = doc(&format!(
             " `{}` ({} {}) as the process image holds it now.",
             v.name,
             l.text,
             l.elem.name()
-        );
-        let sdoc = format!(
+        ));
+        let sdoc = doc(&format!(
             " Writes `{}` ({} {}) into the process image.",
             v.name,
             l.text,
             l.elem.name()
-        );
-        out.extend(quote! {
-            #[doc = #gdoc]
-            pub fn #get(__ctx: &::il_std::Cycle) -> #ty { #read }
-            #[doc = #sdoc]
-            pub fn #set(__ctx: &mut ::il_std::Cycle, __value: #ty) { #write }
-        });
+        ));
+        out.push_str(&format!(
+            "{gdoc}pub fn {get}(__ctx: &::il_std::Cycle) -> {ty} {{ {read} }} {sdoc}pub fn {set}(__ctx: &mut ::il_std::Cycle, __value: {ty}) {{ {write} }}"
+        ));
     }
     out
 }

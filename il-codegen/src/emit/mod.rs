@@ -1,4 +1,5 @@
-//! The emitter: checked IR → Rust tokens.
+//! The emitter: checked IR → Rust text (see `text.rs`, which also keeps
+//! IL-derived text from becoming code).
 //!
 //! Everything here is total: the checker has already refused whatever could
 //! not compile. Generated code never panics: integer arithmetic wraps,
@@ -9,14 +10,14 @@ mod configuration;
 mod flow;
 mod io;
 mod names;
+pub(crate) mod text;
 mod values;
 mod visit;
 
 use crate::ast::{PouKind, VarKind};
 use crate::sema::ir::{CheckedPou, Program, Storage};
 use crate::sema::types::Ty;
-use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use text::{Out, doc, join, str_lit, tail};
 
 pub use names::{item_ident, local_ident, rust_ident};
 
@@ -24,7 +25,7 @@ pub use names::{item_ident, local_ident, rust_ident};
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Options {
     /// Put `__il_line!(N);` markers before the code of each IL line; the file
-    /// writer turns them into `// N: <IL text>` comments after formatting.
+    /// writer turns them into `// N: <IL text>` comments.
     pub line_markers: bool,
     /// Derive `serde::Serialize`/`Deserialize` on the generated user types,
     /// FB/PROGRAM structs and RETAIN snapshots (the user's crate depends on
@@ -33,33 +34,33 @@ pub struct Options {
 }
 
 /// `#[derive(Serialize, Deserialize)]` when serde is on.
-pub(crate) fn serde_derive(opts: Options) -> TokenStream {
+pub(crate) fn serde_derive(opts: Options) -> &'static str {
     if opts.serde {
-        quote!(#[derive(::serde::Serialize, ::serde::Deserialize)])
+        "#[derive(::serde::Serialize, ::serde::Deserialize)]"
     } else {
-        quote!()
+        ""
     }
 }
 
 /// For a field of type `t`: serde covers arrays up to 32 elements itself;
 /// a longer (outermost) dimension goes through `il_std::serde_array`.
-pub(crate) fn serde_field(t: &Ty, opts: Options) -> TokenStream {
+pub(crate) fn serde_field(t: &Ty, opts: Options) -> String {
     match t {
         Ty::Array { dims, .. }
             if opts.serde && dims.first().is_some_and(|(lo, hi)| hi - lo + 1 > 32) =>
         {
-            quote!(#[serde(with = "::il_std::serde_array")])
+            "#[serde(with = \"::il_std::serde_array\")]".to_string()
         }
-        _ => quote!(),
+        _ => String::new(),
     }
 }
 
 /// The Rust type of a field: a heap field (an array over 64 KiB, see
 /// `sema/size.rs`) is `Box<[Row]>`.
-pub(crate) fn field_ty(v: &crate::sema::ir::Var) -> TokenStream {
+pub(crate) fn field_ty(v: &crate::sema::ir::Var) -> String {
     if v.heap {
         let row = rust_ty(&crate::sema::size::row(&v.ty));
-        quote!(::il_std::heap::Box<[#row]>)
+        format!("::il_std::heap::Box<[{row}]>")
     } else {
         rust_ty(&v.ty)
     }
@@ -67,48 +68,43 @@ pub(crate) fn field_ty(v: &crate::sema::ir::Var) -> TokenStream {
 
 /// [`serde_field`] for a field: a heap field is a sequence of exactly its
 /// declared length.
-pub(crate) fn serde_var(v: &crate::sema::ir::Var, opts: Options) -> TokenStream {
+pub(crate) fn serde_var(v: &crate::sema::ir::Var, opts: Options) -> String {
     match &v.ty {
         Ty::Array { dims, .. } if v.heap && opts.serde => {
             let n = dims.first().map_or(0, |(lo, hi)| hi - lo + 1);
-            let de = format!("::il_std::heap::serde_len::deserialize::<_, _, {n}>");
-            quote!(#[serde(serialize_with = "::il_std::heap::serde_len::serialize", deserialize_with = #de)])
+            let de = str_lit(&format!(
+                "::il_std::heap::serde_len::deserialize::<_, _, {n}>"
+            ));
+            format!(
+                "#[serde(serialize_with = \"::il_std::heap::serde_len::serialize\", deserialize_with = {de})]"
+            )
         }
         t => serde_field(t, opts),
     }
 }
 
-/// Emit every POU of a checked program.
-pub fn program(p: &Program, opts: Options) -> TokenStream {
-    // Streams are moved into the result, never interpolated: `quote!`'s
-    // `#stream` copies every token (and, in proc-macro2's fallback, every
-    // identifier's string), which for large POUs dominated emit time.
-    let mut out = TokenStream::new();
-    out.extend(p.types.iter().map(|t| emit_type(t, opts)));
-    out.extend(p.pous.iter().map(|pou| emit_pou(pou, opts)));
-    out.extend(
-        p.configs
-            .iter()
-            .map(|c| configuration::emit_config(c, opts)),
-    );
-    out
-}
-
-/// `{ tokens }` as one token tree: interpolating it clones a reference to
-/// the inner stream, not the tokens.
-pub(crate) fn braced(tokens: TokenStream) -> proc_macro2::Group {
-    proc_macro2::Group::new(proc_macro2::Delimiter::Brace, tokens)
+/// Emit every POU of a checked program: Rust text, laid out.
+pub fn program(p: &Program, opts: Options) -> String {
+    let mut out = Out::new();
+    for t in &p.types {
+        emit_type(&mut out, t, opts);
+    }
+    for pou in &p.pous {
+        emit_pou(&mut out, pou, opts);
+    }
+    for c in &p.configs {
+        configuration::emit_config(&mut out, c, opts);
+    }
+    out.finish()
 }
 
 /// The Rust type of an IEC type; user FBs are items beside the generated code.
-pub(crate) fn rust_ty(t: &Ty) -> TokenStream {
+pub(crate) fn rust_ty(t: &Ty) -> String {
     t.rust(&|name| {
         if is_std_fb(name) {
-            let id = format_ident!("{}", name);
-            quote!(::il_std::#id)
+            format!("::il_std::{}", rust_ident(name))
         } else {
-            let id = item_ident(name);
-            quote!(#id)
+            item_ident(name)
         }
     })
 }
@@ -143,93 +139,74 @@ impl PouEmitter<'_> {
     }
 }
 
-fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
+/// The `allow` list of generated function bodies.
+const ALLOW_BODY: &str = "#[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]";
+
+impl PouEmitter<'_> {
+    /// `let mut` for the CR, saved-value and VAR_TEMP locals.
+    fn locals(&self, o: &mut Out) {
+        let pou = self.pou;
+        for t in &pou.cr_types {
+            let (id, ty, d) = (values::cr_ident(t), rust_ty(t), values::default_value(t));
+            o.code(&format!("let mut {id}: {ty} = {d};"));
+        }
+        for (i, t) in pou.save_types.iter().enumerate() {
+            let (ty, d) = (rust_ty(t), values::default_value(t));
+            o.code(&format!("let mut __save_{i}: {ty} = {d};"));
+        }
+        // FUNCTION inputs and outputs are parameters, FB memory is in `self`.
+        for v in pou.vars.iter().filter(|v| v.storage == Storage::Temp) {
+            let id = local_ident(&v.name);
+            let ty = rust_ty(&v.ty);
+            let init = values::init_value(&v.ty, v.init.as_ref());
+            o.code(&format!("let mut {id}: {ty} = {init};"));
+        }
+    }
+}
+
+fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
     let p = PouEmitter { pou, opts };
     let name = item_ident(&pou.name);
-    let body = p.body();
-    let cr_locals = pou.cr_types.iter().map(|t| {
-        let id = values::cr_ident(t);
-        let ty = rust_ty(t);
-        let d = values::default_value(t);
-        quote!(let mut #id: #ty = #d;)
-    });
-    let save_locals = pou.save_types.iter().enumerate().map(|(i, t)| {
-        let id = format_ident!("__save_{}", i);
-        let ty = rust_ty(t);
-        let d = values::default_value(t);
-        quote!(let mut #id: #ty = #d;)
-    });
-    // FUNCTION inputs and outputs are parameters, FB memory is in `self`.
-    let temp_locals = pou.vars.iter().filter(|v| v.storage == Storage::Temp);
-    let temp_locals = temp_locals.map(|v| {
-        let id = local_ident(&v.name);
-        let ty = rust_ty(&v.ty);
-        let init = values::init_value(&v.ty, v.init.as_ref());
-        quote!(let mut #id: #ty = #init;)
-    });
-    let locals = quote!(#(#cr_locals)* #(#save_locals)* #(#temp_locals)*);
-    let doc = format!(
+    let pdoc = doc(&format!(
         " IEC 61131-3 {} `{}`, generated from Instruction List.",
         pou.kind.keyword(),
         pou.name
-    );
-    let allow = quote!(#[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens,
-        unused_comparisons, clippy::all)]);
-
+    ));
     match pou.kind {
         PouKind::Function => {
             let ret_ty = pou
                 .ret
                 .as_ref()
                 .map(rust_ty)
-                .unwrap_or_else(|| quote!(bool));
+                .unwrap_or_else(|| "bool".to_string());
             let ret_default = pou
                 .ret
                 .as_ref()
                 .map(values::default_value)
-                .unwrap_or_else(|| quote!(false));
+                .unwrap_or_else(|| "false".to_string());
             let params = pou
                 .vars
                 .iter()
                 .filter(|v| v.kind == VarKind::Input)
-                .map(|v| {
-                    let id = local_ident(&v.name);
-                    let ty = rust_ty(&v.ty);
-                    quote!(mut #id: #ty)
-                });
-            let inouts = inout_params(pou);
+                .map(|v| format!("mut {}: {}", local_ident(&v.name), rust_ty(&v.ty)));
             let outs = pou
                 .vars
                 .iter()
                 .filter(|v| v.kind == VarKind::Output)
-                .map(|v| {
-                    let id = local_ident(&v.name);
-                    let ty = rust_ty(&v.ty);
-                    quote!(#id: &mut #ty)
-                });
+                .map(|v| format!("{}: &mut {}", local_ident(&v.name), rust_ty(&v.ty)));
+            let params = tail(params.chain(inout_params(pou)).chain(outs));
+            o.code(&format!(
+                "{pdoc}{ALLOW_BODY} pub fn {name}(__ctx: &mut ::il_std::Cycle{params}) -> {ret_ty} {{ let mut __ret: {ret_ty} = {ret_default};"
+            ));
             // Outputs start from their initial values on every call.
-            let out_inits = pou
-                .vars
-                .iter()
-                .filter(|v| v.kind == VarKind::Output)
-                .map(|v| {
-                    let id = local_ident(&v.name);
-                    let init = values::init_value(&v.ty, v.init.as_ref());
-                    quote!(*#id = #init;)
-                });
-            let mut inner = quote! {
-                let mut __ret: #ret_ty = #ret_default;
-                #(#out_inits)*
-                #locals
-            };
-            inner.extend(body);
-            inner.extend(quote!(__ret));
-            let block = braced(inner);
-            quote! {
-                #[doc = #doc]
-                #allow
-                pub fn #name(__ctx: &mut ::il_std::Cycle, #(#params,)* #(#inouts,)* #(#outs,)*) -> #ret_ty #block
+            for v in pou.vars.iter().filter(|v| v.kind == VarKind::Output) {
+                let id = local_ident(&v.name);
+                let init = values::init_value(&v.ty, v.init.as_ref());
+                o.code(&format!("*{id} = {init};"));
             }
+            p.locals(o);
+            p.body(o);
+            o.code("__ret }");
         }
         PouKind::FunctionBlock | PouKind::Program => {
             let fields: Vec<_> = pou
@@ -239,9 +216,10 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 .filter(|(i, _)| p.field(*i))
                 .map(|(_, v)| v)
                 .collect();
-            let decls = fields.iter().map(|v| {
+            let mut decls = String::new();
+            let mut inits = String::new();
+            for v in &fields {
                 let id = rust_ident(&v.name);
-                let ty = field_ty(v);
                 let vdoc = if v.heap {
                     format!(
                         " {} (IL line {}); over 64 KiB, so on the heap: the elements of its first dimension",
@@ -251,314 +229,259 @@ fn emit_pou(pou: &CheckedPou, opts: Options) -> TokenStream {
                 } else {
                     format!(" {} (IL line {})", v.kind.keyword(), v.line)
                 };
-                let sf = serde_var(v, opts);
-                quote!(#[doc = #vdoc] #sf pub #id: #ty,)
-            });
-            let inits = fields.iter().map(|v| {
-                let id = rust_ident(&v.name);
+                decls.push_str(&format!(
+                    "{}{} pub {id}: {},",
+                    doc(&vdoc),
+                    serde_var(v, opts),
+                    field_ty(v)
+                ));
                 let init = if v.heap {
                     values::heap_init_value(&v.ty, v.init.as_ref())
                 } else {
                     values::init_value(&v.ty, v.init.as_ref())
                 };
-                quote!(#id: #init,)
-            });
+                inits.push_str(&format!("{id}: {init},"));
+            }
             // R_EDGE/F_EDGE inputs: private memory, and the edge computed on
             // entry (F_EDGE follows F_TRIG: Q := NOT CLK AND NOT M; M := NOT CLK).
-            let edges: Vec<_> = fields
-                .iter()
-                .filter_map(|v| v.edge.map(|e| (*v, e)))
-                .collect();
-            let mem_decls = edges.iter().map(|(v, _)| {
-                let m = rust_ident(&format!("__edge_memory_{}", v.name));
-                quote!(#m: bool,)
-            });
-            let mem_inits = edges.iter().map(|(v, _)| {
-                let m = rust_ident(&format!("__edge_memory_{}", v.name));
-                quote!(#m: false,)
-            });
-            let edge_lets = edges.iter().map(|(v, e)| {
+            let mut edge_lets = String::new();
+            for v in &fields {
+                let Some(e) = v.edge else { continue };
                 let m = rust_ident(&format!("__edge_memory_{}", v.name));
                 let x = rust_ident(&v.name);
                 let l = rust_ident(&format!("__edge_{}", v.name));
-                match e {
+                decls.push_str(&format!("{m}: bool,"));
+                inits.push_str(&format!("{m}: false,"));
+                edge_lets.push_str(&match e {
                     crate::ast::Edge::Rising => {
-                        quote!(let #l: bool = self.#x && !self.#m; self.#m = self.#x;)
+                        format!("let {l}: bool = self.{x} && !self.{m}; self.{m} = self.{x};")
                     }
                     crate::ast::Edge::Falling => {
-                        quote!(let #l: bool = !self.#x && !self.#m; self.#m = !self.#x;)
+                        format!("let {l}: bool = !self.{x} && !self.{m}; self.{m} = !self.{x};")
                     }
-                }
-            });
+                });
+            }
             let cached: Vec<_> = (0..pou.vars.len())
                 .filter(|i| p.cached(*i))
                 .map(|i| &pou.vars[i])
                 .collect();
-            let loads = cached.iter().map(|v| {
-                let (id, l) = (rust_ident(&v.name), names::cache_ident(&v.name));
-                let ty = rust_ty(&v.ty);
-                quote!(let mut #l: #ty = self.#id;)
-            });
-            let stores = cached.iter().map(|v| {
-                let (id, l) = (rust_ident(&v.name), names::cache_ident(&v.name));
-                quote!(self.#id = #l;)
-            });
-            // RET leaves the labelled block, so the values are written back.
-            let body = if cached.is_empty() {
-                body
-            } else {
-                let mut t = quote!('__body:);
-                t.extend([proc_macro2::TokenTree::Group(proc_macro2::Group::new(
-                    proc_macro2::Delimiter::Brace,
-                    body,
-                ))]);
-                t.extend(quote!(#(#stores)*));
-                t
-            };
-            let mut inner = quote!(#(#edge_lets)* #(#loads)* #locals);
-            inner.extend(body);
-            let block = braced(inner);
-            let addresses = io::addresses(pou);
+            let serde = serde_derive(opts);
+            o.code(&format!(
+                "{pdoc}#[derive(Clone, Debug, PartialEq)] {serde} #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)] pub struct {name} {{ {decls} }}"
+            ));
+            o.code(&format!(
+                "#[allow(dead_code, clippy::all)] impl ::core::default::Default for {name} {{ fn default() -> Self {{ Self {{ {inits} }} }} }}"
+            ));
+            let addresses = join(io::addresses(pou), ", ");
             let io_accessors = io::accessors(&pou.vars);
             let method_doc = if pou.kind == PouKind::Program {
                 " Run one scan."
             } else {
                 " Call the block once."
             };
-            let inouts = inout_params(pou);
+            let inouts = tail(inout_params(pou));
             let externals: Vec<_> = pou
                 .vars
                 .iter()
                 .filter(|v| v.storage == Storage::External)
                 .collect();
             let ext_id = names::ext_ident(&pou.name);
-            let (ext_item, ext_param) = if externals.is_empty() {
-                (quote!(), quote!())
+            let ext_param = if externals.is_empty() {
+                String::new()
             } else {
-                let fields = externals.iter().map(|v| {
+                format!(", mut __ext: {ext_id}<'_>")
+            };
+            o.code(&format!(
+                "#[allow(dead_code, clippy::all)] impl {name} {{ \
+                 /// The located variables and direct addresses this POU\n\
+                 /// reads or writes in `Cycle::io`, for binding I/O.\n\
+                 pub const ADDRESSES: &'static [::il_std::Located] = &[\n{addresses}]; {io_accessors} \
+                 {}{ALLOW_BODY} pub fn call(&mut self, __ctx: &mut ::il_std::Cycle{inouts}{ext_param}) {{ {edge_lets}",
+                doc(method_doc)
+            ));
+            for v in &cached {
+                let (id, l) = (rust_ident(&v.name), names::cache_ident(&v.name));
+                o.code(&format!("let mut {l}: {} = self.{id};", rust_ty(&v.ty)));
+            }
+            p.locals(o);
+            // RET leaves the labelled block, so the values are written back.
+            if cached.is_empty() {
+                p.body(o);
+            } else {
+                o.code("'__body: {");
+                p.body(o);
+                o.code("}");
+                for v in &cached {
+                    let (id, l) = (rust_ident(&v.name), names::cache_ident(&v.name));
+                    o.code(&format!("self.{id} = {l};"));
+                }
+            }
+            o.code("} }");
+            // The generic trait fits blocks called with the context alone.
+            if inouts.is_empty() && externals.is_empty() {
+                o.code(&format!(
+                    "impl ::il_std::FunctionBlock for {name} {{ fn call(&mut self, ctx: &mut ::il_std::Cycle) {{ {name}::call(self, ctx) }} }}"
+                ));
+            }
+            visit::pou(o, &name, &fields);
+            if !externals.is_empty() {
+                let mut efields = String::new();
+                for v in &externals {
                     let id = rust_ident(&v.name);
                     let ty = rust_ty(&v.ty);
                     if v.constant {
-                        let vdoc = format!(" VAR_EXTERNAL CONSTANT (IL line {})", v.line);
-                        quote!(#[doc = #vdoc] pub #id: &'a #ty,)
+                        let vdoc = doc(&format!(" VAR_EXTERNAL CONSTANT (IL line {})", v.line));
+                        efields.push_str(&format!("{vdoc}pub {id}: &'a {ty},"));
                     } else {
-                        let vdoc = format!(" VAR_EXTERNAL (IL line {})", v.line);
-                        quote!(#[doc = #vdoc] pub #id: &'a mut #ty,)
+                        let vdoc = doc(&format!(" VAR_EXTERNAL (IL line {})", v.line));
+                        efields.push_str(&format!("{vdoc}pub {id}: &'a mut {ty},"));
                     }
-                });
-                let edoc = format!(
+                }
+                let edoc = doc(&format!(
                     " The globals `{}` uses (its VAR_EXTERNALs), passed to every call.",
                     pou.name
-                );
-                (
-                    quote! {
-                        #[doc = #edoc]
-                        #[allow(dead_code, non_snake_case, non_camel_case_types)]
-                        pub struct #ext_id<'a> { #(#fields)* }
-                    },
-                    quote!(mut __ext: #ext_id<'_>),
-                )
-            };
-            let retain = retain_items(pou, opts);
-            let visit = visit::pou(&name, &fields);
-            let serde = serde_derive(opts);
-            // The generic trait fits blocks called with the context alone.
-            let trait_impl = (inouts.is_empty() && externals.is_empty()).then(|| {
-                quote! {
-                    impl ::il_std::FunctionBlock for #name {
-                        fn call(&mut self, ctx: &mut ::il_std::Cycle) {
-                            #name::call(self, ctx)
-                        }
-                    }
-                }
-            });
-            quote! {
-                #[doc = #doc]
-                #[derive(Clone, Debug, PartialEq)]
-                #serde
-                #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
-                pub struct #name {
-                    #(#decls)*
-                    #(#mem_decls)*
-                }
-
-                #[allow(dead_code, clippy::all)]
-                impl ::core::default::Default for #name {
-                    fn default() -> Self {
-                        Self { #(#inits)* #(#mem_inits)* }
-                    }
-                }
-
-                #[allow(dead_code, clippy::all)]
-                impl #name {
-                    /// The located variables and direct addresses this POU
-                    /// reads or writes in `Cycle::io`, for binding I/O.
-                    pub const ADDRESSES: &'static [::il_std::Located] = &[#(#addresses),*];
-                    #io_accessors
-
-                    #[doc = #method_doc]
-                    #allow
-                    pub fn call(&mut self, __ctx: &mut ::il_std::Cycle, #(#inouts,)* #ext_param) #block
-                }
-
-                #trait_impl
-                #visit
-                #ext_item
-                #retain
+                ));
+                o.code(&format!(
+                    "{edoc}#[allow(dead_code, non_snake_case, non_camel_case_types)] pub struct {ext_id}<'a> {{ {efields} }}"
+                ));
             }
+            retain_items(o, pou, opts);
         }
     }
 }
 
 /// The RETAIN snapshot type of an FB/PROGRAM, with `retain()` and `restore()`.
-fn retain_items(pou: &CheckedPou, opts: Options) -> TokenStream {
+fn retain_items(o: &mut Out, pou: &CheckedPou, opts: Options) {
     use crate::sema::ir::Retained;
     if pou.retained.is_empty() {
-        return quote!();
+        return;
     }
     let name = item_ident(&pou.name);
     let st = names::retain_ident(&pou.name);
-    let mut fields = Vec::new();
-    let mut takes = Vec::new();
-    let mut puts = Vec::new();
+    let mut fields = String::new();
+    let mut takes = String::new();
+    let mut puts = String::new();
     for (i, how) in &pou.retained {
         let v = &pou.vars[*i];
         let id = rust_ident(&v.name);
         match how {
             Retained::Whole => {
                 let ty = field_ty(v);
-                let doc = format!(" {} RETAIN (IL line {})", v.kind.keyword(), v.line);
+                let d = doc(&format!(
+                    " {} RETAIN (IL line {})",
+                    v.kind.keyword(),
+                    v.line
+                ));
                 let sf = serde_var(v, opts);
-                fields.push(quote!(#[doc = #doc] #sf pub #id: #ty,));
-                takes.push(quote!(#id: ::core::clone::Clone::clone(&self.#id),));
-                puts.push(quote!(self.#id = ::core::clone::Clone::clone(&s.#id);));
+                fields.push_str(&format!("{d}{sf} pub {id}: {ty},"));
+                takes.push_str(&format!("{id}: ::core::clone::Clone::clone(&self.{id}),"));
+                puts.push_str(&format!(
+                    "self.{id} = ::core::clone::Clone::clone(&s.{id});"
+                ));
             }
             Retained::Nested => {
                 // The snapshot of each instance, arrays mapped element-wise.
-                let snap = |t: &Ty| {
-                    t.rust(&|fb| {
-                        let r = names::retain_ident(fb);
-                        quote!(#r)
-                    })
-                };
+                let snap = |t: &Ty| t.rust(&names::retain_ident);
                 let ty = if v.heap {
                     let row = snap(&crate::sema::size::row(&v.ty));
-                    quote!(::il_std::heap::Box<[#row]>)
+                    format!("::il_std::heap::Box<[{row}]>")
                 } else {
                     snap(&v.ty)
                 };
-                let doc = format!(" The RETAIN variables of `{}` (IL line {})", v.name, v.line);
+                let d = doc(&format!(
+                    " The RETAIN variables of `{}` (IL line {})",
+                    v.name, v.line
+                ));
                 let sf = serde_var(v, opts);
-                fields.push(quote!(#[doc = #doc] #sf pub #id: #ty,));
+                fields.push_str(&format!("{d}{sf} pub {id}: {ty},"));
                 let mut depth = 0;
                 let mut t = &v.ty;
                 while let Ty::Array { elem, dims } = t {
                     depth += dims.len();
                     t = elem;
                 }
-                let mut take = quote!(__x.retain());
-                let mut put = quote!(__d.restore(__s););
+                let mut take = "__x.retain()".to_string();
+                let mut put = "__d.restore(__s);".to_string();
                 for k in (0..depth).rev() {
                     // The first dimension of a heap field is a boxed slice.
                     take = if v.heap && k == 0 {
-                        quote!(__x.iter().map(|__x| #take).collect())
+                        format!("__x.iter().map(|__x| {take}).collect()")
                     } else {
-                        quote!(__x.each_ref().map(|__x| #take))
+                        format!("__x.each_ref().map(|__x| {take})")
                     };
-                    put = quote!(for (__d, __s) in __d.iter_mut().zip(__s.iter()) { #put });
+                    put = format!("for (__d, __s) in __d.iter_mut().zip(__s.iter()) {{ {put} }}");
                 }
-                takes.push(quote!(#id: { let __x = &self.#id; #take },));
-                puts.push(quote!({ let (__d, __s) = (&mut self.#id, &s.#id); #put }));
+                takes.push_str(&format!("{id}: {{ let __x = &self.{id}; {take} }},"));
+                puts.push_str(&format!(
+                    "{{ let (__d, __s) = (&mut self.{id}, &s.{id}); {put} }}"
+                ));
             }
         }
     }
-    let doc = format!(
+    let d = format!(
         " The RETAIN variables of `{}` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.",
         pou.name
     );
-    snapshot_item(&name, &st, &doc, (fields, takes, puts), opts)
+    snapshot_item(o, &name, &st, &d, (fields, takes, puts), opts)
 }
 
 /// A RETAIN snapshot struct `st` and `retain()`/`restore()` on `owner`, from
 /// the fields, their `retain()` initialisers and their `restore()` statements.
 pub(crate) fn snapshot_item(
-    owner: &proc_macro2::Ident,
-    st: &proc_macro2::Ident,
-    doc: &str,
-    (fields, takes, puts): (Vec<TokenStream>, Vec<TokenStream>, Vec<TokenStream>),
+    o: &mut Out,
+    owner: &str,
+    st: &str,
+    d: &str,
+    (fields, takes, puts): (String, String, String),
     opts: Options,
-) -> TokenStream {
+) {
     let serde = serde_derive(opts);
-    quote! {
-        #[doc = #doc]
-        #[derive(Clone, Debug, PartialEq)]
-        #serde
-        #[allow(dead_code, non_snake_case, non_camel_case_types)]
-        pub struct #st { #(#fields)* }
-
-        #[allow(dead_code, clippy::all)]
-        impl #owner {
-            /// A snapshot of the RETAIN variables.
-            pub fn retain(&self) -> #st {
-                #st { #(#takes)* }
-            }
-            /// Puts a snapshot back (a warm start); other variables keep their values.
-            pub fn restore(&mut self, s: &#st) {
-                #(#puts)*
-            }
-        }
-    }
+    o.code(&format!(
+        "{}#[derive(Clone, Debug, PartialEq)] {serde} #[allow(dead_code, non_snake_case, non_camel_case_types)] pub struct {st} {{ {fields} }}",
+        doc(d)
+    ));
+    o.code(&format!(
+        "#[allow(dead_code, clippy::all)] impl {owner} {{ \
+         /// A snapshot of the RETAIN variables.\n\
+         pub fn retain(&self) -> {st} {{ {st} {{ {takes} }} }} \
+         /// Puts a snapshot back (a warm start); other variables keep their values.\n\
+         pub fn restore(&mut self, s: &{st}) {{ {puts} }} }}"
+    ));
 }
 
 /// `__v_x: &mut T` for every VAR_IN_OUT, in declaration order.
-fn inout_params(pou: &CheckedPou) -> Vec<TokenStream> {
+fn inout_params(pou: &CheckedPou) -> Vec<String> {
     pou.vars
         .iter()
         .filter(|v| v.kind == VarKind::InOut)
-        .map(|v| {
-            let id = local_ident(&v.name);
-            let ty = rust_ty(&v.ty);
-            quote!(#id: &mut #ty)
-        })
+        .map(|v| format!("{}: &mut {}", local_ident(&v.name), rust_ty(&v.ty)))
         .collect()
 }
 
 /// A user STRUCT or enumeration as a Rust item the host can use directly.
-fn emit_type(t: &crate::sema::ir::TypeDef, opts: Options) -> TokenStream {
+fn emit_type(o: &mut Out, t: &crate::sema::ir::TypeDef, opts: Options) {
     let serde = serde_derive(opts);
     use crate::sema::ir::TypeDef;
     match t {
         TypeDef::Struct { name, fields } => {
             let id = item_ident(name);
-            let doc = format!(" IEC 61131-3 STRUCT `{name}`, generated from Instruction List.");
-            let decls = fields.iter().map(|f| {
+            let d = doc(&format!(
+                " IEC 61131-3 STRUCT `{name}`, generated from Instruction List."
+            ));
+            let mut decls = String::new();
+            let mut inits = String::new();
+            for f in fields {
                 let fid = rust_ident(&f.name);
-                let ty = rust_ty(&f.ty);
                 let sf = serde_field(&f.ty, opts);
-                quote!(#sf pub #fid: #ty,)
-            });
-            let inits = fields.iter().map(|f| {
-                let fid = rust_ident(&f.name);
+                decls.push_str(&format!("{sf} pub {fid}: {},", rust_ty(&f.ty)));
                 let v = values::init_value(&f.ty, f.init.as_ref());
-                quote!(#fid: #v,)
-            });
-            let visit = visit::strukt(name, fields);
-            quote! {
-                #[doc = #doc]
-                #[derive(Clone, Copy, Debug, PartialEq)]
-                #serde
-                #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
-                pub struct #id { #(#decls)* }
-
-                #[allow(dead_code, clippy::all)]
-                impl ::core::default::Default for #id {
-                    fn default() -> Self {
-                        Self { #(#inits)* }
-                    }
-                }
-
-                #visit
+                inits.push_str(&format!("{fid}: {v},"));
             }
+            o.code(&format!(
+                "{d}#[derive(Clone, Copy, Debug, PartialEq)] {serde} #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)] pub struct {id} {{ {decls} }} \
+                 #[allow(dead_code, clippy::all)] impl ::core::default::Default for {id} {{ fn default() -> Self {{ Self {{ {inits} }} }} }}"
+            ));
+            visit::strukt(o, name, fields);
         }
         TypeDef::Enum {
             name,
@@ -566,27 +489,24 @@ fn emit_type(t: &crate::sema::ir::TypeDef, opts: Options) -> TokenStream {
             default,
         } => {
             let id = item_ident(name);
-            let doc =
-                format!(" IEC 61131-3 enumeration `{name}`, generated from Instruction List.");
-            let visit = visit::enumeration(name, values);
-            let vals = values.iter().enumerate().map(|(i, (v, disc))| {
-                let vid = rust_ident(v);
-                let d = disc.map(|n| {
-                    let lit = proc_macro2::Literal::i64_unsuffixed(n as i64);
-                    quote!(= #lit)
-                });
-                let def = (i == *default).then(|| quote!(#[default]));
-                quote!(#def #vid #d,)
-            });
-            quote! {
-                #[doc = #doc]
-                #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-                #serde
-                #[allow(dead_code, non_camel_case_types, clippy::all)]
-                pub enum #id { #(#vals)* }
-
-                #visit
+            let d = doc(&format!(
+                " IEC 61131-3 enumeration `{name}`, generated from Instruction List."
+            ));
+            let mut vals = String::new();
+            for (i, (v, disc)) in values.iter().enumerate() {
+                if i == *default {
+                    vals.push_str("#[default] ");
+                }
+                vals.push_str(&rust_ident(v));
+                if let Some(n) = disc {
+                    vals.push_str(&format!(" = {}", *n as i64));
+                }
+                vals.push(',');
             }
+            o.code(&format!(
+                "{d}#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)] {serde} #[allow(dead_code, non_camel_case_types, clippy::all)] pub enum {id} {{ {vals} }}"
+            ));
+            visit::enumeration(o, name, values);
         }
     }
 }

@@ -19,7 +19,6 @@ pub use input::{Input, is_xml_name};
 use crate::diag::render;
 use crate::diag::{Diagnostic, SourceFile, has_errors};
 use crate::{emit, sema, syntax};
-use proc_macro2::TokenStream;
 
 /// The sources of one program: IL files and PLCopen XML projects.
 #[derive(Clone, Debug, Default)]
@@ -208,7 +207,7 @@ impl Checked {
                 .zip(&self.diagnostics)
                 .map(|((input, p), d)| Emitted {
                     input,
-                    tokens: emit::program(p, opts),
+                    text: emit::program(p, opts),
                     warnings: d.clone(),
                     pous: p.pous.iter().map(|p| p.name.clone()).collect(),
                 })
@@ -235,8 +234,10 @@ impl Checked {
 #[derive(Debug)]
 pub struct Emitted<'c> {
     input: &'c Input,
-    /// The items: user types, one struct and impl per POU, configurations.
-    pub tokens: TokenStream,
+    /// The items (Rust text, laid out): user types, one struct and impl per
+    /// POU, configurations. `il!` parses it into tokens once; build.rs and
+    /// `ilc emit` write it as it is.
+    pub text: String,
     /// The input's warnings (there are no errors when code is emitted).
     pub warnings: Vec<Diagnostic>,
     /// The names of the POUs, as declared.
@@ -259,14 +260,14 @@ impl Emitted<'_> {
     pub fn file_text(&self) -> String {
         match self.input {
             Input::Il(f) => {
-                file::format_file_with(&f.name, &self.tokens, None, |n| (n, f.line_text(n)))
+                file::format_file_with(&f.name, &self.text, None, |n| (n, f.line_text(n)))
             }
-            Input::Snippet(s) => file::format_file_with(&s.file.name, &self.tokens, None, |n| {
+            Input::Snippet(s) => file::format_file_with(&s.file.name, &self.text, None, |n| {
                 (s.line_of(n), s.il.line_text(n))
             }),
             Input::PlcOpen(i) => {
                 let lines = i.xml_lines();
-                file::format_file_with(&i.xml.name, &self.tokens, Some("XML"), |n| {
+                file::format_file_with(&i.xml.name, &self.text, Some("XML"), |n| {
                     let shown = lines.get(n.wrapping_sub(1)).copied().unwrap_or(0);
                     (shown, i.il.line_text(n))
                 })

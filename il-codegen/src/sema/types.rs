@@ -1,7 +1,5 @@
 //! IEC types as the checker sees them, and their Rust spelling.
 
-use proc_macro2::TokenStream;
-use quote::quote;
 use std::fmt;
 
 /// Elementary types.
@@ -143,25 +141,25 @@ impl Elem {
         })
     }
 
-    /// The Rust type.
-    pub fn rust(self) -> TokenStream {
+    /// The Rust type (text).
+    pub fn rust(self) -> &'static str {
         match self {
-            BOOL => quote!(bool),
-            SINT => quote!(i8),
-            INT => quote!(i16),
-            DINT => quote!(i32),
-            LINT => quote!(i64),
-            USINT | BYTE => quote!(u8),
-            UINT | WORD => quote!(u16),
-            UDINT | DWORD => quote!(u32),
-            ULINT | LWORD => quote!(u64),
-            REAL => quote!(f32),
-            LREAL => quote!(f64),
-            TIME => quote!(::il_std::TIME),
-            LTIME => quote!(::il_std::LTIME),
-            DATE => quote!(::il_std::DATE),
-            TOD => quote!(::il_std::TOD),
-            DT => quote!(::il_std::DT),
+            BOOL => "bool",
+            SINT => "i8",
+            INT => "i16",
+            DINT => "i32",
+            LINT => "i64",
+            USINT | BYTE => "u8",
+            UINT | WORD => "u16",
+            UDINT | DWORD => "u32",
+            ULINT | LWORD => "u64",
+            REAL => "f32",
+            LREAL => "f64",
+            TIME => "::il_std::TIME",
+            LTIME => "::il_std::LTIME",
+            DATE => "::il_std::DATE",
+            TOD => "::il_std::TOD",
+            DT => "::il_std::DT",
         }
     }
 
@@ -243,22 +241,17 @@ impl Ty {
     }
 
     /// The Rust type, with `fb_path` giving the path of a function block type.
-    pub fn rust(&self, fb_path: &dyn Fn(&str) -> TokenStream) -> TokenStream {
+    /// (Rust text: the emitter writes it as it is.)
+    pub fn rust(&self, fb_path: &dyn Fn(&str) -> String) -> String {
         match self {
-            Ty::Elem(e) => e.rust(),
-            Ty::Str { wide: false, len } => {
-                let n = *len as usize;
-                quote!(::il_std::STRING<#n>)
-            }
-            Ty::Str { wide: true, len } => {
-                let n = *len as usize;
-                quote!(::il_std::WSTRING<#n>)
-            }
+            Ty::Elem(e) => e.rust().to_string(),
+            Ty::Str { wide: false, len } => format!("::il_std::STRING<{len}>"),
+            Ty::Str { wide: true, len } => format!("::il_std::WSTRING<{len}>"),
             Ty::Array { dims, elem } => {
                 let mut t = elem.rust(fb_path);
                 for (lo, hi) in dims.iter().rev() {
                     let n = (hi - lo + 1) as usize;
-                    t = quote!([#t; #n]);
+                    t = format!("[{t}; {n}]");
                 }
                 t
             }

@@ -75,7 +75,7 @@ fn echidna_configurations_are_accepted() {
                 .emit(Default::default())
                 .unwrap_or_else(|| panic!("{name}: {diags:?}"))
                 .remove(0)
-                .tokens
+                .text
                 .to_string();
             assert!(
                 out.contains("pub struct config1"),

@@ -41,3 +41,36 @@ fn emitted_rust_matches_golden_files() {
         "emitted code differs from {stale:?}; review and run with IL_BLESS=1"
     );
 }
+
+/// The emitter writes text that only `il!` turns into tokens: every golden
+/// input's text (as `il!` gets it, and as the file build.rs writes) must
+/// parse as a Rust file.
+#[test]
+fn emitted_text_of_every_golden_input_parses_as_rust() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/golden");
+    let mut n = 0;
+    for il in std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok().map(|e| e.path()))
+    {
+        if il.extension().is_none_or(|e| e != "il") {
+            continue;
+        }
+        let file = SourceFile::new("g.il", std::fs::read_to_string(&il).unwrap());
+        let checked = il_codegen::Program::new().il(file).check();
+        for serde in [false, true] {
+            let opts = il_codegen::emit::Options {
+                serde,
+                ..Default::default()
+            };
+            let e = checked.emit(opts).expect("golden inputs compile");
+            if let Err(err) = syn::parse_file(&e[0].text) {
+                panic!("{}: {err}\n{}", il.display(), e[0].text);
+            }
+        }
+        let files = checked.files(Default::default()).unwrap();
+        syn::parse_file(&files[0]).unwrap_or_else(|err| panic!("{}: {err}", il.display()));
+        n += 1;
+    }
+    assert!(n >= 6, "{n} golden inputs");
+}

@@ -12,7 +12,10 @@ pub struct Fast {
 #[allow(dead_code, clippy::all)]
 impl ::core::default::Default for Fast {
     fn default() -> Self {
-        Self { enable: false, seen: 0i32 }
+        Self {
+            enable: false,
+            seen: 0i32,
+        }
     }
 }
 #[allow(dead_code, clippy::all)]
@@ -24,35 +27,24 @@ impl Fast {
             name: "lamp",
             address: "%QX0.1",
             area: ::il_std::Area::Output,
-            byte: 0usize,
-            bit: ::core::option::Option::Some(1u8),
-            ty: "BOOL",
-        },
+            byte: 0,
+            bit: ::core::option::Option::Some(1),
+            ty: "BOOL"
+        }
     ];
     /// `lamp` (%QX0.1 BOOL) as the process image holds it now.
     pub fn io_lamp(__ctx: &::il_std::Cycle) -> bool {
-        __ctx.io.bit(::il_std::Area::Output, 0usize, 1u8)
+        __ctx.io.bit(::il_std::Area::Output, 0, 1)
     }
     /// Writes `lamp` (%QX0.1 BOOL) into the process image.
     pub fn set_io_lamp(__ctx: &mut ::il_std::Cycle, __value: bool) {
         {
             let __v: bool = __value;
-            __ctx.io.set_bit(::il_std::Area::Output, 0usize, 1u8, __v);
+            __ctx.io.set_bit(::il_std::Area::Output, 0, 1, __v);
         }
     }
     /// Run one scan.
-    #[allow(
-        dead_code,
-        non_snake_case,
-        unused_mut,
-        unused_variables,
-        unused_assignments,
-        unreachable_code,
-        unused_labels,
-        unused_parens,
-        unused_comparisons,
-        clippy::all
-    )]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle, mut __ext: Fast__Ext<'_>) {
         let mut __s_enable: bool = self.enable;
         let mut __s_seen: i32 = self.seen;
@@ -83,7 +75,7 @@ impl Fast {
             // 17: ST  lamp
             {
                 let __v: bool = __cr_bool;
-                __ctx.io.set_bit(::il_std::Area::Output, 0usize, 1u8, __v);
+                __ctx.io.set_bit(::il_std::Area::Output, 0, 1, __v);
             }
         }
         self.enable = __s_enable;
@@ -126,18 +118,7 @@ impl Slow {
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
-    #[allow(
-        dead_code,
-        non_snake_case,
-        unused_mut,
-        unused_variables,
-        unused_assignments,
-        unreachable_code,
-        unused_labels,
-        unused_parens,
-        unused_comparisons,
-        clippy::all
-    )]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle, mut __ext: Slow__Ext<'_>) {
         let mut __cr_dint: i32 = 0i32;
         let mut __cr_bool: bool = false;
@@ -257,7 +238,7 @@ impl Plant {
             name: "T10ms",
             resource: "Cpu",
             interval: ::il_std::TIME(10000000i64),
-            priority: 1u32,
+            priority: 1,
             single: ::core::option::Option::None,
             programs: &["fast"],
         },
@@ -265,10 +246,10 @@ impl Plant {
             name: "T1s",
             resource: "Cpu",
             interval: ::il_std::TIME(1000000000i64),
-            priority: 5u32,
+            priority: 5,
             single: ::core::option::Option::None,
             programs: &["slow"],
-        },
+        }
     ];
     /// The located globals (`AT %...`), which live in `Cycle::io`.
     pub const ADDRESSES: &'static [::il_std::Located] = &[
@@ -276,20 +257,20 @@ impl Plant {
             name: "lamp",
             address: "%QX0.1",
             area: ::il_std::Area::Output,
-            byte: 0usize,
-            bit: ::core::option::Option::Some(1u8),
-            ty: "BOOL",
-        },
+            byte: 0,
+            bit: ::core::option::Option::Some(1),
+            ty: "BOOL"
+        }
     ];
     /// `lamp` (%QX0.1 BOOL) as the process image holds it now.
     pub fn io_lamp(__ctx: &::il_std::Cycle) -> bool {
-        __ctx.io.bit(::il_std::Area::Output, 0usize, 1u8)
+        __ctx.io.bit(::il_std::Area::Output, 0, 1)
     }
     /// Writes `lamp` (%QX0.1 BOOL) into the process image.
     pub fn set_io_lamp(__ctx: &mut ::il_std::Cycle, __value: bool) {
         {
             let __v: bool = __value;
-            __ctx.io.set_bit(::il_std::Area::Output, 0usize, 1u8, __v);
+            __ctx.io.set_bit(::il_std::Area::Output, 0, 1, __v);
         }
     }
     /// Runs every task released at `__ctx.now()`, highest priority
@@ -300,50 +281,27 @@ impl Plant {
     }
     /// [`Self::run`], calling `__trace(task, program)` before each
     /// program runs (`task` is `""` for programs without a task).
-    pub fn run_traced(
-        &mut self,
-        __ctx: &mut ::il_std::Cycle,
-        mut __trace: impl FnMut(&'static str, &'static str),
-    ) -> usize {
+    pub fn run_traced(&mut self, __ctx: &mut ::il_std::Cycle, mut __trace: impl FnMut(&'static str, &'static str)) -> usize {
         let __now = __ctx.now();
         let mut __ran: usize = 0;
-        let __due_0 = self
-            .__task_0
-            .due(__now, ::il_std::TIME(10000000i64), ::core::option::Option::None);
-        let __due_1 = self
-            .__task_1
-            .due(__now, ::il_std::TIME(1000000000i64), ::core::option::Option::None);
+        let __due_0 = self.__task_0.due(__now, ::il_std::TIME(10000000i64), ::core::option::Option::None);
+        let __due_1 = self.__task_1.due(__now, ::il_std::TIME(1000000000i64), ::core::option::Option::None);
         if __due_0 {
             __trace("T10ms", "fast");
             self.Cpu.fast.enable = self.run;
-            self.Cpu
-                .fast
-                .call(
-                    __ctx,
-                    Fast__Ext {
-                        ticks: &mut self.ticks,
-                    },
-                );
+            self.Cpu.fast.call(__ctx, Fast__Ext { ticks: &mut self.ticks });
             self.fast_seen = self.Cpu.fast.seen;
             __ran += 1;
         }
         if __due_1 {
             __trace("T1s", "slow");
-            self.Cpu
-                .slow
-                .call(
-                    __ctx,
-                    Slow__Ext {
-                        limit: &self.limit,
-                        ticks: &mut self.ticks,
-                    },
-                );
+            self.Cpu.slow.call(__ctx, Slow__Ext { limit: &self.limit, ticks: &mut self.ticks });
             __ran += 1;
         }
         __ran
     }
     /// Periodic releases missed because `run` was called too late, per task (in [`Self::TASKS`] order).
-    pub fn overruns(&self) -> [u64; 2usize] {
+    pub fn overruns(&self) -> [u64; 2] {
         [self.__task_0.overruns(), self.__task_1.overruns()]
     }
 }

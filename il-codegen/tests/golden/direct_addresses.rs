@@ -10,7 +10,9 @@ pub struct Io {
 #[allow(dead_code, clippy::all)]
 impl ::core::default::Default for Io {
     fn default() -> Self {
-        Self { w: 0u16 }
+        Self {
+            w: 0u16,
+        }
     }
 }
 #[allow(dead_code, clippy::all)]
@@ -22,78 +24,67 @@ impl Io {
             name: "level",
             address: "%IW3",
             area: ::il_std::Area::Input,
-            byte: 6usize,
+            byte: 6,
             bit: ::core::option::Option::None,
-            ty: "INT",
+            ty: "INT"
         },
         ::il_std::Located {
             name: "count",
             address: "%MW4",
             area: ::il_std::Area::Memory,
-            byte: 8usize,
+            byte: 8,
             bit: ::core::option::Option::None,
-            ty: "INT",
+            ty: "INT"
         },
         ::il_std::Located {
             name: "%IX0.3",
             address: "%IX0.3",
             area: ::il_std::Area::Input,
-            byte: 0usize,
-            bit: ::core::option::Option::Some(3u8),
-            ty: "BOOL",
+            byte: 0,
+            bit: ::core::option::Option::Some(3),
+            ty: "BOOL"
         },
         ::il_std::Located {
             name: "%QX1.0",
             address: "%QX1.0",
             area: ::il_std::Area::Output,
-            byte: 1usize,
-            bit: ::core::option::Option::Some(0u8),
-            ty: "BOOL",
+            byte: 1,
+            bit: ::core::option::Option::Some(0),
+            ty: "BOOL"
         },
         ::il_std::Located {
             name: "%IW2",
             address: "%IW2",
             area: ::il_std::Area::Input,
-            byte: 4usize,
+            byte: 4,
             bit: ::core::option::Option::None,
-            ty: "WORD",
-        },
+            ty: "WORD"
+        }
     ];
     /// `level` (%IW3 INT) as the process image holds it now.
     pub fn io_level(__ctx: &::il_std::Cycle) -> i16 {
-        __ctx.io.word(::il_std::Area::Input, 6usize).cast_signed()
+        __ctx.io.word(::il_std::Area::Input, 6).cast_signed()
     }
     /// Writes `level` (%IW3 INT) into the process image.
     pub fn set_io_level(__ctx: &mut ::il_std::Cycle, __value: i16) {
         {
             let __v: i16 = __value;
-            __ctx.io.set_word(::il_std::Area::Input, 6usize, __v as u16);
+            __ctx.io.set_word(::il_std::Area::Input, 6, __v as u16);
         }
     }
     /// `count` (%MW4 INT) as the process image holds it now.
     pub fn io_count(__ctx: &::il_std::Cycle) -> i16 {
-        __ctx.io.word(::il_std::Area::Memory, 8usize).cast_signed()
+        __ctx.io.word(::il_std::Area::Memory, 8).cast_signed()
     }
     /// Writes `count` (%MW4 INT) into the process image.
     pub fn set_io_count(__ctx: &mut ::il_std::Cycle, __value: i16) {
         {
             let __v: i16 = __value;
-            __ctx.io.set_word(::il_std::Area::Memory, 8usize, __v as u16);
+            __ctx.io.set_word(::il_std::Area::Memory, 8, __v as u16);
         }
     }
     /// Run one scan.
-    #[allow(
-        dead_code,
-        non_snake_case,
-        unused_mut,
-        unused_variables,
-        unused_assignments,
-        unreachable_code,
-        unused_labels,
-        unused_parens,
-        unused_comparisons,
-        clippy::all
-    )]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_w: u16 = self.w;
         let mut __cr_bool: bool = false;
@@ -101,24 +92,24 @@ impl Io {
         let mut __cr_int: i16 = 0i16;
         '__body: {
             // 4: LD   %IX0.3
-            __cr_bool = __ctx.io.bit(::il_std::Area::Input, 0usize, 3u8);
+            __cr_bool = __ctx.io.bit(::il_std::Area::Input, 0, 3);
             // 5: ST   %QX1.0
             {
                 let __v: bool = __cr_bool;
-                __ctx.io.set_bit(::il_std::Area::Output, 1usize, 0u8, __v);
+                __ctx.io.set_bit(::il_std::Area::Output, 1, 0, __v);
             }
             // 6: LD   %IW2
-            __cr_word = __ctx.io.word(::il_std::Area::Input, 4usize);
+            __cr_word = __ctx.io.word(::il_std::Area::Input, 4);
             // 7: ST   w
             __s_w = __cr_word;
             // 8: LD   level
-            __cr_int = __ctx.io.word(::il_std::Area::Input, 6usize).cast_signed();
+            __cr_int = __ctx.io.word(::il_std::Area::Input, 6).cast_signed();
             // 9: ADD  1
             __cr_int = __cr_int.wrapping_add(1i16);
             // 10: ST   count
             {
                 let __v: i16 = __cr_int;
-                __ctx.io.set_word(::il_std::Area::Memory, 8usize, __v as u16);
+                __ctx.io.set_word(::il_std::Area::Memory, 8, __v as u16);
             }
         }
         self.w = __s_w;

@@ -30,18 +30,7 @@ impl Dispatch {
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
-    #[allow(
-        dead_code,
-        non_snake_case,
-        unused_mut,
-        unused_variables,
-        unused_assignments,
-        unreachable_code,
-        unused_labels,
-        unused_parens,
-        unused_comparisons,
-        clippy::all
-    )]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_start_mid: bool = self.start_mid;
         let mut __s_i: i16 = self.i;
@@ -53,26 +42,26 @@ impl Dispatch {
             let mut __pc: usize = 0;
             '__dispatch: loop {
                 match __pc {
-                    0usize => {
+                    0 => {
                         // 7: LD  start_mid
                         __cr_bool = __s_start_mid;
                         // 8: JMPC mid            (* into the loop below *)
                         if __cr_bool {
-                            __pc = 2usize;
+                            __pc = 2;
                             continue '__dispatch;
                         }
-                        __pc = 1usize;
+                        __pc = 1;
                     }
-                    1usize => {
+                    1 => {
                         // 10: LD  i
                         __cr_int = __s_i;
                         // 11: ADD 1
                         __cr_int = __cr_int.wrapping_add(1i16);
                         // 12: ST  i
                         __s_i = __cr_int;
-                        __pc = 2usize;
+                        __pc = 2;
                     }
-                    2usize => {
+                    2 => {
                         // 14: LD  j
                         __cr_int = __s_j;
                         // 15: ADD 2
@@ -85,7 +74,7 @@ impl Dispatch {
                         __cr_bool = __cr_int < 5i16;
                         // 19: JMPC top            (* backward: the loop top..here *)
                         if __cr_bool {
-                            __pc = 1usize;
+                            __pc = 1;
                             continue '__dispatch;
                         }
                         // 20: LD  n
@@ -100,7 +89,7 @@ impl Dispatch {
                         __cr_bool = __cr_int < 3i16;
                         // 25: JMPC mid            (* overlaps the loop above *)
                         if __cr_bool {
-                            __pc = 2usize;
+                            __pc = 2;
                             continue '__dispatch;
                         }
                         break '__dispatch;

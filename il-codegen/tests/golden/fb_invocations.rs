@@ -41,18 +41,7 @@ impl Station {
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Call the block once.
-    #[allow(
-        dead_code,
-        non_snake_case,
-        unused_mut,
-        unused_variables,
-        unused_assignments,
-        unreachable_code,
-        unused_labels,
-        unused_parens,
-        unused_comparisons,
-        clippy::all
-    )]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let __edge_go: bool = self.go && !self.__edge_memory_go;
         self.__edge_memory_go = self.go;

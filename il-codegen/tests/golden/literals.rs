@@ -33,18 +33,7 @@ impl Literals {
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
-    #[allow(
-        dead_code,
-        non_snake_case,
-        unused_mut,
-        unused_variables,
-        unused_assignments,
-        unreachable_code,
-        unused_labels,
-        unused_parens,
-        unused_comparisons,
-        clippy::all
-    )]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_a: bool = self.a;
         let mut __s_r: f32 = self.r;
@@ -70,9 +59,7 @@ impl Literals {
             // 12: LD   t
             __cr_time = __s_t;
             // 13: ADD  T#1s500ms      (* the CR is TIME, nanoseconds *)
-            __cr_time = ::il_std::TIME(
-                __cr_time.0.wrapping_add(::il_std::TIME(1500000000i64).0),
-            );
+            __cr_time = ::il_std::TIME(__cr_time.0.wrapping_add(::il_std::TIME(1500000000i64).0));
             // 14: ST   t
             __s_t = __cr_time;
             // 15: LD   16#00F0

@@ -33,18 +33,7 @@ impl Motor {
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Call the block once.
-    #[allow(
-        dead_code,
-        non_snake_case,
-        unused_mut,
-        unused_variables,
-        unused_assignments,
-        unreachable_code,
-        unused_labels,
-        unused_parens,
-        unused_comparisons,
-        clippy::all
-    )]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_start: bool = self.start;
         let mut __s_stop: bool = self.stop;

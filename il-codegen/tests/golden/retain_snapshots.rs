@@ -27,18 +27,7 @@ impl Odometer {
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Call the block once.
-    #[allow(
-        dead_code,
-        non_snake_case,
-        unused_mut,
-        unused_variables,
-        unused_assignments,
-        unreachable_code,
-        unused_labels,
-        unused_parens,
-        unused_comparisons,
-        clippy::all
-    )]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_pulse: bool = self.pulse;
         let mut __s_total: u32 = self.total;
@@ -117,13 +106,13 @@ impl Odometer {
 #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
 pub struct Line {
     /// VAR_INPUT (IL line 18)
-    pub pulses: [bool; 2usize],
+    pub pulses: [bool; 2],
     /// VAR (IL line 19)
     pub shifts: i16,
     /// VAR (IL line 21)
     pub main: Odometer,
     /// VAR (IL line 22)
-    pub axes: [Odometer; 2usize],
+    pub axes: [Odometer; 2],
     /// VAR (IL line 23)
     pub scratch: i16,
 }
@@ -145,18 +134,7 @@ impl Line {
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
-    #[allow(
-        dead_code,
-        non_snake_case,
-        unused_mut,
-        unused_variables,
-        unused_assignments,
-        unreachable_code,
-        unused_labels,
-        unused_parens,
-        unused_comparisons,
-        clippy::all
-    )]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_shifts: i16 = self.shifts;
         let mut __s_scratch: i16 = self.scratch;
@@ -164,23 +142,23 @@ impl Line {
         '__body: {
             // 25: CAL main(pulse := pulses[0])
             {
-                self.main.pulse = self.pulses[0usize];
+                self.main.pulse = self.pulses[0];
                 self.main.call(__ctx);
             }
             // 26: CAL axes[0](pulse := pulses[0])
             {
-                let __in0 = self.pulses[0usize];
+                let __in0 = self.pulses[0];
                 {
-                    let __fb = &mut self.axes[0usize];
+                    let __fb = &mut self.axes[0];
                     __fb.pulse = __in0;
                     __fb.call(__ctx);
                 }
             }
             // 27: CAL axes[1](pulse := pulses[1])
             {
-                let __in0 = self.pulses[1usize];
+                let __in0 = self.pulses[1];
                 {
-                    let __fb = &mut self.axes[1usize];
+                    let __fb = &mut self.axes[1];
                     __fb.pulse = __in0;
                     __fb.call(__ctx);
                 }
@@ -239,7 +217,7 @@ pub struct Line__Retain {
     /// The RETAIN variables of `main` (IL line 21)
     pub main: Odometer__Retain,
     /// The RETAIN variables of `axes` (IL line 22)
-    pub axes: [Odometer__Retain; 2usize],
+    pub axes: [Odometer__Retain; 2],
 }
 #[allow(dead_code, clippy::all)]
 impl Line {
@@ -296,18 +274,7 @@ impl OnlyNested {
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
-    #[allow(
-        dead_code,
-        non_snake_case,
-        unused_mut,
-        unused_variables,
-        unused_assignments,
-        unreachable_code,
-        unused_labels,
-        unused_parens,
-        unused_comparisons,
-        clippy::all
-    )]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_x: bool = self.x;
         '__body: {

@@ -32,7 +32,10 @@ pub struct Point {
 #[allow(dead_code, clippy::all)]
 impl ::core::default::Default for Point {
     fn default() -> Self {
-        Self { x: 0i16, y: 7i16 }
+        Self {
+            x: 0i16,
+            y: 7i16,
+        }
     }
 }
 #[allow(dead_code, unused_variables, clippy::all)]
@@ -71,24 +74,8 @@ impl ::il_std::trace::Visit for Tank {
     }
 }
 /// IEC 61131-3 FUNCTION `Scale`, generated from Instruction List.
-#[allow(
-    dead_code,
-    non_snake_case,
-    unused_mut,
-    unused_variables,
-    unused_assignments,
-    unreachable_code,
-    unused_labels,
-    unused_parens,
-    unused_comparisons,
-    clippy::all
-)]
-pub fn Scale(
-    __ctx: &mut ::il_std::Cycle,
-    mut __v_raw: i16,
-    __v_total: &mut i32,
-    __v_ok: &mut bool,
-) -> i16 {
+#[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+pub fn Scale(__ctx: &mut ::il_std::Cycle, mut __v_raw: i16, __v_total: &mut i32, __v_ok: &mut bool) -> i16 {
     let mut __ret: i16 = 0i16;
     *__v_ok = false;
     let mut __cr_int: i16 = 0i16;
@@ -129,11 +116,11 @@ pub struct Plant {
     /// VAR (IL line 40)
     pub main: Tank,
     /// VAR (IL line 41)
-    pub tanks: [Tank; 3usize],
+    pub tanks: [Tank; 3],
     /// VAR (IL line 42)
-    pub grid: [[i16; 3usize]; 2usize],
+    pub grid: [[i16; 3]; 2],
     /// VAR (IL line 43)
-    pub timers: [::il_std::TON; 2usize],
+    pub timers: [::il_std::TON; 2],
     /// VAR (IL line 44)
     pub pct: i16,
     /// VAR (IL line 45)
@@ -176,18 +163,7 @@ impl Plant {
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Call the block once.
-    #[allow(
-        dead_code,
-        non_snake_case,
-        unused_mut,
-        unused_variables,
-        unused_assignments,
-        unreachable_code,
-        unused_labels,
-        unused_parens,
-        unused_comparisons,
-        clippy::all
-    )]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_demand: i16 = self.demand;
         let mut __s_ref: i16 = self.r#ref;
@@ -209,12 +185,7 @@ impl Plant {
                         if __r >= 0i16 && __r <= 100i16 {
                             __s_pct = __r;
                         } else {
-                            __ctx
-                                .fault(
-                                    ::il_std::FaultKind::SubrangeViolation,
-                                    "Plant",
-                                    50u32,
-                                );
+                            __ctx.fault(::il_std::FaultKind::SubrangeViolation, "Plant", 50);
                         }
                     }
                     // 51: LD   pct
@@ -225,59 +196,33 @@ impl Plant {
                         if __r >= 0i16 && __r <= 100i16 {
                             self.main.level = __r;
                         } else {
-                            __ctx
-                                .fault(
-                                    ::il_std::FaultKind::SubrangeViolation,
-                                    "Plant",
-                                    52u32,
-                                );
+                            __ctx.fault(::il_std::FaultKind::SubrangeViolation, "Plant", 52);
                         }
                     }
                     // 53: ST   tanks[i].level
                     {
                         let __r: i16 = __cr_int;
                         if __r >= 0i16 && __r <= 100i16 {
-                            match self
-                                .tanks
-                                .get_mut(
-                                    usize::try_from((__s_i as i64).wrapping_sub(1i64))
-                                        .unwrap_or(usize::MAX),
-                                )
-                            {
+                            match self.tanks.get_mut(usize::try_from((__s_i as i64).wrapping_sub(1i64)).unwrap_or(usize::MAX)) {
                                 ::core::option::Option::Some(__p0) => {
                                     __p0.level = __r;
-                                }
+                                },
                                 ::core::option::Option::None => {
-                                    __ctx
-                                        .fault(
-                                            ::il_std::FaultKind::IndexOutOfRange,
-                                            "Plant",
-                                            53u32,
-                                        );
-                                }
+                                    __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 53);
+                                },
                             }
                         } else {
-                            __ctx
-                                .fault(
-                                    ::il_std::FaultKind::SubrangeViolation,
-                                    "Plant",
-                                    53u32,
-                                );
+                            __ctx.fault(::il_std::FaultKind::SubrangeViolation, "Plant", 53);
                         }
                     }
                     // 54: ST   grid[1, i]
-                    match self.grid[1usize].get_mut(__s_i as usize) {
+                    match self.grid[1].get_mut(__s_i as usize) {
                         ::core::option::Option::Some(__p0) => {
                             *__p0 = __cr_int;
-                        }
+                        },
                         ::core::option::Option::None => {
-                            __ctx
-                                .fault(
-                                    ::il_std::FaultKind::IndexOutOfRange,
-                                    "Plant",
-                                    54u32,
-                                );
-                        }
+                            __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 54);
+                        },
                     }
                     // 55: Scale(raw := pct, total := sum, ok => ok)
                     __cr_int = {
@@ -310,19 +255,13 @@ impl Plant {
             // 65: LD   state
             __cr_tankstate = self.state;
             // 66: ST   tanks[i].state
-            match self
-                .tanks
-                .get_mut(
-                    usize::try_from((__s_i as i64).wrapping_sub(1i64))
-                        .unwrap_or(usize::MAX),
-                )
-            {
+            match self.tanks.get_mut(usize::try_from((__s_i as i64).wrapping_sub(1i64)).unwrap_or(usize::MAX)) {
                 ::core::option::Option::Some(__p0) => {
                     __p0.state = __cr_tankstate;
-                }
+                },
                 ::core::option::Option::None => {
-                    __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 66u32);
-                }
+                    __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 66);
+                },
             }
             // 67: LD   ref
             __cr_int = __s_ref;
@@ -332,23 +271,16 @@ impl Plant {
             {
                 let __in0 = __s_ok;
                 let __in1 = ::il_std::TIME(1000000000i64);
-                match self
-                    .timers
-                    .get_mut(
-                        usize::try_from((__s_i as i64).wrapping_sub(1i64))
-                            .unwrap_or(usize::MAX),
-                    )
-                {
+                match self.timers.get_mut(usize::try_from((__s_i as i64).wrapping_sub(1i64)).unwrap_or(usize::MAX)) {
                     ::core::option::Option::Some(__p0) => {
                         let __fb = &mut *__p0;
                         __fb.IN = __in0;
                         __fb.PT = __in1;
                         __fb.call(__ctx);
-                    }
+                    },
                     ::core::option::Option::None => {
-                        __ctx
-                            .fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 69u32);
-                    }
+                        __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 69);
+                    },
                 }
             }
         }
@@ -384,10 +316,7 @@ impl Plant {
         }
         for (__i0, __e1) in self.grid.iter().enumerate() {
             for (__i1, __e2) in __e1.iter().enumerate() {
-                let __ix = [
-                    (__i0 as i64).wrapping_add(0i64),
-                    (__i1 as i64).wrapping_add(0i64),
-                ];
+                let __ix = [(__i0 as i64).wrapping_add(0i64), (__i1 as i64).wrapping_add(0i64)];
                 v.elem("grid", &__ix, "INT", ::il_std::trace::AsValue::as_value(__e2));
             }
         }

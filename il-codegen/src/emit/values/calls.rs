@@ -12,58 +12,47 @@ impl PouEmitter<'_> {
         outputs: &[(usize, Place, bool, Option<Widen>)],
         out_types: &[Ty],
         line: u32,
-    ) -> TokenStream {
+    ) -> String {
         let f = item_ident(name);
         // Arguments are evaluated into locals first: an indexed read may record
         // a fault in `__ctx`, which the call itself borrows.
-        let ids: Vec<_> = (0..args.len()).map(|k| format_ident!("__a{}", k)).collect();
-        let arg_lets: Vec<_> = args
+        let arg_lets: String = args
             .iter()
-            .zip(&ids)
-            .map(|(a, id)| {
-                let v = self.value(a, line);
-                quote!(let #id = #v;)
-            })
+            .enumerate()
+            .map(|(k, a)| format!("let __a{k} = {};", self.value(a, line)))
             .collect();
-        let args = ids;
+        let args = tail((0..args.len()).map(|k| format!("__a{k}")));
         let (io_lets, io_args, io_back) = self.bind_inouts(inouts, None, line);
+        let io_args = tail(io_args);
         if out_types.is_empty() {
             if arg_lets.is_empty() && inouts.is_empty() {
-                return quote!(#f(__ctx));
+                return format!("{f}(__ctx)");
             }
             if inouts.is_empty() {
-                return quote!({ #(#arg_lets)* #f(__ctx, #(#args,)*) });
+                return format!("{{ {arg_lets} {f}(__ctx{args}) }}");
             }
-            return quote!({
-                #(#arg_lets)* #io_lets
-                let __r = #f(__ctx, #(#args,)* #(#io_args,)*);
-                #io_back
-                __r
-            });
+            return format!(
+                "{{ {arg_lets} {io_lets} let __r = {f}(__ctx{args}{io_args}); {io_back} __r }}"
+            );
         }
         // Every output needs a place, read by `=>` or not.
-        let ids: Vec<_> = (0..out_types.len())
-            .map(|k| format_ident!("__o{}", k))
+        let lets: String = out_types
+            .iter()
+            .enumerate()
+            .map(|(k, t)| format!("let mut __o{k}: {} = {};", rust_ty(t), default_value(t)))
             .collect();
-        let lets = out_types.iter().zip(&ids).map(|(t, id)| {
-            let ty = rust_ty(t);
-            let d = default_value(t);
-            quote!(let mut #id: #ty = #d;)
-        });
-        let stores = outputs.iter().map(|(k, place, neg, w)| {
-            let id = &ids[*k];
-            let v = widened(if *neg { quote!(!#id) } else { quote!(#id) }, w);
-            self.write(place, v, line)
-        });
-        quote!({
-            #(#arg_lets)*
-            #io_lets
-            #(#lets)*
-            let __r = #f(__ctx, #(#args,)* #(#io_args,)* #(&mut #ids,)*);
-            #io_back
-            #(#stores)*
-            __r
-        })
+        let stores: String = outputs
+            .iter()
+            .map(|(k, place, neg, w)| {
+                let id = format!("__o{k}");
+                let v = widened(if *neg { format!("!{id}") } else { id }, w);
+                self.write(place, v, line)
+            })
+            .collect();
+        let outs = tail((0..out_types.len()).map(|k| format!("&mut __o{k}")));
+        format!(
+            "{{ {arg_lets} {io_lets} {lets} let __r = {f}(__ctx{args}{io_args}{outs}); {io_back} {stores} __r }}"
+        )
     }
 
     /// The arguments for VAR_IN_OUT parameters: `&mut place` where the place
@@ -75,9 +64,9 @@ impl PouEmitter<'_> {
         places: &[Place],
         avoid: Option<&Place>,
         line: u32,
-    ) -> (TokenStream, Vec<TokenStream>, TokenStream) {
-        let mut lets = TokenStream::new();
-        let mut back = TokenStream::new();
+    ) -> (String, Vec<String>, String) {
+        let mut lets = String::new();
+        let mut back = String::new();
         let mut args = Vec::new();
         for (k, p) in places.iter().enumerate() {
             let shares = |q: &Place| q.root == p.root;
@@ -86,15 +75,14 @@ impl PouEmitter<'_> {
                 && !avoid.is_some_and(shares)
                 && !places.iter().enumerate().any(|(j, q)| j != k && shares(q));
             if direct {
-                let path = self.simple_path(p);
-                args.push(quote!(&mut #path));
+                args.push(format!("&mut {}", self.simple_path(p)));
             } else {
-                let id = format_ident!("__io{}", k);
+                let id = format!("__io{k}");
                 let ty = rust_ty(&p.ty);
                 let v = self.read(p, line);
-                lets.extend(quote!(let mut #id: #ty = #v;));
-                back.extend(self.write(p, quote!(#id), line));
-                args.push(quote!(&mut #id));
+                lets.push_str(&format!("let mut {id}: {ty} = {v};"));
+                back.push_str(&self.write(p, id.clone(), line));
+                args.push(format!("&mut {id}"));
             }
         }
         (lets, args, back)

@@ -3,103 +3,95 @@
 
 use super::*;
 
-pub(crate) fn cr_ident(t: &Ty) -> proc_macro2::Ident {
-    // One of the most frequent identifiers: no `format_ident!` machinery.
-    let name = match t {
+pub(crate) fn cr_ident(t: &Ty) -> String {
+    match t {
         Ty::Elem(e) => ["__cr_", e.mangle()].concat(),
         _ => format!("__cr_{}", t.mangle()),
-    };
-    proc_macro2::Ident::new(&name, proc_macro2::Span::call_site())
+    }
 }
 
 /// A typed constant.
-pub(crate) fn constant(c: &Const) -> TokenStream {
+pub(crate) fn constant(c: &Const) -> String {
     match c {
-        Const::Bool(true) => quote!(true),
-        Const::Bool(false) => quote!(false),
+        Const::Bool(true) => "true".to_string(),
+        Const::Bool(false) => "false".to_string(),
         Const::Int(v, e) => {
             let v = *v;
-            let lit = match e {
-                Elem::SINT => Literal::i8_suffixed(v as i8),
-                Elem::INT => Literal::i16_suffixed(v as i16),
-                Elem::DINT => Literal::i32_suffixed(v as i32),
-                Elem::LINT => Literal::i64_suffixed(v as i64),
-                Elem::USINT | Elem::BYTE => Literal::u8_suffixed(v as u8),
-                Elem::UINT | Elem::WORD => Literal::u16_suffixed(v as u16),
-                Elem::UDINT | Elem::DWORD => Literal::u32_suffixed(v as u32),
-                _ => Literal::u64_suffixed(v as u64),
-            };
-            quote!(#lit)
+            match e {
+                Elem::SINT => format!("{}i8", v as i8),
+                Elem::INT => format!("{}i16", v as i16),
+                Elem::DINT => format!("{}i32", v as i32),
+                Elem::LINT => format!("{}i64", v as i64),
+                Elem::USINT | Elem::BYTE => format!("{}u8", v as u8),
+                Elem::UINT | Elem::WORD => format!("{}u16", v as u16),
+                Elem::UDINT | Elem::DWORD => format!("{}u32", v as u32),
+                _ => format!("{}u64", v as u64),
+            }
         }
         Const::Real(v, e) => {
-            // The checker only lets finite values through.
-            let lit = if *e == Elem::REAL {
+            // The checker only lets finite values through. `Display` of a
+            // float is the shortest text that reads back as the same value,
+            // never with an exponent (`1e20` is `100000000000000000000`).
+            if *e == Elem::REAL {
                 let f = *v as f32;
-                Literal::f32_suffixed(if f.is_finite() { f } else { 0.0 })
+                format!("{}f32", if f.is_finite() { f } else { 0.0 })
             } else {
-                Literal::f64_suffixed(if v.is_finite() { *v } else { 0.0 })
-            };
-            quote!(#lit)
+                format!("{}f64", if v.is_finite() { *v } else { 0.0 })
+            }
         }
-        Const::Time(v, e) => {
-            let ty = Elem::rust(*e);
-            let lit = Literal::i64_suffixed(*v);
-            quote!(#ty(#lit))
-        }
-        Const::Enum { ty, value } => {
-            let t = item_ident(ty);
-            let v = rust_ident(value);
-            quote!(#t::#v)
-        }
+        Const::Time(v, e) => format!("{}({v}i64)", Elem::rust(*e)),
+        Const::Enum { ty, value } => format!("{}::{}", item_ident(ty), rust_ident(value)),
         Const::Str {
             value,
             wide: false,
             len,
-        } => {
-            let n = *len as usize;
-            quote!(::il_std::STRING::<#n>::from_str_truncating(#value).0)
-        }
+        } => format!(
+            "::il_std::STRING::<{len}>::from_str_truncating({}).0",
+            str_lit(value)
+        ),
         Const::Str {
             value,
             wide: true,
             len,
-        } => {
-            let n = *len as usize;
-            quote!(::il_std::WSTRING::<#n>::from_str_truncating(#value).0)
-        }
+        } => format!(
+            "::il_std::WSTRING::<{len}>::from_str_truncating({}).0",
+            str_lit(value)
+        ),
     }
 }
 
 /// The default value of a type (IEC: 0, FALSE, T#0s, '').
-pub(crate) fn default_value(t: &Ty) -> TokenStream {
+pub(crate) fn default_value(t: &Ty) -> String {
     match t {
         Ty::Array { dims, elem } => {
             let mut v = default_value(elem);
             for _ in dims {
-                v = quote!(::core::array::from_fn(|_| #v));
+                v = format!("::core::array::from_fn(|_| {v})");
             }
             v
         }
         Ty::Elem(_) | Ty::Str { .. } => constant(&crate::sema::default_const(t)),
-        Ty::Fb(_) | Ty::Struct(_) | Ty::Enum(_) => quote!(::core::default::Default::default()),
+        Ty::Fb(_) | Ty::Struct(_) | Ty::Enum(_) => {
+            "::core::default::Default::default()".to_string()
+        }
     }
 }
 
 /// The initial value of a variable.
-pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
+pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> String {
     array_init(t, init, false)
 }
 
 /// The initial value of a heap field (`Var::heap`, an array over 64 KiB):
 /// a `Box<[Row]>` built element by element on the heap, never as a whole
 /// array on the stack.
-pub(crate) fn heap_init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
+pub(crate) fn heap_init_value(t: &Ty, init: Option<&Init>) -> String {
     match (init, t) {
         (Some(Init::Array(_)), Ty::Array { .. }) => array_init(t, init, true),
         (_, Ty::Array { dims, .. }) => {
             let n = dims.first().map_or(0, |(lo, hi)| (hi - lo + 1) as usize);
             let d = default_value(&crate::sema::size::row(t));
-            quote!(::il_std::heap::from_fn(#n, |_| #d))
+            format!("::il_std::heap::from_fn({n}, |_| {d})")
         }
         _ => default_value(t),
     }
@@ -107,13 +99,13 @@ pub(crate) fn heap_init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
 
 /// [`init_value`]; with `heap`, the first dimension of an array with initial
 /// values is built by `il_std::heap::from_fn`.
-pub(super) fn array_init(t: &Ty, init: Option<&Init>, heap: bool) -> TokenStream {
+pub(super) fn array_init(t: &Ty, init: Option<&Init>, heap: bool) -> String {
     match (init, t) {
         (Some(Init::Const(c)), _) => constant(c),
         (Some(Init::Array(items)), Ty::Array { dims, elem }) => {
             // A `match` on the flat index, one arm per run of equal values
             // (neighbouring runs of one value merged), keeps `[1000(0)]` small.
-            let mut arms = Vec::new();
+            let mut arms = String::new();
             let mut start = 0usize;
             let mut k = 0;
             while k < items.len() {
@@ -124,51 +116,52 @@ pub(super) fn array_init(t: &Ty, init: Option<&Init>, heap: bool) -> TokenStream
                 }
                 let (a, b) = (start, start + n - 1);
                 let v = constant(v);
-                arms.push(if a == b {
-                    quote!(#a => #v,)
+                if a == b {
+                    arms.push_str(&format!("{a} => {v}, "));
                 } else {
-                    quote!(#a..=#b => #v,)
-                });
+                    arms.push_str(&format!("{a}..={b} => {v}, "));
+                }
                 start += n;
                 k += 1;
             }
             let d = default_value(elem);
             let sizes: Vec<usize> = dims.iter().map(|(lo, hi)| (hi - lo + 1) as usize).collect();
-            let idx: Vec<_> = (0..dims.len()).map(|k| format_ident!("__i{}", k)).collect();
             // Row-major flat index: i0 * (n1 * n2) + i1 * n2 + i2.
-            let terms = idx.iter().enumerate().map(|(k, id)| {
+            let terms = (0..dims.len()).map(|k| {
                 let stride: usize = sizes[k + 1..].iter().product();
-                quote!(#id * #stride)
+                format!("__i{k} * {stride}")
             });
-            let flat = quote!(#(#terms)+*);
-            let mut body = quote!(match #flat { #(#arms)* _ => #d });
-            for (k, id) in idx.iter().enumerate().rev() {
+            let flat = join(terms, " + ");
+            let mut body = format!("match {flat} {{ {arms}_ => {d} }}");
+            for k in (0..dims.len()).rev() {
                 body = if heap && k == 0 {
                     let n = sizes[0];
-                    quote!(::il_std::heap::from_fn(#n, |#id| #body))
+                    format!("::il_std::heap::from_fn({n}, |__i{k}| {body})")
                 } else {
-                    quote!(::core::array::from_fn(|#id| #body))
+                    format!("::core::array::from_fn(|__i{k}| {body})")
                 };
             }
             body
         }
         (Some(Init::Struct(fields)), Ty::Struct(_)) => {
             let ty = rust_ty(t);
-            let sets = fields.iter().map(|(n, fty, init)| {
-                let id = rust_ident(n);
-                let v = init_value(fty, Some(init));
-                quote!(__s.#id = #v;)
-            });
-            quote!({ let mut __s = <#ty as ::core::default::Default>::default(); #(#sets)* __s })
+            let sets: String = fields
+                .iter()
+                .map(|(n, fty, init)| {
+                    format!("__s.{} = {};", rust_ident(n), init_value(fty, Some(init)))
+                })
+                .collect();
+            format!("{{ let mut __s = <{ty} as ::core::default::Default>::default(); {sets} __s }}")
         }
         (Some(Init::Fields(fields)), Ty::Fb(_)) => {
             let ty = rust_ty(t);
-            let sets = fields.iter().map(|(n, c)| {
-                let id = format_ident!("{}", n);
-                let v = constant(c);
-                quote!(__fb.#id = #v;)
-            });
-            quote!({ let mut __fb = <#ty as ::core::default::Default>::default(); #(#sets)* __fb })
+            let sets: String = fields
+                .iter()
+                .map(|(n, c)| format!("__fb.{} = {};", rust_ident(n), constant(c)))
+                .collect();
+            format!(
+                "{{ let mut __fb = <{ty} as ::core::default::Default>::default(); {sets} __fb }}"
+            )
         }
         _ => default_value(t),
     }

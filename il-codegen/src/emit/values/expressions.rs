@@ -4,12 +4,12 @@
 use super::*;
 
 impl PouEmitter<'_> {
-    pub(crate) fn expr(&self, e: &Expr, line: u32) -> TokenStream {
+    pub(crate) fn expr(&self, e: &Expr, line: u32) -> String {
         match e {
             Expr::Value(v) => self.value(v, line),
             Expr::Not(v) => {
                 let v = self.value(v, line);
-                quote!(!#v)
+                format!("!{v}")
             }
             Expr::Bin {
                 op,
@@ -21,7 +21,7 @@ impl PouEmitter<'_> {
                 let l = self.receiver(lhs, line);
                 let mut r = self.value(rhs, line);
                 if *negate_rhs {
-                    r = quote!(!#r);
+                    r = format!("!{r}");
                 }
                 // A literal divisor other than 0 needs no zero check.
                 let nonzero =
@@ -41,25 +41,22 @@ impl PouEmitter<'_> {
                 // TIME: the operator and MUL_TIME/DIV_TIME are one rule.
                 if *time == Elem::TIME {
                     if !*div {
-                        return quote!(::il_std::func::MUL_TIME(#l, #r));
+                        return format!("::il_std::func::MUL_TIME({l}, {r})");
                     }
                     let fault = self.fault("DivisionByZero", line);
-                    return quote!({
-                        let (__v, __bad) = ::il_std::func::div_time_checked(#l, #r);
-                        if __bad { #fault; }
-                        __v
-                    });
+                    return format!(
+                        "{{ let (__v, __bad) = ::il_std::func::div_time_checked({l}, {r}); if __bad {{ {fault}; }} __v }}"
+                    );
                 }
                 match (div, num.is_real()) {
-                    (false, false) => quote!(#t(#l.0.wrapping_mul(#r as i64))),
-                    (false, true) => quote!(#t(((#l.0 as f64) * (#r as f64)) as i64)),
-                    (true, true) => quote!(#t(((#l.0 as f64) / (#r as f64)) as i64)),
+                    (false, false) => format!("{t}({l}.0.wrapping_mul({r} as i64))"),
+                    (false, true) => format!("{t}((({l}.0 as f64) * ({r} as f64)) as i64)"),
+                    (true, true) => format!("{t}((({l}.0 as f64) / ({r} as f64)) as i64)"),
                     (true, false) => {
                         let fault = self.fault("DivisionByZero", line);
-                        quote!({
-                            let __d = #r as i64;
-                            if __d == 0 { #fault; #t(0) } else { #t(#l.0.wrapping_div(__d)) }
-                        })
+                        format!(
+                            "{{ let __d = {r} as i64; if __d == 0 {{ {fault}; {t}(0) }} else {{ {t}({l}.0.wrapping_div(__d)) }} }}"
+                        )
                     }
                 }
             }
@@ -79,15 +76,15 @@ impl PouEmitter<'_> {
                 // default and ENO (if read with `=>`) is FALSE.
                 let en = self.value(en, line);
                 let d = default_value(ret);
-                let eno_false =
-                    outputs
-                        .iter()
-                        .filter(|(k, ..)| Some(*k) == *eno)
-                        .map(|(_, place, neg, w)| {
-                            let v = widened(if *neg { quote!(true) } else { quote!(false) }, w);
-                            self.write(place, v, line)
-                        });
-                quote!(if #en { #call } else { #(#eno_false)* #d })
+                let eno_false: String = outputs
+                    .iter()
+                    .filter(|(k, ..)| Some(*k) == *eno)
+                    .map(|(_, place, neg, w)| {
+                        let v = widened(neg.to_string(), w);
+                        self.write(place, v, line)
+                    })
+                    .collect();
+                format!("if {en} {{ {call} }} else {{ {eno_false} {d} }}")
             }
             Expr::CallStd {
                 en,
@@ -107,65 +104,60 @@ impl PouEmitter<'_> {
                             // The fault is the table's; the rounding is the
                             // function's: TRUNC and REAL_TRUNC_* truncate.
                             let f = if n.contains("TRUNC") {
-                                quote!(trunc_to_int_checked)
+                                "trunc_to_int_checked"
                             } else {
-                                quote!(real_to_int_checked)
+                                "real_to_int_checked"
                             };
                             let a = &args[0];
                             let fault = self.fault_of(*k, line);
-                            quote!({
-                                let (__v, __bad) = ::il_std::conv::#f::<#t>(#a as f64);
-                                if __bad { #fault; }
-                                __v
-                            })
+                            format!(
+                                "{{ let (__v, __bad) = ::il_std::conv::{f}::<{t}>({a} as f64); if __bad {{ {fault}; }} __v }}"
+                            )
                         }
                         // DIV, MOD, DIV_TIME by an integer zero: the `*_checked`
                         // companion gives the result and the flag.
                         (StdCall::Plain(n), Some(k @ FaultKind::DivisionByZero)) => {
-                            let f = format_ident!("{}_checked", n.to_ascii_lowercase());
+                            let f = rust_ident(&format!("{}_checked", n.to_ascii_lowercase()));
                             let fault = self.fault_of(*k, line);
-                            quote!({
-                                let (__v, __bad) = ::il_std::func::#f(#(#args),*);
-                                if __bad { #fault; }
-                                __v
-                            })
+                            let args = join(&args, ", ");
+                            format!(
+                                "{{ let (__v, __bad) = ::il_std::func::{f}({args}); if __bad {{ {fault}; }} __v }}"
+                            )
                         }
                         (StdCall::Plain(n), _) => {
-                            let f = format_ident!("{}", n);
-                            quote!(::il_std::func::#f(#(#args),*))
+                            let f = rust_ident(n);
+                            format!("::il_std::func::{f}({})", join(&args, ", "))
                         }
                         // A result longer than the first string's capacity is
                         // truncated and recorded (CONCAT, step by step).
                         (StdCall::Fold(n), Some(k @ FaultKind::StringOverflow)) => {
-                            let checked = format_ident!("{}_checked", n.to_ascii_lowercase());
+                            let checked =
+                                rust_ident(&format!("{}_checked", n.to_ascii_lowercase()));
                             let fault = self.fault_of(*k, line);
                             let mut it = args.into_iter();
                             let mut acc = it.next().unwrap_or_default();
                             for a in it {
-                                acc = quote!({
-                                    let (__v, __bad) = ::il_std::func::#checked(#acc, #a);
-                                    if __bad { #fault; }
-                                    __v
-                                });
+                                acc = format!(
+                                    "{{ let (__v, __bad) = ::il_std::func::{checked}({acc}, {a}); if __bad {{ {fault}; }} __v }}"
+                                );
                             }
                             acc
                         }
                         (StdCall::Fold(n), _) => {
-                            let f = format_ident!("{}", n);
+                            let f = rust_ident(n);
                             let mut it = args.into_iter();
                             let mut acc = it.next().unwrap_or_default();
                             for a in it {
-                                acc = quote!(::il_std::func::#f(#acc, #a));
+                                acc = format!("::il_std::func::{f}({acc}, {a})");
                             }
                             acc
                         }
                         (StdCall::Chain(n), _) => {
-                            let f = format_ident!("{}", n);
-                            let pairs = args.windows(2).map(|w| {
-                                let (a, b) = (&w[0], &w[1]);
-                                quote!(::il_std::func::#f(#a, #b))
-                            });
-                            quote!(#(#pairs)&*)
+                            let f = rust_ident(n);
+                            let pairs = args
+                                .windows(2)
+                                .map(|w| format!("::il_std::func::{f}({}, {})", w[0], w[1]));
+                            join(pairs, " & ")
                         }
                         // MUX returns the flag with the value: a selector out of
                         // range (the table's InvalidArgument) is recorded.
@@ -173,12 +165,10 @@ impl PouEmitter<'_> {
                             let fault =
                                 self.fault_of(k.unwrap_or(FaultKind::InvalidArgument), line);
                             let k = &args[0];
-                            let ins = &args[1..];
-                            quote!({
-                                let (__v, __bad) = ::il_std::func::MUX(#k as i64, &[#(#ins),*]);
-                                if __bad { #fault; }
-                                __v
-                            })
+                            let ins = join(&args[1..], ", ");
+                            format!(
+                                "{{ let (__v, __bad) = ::il_std::func::MUX({k} as i64, &[{ins}]); if __bad {{ {fault}; }} __v }}"
+                            )
                         }
                     }
                 };
@@ -187,7 +177,7 @@ impl PouEmitter<'_> {
                     Some(en) => {
                         let en = self.value(en, line);
                         let d = default_value(ret);
-                        quote!(if #en { #call } else { #d })
+                        format!("if {en} {{ {call} }} else {{ {d} }}")
                     }
                     None => call,
                 }
@@ -199,54 +189,51 @@ impl PouEmitter<'_> {
         &self,
         op: BinOp,
         ty: &Ty,
-        l: TokenStream,
-        r: TokenStream,
+        l: String,
+        r: String,
         nonzero: bool,
         line: u32,
-    ) -> TokenStream {
+    ) -> String {
         let e = ty.elem();
         let int = e.is_some_and(|e| e.is_int() || e.is_bitstring());
         let dur = e.filter(|e| e.is_duration()).map(Elem::rust);
         match op {
-            BinOp::And => quote!(#l & #r),
-            BinOp::Or => quote!(#l | #r),
-            BinOp::Xor => quote!(#l ^ #r),
-            BinOp::Gt => quote!(#l > #r),
-            BinOp::Ge => quote!(#l >= #r),
-            BinOp::Eq => quote!(#l == #r),
-            BinOp::Ne => quote!(#l != #r),
-            BinOp::Le => quote!(#l <= #r),
-            BinOp::Lt => quote!(#l < #r),
+            BinOp::And => format!("{l} & {r}"),
+            BinOp::Or => format!("{l} | {r}"),
+            BinOp::Xor => format!("{l} ^ {r}"),
+            BinOp::Gt => format!("{l} > {r}"),
+            BinOp::Ge => format!("{l} >= {r}"),
+            BinOp::Eq => format!("{l} == {r}"),
+            BinOp::Ne => format!("{l} != {r}"),
+            BinOp::Le => format!("{l} <= {r}"),
+            BinOp::Lt => format!("{l} < {r}"),
             BinOp::Add | BinOp::Sub if dur.is_some() => {
                 let t = dur.unwrap_or_default();
                 if op == BinOp::Add {
-                    quote!(#t(#l.0.wrapping_add(#r.0)))
+                    format!("{t}({l}.0.wrapping_add({r}.0))")
                 } else {
-                    quote!(#t(#l.0.wrapping_sub(#r.0)))
+                    format!("{t}({l}.0.wrapping_sub({r}.0))")
                 }
             }
-            BinOp::Add if int => quote!(#l.wrapping_add(#r)),
-            BinOp::Sub if int => quote!(#l.wrapping_sub(#r)),
-            BinOp::Mul if int => quote!(#l.wrapping_mul(#r)),
-            BinOp::Div if int && nonzero => quote!(#l.wrapping_div(#r)),
-            BinOp::Mod if int && nonzero => quote!(#l.wrapping_rem(#r)),
+            BinOp::Add if int => format!("{l}.wrapping_add({r})"),
+            BinOp::Sub if int => format!("{l}.wrapping_sub({r})"),
+            BinOp::Mul if int => format!("{l}.wrapping_mul({r})"),
+            BinOp::Div if int && nonzero => format!("{l}.wrapping_div({r})"),
+            BinOp::Mod if int && nonzero => format!("{l}.wrapping_rem({r})"),
             BinOp::Div | BinOp::Mod if int => {
                 let fault = self.fault("DivisionByZero", line);
                 let f = if op == BinOp::Div {
-                    quote!(wrapping_div)
+                    "wrapping_div"
                 } else {
-                    quote!(wrapping_rem)
+                    "wrapping_rem"
                 };
-                quote!({
-                    let __d = #r;
-                    if __d == 0 { #fault; 0 } else { #l.#f(__d) }
-                })
+                format!("{{ let __d = {r}; if __d == 0 {{ {fault}; 0 }} else {{ {l}.{f}(__d) }} }}")
             }
-            BinOp::Add => quote!(#l + #r),
-            BinOp::Sub => quote!(#l - #r),
-            BinOp::Mul => quote!(#l * #r),
-            BinOp::Div => quote!(#l / #r),
-            BinOp::Mod => quote!(#l % #r),
+            BinOp::Add => format!("{l} + {r}"),
+            BinOp::Sub => format!("{l} - {r}"),
+            BinOp::Mul => format!("{l} * {r}"),
+            BinOp::Div => format!("{l} / {r}"),
+            BinOp::Mod => format!("{l} % {r}"),
         }
     }
 }

@@ -2,6 +2,7 @@
 //! expressions and calls (the interpreter's partners: il-interp's
 //! constants.rs, places.rs, expressions.rs and calls.rs).
 
+use super::text::{join, str_lit, tail};
 use super::{PouEmitter, item_ident, local_ident, rust_ident, rust_ty};
 use crate::ast::Area;
 use crate::sema::ir::{
@@ -9,8 +10,6 @@ use crate::sema::ir::{
 };
 use crate::sema::types::{Elem, Ty};
 use il_std::FaultKind;
-use proc_macro2::{Literal, TokenStream};
-use quote::{format_ident, quote};
 
 mod calls;
 mod constants;
@@ -23,12 +22,9 @@ pub(crate) use places::{area, io_read, io_write};
 /// `v` converted by the checker's implicit widening, if it recorded one:
 /// every widening of its table is a `From` in Rust (`i32::from(i16)`,
 /// `u8::from(bool)`, `f64::from(u32)`, `LTIME::from(TIME)`).
-pub(crate) fn widened(v: TokenStream, w: &Option<Widen>) -> TokenStream {
+pub(crate) fn widened(v: String, w: &Option<Widen>) -> String {
     match w {
-        Some(w) => {
-            let to = w.to.rust();
-            quote!(<#to>::from(#v))
-        }
+        Some(w) => format!("<{}>::from({v})", w.to.rust()),
         None => v,
     }
 }

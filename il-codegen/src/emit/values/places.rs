@@ -5,77 +5,61 @@ use super::*;
 
 impl PouEmitter<'_> {
     /// `__ctx.fault(..)` of the kind a checked standard call carries.
-    pub(crate) fn fault_of(&self, kind: FaultKind, line: u32) -> TokenStream {
+    pub(crate) fn fault_of(&self, kind: FaultKind, line: u32) -> String {
         self.fault(&format!("{kind:?}"), line)
     }
 
     /// `__ctx.fault(::il_std::FaultKind::KIND, "Pou", line)`.
-    pub(crate) fn fault(&self, kind: &str, line: u32) -> TokenStream {
-        let kind = format_ident!("{}", kind);
-        let pou = &self.pou.name;
-        quote!(__ctx.fault(::il_std::FaultKind::#kind, #pou, #line))
+    pub(crate) fn fault(&self, kind: &str, line: u32) -> String {
+        let kind = rust_ident(kind);
+        let pou = str_lit(&self.pou.name);
+        format!("__ctx.fault(::il_std::FaultKind::{kind}, {pou}, {line})")
     }
 
     /// A value in method-receiver position (`x.wrapping_add(..)`): a
     /// negative literal needs parentheses there, nothing else does.
-    pub(crate) fn receiver(&self, v: &Value, line: u32) -> TokenStream {
+    pub(crate) fn receiver(&self, v: &Value, line: u32) -> String {
         let t = self.value(v, line);
         match v {
-            Value::Const(Const::Int(n, _)) if *n < 0 => quote!((#t)),
-            Value::Const(Const::Real(f, _)) if *f < 0.0 => quote!((#t)),
+            Value::Const(Const::Int(n, _)) if *n < 0 => format!("({t})"),
+            Value::Const(Const::Real(f, _)) if *f < 0.0 => format!("({t})"),
             _ => t,
         }
     }
 
-    pub(crate) fn value(&self, v: &Value, line: u32) -> TokenStream {
+    pub(crate) fn value(&self, v: &Value, line: u32) -> String {
         match v {
-            Value::Cr(t) => {
-                let id = cr_ident(t);
-                quote!(#id)
-            }
+            Value::Cr(t) => cr_ident(t),
             Value::Const(c) => constant(c),
             Value::Read(p) => self.read(p, line),
-            Value::Saved(i, _) => {
-                let id = format_ident!("__save_{}", i);
-                quote!(#id)
-            }
+            Value::Saved(i, _) => format!("__save_{i}"),
             Value::Widen(inner, w) => widened(self.value(inner, line), &Some(*w)),
         }
     }
 
-    pub(super) fn root(&self, r: &Root) -> TokenStream {
+    pub(super) fn root(&self, r: &Root) -> String {
         match r {
-            Root::Ret => quote!(__ret),
+            Root::Ret => "__ret".to_string(),
             // Reads and writes of the process image go through `read`/`write`.
-            Root::Addr(_) => quote!(__ctx.io),
+            Root::Addr(_) => "__ctx.io".to_string(),
             Root::Var(i) => {
                 let v = &self.pou.vars[*i];
                 if v.edge.is_some() {
                     // The edge seen in this call, computed on entry.
-                    let id = rust_ident(&format!("__edge_{}", v.name));
-                    return quote!(#id);
+                    return rust_ident(&format!("__edge_{}", v.name));
                 }
                 if self.cached(*i) {
-                    let id = super::super::names::cache_ident(&v.name);
-                    return quote!(#id);
+                    return super::super::names::cache_ident(&v.name);
                 }
                 match v.storage {
-                    Storage::Instance => {
-                        let id = rust_ident(&v.name);
-                        quote!(self.#id)
-                    }
+                    Storage::Instance => format!("self.{}", rust_ident(&v.name)),
                     // A global, through the reference the caller passed.
-                    Storage::External => {
-                        let id = rust_ident(&v.name);
-                        quote!((*__ext.#id))
-                    }
+                    Storage::External => format!("(*__ext.{})", rust_ident(&v.name)),
                     Storage::InOut | Storage::OutParam => {
-                        let id = local_ident(&v.name);
-                        quote!((*#id))
+                        format!("(*{})", local_ident(&v.name))
                     }
                     Storage::Temp | Storage::Param | Storage::Located | Storage::Global => {
-                        let id = local_ident(&v.name);
-                        quote!(#id)
+                        local_ident(&v.name)
                     }
                 }
             }
@@ -101,12 +85,12 @@ impl PouEmitter<'_> {
         p: &Place,
         mutable: bool,
         line: u32,
-        on_place: impl FnOnce(TokenStream) -> TokenStream,
-        on_fault: TokenStream,
-    ) -> TokenStream {
-        let mut lets = TokenStream::new();
+        on_place: impl FnOnce(String) -> String,
+        on_fault: String,
+    ) -> String {
+        let mut lets = String::new();
         // (binding, scrutinee) of each `match`, outermost first.
-        let mut matches: Vec<(proc_macro2::Ident, TokenStream)> = Vec::new();
+        let mut matches: Vec<(String, String)> = Vec::new();
         let mut cur = self.root(&p.root);
         // Whether `cur` is exactly the innermost binding (a reference).
         let mut at_binding = false;
@@ -114,8 +98,7 @@ impl PouEmitter<'_> {
         for e in &p.path {
             match e {
                 PathElem::Field(f) => {
-                    let f = rust_ident(f);
-                    cur = quote!(#cur.#f);
+                    cur = format!("{cur}.{}", rust_ident(f));
                     at_binding = false;
                 }
                 PathElem::Index { dims, subs } => {
@@ -125,27 +108,27 @@ impl PouEmitter<'_> {
                             && *n <= hi as i128
                         {
                             let k = (*n - lo as i128) as usize;
-                            cur = quote!(#cur[#k]);
+                            cur = format!("{cur}[{k}]");
                             at_binding = false;
                             continue;
                         }
                         let ix = if self.inline_subscript(s, p, matches.is_empty()) {
                             index_usize(self.value(s, line), value_elem(s), lo)
                         } else {
-                            let id = format_ident!("__ix{}", n_lets);
+                            let id = format!("__ix{n_lets}");
                             n_lets += 1;
                             let v = index_usize(self.value(s, line), value_elem(s), lo);
-                            lets.extend(quote!(let #id: usize = #v;));
-                            quote!(#id)
+                            lets.push_str(&format!("let {id}: usize = {v};"));
+                            id
                         };
-                        let b = format_ident!("__p{}", matches.len());
+                        let b = format!("__p{}", matches.len());
                         let scrutinee = if mutable {
-                            quote!(#cur.get_mut(#ix))
+                            format!("{cur}.get_mut({ix})")
                         } else {
-                            quote!(#cur.get(#ix))
+                            format!("{cur}.get({ix})")
                         };
                         matches.push((b.clone(), scrutinee));
-                        cur = quote!(#b);
+                        cur = b;
                         at_binding = true;
                     }
                 }
@@ -154,18 +137,17 @@ impl PouEmitter<'_> {
             }
         }
         // `__pK` alone is a reference; with a path after it, auto-deref applies.
-        let place = if at_binding { quote!(*#cur) } else { cur };
+        let place = if at_binding { format!("*{cur}") } else { cur };
         let mut out = on_place(place);
         for (b, scrutinee) in matches.into_iter().rev() {
-            out = quote!(match #scrutinee {
-                ::core::option::Option::Some(#b) => #out,
-                ::core::option::Option::None => #on_fault,
-            });
+            out = format!(
+                "match {scrutinee} {{ ::core::option::Option::Some({b}) => {out}, ::core::option::Option::None => {on_fault}, }}"
+            );
         }
         if lets.is_empty() {
             out
         } else {
-            quote!({ #lets #out })
+            format!("{{ {lets} {out} }}")
         }
     }
 
@@ -197,18 +179,18 @@ impl PouEmitter<'_> {
         }
     }
 
-    pub(crate) fn simple_path(&self, p: &Place) -> TokenStream {
+    pub(crate) fn simple_path(&self, p: &Place) -> String {
         let mut t = self.root(&p.root);
         for e in &p.path {
             if let PathElem::Field(f) = e {
-                let f = rust_ident(f);
-                t = quote!(#t.#f);
+                t.push('.');
+                t.push_str(&rust_ident(f));
             }
         }
         t
     }
 
-    pub(crate) fn read(&self, p: &Place, line: u32) -> TokenStream {
+    pub(crate) fn read(&self, p: &Place, line: u32) -> String {
         if let Some((whole_place, whole, part, index)) = p.split_part() {
             let w = self.read(&whole_place, line);
             let _ = whole;
@@ -222,11 +204,11 @@ impl PouEmitter<'_> {
         }
         let fault = self.fault("IndexOutOfRange", line);
         let d = default_value(&p.ty);
-        self.access(p, false, line, |place| place, quote!({ #fault; #d }))
+        self.access(p, false, line, |place| place, format!("{{ {fault}; {d} }}"))
     }
 
-    /// Store `value` (already evaluated tokens) into a place.
-    pub(crate) fn write(&self, p: &Place, value: TokenStream, line: u32) -> TokenStream {
+    /// Store `value` (already evaluated text) into a place.
+    pub(crate) fn write(&self, p: &Place, value: String, line: u32) -> String {
         if let Some((whole_place, whole, part, index)) = p.split_part() {
             // Read the whole, replace the part, write the whole back.
             let w = self.read(&whole_place, line);
@@ -238,49 +220,42 @@ impl PouEmitter<'_> {
         }
         if !Self::has_index(p) {
             let path = self.simple_path(p);
-            return quote!(#path = #value;);
+            return format!("{path} = {value};");
         }
         let fault = self.fault("IndexOutOfRange", line);
-        let access = |v: TokenStream| {
+        let access = |v: String| {
             self.access(
                 p,
                 true,
                 line,
-                |place| quote!({ #place = #v; }),
-                quote!({ #fault; }),
+                |place| format!("{{ {place} = {v}; }}"),
+                format!("{{ {fault}; }}"),
             )
         };
-        // A value of one or two plain tokens (`__cr_int`, `!__cr_bool`, a
-        // literal) goes straight into the slot; anything else is evaluated
-        // before the place is borrowed.
-        let plain = {
-            let mut n = 0;
-            value.clone().into_iter().all(|t| {
-                n += 1;
-                n <= 2 && !matches!(t, proc_macro2::TokenTree::Group(_))
-            })
-        };
-        if plain || !Self::checked_index(p) {
+        // A plain value (`__cr_int`, `!__cr_bool`, a literal) goes straight
+        // into the slot; anything else is evaluated before the place is
+        // borrowed.
+        if plain(&value) || !Self::checked_index(p) {
             access(value)
         } else {
-            let a = access(quote!(__v));
-            quote!({ let __v = #value; #a })
+            let a = access("__v".to_string());
+            format!("{{ let __v = {value}; {a} }}")
         }
     }
 
-    /// Run `f` on the FB instance at `p` (`__fb` in the tokens of `f`).
-    pub(crate) fn with_fb(&self, p: &Place, body: TokenStream, line: u32) -> TokenStream {
+    /// Run `f` on the FB instance at `p` (`__fb` in the text of `f`).
+    pub(crate) fn with_fb(&self, p: &Place, body: String, line: u32) -> String {
         if !Self::has_index(p) {
             let path = self.simple_path(p);
-            return quote!({ let __fb = &mut #path; #body });
+            return format!("{{ let __fb = &mut {path}; {body} }}");
         }
         let fault = self.fault("IndexOutOfRange", line);
         self.access(
             p,
             true,
             line,
-            |place| quote!({ let __fb = &mut #place; #body }),
-            quote!({ #fault; }),
+            |place| format!("{{ let __fb = &mut {place}; {body} }}"),
+            format!("{{ {fault}; }}"),
         )
     }
 }
@@ -299,79 +274,97 @@ pub(super) fn value_elem(v: &Value) -> Option<Elem> {
 /// every value outside the array maps to a position past its end (a
 /// negative 8/16-bit value sign-extends to a huge `usize`; wider values go
 /// through `try_from`, so no truncation on 16/32-bit targets).
-pub(super) fn index_usize(v: TokenStream, elem: Option<Elem>, lo: i64) -> TokenStream {
+pub(super) fn index_usize(v: String, elem: Option<Elem>, lo: i64) -> String {
     let small = matches!(
         elem,
         Some(Elem::SINT | Elem::INT | Elem::USINT | Elem::UINT)
     );
     let wide = matches!(elem, Some(Elem::LINT | Elem::ULINT) | None);
+    // `-1i16 as usize` would be `-(1i16 as usize)`.
+    let v = if v.starts_with('-') {
+        format!("({v})")
+    } else {
+        v
+    };
     if lo == 0 && small {
-        return quote!(#v as usize);
+        return format!("{v} as usize");
     }
     let off = if lo == 0 {
         v
     } else if wide {
-        let lo = lo as i128;
-        quote!((#v as i128 - #lo))
+        format!("({v} as i128 - {lo}i128)")
     } else {
-        quote!((#v as i64).wrapping_sub(#lo))
+        format!("({v} as i64).wrapping_sub({lo}i64)")
     };
-    quote!(usize::try_from(#off).unwrap_or(usize::MAX))
+    format!("usize::try_from({off}).unwrap_or(usize::MAX)")
 }
 
-pub(crate) fn area(l: &Loc) -> TokenStream {
+/// Whether a value's text is one plain token (a name, a literal), maybe
+/// after `!`: it can go into a slot while the slot is borrowed.
+fn plain(v: &str) -> bool {
+    let v = v.strip_prefix('!').unwrap_or(v);
+    let v = v
+        .strip_prefix('-')
+        .filter(|r| r.starts_with(|c: char| c.is_ascii_digit()))
+        .unwrap_or(v);
+    let number = v.starts_with(|c: char| c.is_ascii_digit());
+    let v = v.strip_prefix("r#").unwrap_or(v);
+    !v.is_empty()
+        && v.chars()
+            .all(|c| c.is_ascii_alphanumeric() || c == '_' || (number && c == '.'))
+}
+
+pub(crate) fn area(l: &Loc) -> &'static str {
     match l.area {
-        Area::Input => quote!(::il_std::Area::Input),
-        Area::Output => quote!(::il_std::Area::Output),
-        Area::Memory => quote!(::il_std::Area::Memory),
+        Area::Input => "::il_std::Area::Input",
+        Area::Output => "::il_std::Area::Output",
+        Area::Memory => "::il_std::Area::Memory",
     }
 }
 
 /// Read a located value from the process image.
-pub(crate) fn io_read(l: &Loc) -> TokenStream {
+pub(crate) fn io_read(l: &Loc) -> String {
     let a = area(l);
     let b = l.byte;
     if let Some(bit) = l.bit {
-        return quote!(__ctx.io.bit(#a, #b, #bit));
+        return format!("__ctx.io.bit({a}, {b}, {bit})");
     }
     match l.elem {
-        Elem::BYTE | Elem::USINT => quote!(__ctx.io.byte(#a, #b)),
-        Elem::SINT => quote!(__ctx.io.byte(#a, #b).cast_signed()),
-        Elem::WORD | Elem::UINT => quote!(__ctx.io.word(#a, #b)),
-        Elem::INT => quote!(__ctx.io.word(#a, #b).cast_signed()),
-        Elem::DWORD | Elem::UDINT => quote!(__ctx.io.dword(#a, #b)),
-        Elem::DINT => quote!(__ctx.io.dword(#a, #b).cast_signed()),
-        Elem::REAL => quote!(f32::from_bits(__ctx.io.dword(#a, #b))),
-        Elem::LWORD | Elem::ULINT => quote!(__ctx.io.lword(#a, #b)),
-        Elem::LINT => quote!(__ctx.io.lword(#a, #b).cast_signed()),
-        _ => quote!(f64::from_bits(__ctx.io.lword(#a, #b))),
+        Elem::BYTE | Elem::USINT => format!("__ctx.io.byte({a}, {b})"),
+        Elem::SINT => format!("__ctx.io.byte({a}, {b}).cast_signed()"),
+        Elem::WORD | Elem::UINT => format!("__ctx.io.word({a}, {b})"),
+        Elem::INT => format!("__ctx.io.word({a}, {b}).cast_signed()"),
+        Elem::DWORD | Elem::UDINT => format!("__ctx.io.dword({a}, {b})"),
+        Elem::DINT => format!("__ctx.io.dword({a}, {b}).cast_signed()"),
+        Elem::REAL => format!("f32::from_bits(__ctx.io.dword({a}, {b}))"),
+        Elem::LWORD | Elem::ULINT => format!("__ctx.io.lword({a}, {b})"),
+        Elem::LINT => format!("__ctx.io.lword({a}, {b}).cast_signed()"),
+        _ => format!("f64::from_bits(__ctx.io.lword({a}, {b}))"),
     }
 }
 
-/// Store a value (tokens of its Rust type) into the process image.
-pub(crate) fn io_write(l: &Loc, v: TokenStream) -> TokenStream {
+/// Store a value (text of its Rust type) into the process image.
+pub(crate) fn io_write(l: &Loc, v: String) -> String {
     let a = area(l);
     let b = l.byte;
     if let Some(bit) = l.bit {
-        return quote!({ let __v: bool = #v; __ctx.io.set_bit(#a, #b, #bit, __v); });
+        return format!("{{ let __v: bool = {v}; __ctx.io.set_bit({a}, {b}, {bit}, __v); }}");
     }
     let ty = l.elem.rust();
     let (set, conv) = match l.elem {
-        Elem::BYTE | Elem::USINT | Elem::SINT => (quote!(set_byte), quote!(__v as u8)),
-        Elem::WORD | Elem::UINT | Elem::INT => (quote!(set_word), quote!(__v as u16)),
-        Elem::DWORD | Elem::UDINT | Elem::DINT => (quote!(set_dword), quote!(__v as u32)),
-        Elem::REAL => (quote!(set_dword), quote!(__v.to_bits())),
-        Elem::LREAL => (quote!(set_lword), quote!(__v.to_bits())),
-        _ => (quote!(set_lword), quote!(__v as u64)),
+        Elem::BYTE | Elem::USINT | Elem::SINT => ("set_byte", "__v as u8"),
+        Elem::WORD | Elem::UINT | Elem::INT => ("set_word", "__v as u16"),
+        Elem::DWORD | Elem::UDINT | Elem::DINT => ("set_dword", "__v as u32"),
+        Elem::REAL => ("set_dword", "__v.to_bits()"),
+        Elem::LREAL => ("set_lword", "__v.to_bits()"),
+        _ => ("set_lword", "__v as u64"),
     };
-    quote!({ let __v: #ty = #v; __ctx.io.#set(#a, #b, #conv); })
+    format!("{{ let __v: {ty} = {v}; __ctx.io.{set}({a}, {b}, {conv}); }}")
 }
 
 /// A `u64` mask as a hex literal (what a reader of the generated code expects).
-fn hex(v: u64) -> Literal {
+fn hex(v: u64) -> String {
     format!("{v:#x}u64")
-        .parse()
-        .unwrap_or_else(|_| Literal::u64_suffixed(v))
 }
 
 /// The mask of a part's bits and its shift in the whole.
@@ -388,33 +381,23 @@ fn part_mask(part: Elem, index: u32) -> (u64, u32) {
 /// Part `index` of the value `w` of type `whole`: a shift and a mask in
 /// `u64` (the checker proved the part lies inside the whole, so neither
 /// can overflow).
-pub(super) fn part_read(w: TokenStream, part: Elem, index: u32) -> TokenStream {
+pub(super) fn part_read(w: String, part: Elem, index: u32) -> String {
     let (mask, shift) = part_mask(part, index);
-    let shift = Literal::u32_unsuffixed(shift);
     if part == Elem::BOOL {
-        return quote!({ let __w = #w; ((__w as u64 >> #shift) & 1) != 0 });
+        return format!("{{ let __w = {w}; ((__w as u64 >> {shift}) & 1) != 0 }}");
     }
     let mask = hex(mask);
     let t = part.rust();
-    quote!({ let __w = #w; ((__w as u64 >> #shift) & #mask) as #t })
+    format!("{{ let __w = {w}; ((__w as u64 >> {shift}) & {mask}) as {t} }}")
 }
 
 /// The value `w` of type `whole` with part `index` replaced by `v`.
-pub(super) fn part_write(
-    w: TokenStream,
-    v: TokenStream,
-    whole: Elem,
-    part: Elem,
-    index: u32,
-) -> TokenStream {
+pub(super) fn part_write(w: String, v: String, whole: Elem, part: Elem, index: u32) -> String {
     let (mask, shift) = part_mask(part, index);
     let keep = hex(!(mask << shift));
     let mask = hex(mask);
-    let shift = Literal::u32_unsuffixed(shift);
     let t = whole.rust();
-    quote!({
-        let __w = #w;
-        let __v = #v;
-        ((__w as u64 & #keep) | ((__v as u64 & #mask) << #shift)) as #t
-    })
+    format!(
+        "{{ let __w = {w}; let __v = {v}; ((__w as u64 & {keep}) | ((__v as u64 & {mask}) << {shift})) as {t} }}"
+    )
 }
