@@ -84,10 +84,10 @@ impl Filler {
             match self.history.get_mut(usize::try_from((__s_slot as i64).wrapping_sub(1i64)).unwrap_or(usize::MAX)) {
                 ::core::option::Option::Some(__p0) => {
                     *__p0 = __cr_int;
-                },
+                }
                 ::core::option::Option::None => {
                     __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Filler", 21);
-                },
+                }
             }
             // 22: LT   80
             __cr_bool = __cr_int < 80i16;

@@ -206,10 +206,10 @@ impl Plant {
                             match self.tanks.get_mut(usize::try_from((__s_i as i64).wrapping_sub(1i64)).unwrap_or(usize::MAX)) {
                                 ::core::option::Option::Some(__p0) => {
                                     __p0.level = __r;
-                                },
+                                }
                                 ::core::option::Option::None => {
                                     __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 53);
-                                },
+                                }
                             }
                         } else {
                             __ctx.fault(::il_std::FaultKind::SubrangeViolation, "Plant", 53);
@@ -219,10 +219,10 @@ impl Plant {
                     match self.grid[1].get_mut(__s_i as usize) {
                         ::core::option::Option::Some(__p0) => {
                             *__p0 = __cr_int;
-                        },
+                        }
                         ::core::option::Option::None => {
                             __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 54);
-                        },
+                        }
                     }
                     // 55: Scale(raw := pct, total := sum, ok => ok)
                     __cr_int = {
@@ -258,10 +258,10 @@ impl Plant {
             match self.tanks.get_mut(usize::try_from((__s_i as i64).wrapping_sub(1i64)).unwrap_or(usize::MAX)) {
                 ::core::option::Option::Some(__p0) => {
                     __p0.state = __cr_tankstate;
-                },
+                }
                 ::core::option::Option::None => {
                     __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 66);
-                },
+                }
             }
             // 67: LD   ref
             __cr_int = __s_ref;
@@ -277,10 +277,10 @@ impl Plant {
                         __fb.IN = __in0;
                         __fb.PT = __in1;
                         __fb.call(__ctx);
-                    },
+                    }
                     ::core::option::Option::None => {
                         __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 69);
-                    },
+                    }
                 }
             }
         }

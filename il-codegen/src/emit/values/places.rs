@@ -140,8 +140,11 @@ impl PouEmitter<'_> {
         let place = if at_binding { format!("*{cur}") } else { cur };
         let mut out = on_place(place);
         for (b, scrutinee) in matches.into_iter().rev() {
+            // A block arm needs no comma (rustfmt writes none).
+            let comma = if is_block(&out) { "" } else { "," };
+            let comma2 = if is_block(&on_fault) { "" } else { "," };
             out = format!(
-                "match {scrutinee} {{ ::core::option::Option::Some({b}) => {out}, ::core::option::Option::None => {on_fault}, }}"
+                "match {scrutinee} {{ ::core::option::Option::Some({b}) => {out}{comma} ::core::option::Option::None => {on_fault}{comma2} }}"
             );
         }
         if lets.is_empty() {
@@ -297,6 +300,36 @@ pub(super) fn index_usize(v: String, elem: Option<Elem>, lo: i64) -> String {
         format!("({v} as i64).wrapping_sub({lo}i64)")
     };
     format!("usize::try_from({off}).unwrap_or(usize::MAX)")
+}
+
+/// Whether `s` is one block `{ ... }` (its first brace closes at its end),
+/// reading string literals as such.
+fn is_block(s: &str) -> bool {
+    let b = s.as_bytes();
+    if b.first() != Some(&b'{') {
+        return false;
+    }
+    let (mut depth, mut i) = (0usize, 0);
+    while i < b.len() {
+        match b[i] {
+            b'"' => {
+                i += 1;
+                while i < b.len() && b[i] != b'"' {
+                    i += if b[i] == b'\\' { 2 } else { 1 };
+                }
+            }
+            b'{' => depth += 1,
+            b'}' => {
+                depth -= 1;
+                if depth == 0 {
+                    return i + 1 == b.len();
+                }
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    false
 }
 
 /// Whether a value's text is one plain token (a name, a literal), maybe
