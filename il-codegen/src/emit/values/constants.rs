@@ -3,10 +3,12 @@
 
 use super::*;
 
+/// The CR local of type `t` (`__cr_int`, `__cr_string80`, `__cr_motor`):
+/// a user type's name is part of it, so it goes through `rust_ident`.
 pub(crate) fn cr_ident(t: &Ty) -> String {
     match t {
         Ty::Elem(e) => ["__cr_", e.mangle()].concat(),
-        _ => format!("__cr_{}", t.mangle()),
+        _ => rust_ident(&format!("__cr_{}", t.mangle())),
     }
 }
 
