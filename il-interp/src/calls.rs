@@ -77,6 +77,7 @@ impl Machine {
         for (k, place, neg) in outputs {
             let v = outs.get(*k).cloned().ok_or("internal: output index")?;
             let v = if *neg { stdfn::not(&v) } else { v };
+            let v = self.cut_string(f, v, &place.ty, ctx, line);
             self.write(f, place, v, ctx, line)?;
         }
         Ok(r)
@@ -173,6 +174,7 @@ impl Machine {
             if *neg {
                 v = stdfn::not(&v);
             }
+            let v = self.cut_string(f, v, &target.ty, ctx, line);
             self.write(f, target, v, ctx, line)?;
         }
         Ok(())

@@ -4,7 +4,7 @@
 use crate::values::Value;
 use crate::{Frame, Machine, find_var};
 use il_codegen::sema::ir::{Loc, PathElem, Place, Root, Value as IrValue};
-use il_codegen::sema::types::Elem;
+use il_codegen::sema::types::{Elem, Ty};
 use il_std::{Cycle, FaultKind};
 
 /// A resolved step of a place's path.
@@ -109,6 +109,29 @@ impl Machine {
         }
     }
 
+    /// A string value in a place of string type `to`: cut at its length, with
+    /// a `StringOverflow` fault when that cuts something off (as
+    /// `il_std::func::resize_checked` in generated code).
+    pub(crate) fn cut_string(
+        &self,
+        f: &Frame,
+        v: Value,
+        to: &Ty,
+        ctx: &mut Cycle,
+        line: u32,
+    ) -> Value {
+        match (v, to) {
+            (Value::Str { mut units, wide }, Ty::Str { len, .. }) => {
+                if units.len() > *len as usize {
+                    units.truncate(*len as usize);
+                    self.fault(ctx, f, FaultKind::StringOverflow, line);
+                }
+                Value::Str { units, wide }
+            }
+            (v, _) => v,
+        }
+    }
+
     pub(crate) fn fault(&self, ctx: &mut Cycle, f: &Frame, kind: FaultKind, line: u32) {
         ctx.fault(kind, self.names[f.pou], line);
     }
@@ -129,6 +152,10 @@ impl Machine {
                 .get(*i)
                 .cloned()
                 .ok_or("internal: no such save slot")?,
+            IrValue::Resized(v, to) => {
+                let v = self.value(f, v, ctx, line)?;
+                self.cut_string(f, v, to, ctx, line)
+            }
         })
     }
 

@@ -383,6 +383,7 @@ impl PouEmitter<'_> {
                     let outs = outputs.iter().map(|(n, target, neg)| {
                         let f = super::rust_ident(n);
                         let v = quote!(#path.#f);
+                        let v = self.fit_output(v, None, target, line);
                         self.write(target, if *neg { quote!(!#v) } else { v }, line)
                     });
                     return self.cond(
@@ -418,7 +419,7 @@ impl PouEmitter<'_> {
                 let outs = outputs.iter().map(|(n, target, neg)| {
                     let mut src = inst.clone();
                     src.path.push(crate::sema::ir::PathElem::Field(n.clone()));
-                    let v = self.read(&src, line);
+                    let v = self.fit_output(self.read(&src, line), None, target, line);
                     self.write(target, if *neg { quote!(!#v) } else { v }, line)
                 });
                 self.cond(cond, line, quote!({ #(#lets)* #call #(#outs)* }))

@@ -420,6 +420,22 @@ pub enum Value {
     Read(Place),
     /// A saved outer CR of a deferred parenthesis.
     Saved(usize, Ty),
+    /// A STRING (WSTRING) value given the capacity of the string type `ty`
+    /// ([`Ty::resizes_to`]): cut at that length, and a `StringOverflow`
+    /// fault recorded when that cut something off.
+    Resized(Box<Value>, Ty),
+}
+
+impl Value {
+    /// `v` as a value of type `to`: wrapped in [`Value::Resized`] when `from`
+    /// is a string of another capacity, else unchanged.
+    pub fn fit_string(v: Value, from: &Ty, to: &Ty) -> Value {
+        if from.resizes_to(to) {
+            Value::Resized(Box::new(v), to.clone())
+        } else {
+            v
+        }
+    }
 }
 
 /// A computation whose result becomes the CR.

@@ -242,6 +242,14 @@ impl Ty {
         matches!(self, Ty::Elem(e) if *e == BOOL || e.is_bitstring())
     }
 
+    /// Both are strings of one kind (STRING or WSTRING) with different
+    /// capacities: one type for assignment, parameters and comparison
+    /// (docs/semantics.md, "Types"); a value going to `to` is cut at its
+    /// length ([`super::ir::Value::Resized`]).
+    pub fn resizes_to(&self, to: &Ty) -> bool {
+        matches!((self, to), (Ty::Str { wide: a, len: m }, Ty::Str { wide: b, len: n }) if a == b && m != n)
+    }
+
     /// The Rust type, with `fb_path` giving the path of a function block type.
     pub fn rust(&self, fb_path: &dyn Fn(&str) -> TokenStream) -> TokenStream {
         match self {

@@ -53,6 +53,7 @@ impl PouEmitter<'_> {
         let stores = outputs.iter().map(|(k, place, neg)| {
             let id = &ids[*k];
             let v = if *neg { quote!(!#id) } else { quote!(#id) };
+            let v = self.fit_output(v, out_types.get(*k), place, line);
             self.write(place, v, line)
         });
         quote!({

@@ -39,6 +39,16 @@ impl PouEmitter<'_> {
                 let id = format_ident!("__save_{}", i);
                 quote!(#id)
             }
+            Value::Resized(v, to) => {
+                let v = self.value(v, line);
+                let t = rust_ty(to);
+                let fault = self.fault("StringOverflow", line);
+                quote!({
+                    let (__s, __cut): (#t, bool) = ::il_std::func::resize_checked(#v);
+                    if __cut { #fault; }
+                    __s
+                })
+            }
         }
     }
 
@@ -185,6 +195,7 @@ impl PouEmitter<'_> {
     pub(super) fn inline_subscript(&self, s: &Value, p: &Place, first: bool) -> bool {
         match s {
             Value::Cr(_) | Value::Const(_) | Value::Saved(..) => true,
+            Value::Resized(..) => false,
             Value::Read(q) => {
                 !Self::has_index(q)
                     && (first || q.root != p.root)
@@ -214,6 +225,33 @@ impl PouEmitter<'_> {
         let fault = self.fault("IndexOutOfRange", line);
         let d = default_value(&p.ty);
         self.access(p, false, line, |place| place, quote!({ #fault; #d }))
+    }
+
+    /// An output (tokens of a value read from a block or function) going to
+    /// `target`: a string target of another capacity gets it cut at its
+    /// length, with a `StringOverflow` fault (`from`: the output's type, when
+    /// known; a string target is always fitted otherwise, which is a plain
+    /// copy for the same capacity).
+    pub(crate) fn fit_output(
+        &self,
+        v: TokenStream,
+        from: Option<&Ty>,
+        target: &Place,
+        line: u32,
+    ) -> TokenStream {
+        let Ty::Str { .. } = &target.ty else {
+            return v;
+        };
+        if from.is_some_and(|t| !t.resizes_to(&target.ty)) {
+            return v;
+        }
+        let t = rust_ty(&target.ty);
+        let fault = self.fault("StringOverflow", line);
+        quote!({
+            let (__s, __cut): (#t, bool) = ::il_std::func::resize_checked(#v);
+            if __cut { #fault; }
+            __s
+        })
     }
 
     /// Store `value` (already evaluated tokens) into a place.
@@ -276,6 +314,7 @@ pub(super) fn value_elem(v: &Value) -> Option<Elem> {
         Value::Cr(t) | Value::Saved(_, t) => t.elem(),
         Value::Const(c) => c.ty().elem(),
         Value::Read(p) => p.ty.elem(),
+        Value::Resized(_, t) => t.elem(),
     }
 }
 

@@ -149,11 +149,13 @@ impl Walk<'_, '_> {
         let (inout_decl, _) = self.fb_refs(fb);
         match args {
             CallArgs::Formal(list) => {
-                // As for functions (`bind_formal`): a parameter named twice is
-                // an error at the second, not "the last one wins".
+                // As for functions (`bind_formal`): an input or in-out named
+                // twice is an error at the second, not "the last one wins".
+                // An output may be read into several variables (`Q => done,
+                // NOT Q => waiting`): nothing is ambiguous there.
                 let mut seen = std::collections::HashSet::new();
                 for p in list {
-                    if !seen.insert(p.name.key()) {
+                    if matches!(p.kind, ParamKind::Input(_)) && !seen.insert(p.name.key()) {
                         self.err(
                             UNKNOWN_MEMBER,
                             p.name.span,
@@ -213,7 +215,7 @@ impl Walk<'_, '_> {
                             let Some(place) = self.place_of(target, true) else {
                                 continue;
                             };
-                            if place.ty != ty {
+                            if place.ty != ty && !ty.resizes_to(&place.ty) {
                                 self.err(
                                     TYPE_MISMATCH,
                                     target.span(),

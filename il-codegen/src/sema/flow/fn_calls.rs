@@ -225,7 +225,7 @@ impl Walk<'_, '_> {
                                 let Some(place) = self.place_of(target, true) else {
                                     continue;
                                 };
-                                if place.ty != ty {
+                                if place.ty != ty && !ty.resizes_to(&place.ty) {
                                     self.err(
                                         TYPE_MISMATCH,
                                         target.span(),

@@ -87,7 +87,8 @@ impl Walk<'_, '_> {
         }
         let (ty, lv, rv) = match (lhs, rhs) {
             (Arg::Typed(lv, t), Arg::Typed(rv, u)) => {
-                if t != u {
+                // Strings of any two lengths compare by their contents.
+                if t != u && !t.resizes_to(&u) {
                     if let Some(d) = self.err(TYPE_MISMATCH, span, format!("{} of {t} and {u}: the current result and the operand must have the same type", op.name())) {
                         d.help = conversion_hint(&u, &t);
                     }

@@ -100,6 +100,7 @@ impl Walk<'_, '_> {
     pub(super) fn fit_to(&mut self, arg: Arg, ty: &Ty, span: Span, dest: &str) -> Option<Value> {
         if let Arg::Typed(v, t) = &arg
             && t != ty
+            && !t.resizes_to(ty)
         {
             {
                 let src = if matches!(v, Value::Cr(_) | Value::Saved(..)) {
@@ -124,6 +125,8 @@ impl Walk<'_, '_> {
     pub(super) fn fit(&mut self, arg: Arg, ty: &Ty, span: Span) -> Option<Value> {
         match arg {
             Arg::Typed(v, t) if t == *ty => Some(v),
+            // Another STRING length: cut at the target's (docs/semantics.md, "Types").
+            Arg::Typed(v, t) if t.resizes_to(ty) => Some(Value::fit_string(v, &t, ty)),
             Arg::Typed(_, t) => {
                 if let Some(d) = self.err(TYPE_MISMATCH, span, format!("expected {ty}, found {t}"))
                 {
