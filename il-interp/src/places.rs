@@ -3,7 +3,7 @@
 
 use crate::values::Value;
 use crate::{Frame, Machine, find_var};
-use il_codegen::sema::ir::{Loc, PathElem, Place, Root, Value as IrValue};
+use il_codegen::sema::ir::{BinOp, Loc, PathElem, Place, Root, Value as IrValue};
 use il_codegen::sema::types::{Elem, Ty};
 use il_std::{Cycle, FaultKind};
 
@@ -152,6 +152,19 @@ impl Machine {
                 .get(*i)
                 .cloned()
                 .ok_or("internal: no such save slot")?,
+            // As the emitter: both sides as LINT, wrapping.
+            IrValue::Arith { op, lhs, rhs } => {
+                let (l, r) = (
+                    self.value(f, lhs, ctx, line)?.as_i64(),
+                    self.value(f, rhs, ctx, line)?.as_i64(),
+                );
+                let n = match op {
+                    BinOp::Add => l.wrapping_add(r),
+                    BinOp::Sub => l.wrapping_sub(r),
+                    _ => l.wrapping_mul(r),
+                };
+                Value::Int(n as i128, Elem::LINT)
+            }
             IrValue::Resized(v, to) => {
                 let v = self.value(f, v, ctx, line)?;
                 self.cut_string(f, v, to, ctx, line)

@@ -310,10 +310,51 @@ pub struct VarRef {
 pub enum Accessor {
     /// `.name`: a field of a STRUCT or FB instance.
     Field(Ident),
-    /// Subscripts: literals, variables or direct addresses.
-    Index(Vec<Operand>, Span),
+    /// Subscripts, one per dimension: expressions over literals, variables
+    /// and direct addresses with `+ - *` (Ed.2 B.1.4.2).
+    Index(Vec<Subscript>, Span),
     /// `.%X3` / `.3` bit access on a bit string (3rd edition).
     Bit(u32, Span),
+}
+
+/// One subscript of an array access: `i`, `2 * i - 1`, `(i + 1) * 2`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Subscript {
+    /// A literal, variable or direct address.
+    Operand(Operand),
+    /// `lhs op rhs` with `op` one of `Add`, `Sub`, `Mul`.
+    Bin {
+        /// The operator.
+        op: ExprOp,
+        /// The left operand.
+        lhs: Box<Subscript>,
+        /// The right operand.
+        rhs: Box<Subscript>,
+        /// The whole expression.
+        span: Span,
+    },
+}
+
+impl Subscript {
+    /// Where the subscript is written.
+    pub fn span(&self) -> Span {
+        match self {
+            Subscript::Operand(o) => o.span(),
+            Subscript::Bin { span, .. } => *span,
+        }
+    }
+
+    /// Its operands, left to right (for tools that look for names).
+    pub fn operands(&self) -> Vec<&Operand> {
+        match self {
+            Subscript::Operand(o) => vec![o],
+            Subscript::Bin { lhs, rhs, .. } => {
+                let mut v = lhs.operands();
+                v.extend(rhs.operands());
+                v
+            }
+        }
+    }
 }
 
 /// The memory area of a direct address.

@@ -97,3 +97,102 @@ fn any_typed_functions_take_derived_types() {
     assert_eq!(prog(d, "LD x\nSEL c, s\nST c"), ["IL0106"]);
     assert_eq!(prog(d, "LD x\nSEL ts, ts\nST x"), ["IL0106"]);
 }
+
+#[test]
+fn nested_initialisers_and_subrange_arrays() {
+    let decl = |d: &str| {
+        codes(&format!(
+            "TYPE Pt : STRUCT x : INT; y : INT; END_STRUCT; D : INT (5..9); \
+             H : STRUCT p : ARRAY[1..2] OF Pt; d : ARRAY[1..2] OF D; END_STRUCT; END_TYPE\n\
+             PROGRAM Main\nVAR {d} END_VAR\nLD 1\nEND_PROGRAM\n"
+        ))
+    };
+    let ok = Vec::<String>::new();
+    assert_eq!(
+        decl("a : ARRAY[1..2] OF Pt := [(x := 1), (x := 2, y := 3)];"),
+        ok
+    );
+    assert_eq!(
+        decl("a : ARRAY[1..4] OF Pt := [2((y := 1)), (x := 2)];"),
+        ok
+    );
+    assert_eq!(decl("h : H := (p := [(x := 1)], d := [5, 9]);"), ok);
+    assert_eq!(
+        decl("hs : ARRAY[1..2] OF H := [(d := [6]), (p := [(y := 2)])];"),
+        ok
+    );
+    assert_eq!(decl("a : ARRAY[1..2] OF INT (0..3) := [3, 0];"), ok);
+    // Refused: an element outside the element subrange, a field the
+    // structure does not have, a structure for a number, too many elements.
+    assert_eq!(decl("a : ARRAY[1..2] OF D := [5, 4];"), ["IL0127"]);
+    assert_eq!(decl("a : ARRAY[1..2] OF INT (0..3) := [4];"), ["IL0127"]);
+    assert_eq!(decl("h : H := (d := [10]);"), ["IL0127"]);
+    assert_eq!(decl("a : ARRAY[1..2] OF Pt := [(z := 1)];"), ["IL0112"]);
+    assert_eq!(decl("a : ARRAY[1..2] OF INT := [(x := 1)];"), ["IL0127"]);
+    assert_eq!(decl("a : ARRAY[1..2] OF Pt := [3((x := 1))];"), ["IL0127"]);
+    // A store of a literal outside the element subrange is refused, a
+    // variable's is checked at run time.
+    let body = |b: &str| {
+        codes(&format!(
+            "TYPE D : INT (5..9); END_TYPE\nPROGRAM Main\nVAR a : ARRAY[1..2] OF D; i : INT; END_VAR\n{b}\nEND_PROGRAM\n"
+        ))
+    };
+    assert_eq!(body("LD 9\nST a[i]\nLD i\nST a[1]"), ok);
+    assert_eq!(body("LD 4\nST a[i]"), ["IL0116"]);
+}
+
+#[test]
+fn subscript_expressions() {
+    let body = |b: &str| {
+        errors(&format!(
+            "PROGRAM Main\nVAR a : ARRAY[1..4] OF INT; m : ARRAY[1..2, 0..3] OF INT; \
+             i : INT; u : ULINT; r : REAL; x : INT; END_VAR\n{b}\nEND_PROGRAM\n"
+        ))
+    };
+    let ok = Vec::<(String, String, u32)>::new();
+    assert_eq!(body("LD a[i + 1]\nST a[i-1]\nLD m[2 * i - 1, u]\nST x"), ok);
+    assert_eq!(
+        body("LD a[(i + 1) * 2]\nST a[-1 + i]\nLD a[2 * 2]\nST a[1+1]"),
+        ok
+    );
+    assert_eq!(body("LD 1\nST a[i * i * i - 3 + u]"), ok);
+    // Refused: a literal expression outside the bounds (folded), a REAL in
+    // the expression, an operator other than + - *, a dangling operator.
+    let e = body("LD a[2 * 3]\nST x");
+    assert_eq!((e[0].0.as_str(), e[0].2), ("IL0125", 3), "{e:?}");
+    assert!(
+        e[0].1.contains("subscript 6 is outside the bounds 1..4"),
+        "{e:?}"
+    );
+    let e = body("LD a[i + r]\nST x");
+    assert_eq!((e[0].0.as_str(), e[0].2), ("IL0125", 3), "{e:?}");
+    assert!(e[0].1.contains("must be an integer, not REAL"), "{e:?}");
+    let e = body("LD x\nST a[i / 2]");
+    assert!(!e.is_empty() && e.iter().all(|d| d.2 == 4), "{e:?}");
+    let e = body("LD a[i +]\nST x");
+    assert!(!e.is_empty() && e.iter().all(|d| d.2 == 3), "{e:?}");
+}
+
+#[test]
+fn a_block_holding_itself_is_reported_at_the_instance_declaration() {
+    let src = "FUNCTION_BLOCK Loop\nVAR\n    n : INT;\n    inner : Loop;\nEND_VAR\nLD n\nST n\nEND_FUNCTION_BLOCK\n";
+    let e = errors(src);
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert_eq!((e[0].0.as_str(), e[0].2), ("IL0117", 4), "{e:?}");
+    assert!(e[0].1.contains("Loop → Loop"), "{e:?}");
+    // Through another block and an array: each at its own declaration.
+    let src = "FUNCTION_BLOCK A\nVAR b : B; END_VAR\nLD 1\nEND_FUNCTION_BLOCK\n\
+               FUNCTION_BLOCK B\nVAR x : INT;\n    many : ARRAY[1..2] OF A;\nEND_VAR\nLD 1\nEND_FUNCTION_BLOCK\n";
+    let mut e = errors(src);
+    e.sort_by_key(|d| d.2);
+    let got: Vec<(&str, u32)> = e.iter().map(|d| (d.0.as_str(), d.2)).collect();
+    assert_eq!(got, [("IL0117", 2), ("IL0117", 7)], "{e:?}");
+    // A block holding another (no cycle) is fine; a FUNCTION calling itself
+    // is still reported at the call.
+    let ok = "FUNCTION_BLOCK A\nVAR t : TON; END_VAR\nLD 1\nEND_FUNCTION_BLOCK\n\
+              FUNCTION_BLOCK B\nVAR a : A; END_VAR\nLD 1\nEND_FUNCTION_BLOCK\n";
+    assert_eq!(errors(ok), []);
+    let f = "FUNCTION F : INT\nVAR_INPUT x : INT; END_VAR\nLD x\nF\nST F\nEND_FUNCTION\n";
+    let e = errors(f);
+    assert_eq!((e[0].0.as_str(), e[0].2), ("IL0117", 4), "{e:?}");
+}

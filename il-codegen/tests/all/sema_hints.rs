@@ -134,7 +134,8 @@ fn st_calls_and_reserved_words_get_one_clear_error() {
 
 #[test]
 fn an_fb_parameter_named_twice_is_an_error_at_the_second() {
-    let src = "PROGRAM P\nVAR t : TON; x : BOOL; END_VAR\n    CAL t(IN := TRUE, PT := T#1s, in := FALSE, Q => x, Q => x)\nEND_PROGRAM\n";
+    // An output read twice is fine: `Q => x, NOT Q => y`.
+    let src = "PROGRAM P\nVAR t : TON; x, y : BOOL; END_VAR\n    CAL t(IN := TRUE, PT := T#1s, in := FALSE, Q => x, NOT Q => y, PT := T#2s)\nEND_PROGRAM\n";
     let d = &check(&[("t.il", src)])[0];
     let got: Vec<(&str, usize, &str)> = d
         .iter()
@@ -150,8 +151,8 @@ fn an_fb_parameter_named_twice_is_an_error_at_the_second() {
             ),
             (
                 "IL0112",
-                src.rfind("Q =>").unwrap(),
-                "parameter `Q` is given twice"
+                src.rfind("PT :=").unwrap(),
+                "parameter `PT` is given twice"
             ),
         ]
     );

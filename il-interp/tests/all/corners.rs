@@ -92,3 +92,72 @@ fn any_typed_functions_on_derived_types() {
         [(FaultKind::InvalidArgument, "AnyDerived", 147)]
     );
 }
+
+#[test]
+fn nested_initialisers_and_subrange_arrays() {
+    let mut ctx = Cycle::new();
+    let mut m = machine("NestedInit");
+    let before = [
+        (
+            "pts",
+            "[(x := 1, y := 5), (x := 2, y := 3), (x := 0, y := 5)]",
+        ),
+        (
+            "h",
+            "(pts := [(x := 4, y := 4), (x := 4, y := 4)], d := [5, 5, 5], n := 2)",
+        ),
+        (
+            "h2",
+            "(pts := [(x := 7, y := 5), (x := 0, y := 8)], d := [5, 5, 5], n := 1)",
+        ),
+        ("hs[1].d", "[9, 8, 5]"),
+        ("hs[1].n", "5"),
+        ("hs[2].n", "1"),
+        ("digits", "[6, 5, 5, 5]"),
+        ("inl", "[10, 10]"),
+    ];
+    for (var, want) in before {
+        assert_eq!(shown(&m, var), want, "{var}");
+    }
+    m.scan(&mut ctx).unwrap();
+    for (var, want) in [
+        ("digits", "[6, 7, 5, 5]"),
+        ("inl", "[10, 12]"),
+        ("h2.d", "[5, 8, 5]"),
+        ("hs[2].d", "[5, 5, 5]"),
+    ] {
+        assert_eq!(shown(&m, var), want, "{var}");
+    }
+    use FaultKind::SubrangeViolation as V;
+    assert_eq!(
+        faults(&ctx),
+        [(V, "NestedInit", 174), (V, "NestedInit", 181)]
+    );
+}
+
+#[test]
+fn subscript_expressions() {
+    let mut ctx = Cycle::new();
+    let mut m = machine("SubExprs");
+    m.scan(&mut ctx).unwrap();
+    let got = |m: &Machine| {
+        ["r1", "r2", "r3", "r4", "r5", "r6", "a"]
+            .map(|v| shown(m, v))
+            .join(" ")
+    };
+    assert_eq!(got(&m), "30 31 10 30 0 7 [10, 20, 30, 40, 7]");
+    m.scan(&mut ctx).unwrap();
+    assert_eq!(got(&m), "40 0 20 10 0 7 [10, 20, 30, 40, 7]");
+    use FaultKind::IndexOutOfRange as X;
+    let s = "SubExprs";
+    assert_eq!(
+        faults(&ctx),
+        [
+            (X, s, 202),
+            (X, s, 203),
+            (X, s, 195),
+            (X, s, 202),
+            (X, s, 203)
+        ]
+    );
+}

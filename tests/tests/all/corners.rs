@@ -9,7 +9,9 @@ macro_rules! corner_tests {
     ($m:ident) => {
         mod $m {
             use super::*;
-            use il_tests::$m::{AnyDerived, CornColor, CornPt, StrLens};
+            use il_tests::$m::{
+                AnyDerived, CornColor, CornHolder, CornPt, NestedInit, StrLens, SubExprs,
+            };
 
             fn faults(ctx: &Cycle) -> Vec<(FaultKind, &'static str, u32)> {
                 ctx.faults().map(|x| (x.kind, x.pou, x.line)).collect()
@@ -77,6 +79,62 @@ macro_rules! corner_tests {
                 assert_eq!(
                     faults(&ctx),
                     [(FaultKind::InvalidArgument, "AnyDerived", 147)]
+                );
+            }
+
+            /// Structure initialisers inside array initialisers and the
+            /// reverse, nested; arrays of a subrange start at its lower limit
+            /// and their elements are range-checked.
+            #[test]
+            fn nested_initialisers_and_subrange_arrays() {
+                let pt = |x, y| CornPt { x, y };
+                let p = NestedInit::default();
+                assert_eq!(p.pts, [pt(1, 5), pt(2, 3), pt(0, 5)]);
+                assert_eq!(
+                    (p.h.pts, p.h.d, p.h.n),
+                    ([pt(4, 4), pt(4, 4)], [5, 5, 5], 2)
+                );
+                let h = CornHolder::default();
+                assert_eq!((h.pts, h.d, h.n), ([pt(7, 5), pt(0, 8)], [5, 5, 5], 1));
+                assert_eq!((p.hs[0].n, p.hs[0].d, p.hs[1].n), (5, [9, 8, 5], 1));
+                assert_eq!((p.digits, p.inl), ([6, 5, 5, 5], [10, 10]));
+                let mut ctx = Cycle::new();
+                let mut p = p;
+                p.call(&mut ctx);
+                assert_eq!(
+                    (p.digits, p.inl, p.h2.d),
+                    ([6, 7, 5, 5], [10, 12], [5, 8, 5])
+                );
+                assert_eq!(p.hs[1].d, [5, 5, 5]);
+                use FaultKind::SubrangeViolation as V;
+                assert_eq!(
+                    faults(&ctx),
+                    [(V, "NestedInit", 174), (V, "NestedInit", 181)]
+                );
+            }
+
+            /// Subscripts that are expressions: evaluated each scan and
+            /// bound-checked like a variable subscript.
+            #[test]
+            fn subscript_expressions() {
+                let mut ctx = Cycle::new();
+                let mut p = SubExprs::default();
+                p.call(&mut ctx);
+                assert_eq!((p.r1, p.r2, p.r3, p.r4, p.r5, p.r6), (30, 31, 10, 30, 0, 7));
+                assert_eq!(p.a, [10, 20, 30, 40, 7]);
+                p.call(&mut ctx);
+                assert_eq!((p.r1, p.r2, p.r3, p.r4, p.i), (40, 0, 20, 10, 4));
+                use FaultKind::IndexOutOfRange as X;
+                let s = "SubExprs";
+                assert_eq!(
+                    faults(&ctx),
+                    [
+                        (X, s, 202),
+                        (X, s, 203),
+                        (X, s, 195),
+                        (X, s, 202),
+                        (X, s, 203)
+                    ]
                 );
             }
         }

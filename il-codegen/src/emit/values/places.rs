@@ -39,6 +39,16 @@ impl PouEmitter<'_> {
                 let id = format_ident!("__save_{}", i);
                 quote!(#id)
             }
+            Value::Arith { op, lhs, rhs } => {
+                let l = self.value(lhs, line);
+                let r = self.value(rhs, line);
+                let f = match op {
+                    BinOp::Add => quote!(wrapping_add),
+                    BinOp::Sub => quote!(wrapping_sub),
+                    _ => quote!(wrapping_mul),
+                };
+                quote!((#l as i64).#f(#r as i64))
+            }
             Value::Resized(v, to) => {
                 let v = self.value(v, line);
                 let t = rust_ty(to);
@@ -196,6 +206,9 @@ impl PouEmitter<'_> {
         match s {
             Value::Cr(_) | Value::Const(_) | Value::Saved(..) => true,
             Value::Resized(..) => false,
+            Value::Arith { lhs, rhs, .. } => {
+                self.inline_subscript(lhs, p, first) && self.inline_subscript(rhs, p, first)
+            }
             Value::Read(q) => {
                 !Self::has_index(q)
                     && (first || q.root != p.root)
@@ -315,6 +328,7 @@ pub(super) fn value_elem(v: &Value) -> Option<Elem> {
         Value::Const(c) => c.ty().elem(),
         Value::Read(p) => p.ty.elem(),
         Value::Resized(_, t) => t.elem(),
+        Value::Arith { .. } => Some(Elem::LINT),
     }
 }
 

@@ -22,6 +22,7 @@ mod instr;
 mod operands;
 mod operators;
 mod places;
+mod subscripts;
 mod values;
 
 pub use operators::default_const;
