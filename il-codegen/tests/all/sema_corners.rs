@@ -55,6 +55,11 @@ fn strings_of_any_length_are_one_type() {
         prog(d, "LD a\nEQ b, a\nST x\nLD a\nMAX b\nST b"),
         Vec::<String>::new()
     );
+    // A literal longer than the other string still compares.
+    assert_eq!(
+        prog(d, "LD a\nEQ 'abcdefgh'\nST x\nLD 'abcdefgh'\nLT a\nST x"),
+        Vec::<String>::new()
+    );
     // Refused: another kind of string, a number, a VAR_IN_OUT of another
     // length (it is a reference), a literal longer than the capacity.
     assert_eq!(prog(d, "LD a\nST w"), ["IL0106"]);

@@ -42,6 +42,8 @@ fn strings_of_several_lengths() {
         ("cat", "'abcdeabcdefghij'"),
         ("ins", "'abcdef'"),
         ("rep", "'aXYZ'"),
+        ("lit_eq", "FALSE"),
+        ("lit_gt", "TRUE"),
     ] {
         assert_eq!(shown(&m, var), want, "{var}");
     }
@@ -89,7 +91,7 @@ fn any_typed_functions_on_derived_types() {
     }
     assert_eq!(
         faults(&ctx),
-        [(FaultKind::InvalidArgument, "AnyDerived", 147)]
+        [(FaultKind::InvalidArgument, "AnyDerived", 153)]
     );
 }
 
@@ -131,7 +133,7 @@ fn nested_initialisers_and_subrange_arrays() {
     use FaultKind::SubrangeViolation as V;
     assert_eq!(
         faults(&ctx),
-        [(V, "NestedInit", 174), (V, "NestedInit", 181)]
+        [(V, "NestedInit", 180), (V, "NestedInit", 187)]
     );
 }
 
@@ -153,11 +155,11 @@ fn subscript_expressions() {
     assert_eq!(
         faults(&ctx),
         [
-            (X, s, 202),
-            (X, s, 203),
-            (X, s, 195),
-            (X, s, 202),
-            (X, s, 203)
+            (X, s, 208),
+            (X, s, 209),
+            (X, s, 201),
+            (X, s, 208),
+            (X, s, 209)
         ]
     );
 }

@@ -27,6 +27,7 @@ macro_rules! corner_tests {
                 p.call(&mut ctx);
                 let s = |v: &dyn std::fmt::Display| v.to_string();
                 assert_eq!(s(&p.short), "abcde");
+                assert_eq!((p.lit_eq, p.lit_gt), (false, true));
                 assert_eq!(s(&p.back), "abcdefghij");
                 assert_eq!(s(&p.wshort), "wxy");
                 assert_eq!(
@@ -78,7 +79,7 @@ macro_rules! corner_tests {
                 assert_eq!(p.bigmux, [1; 40]);
                 assert_eq!(
                     faults(&ctx),
-                    [(FaultKind::InvalidArgument, "AnyDerived", 147)]
+                    [(FaultKind::InvalidArgument, "AnyDerived", 153)]
                 );
             }
 
@@ -109,7 +110,7 @@ macro_rules! corner_tests {
                 use FaultKind::SubrangeViolation as V;
                 assert_eq!(
                     faults(&ctx),
-                    [(V, "NestedInit", 174), (V, "NestedInit", 181)]
+                    [(V, "NestedInit", 180), (V, "NestedInit", 187)]
                 );
             }
 
@@ -129,11 +130,11 @@ macro_rules! corner_tests {
                 assert_eq!(
                     faults(&ctx),
                     [
-                        (X, s, 202),
-                        (X, s, 203),
-                        (X, s, 195),
-                        (X, s, 202),
-                        (X, s, 203)
+                        (X, s, 208),
+                        (X, s, 209),
+                        (X, s, 201),
+                        (X, s, 208),
+                        (X, s, 209)
                     ]
                 );
             }

@@ -96,14 +96,18 @@ impl Walk<'_, '_> {
                 }
                 (t, lv, rv)
             }
-            (Arg::Typed(lv, t), Arg::Lit(l, s)) => match self.lit_value(&l, &t, s, TYPE_MISMATCH) {
-                Some(v) => (t, lv, v),
-                None => return bad,
-            },
-            (Arg::Lit(l, s), Arg::Typed(rv, t)) => match self.lit_value(&l, &t, s, TYPE_MISMATCH) {
-                Some(v) => (t, v, rv),
-                None => return bad,
-            },
+            (Arg::Typed(lv, t), Arg::Lit(l, s)) => {
+                match self.lit_value(&l, &operand_ty(&l, &t), s, TYPE_MISMATCH) {
+                    Some(v) => (t, lv, v),
+                    None => return bad,
+                }
+            }
+            (Arg::Lit(l, s), Arg::Typed(rv, t)) => {
+                match self.lit_value(&l, &operand_ty(&l, &t), s, TYPE_MISMATCH) {
+                    Some(v) => (t, v, rv),
+                    None => return bad,
+                }
+            }
             // Two literals were folded above.
             (Arg::Lit(..), Arg::Lit(..)) => return bad,
         };
