@@ -361,6 +361,7 @@ impl PouEmitter<'_> {
                         let f = super::rust_ident(n);
                         let v = format!("{path}.{f}");
                         let v = super::values::widened(if *neg { format!("!{v}") } else { v }, w);
+                        let v = self.fit_output(v, None, target, line);
                         self.write(target, v, line)
                     });
                     let outs: String = outs.collect();
@@ -395,6 +396,7 @@ impl PouEmitter<'_> {
                         src.path.push(crate::sema::ir::PathElem::Field(n.clone()));
                         let v = self.read(&src, line);
                         let v = super::values::widened(if *neg { format!("!{v}") } else { v }, w);
+                        let v = self.fit_output(v, None, target, line);
                         self.write(target, v, line)
                     })
                     .collect();

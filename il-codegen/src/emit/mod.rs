@@ -396,7 +396,7 @@ fn retain_items(o: &mut Out, pou: &CheckedPou, opts: Options) {
                 fields.push_str(&format!("{d}{sf} pub {id}: {ty},"));
                 let mut depth = 0;
                 let mut t = &v.ty;
-                while let Ty::Array { elem, dims } = t {
+                while let Ty::Array { elem, dims, .. } = t {
                     depth += dims.len();
                     t = elem;
                 }

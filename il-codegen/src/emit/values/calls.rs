@@ -46,6 +46,7 @@ impl PouEmitter<'_> {
             .map(|(k, place, neg, w)| {
                 let id = format!("__o{k}");
                 let v = widened(if *neg { format!("!{id}") } else { id }, w);
+                let v = self.fit_output(v, out_types.get(*k), place, line);
                 self.write(place, v, line)
             })
             .collect();
