@@ -184,7 +184,7 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
         .iter()
         .chain(c.resources.iter().flat_map(|r| &r.globals))
         .filter_map(|v| v.location.as_ref().map(|l| super::io::located(&v.name, l)));
-    let located = join(located, ", ");
+    let located = each(located, ", ");
     let mut io_accessors = String::new();
     for r in &c.resources {
         let prefix = r.name.as_ref().map(|n| format!("{n}_")).unwrap_or_default();
@@ -230,7 +230,7 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
     ));
     retain_items(o, c, &name, opts);
     super::visit::config(o, &name, &globals, &top_programs, &named);
-    let infos = join(infos, ", ");
+    let infos = each(infos, ", ");
     let overruns = join(
         state_ids.iter().map(|s| format!("self.{s}.overruns()")),
         ", ",

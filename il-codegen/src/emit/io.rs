@@ -36,7 +36,7 @@ pub(super) fn located(name: &str, l: &Loc) -> String {
         None => "::core::option::Option::None".to_string(),
     };
     format!(
-        "::il_std::Located {{ name: {name}, address: {text}, area: {area}, byte: {byte}, bit: {bit}, ty: {ty} }}"
+        "::il_std::Located {{ name: {name}, address: {text}, area: {area}, byte: {byte}, bit: {bit}, ty: {ty}, }}"
     )
 }
 

@@ -17,7 +17,7 @@ mod visit;
 use crate::ast::{PouKind, VarKind};
 use crate::sema::ir::{CheckedPou, Program, Storage};
 use crate::sema::types::Ty;
-use text::{Out, doc, join, str_lit, tail};
+use text::{Out, doc, each, str_lit, tail};
 
 pub use names::{item_ident, local_ident, rust_ident};
 
@@ -272,7 +272,7 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
             o.code(&format!(
                 "#[allow(dead_code, clippy::all)] impl ::core::default::Default for {name} {{ fn default() -> Self {{ Self {{ {inits} }} }} }}"
             ));
-            let addresses = join(io::addresses(pou), ", ");
+            let addresses = each(io::addresses(pou), ", ");
             let io_accessors = io::accessors(&pou.vars);
             let method_doc = if pou.kind == PouKind::Program {
                 " Run one scan."

@@ -25,11 +25,7 @@ fn serde_flag_derives_and_unknown_flags_are_refused() {
         text(&plain)
     );
     let with = expand(&[s(IL), p(','), id("serde")]);
-    assert!(
-        with.code.contains("::serde::Serialize"),
-        "{}",
-        text(&with)
-    );
+    assert!(with.code.contains("::serde::Serialize"), "{}", text(&with));
     let with_comma = expand(&[s(IL), p(','), id("serde"), p(',')]);
     assert_eq!(with.code, with_comma.code);
     let bad = expand(&[s(IL), p(','), id("serdes")]);

@@ -29,8 +29,8 @@ impl Fast {
             area: ::il_std::Area::Output,
             byte: 0,
             bit: ::core::option::Option::Some(1),
-            ty: "BOOL"
-        }
+            ty: "BOOL",
+        },
     ];
     /// `lamp` (%QX0.1 BOOL) as the process image holds it now.
     pub fn io_lamp(__ctx: &::il_std::Cycle) -> bool {
@@ -249,7 +249,7 @@ impl Plant {
             priority: 5,
             single: ::core::option::Option::None,
             programs: &["slow"],
-        }
+        },
     ];
     /// The located globals (`AT %...`), which live in `Cycle::io`.
     pub const ADDRESSES: &'static [::il_std::Located] = &[
@@ -259,8 +259,8 @@ impl Plant {
             area: ::il_std::Area::Output,
             byte: 0,
             bit: ::core::option::Option::Some(1),
-            ty: "BOOL"
-        }
+            ty: "BOOL",
+        },
     ];
     /// `lamp` (%QX0.1 BOOL) as the process image holds it now.
     pub fn io_lamp(__ctx: &::il_std::Cycle) -> bool {

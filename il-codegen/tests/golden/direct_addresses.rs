@@ -26,7 +26,7 @@ impl Io {
             area: ::il_std::Area::Input,
             byte: 6,
             bit: ::core::option::Option::None,
-            ty: "INT"
+            ty: "INT",
         },
         ::il_std::Located {
             name: "count",
@@ -34,7 +34,7 @@ impl Io {
             area: ::il_std::Area::Memory,
             byte: 8,
             bit: ::core::option::Option::None,
-            ty: "INT"
+            ty: "INT",
         },
         ::il_std::Located {
             name: "%IX0.3",
@@ -42,7 +42,7 @@ impl Io {
             area: ::il_std::Area::Input,
             byte: 0,
             bit: ::core::option::Option::Some(3),
-            ty: "BOOL"
+            ty: "BOOL",
         },
         ::il_std::Located {
             name: "%QX1.0",
@@ -50,7 +50,7 @@ impl Io {
             area: ::il_std::Area::Output,
             byte: 1,
             bit: ::core::option::Option::Some(0),
-            ty: "BOOL"
+            ty: "BOOL",
         },
         ::il_std::Located {
             name: "%IW2",
@@ -58,8 +58,8 @@ impl Io {
             area: ::il_std::Area::Input,
             byte: 4,
             bit: ::core::option::Option::None,
-            ty: "WORD"
-        }
+            ty: "WORD",
+        },
     ];
     /// `level` (%IW3 INT) as the process image holds it now.
     pub fn io_level(__ctx: &::il_std::Cycle) -> i16 {
