@@ -15,8 +15,8 @@ use crate::ast::PouKind;
 use crate::sema::ir::{Op, PathElem, Stmt, Value};
 use crate::sema::types::Ty;
 
-/// Deeper nesting than this falls back to the dispatcher (rustc and
-/// prettyplease recurse on nested blocks).
+/// Deeper nesting than this falls back to the dispatcher (rustc recurses
+/// on nested blocks, and each level indents every line inside it).
 const MAX_NESTED_LABELS: usize = 128;
 
 enum Mode {

@@ -1,8 +1,8 @@
 //! The one pipeline every front end runs (`il!`, the build-script
 //! [`Builder`](crate::Builder), `ilc`, the interpreter, the fuzz targets):
 //! sources in ([`Program`]) → a checked program ([`Checked`]) → emitted Rust
-//! ([`Emitted`]: tokens for `il!`, formatted files for build.rs and `ilc
-//! emit`). The rules are decided here once: every file is parsed; the files
+//! ([`Emitted`]: Rust text, which `il!` parses into tokens once and build.rs
+//! and `ilc emit` write as files). The rules are decided here once: every file is parsed; the files
 //! without syntax errors are checked together (a FUNCTION_BLOCK of one is
 //! usable in another); diagnostics are moved into the file the user wrote
 //! (an XML project's lines), sorted by position and limited per file; code
@@ -253,8 +253,8 @@ impl Emitted<'_> {
 
 #[cfg(feature = "build")]
 impl Emitted<'_> {
-    /// The text of the `.rs` file: formatted, `@generated`, and, when the
-    /// tokens were emitted with [`EmitOptions::line_markers`](crate::EmitOptions), each IL
+    /// The text of the `.rs` file: `@generated`, and, when the
+    /// text was emitted with [`EmitOptions::line_markers`](crate::EmitOptions), each IL
     /// line's source as a comment above the code it became (for an XML
     /// project, numbered by its XML lines).
     pub fn file_text(&self) -> String {
