@@ -119,6 +119,11 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
             });
             quote!(#st { #(#fs,)* })
         });
+        // VAR_IN_OUTs: the global itself (disjoint fields of `self`).
+        let inouts = pi.inouts.iter().map(|(_, g)| {
+            let (_, path) = global(g);
+            quote!(&mut #path,)
+        });
         let outs = pi.outputs.iter().map(|(n, g)| {
             let f = rust_ident(n);
             let (v, path) = global(g);
@@ -132,7 +137,7 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
         quote! {
             __trace(#tname, #pname);
             #(#sets)*
-            #base.#inst.call(__ctx, #ext);
+            #base.#inst.call(__ctx, #(#inouts)* #ext);
             #(#outs)*
             __ran += 1;
         }
@@ -141,15 +146,9 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
         let task = &c.resources[r].tasks[t];
         let due = format_ident!("__due_{}", k);
         let st = &state_ids[k];
-        let ns = task.interval;
-        let single = match &task.single {
-            Some(g) => {
-                let v = read_global(g);
-                quote!(::core::option::Option::Some(#v))
-            }
-            None => quote!(::core::option::Option::None),
-        };
-        dues.extend(quote!(let #due = self.#st.due(__now, ::il_std::TIME(#ns), #single);));
+        let single = super::tasks::single(task.single.as_ref(), &read_global);
+        let interval = super::tasks::interval(&task.interval, &read_global);
+        dues.extend(quote!(let #due = self.#st.due(__now, #interval, #single);));
         let progs: Vec<_> = c.resources[r]
             .programs
             .iter()
@@ -159,13 +158,9 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
             .collect();
         runs.extend(quote!(if #due { #(#progs)* }));
         let res_name = c.resources[r].name.clone().unwrap_or_default();
-        let single_name = match &task.single {
-            Some(g) => {
-                let n = &global(g).0.name;
-                quote!(::core::option::Option::Some(#n))
-            }
-            None => quote!(::core::option::Option::None),
-        };
+        let global_name = |g: &GlobalRef| global(g).0.name.clone();
+        let (_, single_name) = super::tasks::info(task.single.as_ref(), &global_name);
+        let (ns, interval_from) = super::tasks::info(Some(&task.interval), &global_name);
         let pnames = c.resources[r]
             .programs
             .iter()
@@ -174,7 +169,7 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
         let (tn, prio) = (&task.name, task.priority);
         infos.push(quote!(::il_std::TaskInfo {
             name: #tn, resource: #res_name, interval: ::il_std::TIME(#ns), priority: #prio,
-            single: #single_name, programs: &[#(#pnames),*],
+            interval_from: #interval_from, single: #single_name, programs: &[#(#pnames),*],
         }));
     }
     // Programs without a task run on every call, after the tasks.

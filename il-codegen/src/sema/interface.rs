@@ -53,10 +53,6 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
                 BAD_SECTION,
                 "a FUNCTION cannot use globals (VAR_EXTERNAL): pass the value as an input or a VAR_IN_OUT",
             )),
-            (PouKind::Program, ast::VarKind::InOut) => Some((
-                UNSUPPORTED,
-                "VAR_IN_OUT of a PROGRAM is not supported: share the variable through VAR_GLOBAL/VAR_EXTERNAL",
-            )),
             _ => None,
         };
         if let Some((code, msg)) = refused {

@@ -52,12 +52,26 @@ pub struct ResourceDef {
 pub struct TaskDef {
     /// As declared.
     pub name: String,
-    /// Nanoseconds; 0 = no periodic release.
-    pub interval: i64,
+    /// `INTERVAL`: a TIME literal in nanoseconds (0 = no periodic release),
+    /// or a TIME global or direct address read at each release decision.
+    pub interval: TaskSource<i64>,
     /// PRIORITY: 0 is the highest; orders tasks released in the same cycle.
     pub priority: u32,
-    /// SINGLE: released on a rising edge of this BOOL global.
-    pub single: Option<GlobalRef>,
+    /// SINGLE: released on a rising edge of this BOOL global or direct
+    /// address (a literal is decided by the checker: TRUE is `Some(Fixed)`).
+    pub single: Option<TaskSource<bool>>,
+}
+
+/// Where a TASK input comes from (Ed.2 2.7.2: any data source): a literal,
+/// a global of the configuration, or a direct address of the process image.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TaskSource<T> {
+    /// A literal, decided by the checker.
+    Fixed(T),
+    /// A global (read before the task's release is decided).
+    Global(GlobalRef),
+    /// A direct address (`SINGLE := %IX0.0`).
+    Addr(Loc),
 }
 
 /// A global of a configuration: `resource` None = the configuration's own.
@@ -85,6 +99,9 @@ pub struct ProgramInst {
     pub inputs: Vec<(String, ProgArg)>,
     /// Outputs copied to globals after every run (target, source output).
     pub outputs: Vec<(String, GlobalRef)>,
+    /// The globals bound to the program's VAR_IN_OUTs (`PROGRAM p : P(io :=
+    /// g)`), one for each, in their declaration order: passed by reference.
+    pub inouts: Vec<(String, GlobalRef)>,
     /// The program has RETAIN variables (a `retain()` snapshot).
     pub retain: bool,
 }

@@ -3,6 +3,8 @@
 
 mod address;
 pub mod codes;
+mod config_args;
+mod config_tasks;
 mod configuration;
 mod decls;
 mod env;

@@ -6,6 +6,7 @@
 
 mod addresses;
 mod annex_f;
+mod cfg_forms;
 mod dialect;
 mod differential;
 mod edge_cases;
