@@ -9,6 +9,7 @@ mod configuration;
 mod flow;
 mod io;
 mod names;
+mod partly;
 mod tasks;
 mod values;
 mod visit;

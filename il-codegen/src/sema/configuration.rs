@@ -101,10 +101,12 @@ fn globals(
             );
             continue;
         }
-        var_blocks.push(ast::VarBlock {
+        let mut b = ast::VarBlock {
             kind: VarKind::Var,
             ..b.clone()
-        });
+        };
+        super::partly::refuse_in_globals(cx, &mut b);
+        var_blocks.push(b);
     }
     let fake = ast::Pou {
         kind: PouKind::Program,

@@ -238,6 +238,9 @@ pub struct Var {
     pub name: String,
     /// `AT %...`: the variable is that place of the process image.
     pub location: Option<Loc>,
+    /// `AT %I*` / `%Q*` / `%M*` (Ed.2 2.4.1.1): an ordinary field the host
+    /// binds, listed in `ADDRESSES` as unbound; the text as written.
+    pub partly: Option<(crate::ast::Area, String)>,
     /// R_EDGE / F_EDGE input: the body sees the edge, not the level.
     pub edge: Option<crate::ast::Edge>,
     /// Subrange bounds of an integer variable.

@@ -15,6 +15,7 @@ mod interface;
 pub mod ir;
 mod literals;
 mod nesting;
+mod partly;
 mod recursion;
 mod resolve;
 pub(crate) mod size;
