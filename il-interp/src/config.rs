@@ -12,7 +12,10 @@
 use crate::places::{io_read, io_write};
 use crate::values::{Instance, Value};
 use crate::{Machine, find_var};
-use il_codegen::sema::ir::{ConfigDef, GlobalRef, ProgArg, Program, TaskSource};
+use il_codegen::ast::Area;
+use il_codegen::sema::ir::{
+    AccessTarget, ConfigDef, GlobalRef, InstancePath, ProgArg, Program, TaskSource,
+};
 use il_std::{Cycle, TIME, TaskState};
 
 /// An instance of a CONFIGURATION ready to run.
@@ -50,7 +53,9 @@ impl ConfigMachine {
             })?;
         let m = Machine::bare(prog);
         let init = |vs: &[il_codegen::sema::ir::Var]| -> Result<Vec<Value>, String> {
-            vs.iter().map(|v| m.init_of(&v.ty, v.init.as_ref())).collect()
+            vs.iter()
+                .map(|v| m.init_of(&v.ty, v.init.as_ref()))
+                .collect()
         };
         let globals = init(&def.globals)?;
         let res_globals = def
@@ -81,7 +86,7 @@ impl ConfigMachine {
         // Declaration order breaks ties (the sort is stable), as in the emitter.
         order.sort_by_key(|&(r, t)| def.resources[r].tasks[t].priority);
         let states = vec![TaskState::new(); order.len()];
-        Ok(ConfigMachine {
+        let mut c = ConfigMachine {
             m,
             def,
             globals,
@@ -89,7 +94,15 @@ impl ConfigMachine {
             programs,
             order,
             states,
-        })
+        };
+        // VAR_CONFIG initial values, over the declared ones.
+        for v in c.def.var_config.clone() {
+            if let Some(i) = &v.init {
+                let val = c.m.init_of(&v.target.ty, Some(i))?;
+                *c.field_mut(&v.target)? = val;
+            }
+        }
+        Ok(c)
     }
 
     /// The configuration this machine runs.
@@ -126,6 +139,38 @@ impl ConfigMachine {
         let i = &self.programs[r][p];
         let idx = find_var(&self.m.prog.pous[i.pou], var)?;
         Some(i.vars[idx].clone())
+    }
+
+    /// Read the VAR_ACCESS path `name`.
+    pub fn access(&self, name: &str) -> Option<Value> {
+        let a = self
+            .def
+            .access
+            .iter()
+            .find(|a| a.name.eq_ignore_ascii_case(name))?;
+        match &a.target {
+            AccessTarget::Global(g) => Some(self.slot(*g).clone()),
+            AccessTarget::Instance(p) => self.field(p).ok().cloned(),
+        }
+    }
+
+    /// Write the VAR_ACCESS path `name`; refused for READ_ONLY ones.
+    pub fn set_access(&mut self, name: &str, v: Value) -> Result<(), String> {
+        let a = self
+            .def
+            .access
+            .iter()
+            .find(|a| a.name.eq_ignore_ascii_case(name))
+            .cloned()
+            .ok_or_else(|| format!("no access path `{name}`"))?;
+        if !a.writable {
+            return Err(format!("the access path `{}` is READ_ONLY", a.name));
+        }
+        match &a.target {
+            AccessTarget::Global(g) => *self.slot_mut(*g) = v,
+            AccessTarget::Instance(p) => *self.field_mut(p)? = v,
+        }
+        Ok(())
     }
 
     /// Missed periodic releases per task, in run order (as the generated `overruns`).
@@ -218,6 +263,16 @@ impl ConfigMachine {
         for (n, g) in refs.clone() {
             inst.vars[idx(&self.m, n)?] = self.slot(*g).clone();
         }
+        self.programs[r][p] = inst;
+        self.copy_config(ctx, r, p, true)?;
+        let mut inst = std::mem::replace(
+            &mut self.programs[r][p],
+            Instance {
+                pou: 0,
+                vars: Vec::new(),
+                edge_mem: Vec::new(),
+            },
+        );
         self.m.steps = 0;
         self.m.error_located = false;
         let result = self.m.call_instance(&mut inst, ctx);
@@ -233,7 +288,65 @@ impl ConfigMachine {
             }
         }
         self.programs[r][p] = inst;
+        self.copy_config(ctx, r, p, false)?;
         result
+    }
+
+    /// The VAR_CONFIG addresses of program `p` of resource `r`: `%I`/`%M`
+    /// into the field before the run, the field to `%Q`/`%M` after it.
+    fn copy_config(
+        &mut self,
+        ctx: &mut Cycle,
+        r: usize,
+        p: usize,
+        before: bool,
+    ) -> Result<(), String> {
+        for v in self.def.var_config.clone() {
+            let Some(l) = &v.location else { continue };
+            if (v.target.resource, v.target.program) != (r, p) {
+                continue;
+            }
+            match (before, l.area) {
+                (true, Area::Input | Area::Memory) => *self.field_mut(&v.target)? = io_read(ctx, l),
+                (false, Area::Output | Area::Memory) => io_write(ctx, l, self.field(&v.target)?),
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+
+    fn field(&self, p: &InstancePath) -> Result<&Value, String> {
+        let prog = self.m.prog.clone();
+        let mut inst = &self.programs[p.resource][p.program];
+        for (k, f) in p.fields.iter().enumerate() {
+            let i =
+                find_var(&prog.pous[inst.pou], f).ok_or_else(|| format!("internal: no `{f}`"))?;
+            if k + 1 == p.fields.len() {
+                return Ok(&inst.vars[i]);
+            }
+            match &inst.vars[i] {
+                Value::Fb(b) => inst = b,
+                _ => return Err(format!("internal: `{f}` is not an instance")),
+            }
+        }
+        Err("internal: empty instance path".into())
+    }
+
+    fn field_mut(&mut self, p: &InstancePath) -> Result<&mut Value, String> {
+        let prog = self.m.prog.clone();
+        let mut inst = &mut self.programs[p.resource][p.program];
+        for (k, f) in p.fields.iter().enumerate() {
+            let i =
+                find_var(&prog.pous[inst.pou], f).ok_or_else(|| format!("internal: no `{f}`"))?;
+            if k + 1 == p.fields.len() {
+                return Ok(&mut inst.vars[i]);
+            }
+            match &mut inst.vars[i] {
+                Value::Fb(b) => inst = b,
+                _ => return Err(format!("internal: `{f}` is not an instance")),
+            }
+        }
+        Err("internal: empty instance path".into())
     }
 
     fn var_of(&self, g: GlobalRef) -> &il_codegen::sema::ir::Var {

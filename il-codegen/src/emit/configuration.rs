@@ -133,11 +133,15 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
                 None => quote!(#path = #src;),
             }
         });
+        let copy_in = super::config_vars::copies(c, r, p, true);
+        let copy_out = super::config_vars::copies(c, r, p, false);
         let (tname, pname) = (task, &pi.name);
         quote! {
             __trace(#tname, #pname);
             #(#sets)*
+            #copy_in
             #base.#inst.call(__ctx, #(#inouts)* #ext);
+            #copy_out
             #(#outs)*
             __ran += 1;
         }
@@ -181,12 +185,29 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
         }
     }
     let ntasks = tasks.len();
+    let cfg_inits = super::config_vars::inits(c);
+    let fresh = quote! {
+        Self {
+            #inits
+            #prog_inits
+            #res_inits
+            #(#state_ids: ::il_std::TaskState::new(),)*
+        }
+    };
+    // VAR_CONFIG initial values go onto the fresh configuration.
+    let new_self = if cfg_inits.is_empty() {
+        fresh
+    } else {
+        quote!(let mut __s = #fresh; #cfg_inits __s)
+    };
+    let access = super::access::methods(c);
     let retain = retain_items(c, &name, opts);
     let located = c
         .globals
         .iter()
         .chain(c.resources.iter().flat_map(|r| &r.globals))
-        .filter_map(|v| v.location.as_ref().map(|l| super::io::located(&v.name, l)));
+        .filter_map(|v| v.location.as_ref().map(|l| super::io::located(&v.name, l)))
+        .chain(super::config_vars::located(c));
     let mut io_accessors = TokenStream::new();
     for r in &c.resources {
         let prefix = r.name.as_ref().map(|n| format!("{n}_")).unwrap_or_default();
@@ -228,12 +249,7 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
         #[allow(dead_code, clippy::all)]
         impl ::core::default::Default for #name {
             fn default() -> Self {
-                Self {
-                    #inits
-                    #prog_inits
-                    #res_inits
-                    #(#state_ids: ::il_std::TaskState::new(),)*
-                }
+                #new_self
             }
         }
 
@@ -248,6 +264,7 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
             /// The located globals (`AT %...`), which live in `Cycle::io`.
             pub const ADDRESSES: &'static [::il_std::Located] = &[#(#located),*];
             #io_accessors
+            #access
 
             /// Runs every task released at `__ctx.now()`, highest priority
             /// first (each task's programs in declaration order), then the

@@ -60,6 +60,8 @@ pub(crate) fn collect(
             name: c.name.name.clone(),
             globals: globals.into_iter().map(|(v, _)| v).collect(),
             resources: Vec::new(),
+            var_config: Vec::new(),
+            access: Vec::new(),
         };
         for (ri, (r, rg)) in c.resources.iter().zip(res_globals).enumerate() {
             let rdef = ResourceDef {
@@ -74,6 +76,8 @@ pub(crate) fn collect(
             let programs = programs(cx, env, &def, ri, r);
             def.resources[ri].programs = programs;
         }
+        def.var_config = super::config_vars::var_config(cx, names, env, &def, &c.var_config);
+        def.access = super::config_vars::access(cx, names, env, &def, &c.var_access);
         result.push((f, def));
     }
     result

@@ -32,6 +32,63 @@ pub struct ConfigDef {
     pub globals: Vec<Var>,
     /// Its resources (at least one: the implicit one if it declares none).
     pub resources: Vec<ResourceDef>,
+    /// VAR_CONFIG: initial values and addresses of variables inside
+    /// program instances, in declaration order.
+    pub var_config: Vec<ConfigVarDef>,
+    /// VAR_ACCESS: the access paths offered to the host.
+    pub access: Vec<AccessDef>,
+}
+
+/// A variable inside a program instance, named from the configuration
+/// (`Res.Prog.fb.x`): the resource, the instance, then fields down.
+#[derive(Clone, Debug, PartialEq)]
+pub struct InstancePath {
+    /// Index into [`ConfigDef::resources`].
+    pub resource: usize,
+    /// Index into that resource's programs.
+    pub program: usize,
+    /// The variable of the program, then of each FB instance, as declared;
+    /// at least one. Every step is an instance field (storage `Instance`).
+    pub fields: Vec<String>,
+    /// The variable's type.
+    pub ty: Ty,
+    /// The path as written (`Cpu.Main.sensor`).
+    pub text: String,
+}
+
+/// One VAR_CONFIG declaration.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConfigVarDef {
+    /// The variable.
+    pub target: InstancePath,
+    /// `:= init`: set when the configuration is created.
+    pub init: Option<Init>,
+    /// `AT %QX1.0` completing the variable's `AT %Q*`: the configuration
+    /// copies `%I`/`%M` into the field before each run of the program and
+    /// the field to `%Q`/`%M` after it (the process image of Ed.2 2.4.1.1).
+    pub location: Option<Loc>,
+}
+
+/// One VAR_ACCESS declaration: `name : path : type READ_WRITE`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct AccessDef {
+    /// The access path's name, as declared.
+    pub name: String,
+    /// What it reads and writes.
+    pub target: AccessTarget,
+    /// The variable's type.
+    pub ty: Ty,
+    /// READ_WRITE; READ_ONLY (the default) offers no setter.
+    pub writable: bool,
+}
+
+/// What an access path names.
+#[derive(Clone, Debug, PartialEq)]
+pub enum AccessTarget {
+    /// An unlocated global of the configuration.
+    Global(GlobalRef),
+    /// A variable inside a program instance.
+    Instance(InstancePath),
 }
 
 /// A RESOURCE (or the unnamed one of a configuration without RESOURCE).

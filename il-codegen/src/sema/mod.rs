@@ -5,6 +5,7 @@ mod address;
 pub mod codes;
 mod config_args;
 mod config_tasks;
+mod config_vars;
 mod configuration;
 mod decls;
 mod env;

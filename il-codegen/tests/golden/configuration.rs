@@ -27,6 +27,7 @@ impl Fast {
             byte: 0usize,
             bit: ::core::option::Option::Some(1u8),
             ty: "BOOL",
+            bound: true,
         },
     ];
     /// `lamp` (%QX0.1 BOOL) as the process image holds it now.
@@ -281,6 +282,7 @@ impl Plant {
             byte: 0usize,
             bit: ::core::option::Option::Some(1u8),
             ty: "BOOL",
+            bound: true,
         },
     ];
     /// `lamp` (%QX0.1 BOOL) as the process image holds it now.

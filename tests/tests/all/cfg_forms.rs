@@ -42,12 +42,11 @@ macro_rules! cfg_tests {
                     if ms == 50 {
                         c.period = TIME::from_ms(30);
                     }
-                    c.run_traced(&mut ctx, |t, p| log.push((ms, t.to_string(), p.to_string())));
+                    c.run_traced(&mut ctx, |t, p| {
+                        log.push((ms, t.to_string(), p.to_string()))
+                    });
                 }
-                (
-                    [c.timed, c.edges, c.wired, c.pair_a, c.pair_b, c.seen],
-                    log,
-                )
+                ([c.timed, c.edges, c.wired, c.pair_a, c.pair_b, c.seen], log)
             }
 
             #[test]
@@ -118,8 +117,10 @@ fn interpreted() -> Outcome {
             let t = Value::Time(30_000_000, il_codegen::sema::types::Elem::TIME);
             c.set_global("period", t).unwrap();
         }
-        c.run_traced(&mut ctx, |t, p| log.push((ms, t.to_string(), p.to_string())))
-            .unwrap();
+        c.run_traced(&mut ctx, |t, p| {
+            log.push((ms, t.to_string(), p.to_string()))
+        })
+        .unwrap();
     }
     let g = |n: &str| c.global(n).unwrap().as_i64() as i32;
     (
@@ -133,4 +134,141 @@ fn interpreted() -> Outcome {
         ],
         log,
     )
+}
+
+/// The host's steps for `CfgIo`: (ms, %IX2.3, %IW4, new Limit).
+const IO_STEPS: [(i64, bool, u16, Option<i16>); 3] = [
+    (0, true, 7, None),
+    (10, false, 2, Some(2)),
+    (20, true, 1, None),
+];
+
+/// What `CfgIo` leaves after each step: (%QX1.0, Scans, Hits, Limit).
+type IoOutcome = Vec<(bool, i16, i16, i16)>;
+
+macro_rules! io_tests {
+    ($m:ident) => {
+        mod $m {
+            use super::*;
+            use il_tests::$m::{CfIo, CfLatch, CfgIo};
+
+            #[test]
+            fn partly_specified_addresses_are_listed_unbound() {
+                let names: Vec<(&str, &str, bool)> = CfLatch::ADDRESSES
+                    .iter()
+                    .map(|l| (l.name, l.address, l.bound))
+                    .collect();
+                assert_eq!(
+                    names,
+                    [
+                        ("sensor", "%I*", false),
+                        ("lamp", "%Q*", false),
+                        ("level", "%IW*", false),
+                        ("spare", "%M*", false)
+                    ]
+                );
+                assert_eq!(CfIo::ADDRESSES[0].name, "free");
+                assert_eq!(CfIo::ADDRESSES[0].ty, "BYTE");
+                // An ordinary field the host binds.
+                let mut fb = CfLatch::default();
+                fb.sensor = true;
+                fb.level = 4;
+                fb.call(&mut Cycle::new());
+                assert!(fb.lamp);
+                assert_eq!(fb.hits, 4);
+            }
+
+            #[test]
+            fn var_config_completes_addresses_and_sets_initial_values() {
+                let c = CfgIo::default();
+                assert_eq!(c.Cpu.Io.limit, 5);
+                let bound: Vec<(&str, &str, bool)> = CfgIo::ADDRESSES
+                    .iter()
+                    .map(|l| (l.name, l.address, l.bound))
+                    .collect();
+                assert_eq!(
+                    bound,
+                    [
+                        ("Cpu.Io.latch.sensor", "%IX2.3", true),
+                        ("Cpu.Io.latch.lamp", "%QX1.0", true),
+                        ("Cpu.Io.latch.level", "%IW4", true)
+                    ]
+                );
+            }
+
+            #[test]
+            fn access_paths_read_and_write_through_the_configuration() {
+                let mut c = CfgIo::default();
+                assert_eq!((c.access_Limit(), c.access_Mode()), (5, 3));
+                c.set_access_Mode(4);
+                assert_eq!(c.mode, 4);
+                assert_eq!(run(), super::io_interpreted());
+            }
+
+            fn run() -> IoOutcome {
+                let mut c = CfgIo::default();
+                let mut ctx = Cycle::new();
+                let mut out = Vec::new();
+                for (ms, bit, word, limit) in IO_STEPS {
+                    ctx.set_now(TIME::from_ms(ms));
+                    ctx.io.set_bit(Area::Input, 2, 3, bit);
+                    ctx.io.set_word(Area::Input, 8, word);
+                    if let Some(l) = limit {
+                        c.set_access_Limit(l);
+                    }
+                    c.run(&mut ctx);
+                    out.push((
+                        ctx.io.bit(Area::Output, 1, 0),
+                        c.access_Scans(),
+                        c.access_Hits(),
+                        c.access_Limit(),
+                    ));
+                }
+                out
+            }
+
+            #[test]
+            fn the_configured_io_is_copied_around_each_run() {
+                // %IW4 is byte 8; %QX1.0 follows %IX2.3 of the same run.
+                assert_eq!(run(), [(true, 5, 7, 5), (false, 7, 9, 2), (true, 9, 10, 2)]);
+            }
+        }
+    };
+}
+
+io_tests!(via_build);
+io_tests!(via_macro);
+
+fn io_interpreted() -> IoOutcome {
+    use il_codegen::sema::types::Elem;
+    use il_interp::{ConfigMachine, Value};
+    let src = std::fs::read_to_string("plc/cfg_forms.il").expect("read");
+    let file = il_codegen::diag::SourceFile::new("cfg_forms.il", src);
+    let prog = il_interp::load(&file).expect("checks");
+    let mut c = ConfigMachine::new(&prog, "CfgIo").expect("configuration");
+    assert!(
+        c.set_access("Scans", il_interp::int(1, Elem::INT))
+            .unwrap_err()
+            .contains("READ_ONLY")
+    );
+    let mut ctx = Cycle::new();
+    let mut out = Vec::new();
+    let int = |v: Option<Value>| v.expect("access path").as_i64() as i16;
+    for (ms, bit, word, limit) in IO_STEPS {
+        ctx.set_now(TIME::from_ms(ms));
+        ctx.io.set_bit(Area::Input, 2, 3, bit);
+        ctx.io.set_word(Area::Input, 8, word);
+        if let Some(l) = limit {
+            c.set_access("Limit", il_interp::int(l as i128, Elem::INT))
+                .unwrap();
+        }
+        c.run(&mut ctx).unwrap();
+        out.push((
+            ctx.io.bit(Area::Output, 1, 0),
+            int(c.access("Scans")),
+            int(c.access("Hits")),
+            int(c.access("Limit")),
+        ));
+    }
+    out
 }
