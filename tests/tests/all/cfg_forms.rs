@@ -236,8 +236,11 @@ macro_rules! io_tests {
     };
 }
 
-io_tests!(via_build);
-io_tests!(via_macro);
+mod io {
+    use super::*;
+    io_tests!(via_build);
+    io_tests!(via_macro);
+}
 
 fn io_interpreted() -> IoOutcome {
     use il_codegen::sema::types::Elem;
