@@ -15,6 +15,7 @@ mod render_golden;
 mod scaling;
 mod sema_calls;
 mod sema_config_forms;
+mod sema_corners;
 mod sema_hints;
 mod sema_hostile_names;
 mod sema_literals;
