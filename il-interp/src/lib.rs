@@ -105,13 +105,11 @@ fn find_var(pou: &CheckedPou, name: &str) -> Option<usize> {
 
 /// Whether the instance holds `v` between calls: its memory
 /// ([`Storage::Instance`]) and, unlike generated code, its VAR_EXTERNALs
-/// ([`Storage::External`] says why) and VAR_IN_OUTs (a PROGRAM run alone
-/// keeps them as memory; a configuration copies its globals in and out).
+/// ([`Storage::External`] says why). A VAR_IN_OUT is the caller's: a
+/// [`ConfigMachine`] copies the bound global in and out around each run of
+/// a PROGRAM (and a PROGRAM run alone keeps it, unseen, at its default).
 fn held(v: &Var) -> bool {
-    matches!(
-        v.storage,
-        Storage::Instance | Storage::External | Storage::InOut
-    )
+    matches!(v.storage, Storage::Instance | Storage::External)
 }
 
 impl Machine {
