@@ -1,5 +1,5 @@
 // auto-generated: "lalrpop 0.23.2"
-// sha3: a8c109de81f2cde1782f47b5fcacde4f2e137b9fe3795b165c27f34e4f58fe98
+// sha3: 6b63a61f9974acc2cfb180d0031edfd8bbc94009b44d320bf32cda305fbf9760
 // features: 
 use crate::ast::*;
 use super::lexer::{Tok, LexError, ExprTok};
@@ -32,8 +32,8 @@ mod __parse__Unit {
      {
         Variant0(Tok),
         Variant1(String),
-        Variant2(Literal),
-        Variant3(DirectAddress),
+        Variant2(Box<Literal>),
+        Variant3(Box<DirectAddress>),
         Variant4((AddrSize, u32)),
         Variant5(bool),
         Variant6(ExprTok),
@@ -48,8 +48,8 @@ mod __parse__Unit {
         Variant15(Option<TypeSpec>),
         Variant16(Initializer),
         Variant17(Option<Initializer>),
-        Variant18(Option<Literal>),
-        Variant19(Option<DirectAddress>),
+        Variant18(Option<Box<Literal>>),
+        Variant19(Option<Box<DirectAddress>>),
         Variant20(Ident),
         Variant21(Option<Ident>),
         Variant22((Option<Literal>, Initializer)),
@@ -4464,6 +4464,26 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
+    fn __pop_Variant3<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Box<DirectAddress>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant3(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant2<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Box<Literal>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant2(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
     fn __pop_Variant64<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -4521,16 +4541,6 @@ mod __parse__Unit {
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant51(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant3<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, DirectAddress, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant3(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -4614,16 +4624,6 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
-    fn __pop_Variant2<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Literal, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant2(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
     fn __pop_Variant29<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -4644,6 +4644,26 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
+    fn __pop_Variant19<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Option<Box<DirectAddress>>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant19(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant18<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Option<Box<Literal>>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant18(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
     fn __pop_Variant65<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -4661,16 +4681,6 @@ mod __parse__Unit {
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant70(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant19<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Option<DirectAddress>, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant19(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -4711,16 +4721,6 @@ mod __parse__Unit {
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant59(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant18<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Option<Literal>, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant18(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -10627,10 +10627,10 @@ fn __action38<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, l, _): (usize, Literal, usize),
+    (_, l, _): (usize, Box<Literal>, usize),
 ) -> Operand
 {
-    Operand::Lit(l)
+    Operand::Lit(*l)
 }
 
 #[allow(unused_variables)]
@@ -10639,10 +10639,10 @@ fn __action39<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, a, _): (usize, DirectAddress, usize),
+    (_, a, _): (usize, Box<DirectAddress>, usize),
 ) -> Operand
 {
-    Operand::Addr(a)
+    Operand::Addr(*a)
 }
 
 #[allow(unused_variables)]
@@ -10692,10 +10692,10 @@ fn __action43<
 >(
     ctx: &'c mut Ctx,
     (_, _, _): (usize, Tok, usize),
-    (_, l, _): (usize, Literal, usize),
+    (_, l, _): (usize, Box<Literal>, usize),
 ) -> Accessor
 {
-    build::bit_access(ctx, l)
+    build::bit_access(ctx, *l)
 }
 
 #[allow(unused_variables)]
@@ -10820,7 +10820,7 @@ fn __action52<
     ctx: &'c mut Ctx,
     (_, lo, _): (usize, usize, usize),
     (_, names, _): (usize, Vec<Ident>, usize),
-    (_, loc, _): (usize, Option<DirectAddress>, usize),
+    (_, loc, _): (usize, Option<Box<DirectAddress>>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, ty, _): (usize, TypeSpec, usize),
     (_, edge, _): (usize, Option<Edge>, usize),
@@ -10829,7 +10829,7 @@ fn __action52<
     (_, _, _): (usize, Tok, usize),
 ) -> Option<VarDecl>
 {
-    Some(VarDecl { names, location: loc, ty, edge, init, span: sp(lo, hi) })
+    Some(VarDecl { names, location: loc.map(|a| *a), ty, edge, init, span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
@@ -11032,10 +11032,10 @@ fn __action66<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, __0, _): (usize, Literal, usize),
+    (_, __0, _): (usize, Box<Literal>, usize),
 ) -> ConstExpr
 {
-    ConstExpr::Lit(__0)
+    ConstExpr::Lit(*__0)
 }
 
 #[allow(unused_variables)]
@@ -11057,10 +11057,10 @@ fn __action68<
 >(
     ctx: &'c mut Ctx,
     (_, name, _): (usize, Ident, usize),
-    (_, value, _): (usize, Option<Literal>, usize),
+    (_, value, _): (usize, Option<Box<Literal>>, usize),
 ) -> EnumValue
 {
-    EnumValue { name, value }
+    EnumValue { name, value: value.map(|v| *v) }
 }
 
 #[allow(unused_variables)]
@@ -11125,13 +11125,13 @@ fn __action73<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, n, _): (usize, Literal, usize),
+    (_, n, _): (usize, Box<Literal>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, i, _): (usize, Initializer, usize),
     (_, _, _): (usize, Tok, usize),
 ) -> (Option<Literal>, Initializer)
 {
-    build::repeat(ctx, n, i)
+    build::repeat(ctx, *n, i)
 }
 
 #[allow(unused_variables)]
@@ -11609,8 +11609,8 @@ fn __action107<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, __0, _): (usize, Literal, usize),
-) -> Option<Literal>
+    (_, __0, _): (usize, Box<Literal>, usize),
+) -> Option<Box<Literal>>
 {
     Some(__0)
 }
@@ -11623,7 +11623,7 @@ fn __action108<
     ctx: &'c mut Ctx,
     __lookbehind: &usize,
     __lookahead: &usize,
-) -> Option<Literal>
+) -> Option<Box<Literal>>
 {
     None
 }
@@ -11635,8 +11635,8 @@ fn __action109<
 >(
     ctx: &'c mut Ctx,
     (_, _, _): (usize, Tok, usize),
-    (_, __0, _): (usize, Literal, usize),
-) -> Literal
+    (_, __0, _): (usize, Box<Literal>, usize),
+) -> Box<Literal>
 {
     __0
 }
@@ -11769,8 +11769,8 @@ fn __action119<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, __0, _): (usize, DirectAddress, usize),
-) -> Option<DirectAddress>
+    (_, __0, _): (usize, Box<DirectAddress>, usize),
+) -> Option<Box<DirectAddress>>
 {
     Some(__0)
 }
@@ -11783,7 +11783,7 @@ fn __action120<
     ctx: &'c mut Ctx,
     __lookbehind: &usize,
     __lookahead: &usize,
-) -> Option<DirectAddress>
+) -> Option<Box<DirectAddress>>
 {
     None
 }
@@ -11795,8 +11795,8 @@ fn __action121<
 >(
     ctx: &'c mut Ctx,
     (_, _, _): (usize, Tok, usize),
-    (_, __0, _): (usize, DirectAddress, usize),
-) -> DirectAddress
+    (_, __0, _): (usize, Box<DirectAddress>, usize),
+) -> Box<DirectAddress>
 {
     __0
 }
@@ -13219,7 +13219,7 @@ fn __action217<
     ctx: &'c mut Ctx,
     __0: (usize, usize, usize),
     __1: (usize, Vec<Ident>, usize),
-    __2: (usize, Option<DirectAddress>, usize),
+    __2: (usize, Option<Box<DirectAddress>>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Option<Edge>, usize),
@@ -13260,7 +13260,7 @@ fn __action218<
     ctx: &'c mut Ctx,
     __0: (usize, usize, usize),
     __1: (usize, Vec<Ident>, usize),
-    __2: (usize, Option<DirectAddress>, usize),
+    __2: (usize, Option<Box<DirectAddress>>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Option<Edge>, usize),
@@ -13298,8 +13298,8 @@ fn __action219<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, Literal, usize),
-) -> Option<Literal>
+    __1: (usize, Box<Literal>, usize),
+) -> Option<Box<Literal>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __1.2.clone();
@@ -13324,7 +13324,7 @@ fn __action220<
     ctx: &'c mut Ctx,
     __0: (usize, Ident, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, Literal, usize),
+    __2: (usize, Box<Literal>, usize),
 ) -> EnumValue
 {
     let __start0 = __1.0.clone();
@@ -13375,8 +13375,8 @@ fn __action222<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, DirectAddress, usize),
-) -> Option<DirectAddress>
+    __1: (usize, Box<DirectAddress>, usize),
+) -> Option<Box<DirectAddress>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __1.2.clone();
@@ -13402,7 +13402,7 @@ fn __action223<
     __0: (usize, usize, usize),
     __1: (usize, Vec<Ident>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, DirectAddress, usize),
+    __3: (usize, Box<DirectAddress>, usize),
     __4: (usize, Tok, usize),
     __5: (usize, TypeSpec, usize),
     __6: (usize, Option<Edge>, usize),
@@ -13486,7 +13486,7 @@ fn __action225<
     __0: (usize, usize, usize),
     __1: (usize, Vec<Ident>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, DirectAddress, usize),
+    __3: (usize, Box<DirectAddress>, usize),
     __4: (usize, Tok, usize),
     __5: (usize, TypeSpec, usize),
     __6: (usize, Option<Edge>, usize),
@@ -16225,7 +16225,7 @@ fn __action314<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Option<Edge>, usize),
@@ -16307,7 +16307,7 @@ fn __action316<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Option<Edge>, usize),
@@ -18060,7 +18060,7 @@ fn __action369<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Option<Edge>, usize),
@@ -18138,7 +18138,7 @@ fn __action371<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Option<Edge>, usize),
@@ -18592,7 +18592,7 @@ fn __action387<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Edge, usize),
@@ -18631,7 +18631,7 @@ fn __action388<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Tok, usize),
@@ -18740,7 +18740,7 @@ fn __action391<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Edge, usize),
@@ -18775,7 +18775,7 @@ fn __action392<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Tok, usize),
