@@ -142,8 +142,9 @@ pub(crate) fn check_pou(
     // as the final pass and is kept when it settles: no extra walk over the
     // body. A first round that settles is walked once more, as the final
     // pass (without labels, the first round is the final pass).
-    w.out = Vec::with_capacity(2 * pou.body.len());
-    w.cr_steps = Vec::with_capacity(pou.body.len());
+    let (stmts, steps) = output_size(&pou.body);
+    w.out = Vec::with_capacity(stmts + stmts / 16);
+    w.cr_steps = Vec::with_capacity(steps);
     let mut settled = false;
     for round in 0..64 {
         w.final_pass = round > 0 || n == 0;
@@ -199,6 +200,25 @@ pub(crate) fn check_pou(
         save_types: w.save_types,
         retained: super::configuration::retained(env, sig),
         cr_steps: w.cr_steps,
+    })
+}
+
+/// About how many statements and CR steps the final pass records for
+/// `body`: the output vectors are sized once (they are the largest part of
+/// the checked program; growing them by doubling copies them and leaves
+/// up to half unused).
+fn output_size(body: &[ast::Stmt]) -> (usize, usize) {
+    body.iter().fold((0, 0), |(stmts, steps), s| match s {
+        ast::Stmt::Label(_) => (stmts + 1, steps + 1),
+        ast::Stmt::Instr(i) => match &i.kind {
+            // Nop, save of the outer CR, the inner body, the operation.
+            InstrKind::Deferred { body, .. } => {
+                let (a, b) = output_size(body);
+                (stmts + 3 + a, steps + 1 + b)
+            }
+            // Nop and the operation.
+            _ => (stmts + 2, steps + 1),
+        },
     })
 }
 
