@@ -50,7 +50,7 @@ pub fn parse_std(
     // of being copied); the messages of syntax errors, which look at the
     // tokens around the error, get them from lexing again (the lexer is
     // deterministic): only files with syntax errors pay for it.
-    let result = grammar::UnitParser::new().parse(&mut ctx, toks.into_iter());
+    let result = grammar::UnitParser::new().parse(&mut ctx, toks);
     let failed = result.is_err() || !ctx.errors.is_empty();
     let toks = if failed {
         lexer::lex_std(&file.text, standard).0
