@@ -17,7 +17,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
         kind: p.kind,
         name: p.name.name.clone(),
         vars: Vec::new(),
-        index: HashMap::new(),
+        index: Default::default(),
         ret: None,
         file: 0,
         poisoned: HashSet::new(),

@@ -11,6 +11,7 @@ mod decls;
 mod env;
 mod flow;
 mod graph;
+mod hash;
 mod init;
 mod interface;
 pub mod ir;

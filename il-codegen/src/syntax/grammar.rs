@@ -1,5 +1,5 @@
 // auto-generated: "lalrpop 0.23.2"
-// sha3: 2ecab978f1485417c8ac93b814674a081fa68288b5af1bc48eb863b80caa7a80
+// sha3: dc978ee9187cc553cc6a73f0885fe504a4aa4463b1712e9897730ee9c943bed1
 // features: 
 use crate::ast::*;
 use super::lexer::{Tok, LexError, ExprTok};
@@ -32,8 +32,8 @@ mod __parse__Unit {
      {
         Variant0(Tok),
         Variant1(String),
-        Variant2(Literal),
-        Variant3(DirectAddress),
+        Variant2(Box<Literal>),
+        Variant3(Box<DirectAddress>),
         Variant4((AddrSize, u32)),
         Variant5(bool),
         Variant6(ExprTok),
@@ -50,8 +50,8 @@ mod __parse__Unit {
         Variant17(Option<TypeSpec>),
         Variant18(Initializer),
         Variant19(Option<Initializer>),
-        Variant20(Option<Literal>),
-        Variant21(Option<DirectAddress>),
+        Variant20(Option<Box<Literal>>),
+        Variant21(Option<Box<DirectAddress>>),
         Variant22(Option<Ident>),
         Variant23((Option<Literal>, Initializer)),
         Variant24(alloc::vec::Vec<(Option<Literal>, Initializer)>),
@@ -5188,6 +5188,26 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
+    fn __pop_Variant3<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Box<DirectAddress>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant3(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant2<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Box<Literal>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant2(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
     fn __pop_Variant72<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -5245,16 +5265,6 @@ mod __parse__Unit {
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant59(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant3<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, DirectAddress, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant3(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -5338,16 +5348,6 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
-    fn __pop_Variant2<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Literal, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant2(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
     fn __pop_Variant29<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -5378,6 +5378,26 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
+    fn __pop_Variant21<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Option<Box<DirectAddress>>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant21(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant20<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Option<Box<Literal>>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant20(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
     fn __pop_Variant73<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -5405,16 +5425,6 @@ mod __parse__Unit {
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant78(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant21<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Option<DirectAddress>, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant21(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -5455,16 +5465,6 @@ mod __parse__Unit {
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant67(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant20<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Option<Literal>, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant20(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -12276,10 +12276,10 @@ fn __action38<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, l, _): (usize, Literal, usize),
+    (_, l, _): (usize, Box<Literal>, usize),
 ) -> Operand
 {
-    Operand::Lit(l)
+    Operand::Lit(*l)
 }
 
 #[allow(unused_variables)]
@@ -12288,10 +12288,10 @@ fn __action39<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, a, _): (usize, DirectAddress, usize),
+    (_, a, _): (usize, Box<DirectAddress>, usize),
 ) -> Operand
 {
-    Operand::Addr(a)
+    Operand::Addr(*a)
 }
 
 #[allow(unused_variables)]
@@ -12341,10 +12341,10 @@ fn __action43<
 >(
     ctx: &'c mut Ctx,
     (_, _, _): (usize, Tok, usize),
-    (_, l, _): (usize, Literal, usize),
+    (_, l, _): (usize, Box<Literal>, usize),
 ) -> Accessor
 {
-    build::bit_access(ctx, l)
+    build::bit_access(ctx, *l)
 }
 
 #[allow(unused_variables)]
@@ -12567,7 +12567,7 @@ fn __action59<
     ctx: &'c mut Ctx,
     (_, lo, _): (usize, usize, usize),
     (_, names, _): (usize, Vec<Ident>, usize),
-    (_, loc, _): (usize, Option<DirectAddress>, usize),
+    (_, loc, _): (usize, Option<Box<DirectAddress>>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, ty, _): (usize, TypeSpec, usize),
     (_, edge, _): (usize, Option<Edge>, usize),
@@ -12576,7 +12576,7 @@ fn __action59<
     (_, _, _): (usize, Tok, usize),
 ) -> Option<VarDecl>
 {
-    Some(VarDecl { names, location: loc, ty, edge, init, span: sp(lo, hi) })
+    Some(VarDecl { names, location: loc.map(|a| *a), ty, edge, init, span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
@@ -12779,10 +12779,10 @@ fn __action73<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, __0, _): (usize, Literal, usize),
+    (_, __0, _): (usize, Box<Literal>, usize),
 ) -> ConstExpr
 {
-    ConstExpr::Lit(__0)
+    ConstExpr::Lit(*__0)
 }
 
 #[allow(unused_variables)]
@@ -12804,10 +12804,10 @@ fn __action75<
 >(
     ctx: &'c mut Ctx,
     (_, name, _): (usize, Ident, usize),
-    (_, value, _): (usize, Option<Literal>, usize),
+    (_, value, _): (usize, Option<Box<Literal>>, usize),
 ) -> EnumValue
 {
-    EnumValue { name, value }
+    EnumValue { name, value: value.map(|v| *v) }
 }
 
 #[allow(unused_variables)]
@@ -12872,13 +12872,13 @@ fn __action80<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, n, _): (usize, Literal, usize),
+    (_, n, _): (usize, Box<Literal>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, i, _): (usize, Initializer, usize),
     (_, _, _): (usize, Tok, usize),
 ) -> (Option<Literal>, Initializer)
 {
-    build::repeat(ctx, n, i)
+    build::repeat(ctx, *n, i)
 }
 
 #[allow(unused_variables)]
@@ -13087,7 +13087,7 @@ fn __action94<
     ctx: &'c mut Ctx,
     (_, lo, _): (usize, usize, usize),
     (_, path, _): (usize, Vec<Ident>, usize),
-    (_, location, _): (usize, Option<DirectAddress>, usize),
+    (_, location, _): (usize, Option<Box<DirectAddress>>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, ty, _): (usize, TypeSpec, usize),
     (_, init, _): (usize, Option<Initializer>, usize),
@@ -13613,8 +13613,8 @@ fn __action132<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, __0, _): (usize, Literal, usize),
-) -> Option<Literal>
+    (_, __0, _): (usize, Box<Literal>, usize),
+) -> Option<Box<Literal>>
 {
     Some(__0)
 }
@@ -13627,7 +13627,7 @@ fn __action133<
     ctx: &'c mut Ctx,
     __lookbehind: &usize,
     __lookahead: &usize,
-) -> Option<Literal>
+) -> Option<Box<Literal>>
 {
     None
 }
@@ -13639,8 +13639,8 @@ fn __action134<
 >(
     ctx: &'c mut Ctx,
     (_, _, _): (usize, Tok, usize),
-    (_, __0, _): (usize, Literal, usize),
-) -> Literal
+    (_, __0, _): (usize, Box<Literal>, usize),
+) -> Box<Literal>
 {
     __0
 }
@@ -13773,8 +13773,8 @@ fn __action144<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, __0, _): (usize, DirectAddress, usize),
-) -> Option<DirectAddress>
+    (_, __0, _): (usize, Box<DirectAddress>, usize),
+) -> Option<Box<DirectAddress>>
 {
     Some(__0)
 }
@@ -13787,7 +13787,7 @@ fn __action145<
     ctx: &'c mut Ctx,
     __lookbehind: &usize,
     __lookahead: &usize,
-) -> Option<DirectAddress>
+) -> Option<Box<DirectAddress>>
 {
     None
 }
@@ -13799,8 +13799,8 @@ fn __action146<
 >(
     ctx: &'c mut Ctx,
     (_, _, _): (usize, Tok, usize),
-    (_, __0, _): (usize, DirectAddress, usize),
-) -> DirectAddress
+    (_, __0, _): (usize, Box<DirectAddress>, usize),
+) -> Box<DirectAddress>
 {
     __0
 }
@@ -15408,7 +15408,7 @@ fn __action256<
     ctx: &'c mut Ctx,
     __0: (usize, usize, usize),
     __1: (usize, Vec<Ident>, usize),
-    __2: (usize, Option<DirectAddress>, usize),
+    __2: (usize, Option<Box<DirectAddress>>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Tok, usize),
@@ -15447,7 +15447,7 @@ fn __action257<
     ctx: &'c mut Ctx,
     __0: (usize, usize, usize),
     __1: (usize, Vec<Ident>, usize),
-    __2: (usize, Option<DirectAddress>, usize),
+    __2: (usize, Option<Box<DirectAddress>>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, usize, usize),
@@ -15556,7 +15556,7 @@ fn __action260<
     ctx: &'c mut Ctx,
     __0: (usize, usize, usize),
     __1: (usize, Vec<Ident>, usize),
-    __2: (usize, Option<DirectAddress>, usize),
+    __2: (usize, Option<Box<DirectAddress>>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Option<Edge>, usize),
@@ -15597,7 +15597,7 @@ fn __action261<
     ctx: &'c mut Ctx,
     __0: (usize, usize, usize),
     __1: (usize, Vec<Ident>, usize),
-    __2: (usize, Option<DirectAddress>, usize),
+    __2: (usize, Option<Box<DirectAddress>>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Option<Edge>, usize),
@@ -15635,8 +15635,8 @@ fn __action262<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, Literal, usize),
-) -> Option<Literal>
+    __1: (usize, Box<Literal>, usize),
+) -> Option<Box<Literal>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __1.2.clone();
@@ -15661,7 +15661,7 @@ fn __action263<
     ctx: &'c mut Ctx,
     __0: (usize, Ident, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, Literal, usize),
+    __2: (usize, Box<Literal>, usize),
 ) -> EnumValue
 {
     let __start0 = __1.0.clone();
@@ -15712,8 +15712,8 @@ fn __action265<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, DirectAddress, usize),
-) -> Option<DirectAddress>
+    __1: (usize, Box<DirectAddress>, usize),
+) -> Option<Box<DirectAddress>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __1.2.clone();
@@ -15739,7 +15739,7 @@ fn __action266<
     __0: (usize, usize, usize),
     __1: (usize, Vec<Ident>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, DirectAddress, usize),
+    __3: (usize, Box<DirectAddress>, usize),
     __4: (usize, Tok, usize),
     __5: (usize, TypeSpec, usize),
     __6: (usize, Tok, usize),
@@ -15819,7 +15819,7 @@ fn __action268<
     __0: (usize, usize, usize),
     __1: (usize, Vec<Ident>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, DirectAddress, usize),
+    __3: (usize, Box<DirectAddress>, usize),
     __4: (usize, Tok, usize),
     __5: (usize, TypeSpec, usize),
     __6: (usize, usize, usize),
@@ -15891,7 +15891,7 @@ fn __action270<
     __0: (usize, usize, usize),
     __1: (usize, Vec<Ident>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, DirectAddress, usize),
+    __3: (usize, Box<DirectAddress>, usize),
     __4: (usize, Tok, usize),
     __5: (usize, TypeSpec, usize),
     __6: (usize, Option<Edge>, usize),
@@ -15975,7 +15975,7 @@ fn __action272<
     __0: (usize, usize, usize),
     __1: (usize, Vec<Ident>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, DirectAddress, usize),
+    __3: (usize, Box<DirectAddress>, usize),
     __4: (usize, Tok, usize),
     __5: (usize, TypeSpec, usize),
     __6: (usize, Option<Edge>, usize),
@@ -17534,7 +17534,7 @@ fn __action326<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Tok, usize),
@@ -17612,7 +17612,7 @@ fn __action328<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, usize, usize),
@@ -19158,7 +19158,7 @@ fn __action375<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Option<Edge>, usize),
@@ -19240,7 +19240,7 @@ fn __action377<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Option<Edge>, usize),
@@ -19672,7 +19672,7 @@ fn __action391<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Tok, usize),
@@ -19746,7 +19746,7 @@ fn __action393<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Tok, usize),
@@ -21315,7 +21315,7 @@ fn __action440<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Option<Edge>, usize),
@@ -21393,7 +21393,7 @@ fn __action442<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Option<Edge>, usize),
@@ -22025,7 +22025,7 @@ fn __action464<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Edge, usize),
@@ -22064,7 +22064,7 @@ fn __action465<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Tok, usize),
@@ -22173,7 +22173,7 @@ fn __action468<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Edge, usize),
@@ -22208,7 +22208,7 @@ fn __action469<
     ctx: &'c mut Ctx,
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, DirectAddress, usize),
+    __2: (usize, Box<DirectAddress>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, TypeSpec, usize),
     __5: (usize, Tok, usize),

@@ -65,7 +65,7 @@ impl<'a> Lexer<'a> {
                     type_prefix: None,
                     span: span(s, e),
                 };
-                self.push(s, Tok::Lit(lit), e);
+                self.push(s, Tok::Lit(Box::new(lit)), e);
             } else {
                 self.push(s, Tok::Ident(word.to_string()), e);
             }
