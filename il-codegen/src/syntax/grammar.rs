@@ -1,5 +1,5 @@
 // auto-generated: "lalrpop 0.23.2"
-// sha3: dc978ee9187cc553cc6a73f0885fe504a4aa4463b1712e9897730ee9c943bed1
+// sha3: 76762662160f428ff137922f1df7ca6c72b7a2fb363383167bd56de07e642783
 // features: 
 use crate::ast::*;
 use super::lexer::{Tok, LexError, ExprTok};
@@ -13095,7 +13095,7 @@ fn __action94<
     (_, _, _): (usize, Tok, usize),
 ) -> Option<ConfigVar>
 {
-    Some(ConfigVar { path, location, ty, init, span: sp(lo, hi) })
+    Some(ConfigVar { path, location: location.map(|a| *a), ty, init, span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
