@@ -7,26 +7,26 @@
 
 use divan::{Bencher, black_box};
 use il_bench::generator;
-use proc_macro2::{Literal, TokenStream, TokenTree};
+use il_codegen::expand::Tok;
 
 fn main() {
     divan::main();
 }
 
-fn input(il: &str) -> TokenStream {
-    TokenStream::from(TokenTree::Literal(Literal::string(il)))
+fn input(il: &str) -> Vec<Tok> {
+    vec![Tok::string(il, 0)]
 }
 
 #[divan::bench(args = [1_000, 10_000])]
 fn il_macro_expand(b: Bencher, lines: usize) {
     let il = generator::big_pou(lines, 1);
     b.with_inputs(|| input(&il))
-        .bench_local_values(il_codegen::expand::expand);
+        .bench_local_values(|t| black_box(il_codegen::expand::expand(&t)));
 }
 
 #[divan::bench]
 fn il_macro_expand_motor(b: Bencher) {
     let il = include_str!("../../examples/motor.il");
     b.with_inputs(|| input(il))
-        .bench_local_values(|t| black_box(il_codegen::expand::expand(t)));
+        .bench_local_values(|t| black_box(il_codegen::expand::expand(&t)));
 }

@@ -271,14 +271,14 @@ pub fn pipeline(data: &[u8]) {
 /// the POUs. Either way the expansion parses as items, and it is never the
 /// message of a caught compiler panic.
 fn macro_expansion(text: &str) {
-    let lit = proc_macro2::Literal::string(text);
-    let out = il_codegen::expand::expand(quote::quote!(#lit));
-    let s = out.to_string();
-    assert!(
-        !s.contains("internal error in the IL compiler"),
-        "il! caught a compiler panic: {s}"
-    );
-    syn::parse2::<syn::File>(out).unwrap_or_else(|e| panic!("il! expansion does not parse: {e}"));
+    let out = il_codegen::expand::expand(&[il_codegen::expand::Tok::string(text, 0)]);
+    for (msg, _) in &out.errors {
+        assert!(
+            !msg.contains("internal error in the IL compiler"),
+            "il! caught a compiler panic: {msg}"
+        );
+    }
+    syn::parse_file(&out.code).unwrap_or_else(|e| panic!("il! expansion does not parse: {e}"));
 }
 
 /// The tokens without the `__il_line!(N);` markers.

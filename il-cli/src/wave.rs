@@ -200,7 +200,7 @@ fn offer(v: &mut dyn Visitor, name: &str, ty: &Ty, x: &Value, prog: &Program) {
             fields(v, ty, x, prog);
             v.leave();
         }
-        (Ty::Array { dims, elem }, Value::Array(items)) => {
+        (Ty::Array { dims, elem, .. }, Value::Array(items)) => {
             let mut ix: Vec<i64> = dims.iter().map(|(lo, _)| *lo).collect();
             for item in items {
                 match (&**elem, item) {

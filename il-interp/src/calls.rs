@@ -78,6 +78,7 @@ impl Machine {
         for (k, place, neg, w) in outputs {
             let v = outs.get(*k).cloned().ok_or("internal: output index")?;
             let v = widened(if *neg { stdfn::not(&v) } else { v }, w)?;
+            let v = self.cut_string(f, v, &place.ty, ctx, line);
             self.write(f, place, v, ctx, line)?;
         }
         Ok(r)
@@ -181,7 +182,8 @@ impl Machine {
             if *neg {
                 v = stdfn::not(&v);
             }
-            self.write(f, target, widened(v, w)?, ctx, line)?;
+            let v = self.cut_string(f, widened(v, w)?, &target.ty, ctx, line);
+            self.write(f, target, v, ctx, line)?;
         }
         Ok(())
     }

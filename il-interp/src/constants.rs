@@ -71,9 +71,13 @@ impl Machine {
                 }
             },
             Ty::Elem(_) | Ty::Str { .. } => Value::from_const(&il_codegen::sema::default_const(t)),
-            Ty::Array { dims, elem } => {
+            Ty::Array { dims, elem, .. } => {
                 let n: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
-                let d = self.default_of(elem)?;
+                // As the emitter: an array of a subrange starts at its lower limit.
+                let d = match il_codegen::sema::ir::element_start(t) {
+                    Some(c) => Value::from_const(&c),
+                    None => self.default_of(elem)?,
+                };
                 Value::Array(vec![d; n.max(0) as usize])
             }
             Ty::Fb(name) => {
@@ -101,13 +105,14 @@ impl Machine {
             (Some(Init::Array(items)), Ty::Array { elem, .. }) => {
                 let mut v = self.default_of(t)?;
                 if let Value::Array(slots) = &mut v {
-                    let d = self.default_of(elem)?;
-                    let mut values = items
-                        .iter()
-                        .flat_map(|(n, c)| std::iter::repeat_n(c, *n))
-                        .map(Value::from_const);
-                    for s in slots.iter_mut() {
-                        *s = values.next().unwrap_or_else(|| d.clone());
+                    // The slots already hold the default (`default_of`).
+                    let mut k = 0;
+                    for (n, init) in items {
+                        let x = self.init_of(elem, Some(init))?;
+                        for s in slots.iter_mut().skip(k).take(*n) {
+                            *s = x.clone();
+                        }
+                        k += n;
                     }
                 }
                 Ok(v)

@@ -156,7 +156,7 @@ impl Machine {
                     range = frange;
                 }
                 Part::Index(subs) => {
-                    let Ty::Array { dims, elem } = &ty else {
+                    let Ty::Array { dims, elem, .. } = &ty else {
                         return Err(format!("`{text}`: {ty} is not an array"));
                     };
                     if subs.len() != dims.len() {
@@ -335,7 +335,7 @@ impl Machine {
         Ok(match (v, t) {
             (Value::Enum { ty, .. }, Ty::Enum(n)) => ty.eq_ignore_ascii_case(n),
             (Value::Struct(s), Ty::Struct(n)) => s.ty.eq_ignore_ascii_case(n),
-            (Value::Array(items), Ty::Array { dims, elem }) => {
+            (Value::Array(items), Ty::Array { dims, elem, .. }) => {
                 let n: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
                 items.len() as i64 == n && {
                     let mut all = true;

@@ -3,8 +3,8 @@
 
 use crate::values::Value;
 use crate::{Frame, Machine, find_var};
-use il_codegen::sema::ir::{Loc, PathElem, Place, Root, Value as IrValue};
-use il_codegen::sema::types::Elem;
+use il_codegen::sema::ir::{BinOp, Loc, PathElem, Place, Root, Value as IrValue};
+use il_codegen::sema::types::{Elem, Ty};
 use il_std::{Cycle, FaultKind};
 
 /// A resolved step of a place's path.
@@ -109,6 +109,29 @@ impl Machine {
         }
     }
 
+    /// A string value in a place of string type `to`: cut at its length, with
+    /// a `StringOverflow` fault when that cuts something off (as
+    /// `il_std::func::resize_checked` in generated code).
+    pub(crate) fn cut_string(
+        &self,
+        f: &Frame,
+        v: Value,
+        to: &Ty,
+        ctx: &mut Cycle,
+        line: u32,
+    ) -> Value {
+        match (v, to) {
+            (Value::Str { mut units, wide }, Ty::Str { len, .. }) => {
+                if units.len() > *len as usize {
+                    units.truncate(*len as usize);
+                    self.fault(ctx, f, FaultKind::StringOverflow, line);
+                }
+                Value::Str { units, wide }
+            }
+            (v, _) => v,
+        }
+    }
+
     pub(crate) fn fault(&self, ctx: &mut Cycle, f: &Frame, kind: FaultKind, line: u32) {
         ctx.fault(kind, self.names[f.pou], line);
     }
@@ -134,6 +157,23 @@ impl Machine {
                 let x = self.value(f, inner, ctx, line)?;
                 crate::stdfn::convert(w.from, w.to, &x)
                     .ok_or("internal: a widening the interpreter cannot convert")?
+            }
+            // As the emitter: both sides as LINT, wrapping.
+            IrValue::Arith { op, lhs, rhs } => {
+                let (l, r) = (
+                    self.value(f, lhs, ctx, line)?.as_i64(),
+                    self.value(f, rhs, ctx, line)?.as_i64(),
+                );
+                let n = match op {
+                    BinOp::Add => l.wrapping_add(r),
+                    BinOp::Sub => l.wrapping_sub(r),
+                    _ => l.wrapping_mul(r),
+                };
+                Value::Int(n as i128, Elem::LINT)
+            }
+            IrValue::Resized(v, to) => {
+                let v = self.value(f, v, ctx, line)?;
+                self.cut_string(f, v, to, ctx, line)
             }
         })
     }

@@ -602,6 +602,15 @@ pub fn call(
             }
             plain(n, args, ret)
         }
+        // As the emitter: INSERT and REPLACE cut to the capacity record it.
+        (StdCall::Plain(n), Some(k @ FaultKind::StringOverflow)) => {
+            let (v, cut) = string_fn(n, args, ret)
+                .ok_or_else(|| format!("{n}: unexpected argument types in the interpreter"))?;
+            if cut {
+                fault(k);
+            }
+            Ok(v)
+        }
         (StdCall::Plain(n), _) => plain(n, args, ret),
         // As the emitter: each step of CONCAT that truncates records a fault.
         (StdCall::Fold(n), Some(k @ FaultKind::StringOverflow)) => {

@@ -51,10 +51,81 @@
 //! The crate using `il!` depends on `il-std`, the runtime the generated code
 //! calls.
 
-use proc_macro::TokenStream;
+use il_codegen::expand::{SpanId, Tok, expand};
+use proc_macro::{Delimiter, Group, Ident, Literal, Punct, Spacing, Span, TokenStream, TokenTree};
 
 /// Compile IL to Rust items at the call site.
 #[proc_macro]
 pub fn il(input: TokenStream) -> TokenStream {
-    il_codegen::expand::expand(input.into()).into()
+    // The library reads the call; the spans stay here, numbered.
+    let mut spans = Vec::new();
+    let toks = tokens(input, &mut spans);
+    let out = expand(&toks);
+    let span = |id: SpanId| spans.get(id as usize).copied().unwrap_or_else(Span::call_site);
+    let mut items: TokenStream = out.code.parse().unwrap_or_else(|e| {
+        let msg = format!("internal error in the IL compiler: the generated Rust does not lex ({e})");
+        compile_error(&msg, Span::call_site())
+    });
+    for (msg, at) in &out.errors {
+        items.extend(compile_error(msg, span(*at)));
+    }
+    items
+}
+
+fn tokens(input: TokenStream, spans: &mut Vec<Span>) -> Vec<Tok> {
+    fn id(spans: &mut Vec<Span>, s: Span) -> SpanId {
+        spans.push(s);
+        (spans.len() - 1) as SpanId
+    }
+    input
+        .into_iter()
+        .map(|t| match t {
+            TokenTree::Literal(l) => Tok::Literal {
+                text: l.to_string(),
+                line: l.span().line(),
+                span: id(spans, l.span()),
+            },
+            TokenTree::Ident(i) => Tok::Ident(i.to_string(), id(spans, i.span())),
+            TokenTree::Punct(p) => Tok::Punct(p.as_char(), id(spans, p.span())),
+            TokenTree::Group(g) => {
+                let open = match g.delimiter() {
+                    Delimiter::Bracket => '[',
+                    Delimiter::Parenthesis => '(',
+                    Delimiter::Brace => '{',
+                    Delimiter::None => ' ',
+                };
+                let span = id(spans, g.span());
+                Tok::Group {
+                    open,
+                    inner: tokens(g.stream(), spans),
+                    span,
+                }
+            }
+        })
+        .collect()
+}
+
+/// `::core::compile_error!("msg");` at `span`.
+fn compile_error(msg: &str, span: Span) -> TokenStream {
+    let mut msg = Literal::string(msg);
+    msg.set_span(span);
+    let tree = |mut t: TokenTree| {
+        t.set_span(span);
+        t
+    };
+    let colons = || {
+        [
+            tree(Punct::new(':', Spacing::Joint).into()),
+            tree(Punct::new(':', Spacing::Alone).into()),
+        ]
+    };
+    let mut out: Vec<TokenTree> = Vec::new();
+    out.extend(colons());
+    out.push(Ident::new("core", span).into());
+    out.extend(colons());
+    out.push(Ident::new("compile_error", span).into());
+    out.push(tree(Punct::new('!', Spacing::Alone).into()));
+    out.push(tree(Group::new(Delimiter::Parenthesis, TokenTree::from(msg).into()).into()));
+    out.push(tree(Punct::new(';', Spacing::Alone).into()));
+    out.into_iter().collect()
 }

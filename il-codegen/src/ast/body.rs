@@ -310,8 +310,9 @@ pub struct VarRef {
 pub enum Accessor {
     /// `.name`: a field of a STRUCT or FB instance.
     Field(Ident),
-    /// Subscripts: literals, variables or direct addresses.
-    Index(Vec<Operand>, Span),
+    /// Subscripts, one per dimension: expressions over literals, variables
+    /// and direct addresses with `+ - *` (Ed.2 B.1.4.2).
+    Index(Vec<Subscript>, Span),
     /// Partial access (3rd edition): `.3` (size `Default`), `.%X3`, `.%B1`,
     /// `.%W0`, `.%D1`: the `index`-th bit, byte, word or double word.
     Part {
@@ -322,6 +323,46 @@ pub enum Accessor {
         /// The number (and `%X` etc.).
         span: Span,
     },
+}
+
+/// One subscript of an array access: `i`, `2 * i - 1`, `(i + 1) * 2`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Subscript {
+    /// A literal, variable or direct address.
+    Operand(Operand),
+    /// `lhs op rhs` with `op` one of `Add`, `Sub`, `Mul`.
+    Bin {
+        /// The operator.
+        op: ExprOp,
+        /// The left operand.
+        lhs: Box<Subscript>,
+        /// The right operand.
+        rhs: Box<Subscript>,
+        /// The whole expression.
+        span: Span,
+    },
+}
+
+impl Subscript {
+    /// Where the subscript is written.
+    pub fn span(&self) -> Span {
+        match self {
+            Subscript::Operand(o) => o.span(),
+            Subscript::Bin { span, .. } => *span,
+        }
+    }
+
+    /// Its operands, left to right (for tools that look for names).
+    pub fn operands(&self) -> Vec<&Operand> {
+        match self {
+            Subscript::Operand(o) => vec![o],
+            Subscript::Bin { lhs, rhs, .. } => {
+                let mut v = lhs.operands();
+                v.extend(rhs.operands());
+                v
+            }
+        }
+    }
 }
 
 /// The memory area of a direct address.
@@ -445,7 +486,9 @@ impl Instr {
             if let Operand::Var(v) = o {
                 for a in &v.path {
                     if let Accessor::Index(subs, _) = a {
-                        subs.iter().for_each(|s| operand(s, f));
+                        for s in subs {
+                            s.operands().into_iter().for_each(|o| operand(o, f));
+                        }
                     }
                 }
             }

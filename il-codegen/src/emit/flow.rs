@@ -394,6 +394,7 @@ impl PouEmitter<'_> {
                         let f = super::rust_ident(n);
                         let v = quote!(#path.#f);
                         let v = super::values::widened(if *neg { quote!(!#v) } else { v }, w);
+                        let v = self.fit_output(v, None, target, line);
                         self.write(target, v, line)
                     });
                     return self.cond(
@@ -431,6 +432,7 @@ impl PouEmitter<'_> {
                     src.path.push(crate::sema::ir::PathElem::Field(n.clone()));
                     let v = self.read(&src, line);
                     let v = super::values::widened(if *neg { quote!(!#v) } else { v }, w);
+                    let v = self.fit_output(v, None, target, line);
                     self.write(target, v, line)
                 });
                 self.cond(cond, line, quote!({ #(#lets)* #call #(#outs)* }))

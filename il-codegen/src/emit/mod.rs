@@ -452,7 +452,7 @@ fn retain_items(pou: &CheckedPou, opts: Options) -> TokenStream {
                 fields.push(quote!(#[doc = #doc] #sf pub #id: #ty,));
                 let mut depth = 0;
                 let mut t = &v.ty;
-                while let Ty::Array { elem, dims } = t {
+                while let Ty::Array { elem, dims, .. } = t {
                     depth += dims.len();
                     t = elem;
                 }

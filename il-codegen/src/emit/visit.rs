@@ -15,7 +15,10 @@ fn offer(name: &str, ty: &Ty, expr: TokenStream) -> TokenStream {
             // All dimensions, through arrays of arrays, and the element type.
             let mut dims = Vec::new();
             let mut elem = ty;
-            while let Ty::Array { dims: d, elem: e } = elem {
+            while let Ty::Array {
+                dims: d, elem: e, ..
+            } = elem
+            {
                 dims.extend(d.iter().copied());
                 elem = e;
             }

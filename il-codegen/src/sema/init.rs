@@ -119,7 +119,14 @@ pub(crate) fn init_value(
             }
             Some(Init::Struct(out))
         }
-        (Initializer::Array { elems, span }, Ty::Array { dims, elem }) => {
+        (
+            Initializer::Array { elems, span },
+            Ty::Array {
+                dims,
+                elem,
+                range: elem_range,
+            },
+        ) => {
             let total: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
             let mut out = Vec::new();
             // Each count is at most `total` (16 million): their sum over any
@@ -141,12 +148,9 @@ pub(crate) fn init_value(
                         return None;
                     }
                 };
-                let Some(Init::Const(c)) = init_value(cx, types, e, elem, None) else {
-                    if !matches!(e, Initializer::Simple(Operand::Lit(_))) {
-                        cx.err(UNSUPPORTED, e.span(), "array elements must be literals");
-                    }
-                    return None;
-                };
+                // A literal (checked against the element subrange), or a
+                // structure initialiser for an array of structures.
+                let c = init_value(cx, types, e, elem, elem_range.as_deref().copied())?;
                 len += n;
                 if n > 0 {
                     out.push((n as usize, c));

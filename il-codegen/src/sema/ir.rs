@@ -296,16 +296,38 @@ impl Storage {
     }
 }
 
+/// The value an element of the array type `t` starts with when nothing
+/// else is given, where it is not the element type's default: the lower
+/// limit of a subrange element type (IEC Ed.2 2.3.3.2; `ARRAY[1..3] OF
+/// INT (5..9)` starts as `[5, 5, 5]`). The emitter and the interpreter
+/// both build array defaults with it.
+pub fn element_start(t: &Ty) -> Option<Const> {
+    match t {
+        Ty::Array {
+            elem,
+            range: Some(r),
+            ..
+        } if r.0 != 0 => match **elem {
+            Ty::Elem(e) => Some(Const::Int(r.0, e)),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
 /// Initial values.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Init {
     /// A single value.
     Const(Const),
     /// Row-major elements of an array as runs `(count, value)`, in order;
-    /// the elements after the last run keep the default value. Runs, not the
+    /// the elements after the last run keep their default value
+    /// ([`element_start`], else the element type's). Runs, not the
     /// expanded list: `[16000000(0)]` is one run (expanded, a 60-byte
-    /// declaration took 1.5 GB and 13 s to check; found by fuzzing).
-    Array(Vec<(usize, Const)>),
+    /// declaration took 1.5 GB and 13 s to check; found by fuzzing). An
+    /// element is a constant or, for an array of structures, a structure
+    /// initialiser (`[(x := 1), (x := 2, y := 3)]`).
+    Array(Vec<(usize, Init)>),
     /// Inputs of an FB instance: `t : TON := (PT := T#1s)`.
     Fields(Vec<(String, Const)>),
     /// A structure: `(x := 1, inner := (y := 2))`, with each field's type.
@@ -463,6 +485,34 @@ pub enum Value {
     Saved(usize, Ty),
     /// A value converted implicitly to a wider type (3rd edition).
     Widen(Box<Value>, Widen),
+    /// A STRING (WSTRING) value given the capacity of the string type `ty`
+    /// ([`Ty::resizes_to`]): cut at that length, and a `StringOverflow`
+    /// fault recorded when that cut something off.
+    Resized(Box<Value>, Ty),
+    /// A subscript expression (`i + 1`, `2 * i`): `lhs op rhs` with `op`
+    /// `Add`, `Sub` or `Mul`, both sides (integers of any type) converted to
+    /// LINT and computed with wrapping; the value is a LINT. Only in
+    /// [`PathElem::Index`] subscripts.
+    Arith {
+        /// `Add`, `Sub` or `Mul`.
+        op: BinOp,
+        /// The left operand.
+        lhs: Box<Value>,
+        /// The right operand.
+        rhs: Box<Value>,
+    },
+}
+
+impl Value {
+    /// `v` as a value of type `to`: wrapped in [`Value::Resized`] when `from`
+    /// is a string of another capacity, else unchanged.
+    pub fn fit_string(v: Value, from: &Ty, to: &Ty) -> Value {
+        if from.resizes_to(to) {
+            Value::Resized(Box::new(v), to.clone())
+        } else {
+            v
+        }
+    }
 }
 
 /// An implicit widening conversion the checker applied (from its one table,

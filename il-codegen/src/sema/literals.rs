@@ -119,6 +119,27 @@ pub(crate) fn coerce(lit: &LitClass, ty: &Ty) -> Result<Const, String> {
     }
 }
 
+/// The type a literal takes as the other operand of a string of type `t`
+/// (strings are compared only): `t`, or for a string literal longer than
+/// `t`'s capacity a capacity that holds it, since strings of any two lengths
+/// compare by their contents (`LD s3 / EQ 'abcdef'` is FALSE, not an error).
+pub(crate) fn operand_ty(l: &LitClass, t: &Ty) -> Ty {
+    match (l, t) {
+        (LitClass::Str(s, w), Ty::Str { wide, len }) if w == wide => {
+            let n = if *w {
+                s.encode_utf16().count()
+            } else {
+                s.len()
+            };
+            Ty::Str {
+                wide: *wide,
+                len: (*len).max(u32::try_from(n).unwrap_or(u32::MAX)),
+            }
+        }
+        _ => t.clone(),
+    }
+}
+
 pub(crate) fn str_const(s: &str, wide: bool, len: u32, ty: &Ty) -> Result<Const, String> {
     let n = if wide {
         s.encode_utf16().count()

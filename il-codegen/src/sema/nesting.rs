@@ -29,7 +29,7 @@ enum Node<'a> {
 /// depth of the rest (elementary values, standard FBs).
 fn parts<'a>(ty: &'a Ty, env: &Env, out: &mut Vec<(Node<'a>, u32)>) -> u32 {
     let (mut t, mut dims) = (ty, 0u32);
-    while let Ty::Array { elem, dims: d } = t {
+    while let Ty::Array { elem, dims: d, .. } = t {
         dims = dims.saturating_add(d.len() as u32);
         t = elem;
     }

@@ -56,6 +56,17 @@ pub(crate) fn check_recursion(cxs: &mut [Cx], env: &Env, units: &[&ast::Compilat
             let ast::Item::Pou(p) = item else { continue };
             let me = p.name.key();
             let out = edges.entry(me.clone()).or_default();
+            // Where each variable is declared: an instance that closes a
+            // cycle is reported at its declaration, not at the POU's name.
+            let mut decl_at: HashMap<String, Span> = HashMap::new();
+            for n in p
+                .var_blocks
+                .iter()
+                .flat_map(|b| &b.decls)
+                .flat_map(|d| &d.names)
+            {
+                decl_at.entry(n.key()).or_insert(n.span);
+            }
             if let Some(sig) = env.pou(&me) {
                 for v in &sig.vars {
                     // An array of instances holds them too (`ARRAY OF Self`).
@@ -66,7 +77,8 @@ pub(crate) fn check_recursion(cxs: &mut [Cx], env: &Env, units: &[&ast::Compilat
                     if let Ty::Fb(t) = ty
                         && env.pou(t).is_some()
                     {
-                        out.push((t.to_ascii_uppercase(), f, p.name.span));
+                        let at = decl_at.get(&v.name.to_ascii_uppercase());
+                        out.push((t.to_ascii_uppercase(), f, *at.unwrap_or(&p.name.span)));
                     }
                 }
             }

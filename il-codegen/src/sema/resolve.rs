@@ -203,6 +203,10 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
             Some(Ty::Str { wide: *wide, len })
         }
         TypeSpec::Array { dims, elem, .. } => {
+            // `ARRAY ... OF INT (0..9)` or of a named subrange: the bounds
+            // go with the array type (elements start at the lower one, and
+            // stores into them are checked).
+            let range = fb_names.range_of(elem).map(Box::new);
             let elem = resolve_type(cx, fb_names, elem)?;
             let mut out = Vec::new();
             let mut total: i128 = 1;
@@ -232,6 +236,7 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
             Some(Ty::Array {
                 dims: out,
                 elem: Box::new(elem),
+                range,
             })
         }
         TypeSpec::Subrange { base, range, span } => {

@@ -58,7 +58,7 @@ fn size(env: &Env, t: &Ty, memo: &mut Sizes, depth: u32) -> u64 {
         Ty::Elem(e) => elem_bytes(*e),
         Ty::Str { wide, len } => (*len as u64 + 1) * if *wide { 2 } else { 1 } + 8,
         Ty::Enum(_) => 8,
-        Ty::Array { dims, elem } => {
+        Ty::Array { dims, elem, .. } => {
             let n = dims.iter().fold(1u64, |n, (lo, hi)| {
                 n.saturating_mul((hi - lo + 1).max(0) as u64)
             });
@@ -114,7 +114,7 @@ fn size(env: &Env, t: &Ty, memo: &mut Sizes, depth: u32) -> u64 {
 pub(crate) fn is_large(env: &Env, t: &Ty) -> bool {
     fn bytes(env: &Env, t: &Ty) -> u64 {
         match t {
-            Ty::Array { dims, elem } => dims
+            Ty::Array { dims, elem, .. } => dims
                 .iter()
                 .fold(1u64, |n, (lo, hi)| {
                     n.saturating_mul((hi - lo + 1).max(0) as u64)
@@ -136,9 +136,10 @@ pub(crate) fn is_large(env: &Env, t: &Ty) -> bool {
 /// element type for one dimension).
 pub(crate) fn row(t: &Ty) -> Ty {
     match t {
-        Ty::Array { dims, elem } if dims.len() > 1 => Ty::Array {
+        Ty::Array { dims, elem, range } if dims.len() > 1 => Ty::Array {
             dims: dims[1..].to_vec(),
             elem: elem.clone(),
+            range: range.clone(),
         },
         Ty::Array { elem, .. } => (**elem).clone(),
         _ => t.clone(),

@@ -68,6 +68,33 @@ fn in_class(t: &Ty, c: Class) -> bool {
     }
 }
 
+/// Derived types that the ANY-typed standard functions take besides the
+/// elementary ones (docs/semantics.md, "Calls"): an enumeration for those
+/// typed ANY (SEL, MUX, MOVE) and for EQ and NE (it is not ordered); a
+/// structure or an array for those typed ANY, unless it holds FB instances
+/// (they are not values). A subrange has its base type, so it is elementary.
+fn takes_derived(name: &str, t: &Ty, c: Class) -> bool {
+    match t {
+        Ty::Enum(_) => {
+            c == Class::Any || (c == Class::AnyElementary && matches!(name, "EQ" | "NE"))
+        }
+        Ty::Struct(_) => c == Class::Any,
+        Ty::Array { elem, .. } => {
+            c == Class::Any && !matches!(**elem, Ty::Fb(_)) && takes_derived_elem(elem)
+        }
+        _ => false,
+    }
+}
+
+/// An array's element type is a value (not an FB instance), also nested.
+fn takes_derived_elem(t: &Ty) -> bool {
+    match t {
+        Ty::Fb(_) => false,
+        Ty::Array { elem, .. } => takes_derived_elem(elem),
+        _ => true,
+    }
+}
+
 /// `LIMIT(MN : T, IN : T, MX : T) : T`
 pub(crate) fn describe(s: &Signature) -> String {
     let ty = |p: &ParamTy| match p {
@@ -185,6 +212,15 @@ pub(crate) fn resolve(
             match &t {
                 None => t = Some(ty.clone()),
                 Some(u) if u == ty => {}
+                // Strings of several lengths: the longest, which holds
+                // every argument uncut (a shorter one is resized up).
+                Some(u) if ty.resizes_to(u) => {
+                    if let (Ty::Str { len: have, .. }, Ty::Str { len: bound, .. }) = (ty, u)
+                        && have > bound
+                    {
+                        t = Some(ty.clone());
+                    }
+                }
                 Some(u) => {
                     return Err(err(
                         false,
@@ -212,6 +248,7 @@ pub(crate) fn resolve(
     }
     if let (Some(t), Some(c)) = (&t, t_class)
         && !in_class(t, c)
+        && !takes_derived(s.name, t, c)
     {
         return Err(err(
             false,
@@ -266,6 +303,7 @@ pub(crate) fn resolve(
         };
         if let ArgShape::Ty(have) = a
             && *have != ty
+            && !have.resizes_to(&ty)
         {
             return Err(err(
                 false,

@@ -210,6 +210,11 @@ pub enum Ty {
         dims: Vec<(i64, i64)>,
         /// The element type.
         elem: Box<Ty>,
+        /// The element type is a subrange of an integer type: its bounds.
+        /// The elements start at the lower one and every store into one is
+        /// range-checked (as for a subrange variable). Boxed: it would more
+        /// than double the size of every type (and of every IR value).
+        range: Option<Box<(i128, i128)>>,
     },
     /// An instance of a standard or user function block (name as declared).
     Fb(String),
@@ -242,6 +247,14 @@ impl Ty {
         matches!(self, Ty::Elem(e) if *e == BOOL || e.is_bitstring())
     }
 
+    /// Both are strings of one kind (STRING or WSTRING) with different
+    /// capacities: one type for assignment, parameters and comparison
+    /// (docs/semantics.md, "Types"); a value going to `to` is cut at its
+    /// length ([`super::ir::Value::Resized`]).
+    pub fn resizes_to(&self, to: &Ty) -> bool {
+        matches!((self, to), (Ty::Str { wide: a, len: m }, Ty::Str { wide: b, len: n }) if a == b && m != n)
+    }
+
     /// The Rust type, with `fb_path` giving the path of a function block type.
     pub fn rust(&self, fb_path: &dyn Fn(&str) -> TokenStream) -> TokenStream {
         match self {
@@ -254,7 +267,7 @@ impl Ty {
                 let n = *len as usize;
                 quote!(::il_std::WSTRING<#n>)
             }
-            Ty::Array { dims, elem } => {
+            Ty::Array { dims, elem, .. } => {
                 let mut t = elem.rust(fb_path);
                 for (lo, hi) in dims.iter().rev() {
                     let n = (hi - lo + 1) as usize;
@@ -271,13 +284,17 @@ impl Ty {
         match self {
             Ty::Elem(e) => e.mangle().to_string(),
             Ty::Str { wide, len } => format!("{}string{len}", if *wide { "w" } else { "" }),
-            Ty::Array { dims, elem } => {
+            Ty::Array { dims, elem, range } => {
                 let mut s = String::from("array");
                 for (lo, hi) in dims {
                     s.push_str(&format!("_{}_{}", lo, hi).replace('-', "m"));
                 }
                 s.push_str("_of_");
                 s.push_str(&elem.mangle());
+                if let Some(r) = range {
+                    let (lo, hi) = **r;
+                    s.push_str(&format!("_{lo}_{hi}").replace('-', "m"));
+                }
                 s
             }
             Ty::Fb(n) | Ty::Struct(n) | Ty::Enum(n) => n.to_ascii_lowercase(),
@@ -297,7 +314,7 @@ impl fmt::Display for Ty {
                     write!(f, "{kw}[{len}]")
                 }
             }
-            Ty::Array { dims, elem } => {
+            Ty::Array { dims, elem, range } => {
                 f.write_str("ARRAY[")?;
                 for (i, (lo, hi)) in dims.iter().enumerate() {
                     if i > 0 {
@@ -305,7 +322,11 @@ impl fmt::Display for Ty {
                     }
                     write!(f, "{lo}..{hi}")?;
                 }
-                write!(f, "] OF {elem}")
+                write!(f, "] OF {elem}")?;
+                match range.as_deref() {
+                    Some((lo, hi)) => write!(f, " ({lo}..{hi})"),
+                    None => Ok(()),
+                }
             }
             Ty::Fb(n) | Ty::Struct(n) | Ty::Enum(n) => f.write_str(n),
         }

@@ -4,9 +4,11 @@
 //! `tests/plc` runs; features not covered by `plc`), `plcopen` (a PLCopen
 //! project of the shared corpus), `user_types` (enumerations, structures,
 //! arrays, subranges, host paths), `addresses` (located variables and direct
-//! addresses in the process image).
+//! addresses in the process image), `corners` (the standard's corners of
+//! `tests/plc/corners.il`).
 
 mod addresses;
+mod corners;
 mod dialect;
 mod plc;
 mod plcopen;

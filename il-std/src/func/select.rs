@@ -42,6 +42,19 @@ pub fn MUX<T: Copy + Default>(K: i64, inputs: &[T]) -> (T, bool) {
     }
 }
 
+/// [`MUX`] as the compiler calls it: `IN0` apart, so that no `Default` is needed (structures
+/// and arrays of any size are selected too). `K = 0` is `IN0`, `K = n` is `rest[n - 1]`;
+/// out of range the result is `IN0` and the flag `true`.
+pub fn mux_checked<T: Copy>(K: i64, IN0: T, rest: &[T]) -> (T, bool) {
+    match K {
+        0 => (IN0, false),
+        _ => match usize::try_from(K).ok().and_then(|k| rest.get(k - 1)) {
+            Some(&v) => (v, false),
+            None => (IN0, true),
+        },
+    }
+}
+
 /// `GT`: `IN1 > IN2` (extensible: chain, `GT(a,b,c) = a > b AND b > c`).
 pub fn GT<T: PartialOrd>(IN1: T, IN2: T) -> bool {
     IN1 > IN2
@@ -92,6 +105,12 @@ mod tests {
         assert_eq!(MUX(3, &[10, 20, 30]), (10, true));
         assert_eq!(MUX(-1, &[10, 20, 30]), (10, true));
         assert_eq!(MUX::<i16>(0, &[]), (0, true));
+        assert_eq!(mux_checked(0, [1u8; 40], &[[2; 40]]), ([1; 40], false));
+        assert_eq!(mux_checked(1, 10, &[20, 30]), (20, false));
+        assert_eq!(mux_checked(2, 10, &[20, 30]), (30, false));
+        assert_eq!(mux_checked(3, 10, &[20, 30]), (10, true));
+        assert_eq!(mux_checked(-1, 10, &[20, 30]), (10, true));
+        assert_eq!(mux_checked(i64::MIN, 10, &[]), (10, true));
         let a = STRING::<8>::from_str_truncating("abc").0;
         let b = STRING::<8>::from_str_truncating("abd").0;
         assert_eq!(MAX(a, b), b);

@@ -123,6 +123,14 @@ pub fn replace_checked<S: AnyString, S2: AnyString<Unit = S::Unit>, I: AnyInt, J
     build::<S>(&[a, IN2.units(), b])
 }
 
+/// A string of another capacity (the caller's type decides which) with the characters of
+/// `IN`, plus `true` if some were cut off: what an assignment, a parameter or an output of
+/// another `STRING[n]` length does (not an IEC function; the generated code records
+/// `StringOverflow` on `true`).
+pub fn resize_checked<S: AnyString, T: AnyString<Unit = S::Unit>>(IN: S) -> (T, bool) {
+    T::from_units_truncating(IN.units())
+}
+
 /// `FIND`: the 1-based position of the first occurrence of `IN2` in `IN1`, 0 if there is none
 /// (or if `IN2` is empty).
 pub fn FIND<S: AnyString, S2: AnyString<Unit = S::Unit>>(IN1: S, IN2: S2) -> i16 {
@@ -186,6 +194,16 @@ mod tests {
         assert_eq!(t(REPLACE(s("ABCDE"), s("XYZ"), 0, 1)), "XYZABCDE");
         assert_eq!(t(REPLACE(s("ABC"), s("XY"), 9, 9)), "ABCXY");
         assert!(replace_checked(s("ABCDEFGHIJ"), s("XY"), 1, 1).1);
+    }
+
+    #[test]
+    fn resize() {
+        let (r, cut): (STRING<3>, bool) = resize_checked(s("ABCDE"));
+        assert_eq!((r.as_str(), cut), (Some("ABC"), true));
+        let (r, cut): (STRING<80>, bool) = resize_checked(s("ABCDE"));
+        assert_eq!((r.as_str(), cut), (Some("ABCDE"), false));
+        let (r, cut): (STRING<5>, bool) = resize_checked(s("ABCDE"));
+        assert_eq!((r.as_str(), cut), (Some("ABCDE"), false));
     }
 
     #[test]

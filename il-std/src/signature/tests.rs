@@ -59,7 +59,9 @@ fn faults_are_in_the_table() {
         .collect();
     assert_eq!(
         faulting,
-        ["DIV", "MOD", "TRUNC", "MUX", "CONCAT", "DIV_TIME"]
+        [
+            "DIV", "MOD", "TRUNC", "MUX", "CONCAT", "INSERT", "REPLACE", "DIV_TIME"
+        ]
     );
 }
 

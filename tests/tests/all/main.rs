@@ -6,6 +6,7 @@
 
 mod addresses;
 mod annex_f;
+mod corners;
 mod dialect;
 mod differential;
 mod edge_cases;

@@ -178,8 +178,8 @@ impl Builder<'_> {
                         }
                     }
                 }
-                Accessor::Index(ops, _) => {
-                    for o in ops {
+                Accessor::Index(subs, _) => {
+                    for o in subs.iter().flat_map(|s| s.operands()) {
                         self.operand(ix, pou, o);
                     }
                 }

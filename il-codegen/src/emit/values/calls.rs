@@ -53,6 +53,7 @@ impl PouEmitter<'_> {
         let stores = outputs.iter().map(|(k, place, neg, w)| {
             let id = &ids[*k];
             let v = widened(if *neg { quote!(!#id) } else { quote!(#id) }, w);
+            let v = self.fit_output(v, out_types.get(*k), place, line);
             self.write(place, v, line)
         });
         quote!({

@@ -73,8 +73,12 @@ pub(crate) fn constant(c: &Const) -> TokenStream {
 /// The default value of a type (IEC: 0, FALSE, T#0s, '').
 pub(crate) fn default_value(t: &Ty) -> TokenStream {
     match t {
-        Ty::Array { dims, elem } => {
-            let mut v = default_value(elem);
+        Ty::Array { dims, elem, .. } => {
+            // An array of a subrange starts at its lower limit.
+            let mut v = match crate::sema::ir::element_start(t) {
+                Some(c) => constant(&c),
+                None => default_value(elem),
+            };
             for _ in dims {
                 v = quote!(::core::array::from_fn(|_| #v));
             }
@@ -98,7 +102,12 @@ pub(crate) fn heap_init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
         (Some(Init::Array(_)), Ty::Array { .. }) => array_init(t, init, true),
         (_, Ty::Array { dims, .. }) => {
             let n = dims.first().map_or(0, |(lo, hi)| (hi - lo + 1) as usize);
-            let d = default_value(&crate::sema::size::row(t));
+            // One dimension: the row is the element, which may start at a
+            // subrange's lower limit.
+            let d = match (dims.len(), crate::sema::ir::element_start(t)) {
+                (1, Some(c)) => constant(&c),
+                _ => default_value(&crate::sema::size::row(t)),
+            };
             quote!(::il_std::heap::from_fn(#n, |_| #d))
         }
         _ => default_value(t),
@@ -110,7 +119,7 @@ pub(crate) fn heap_init_value(t: &Ty, init: Option<&Init>) -> TokenStream {
 pub(super) fn array_init(t: &Ty, init: Option<&Init>, heap: bool) -> TokenStream {
     match (init, t) {
         (Some(Init::Const(c)), _) => constant(c),
-        (Some(Init::Array(items)), Ty::Array { dims, elem }) => {
+        (Some(Init::Array(items)), Ty::Array { dims, elem, .. }) => {
             // A `match` on the flat index, one arm per run of equal values
             // (neighbouring runs of one value merged), keeps `[1000(0)]` small.
             let mut arms = Vec::new();
@@ -123,7 +132,7 @@ pub(super) fn array_init(t: &Ty, init: Option<&Init>, heap: bool) -> TokenStream
                     n += items[k].0;
                 }
                 let (a, b) = (start, start + n - 1);
-                let v = constant(v);
+                let v = init_value(elem, Some(v));
                 arms.push(if a == b {
                     quote!(#a => #v,)
                 } else {
@@ -132,7 +141,10 @@ pub(super) fn array_init(t: &Ty, init: Option<&Init>, heap: bool) -> TokenStream
                 start += n;
                 k += 1;
             }
-            let d = default_value(elem);
+            let d = match crate::sema::ir::element_start(t) {
+                Some(c) => constant(&c),
+                None => default_value(elem),
+            };
             let sizes: Vec<usize> = dims.iter().map(|(lo, hi)| (hi - lo + 1) as usize).collect();
             let idx: Vec<_> = (0..dims.len()).map(|k| format_ident!("__i{}", k)).collect();
             // Row-major flat index: i0 * (n1 * n2) + i1 * n2 + i2.

@@ -119,9 +119,13 @@ impl PouEmitter<'_> {
                                 __v
                             })
                         }
-                        // DIV, MOD, DIV_TIME by an integer zero: the `*_checked`
+                        // DIV, MOD, DIV_TIME by an integer zero, INSERT and
+                        // REPLACE cut to the capacity: the `*_checked`
                         // companion gives the result and the flag.
-                        (StdCall::Plain(n), Some(k @ FaultKind::DivisionByZero)) => {
+                        (
+                            StdCall::Plain(n),
+                            Some(k @ (FaultKind::DivisionByZero | FaultKind::StringOverflow)),
+                        ) => {
                             let f = format_ident!("{}_checked", n.to_ascii_lowercase());
                             let fault = self.fault_of(*k, line);
                             quote!({
@@ -173,9 +177,11 @@ impl PouEmitter<'_> {
                             let fault =
                                 self.fault_of(k.unwrap_or(FaultKind::InvalidArgument), line);
                             let k = &args[0];
-                            let ins = &args[1..];
+                            let in0 = &args[1];
+                            let rest = &args[2..];
                             quote!({
-                                let (__v, __bad) = ::il_std::func::MUX(#k as i64, &[#(#ins),*]);
+                                let (__v, __bad) =
+                                    ::il_std::func::mux_checked(#k as i64, #in0, &[#(#rest),*]);
                                 if __bad { #fault; }
                                 __v
                             })

@@ -40,6 +40,26 @@ impl PouEmitter<'_> {
                 quote!(#id)
             }
             Value::Widen(inner, w) => widened(self.value(inner, line), &Some(*w)),
+            Value::Arith { op, lhs, rhs } => {
+                let l = self.value(lhs, line);
+                let r = self.value(rhs, line);
+                let f = match op {
+                    BinOp::Add => quote!(wrapping_add),
+                    BinOp::Sub => quote!(wrapping_sub),
+                    _ => quote!(wrapping_mul),
+                };
+                quote!((#l as i64).#f(#r as i64))
+            }
+            Value::Resized(v, to) => {
+                let v = self.value(v, line);
+                let t = rust_ty(to);
+                let fault = self.fault("StringOverflow", line);
+                quote!({
+                    let (__s, __cut): (#t, bool) = ::il_std::func::resize_checked(#v);
+                    if __cut { #fault; }
+                    __s
+                })
+            }
         }
     }
 
@@ -189,6 +209,10 @@ impl PouEmitter<'_> {
         match s {
             Value::Cr(_) | Value::Const(_) | Value::Saved(..) => true,
             Value::Widen(v, _) => self.inline_subscript(v, p, first),
+            Value::Resized(..) => false,
+            Value::Arith { lhs, rhs, .. } => {
+                self.inline_subscript(lhs, p, first) && self.inline_subscript(rhs, p, first)
+            }
             Value::Read(q) => {
                 !Self::has_index(q)
                     && (first || q.root != p.root)
@@ -223,6 +247,33 @@ impl PouEmitter<'_> {
         let fault = self.fault("IndexOutOfRange", line);
         let d = default_value(&p.ty);
         self.access(p, false, line, |place| place, quote!({ #fault; #d }))
+    }
+
+    /// An output (tokens of a value read from a block or function) going to
+    /// `target`: a string target of another capacity gets it cut at its
+    /// length, with a `StringOverflow` fault (`from`: the output's type, when
+    /// known; a string target is always fitted otherwise, which is a plain
+    /// copy for the same capacity).
+    pub(crate) fn fit_output(
+        &self,
+        v: TokenStream,
+        from: Option<&Ty>,
+        target: &Place,
+        line: u32,
+    ) -> TokenStream {
+        let Ty::Str { .. } = &target.ty else {
+            return v;
+        };
+        if from.is_some_and(|t| !t.resizes_to(&target.ty)) {
+            return v;
+        }
+        let t = rust_ty(&target.ty);
+        let fault = self.fault("StringOverflow", line);
+        quote!({
+            let (__s, __cut): (#t, bool) = ::il_std::func::resize_checked(#v);
+            if __cut { #fault; }
+            __s
+        })
     }
 
     /// Store `value` (already evaluated tokens) into a place.
@@ -292,6 +343,8 @@ pub(super) fn value_elem(v: &Value) -> Option<Elem> {
         Value::Const(c) => c.ty().elem(),
         Value::Read(p) => p.ty.elem(),
         Value::Widen(_, w) => Some(w.to),
+        Value::Resized(_, t) => t.elem(),
+        Value::Arith { .. } => Some(Elem::LINT),
     }
 }
 

@@ -8,7 +8,7 @@
 use super::codes::*;
 use super::env::{Env, PouSig};
 use super::ir::{self, BinOp, CheckedPou, Const, Expr, Op, PathElem, Place, Root, Value};
-use super::literals::{LitClass, PendArg, Pending, coerce, describe, lit_class};
+use super::literals::{LitClass, PendArg, Pending, coerce, describe, lit_class, operand_ty};
 use super::types::{Elem, Ty};
 use super::{Cx, stdfb, stdfn, suggest};
 use crate::ast::{
@@ -22,6 +22,7 @@ mod instr;
 mod operands;
 mod operators;
 mod places;
+mod subscripts;
 mod values;
 
 pub use operators::default_const;

@@ -98,7 +98,8 @@ impl Walk<'_, '_> {
         let lhs = typed(lhs, &rhs);
         let (ty, lv, rv) = match (lhs, rhs) {
             (Arg::Typed(lv, t), Arg::Typed(rv, u)) => {
-                if t == u {
+                // Strings of any two lengths compare by their contents.
+                if t == u || t.resizes_to(&u) {
                     (t, lv, rv)
                 } else if let Some(w) = super::super::widen::wider(&t, &u) {
                     // 3rd edition: both sides go to the wider type, and so does the CR.
@@ -116,14 +117,18 @@ impl Walk<'_, '_> {
                     return bad;
                 }
             }
-            (Arg::Typed(lv, t), Arg::Lit(l, s)) => match self.lit_value(&l, &t, s, TYPE_MISMATCH) {
-                Some(v) => (t, lv, v),
-                None => return bad,
-            },
-            (Arg::Lit(l, s), Arg::Typed(rv, t)) => match self.lit_value(&l, &t, s, TYPE_MISMATCH) {
-                Some(v) => (t, v, rv),
-                None => return bad,
-            },
+            (Arg::Typed(lv, t), Arg::Lit(l, s)) => {
+                match self.lit_value(&l, &operand_ty(&l, &t), s, TYPE_MISMATCH) {
+                    Some(v) => (t, lv, v),
+                    None => return bad,
+                }
+            }
+            (Arg::Lit(l, s), Arg::Typed(rv, t)) => {
+                match self.lit_value(&l, &operand_ty(&l, &t), s, TYPE_MISMATCH) {
+                    Some(v) => (t, v, rv),
+                    None => return bad,
+                }
+            }
             // Two literals were folded above.
             (Arg::Lit(..), Arg::Lit(..)) => return bad,
         };

@@ -144,8 +144,12 @@ impl Walk<'_, '_> {
                     ty = mty;
                 }
                 Accessor::Index(subs, span) => {
-                    range = None;
-                    let Ty::Array { dims, elem } = &ty else {
+                    let Ty::Array {
+                        dims,
+                        elem,
+                        range: elem_range,
+                    } = &ty
+                    else {
                         self.err(
                             BAD_INDEX,
                             *span,
@@ -165,41 +169,12 @@ impl Walk<'_, '_> {
                         );
                         return None;
                     }
+                    // An element of an array of a subrange is range-checked.
+                    range = elem_range.as_deref().copied();
                     let (dims, elem) = (dims.clone(), (**elem).clone());
                     let mut vals = Vec::new();
                     for (s, (lo, hi)) in subs.iter().zip(&dims) {
-                        match self.operand(s)? {
-                            Arg::Typed(val, t) if t.elem().is_some_and(Elem::is_int) => {
-                                vals.push(val)
-                            }
-                            Arg::Typed(_, t) => {
-                                self.err(
-                                    BAD_INDEX,
-                                    s.span(),
-                                    format!("a subscript must be an integer, not {t}"),
-                                );
-                                return None;
-                            }
-                            Arg::Lit(LitClass::Int(n), sp) => {
-                                if n < *lo as i128 || n > *hi as i128 {
-                                    self.err(
-                                        BAD_INDEX,
-                                        sp,
-                                        format!("subscript {n} is outside the bounds {lo}..{hi}"),
-                                    );
-                                    return None;
-                                }
-                                vals.push(Value::Const(Const::Int(n, Elem::LINT)));
-                            }
-                            Arg::Lit(l, sp) => {
-                                self.err(
-                                    BAD_INDEX,
-                                    sp,
-                                    format!("a subscript must be an integer, not {}", describe(&l)),
-                                );
-                                return None;
-                            }
-                        }
+                        vals.push(self.subscript(s, *lo, *hi)?);
                     }
                     path.push(PathElem::Index { dims, subs: vals });
                     ty = elem;

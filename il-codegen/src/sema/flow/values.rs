@@ -100,6 +100,7 @@ impl Walk<'_, '_> {
     pub(super) fn fit_to(&mut self, arg: Arg, ty: &Ty, span: Span, dest: &str) -> Option<Value> {
         if let Arg::Typed(v, t) = &arg
             && t != ty
+            && !t.resizes_to(ty)
         {
             if let Some(w) = self.widen(v.clone(), t, ty, span) {
                 return Some(w);
@@ -123,6 +124,8 @@ impl Walk<'_, '_> {
     pub(super) fn fit(&mut self, arg: Arg, ty: &Ty, span: Span) -> Option<Value> {
         match arg {
             Arg::Typed(v, t) if t == *ty => Some(v),
+            // Another STRING length: cut at the target's (docs/semantics.md, "Types").
+            Arg::Typed(v, t) if t.resizes_to(ty) => Some(Value::fit_string(v, &t, ty)),
             Arg::Typed(v, t) => {
                 if let Some(w) = self.widen(v, &t, ty, span) {
                     return Some(w);
@@ -146,7 +149,9 @@ impl Walk<'_, '_> {
         place: &Place,
         span: Span,
     ) -> Result<Option<ir::Widen>, ()> {
-        if place.ty == *ty {
+        // Another STRING length is cut by the store (the emitter's and the
+        // interpreter's `fit_output`).
+        if place.ty == *ty || ty.resizes_to(&place.ty) {
             return Ok(None);
         }
         if let Some(w) = super::super::widen::widening(ty, &place.ty) {

@@ -274,6 +274,16 @@ impl<'a> Lexer<'a> {
                 }
             }
             b'0'..=b'9' => self.number(start, None),
+            // Inside a subscript `+ - *` are operators (`a[i + 1]`, `a[i-1]`);
+            // a sign right after `[`, `,` or an operator belongs to a number.
+            b'+' | b'-' | b'*' if body && self.nest > 0 && self.subscript_operator(c) => {
+                let t = match c {
+                    b'+' => Tok::Plus,
+                    b'-' => Tok::Minus,
+                    _ => Tok::Star,
+                };
+                self.punct(start, 1, t);
+            }
             b'-' | b'+' if self.peek(1).is_ascii_digit() => self.number(start, None),
             b'\'' | b'"' => {
                 if let Some((kind, end)) = self.string(start) {
@@ -376,6 +386,17 @@ impl<'a> Lexer<'a> {
                 self.push(start, Tok::Error, self.pos);
             }
         }
+    }
+
+    /// Whether `c` (`+`, `-` or `*` inside brackets) is a subscript
+    /// operator: `*` always, a sign only after an operand.
+    fn subscript_operator(&self, c: u8) -> bool {
+        c == b'*'
+            || !self.peek(1).is_ascii_digit()
+            || matches!(
+                self.last_tok(),
+                Some(Tok::Ident(_) | Tok::Lit(_) | Tok::Addr(_) | Tok::RBracket | Tok::RParen)
+            )
     }
 
     pub(super) fn punct(&mut self, start: usize, n: usize, t: Tok) {

@@ -112,6 +112,12 @@ pub enum Tok {
     Dot,
     /// `..`
     DotDot,
+    /// `+` in a subscript (`a[i + 1]`).
+    Plus,
+    /// `-` in a subscript (`a[i - 1]`).
+    Minus,
+    /// `*` in a subscript (`m[2 * i]`).
+    Star,
     // Declaration keywords.
     /// `VAR`, `VAR_INPUT`, `VAR_OUTPUT`, `VAR_IN_OUT`, `VAR_EXTERNAL`, `VAR_GLOBAL`, `VAR_TEMP`.
     Var(VarKind),

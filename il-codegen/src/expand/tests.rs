@@ -1,0 +1,160 @@
+use super::{CALL_SITE, Expansion, Tok, expand};
+
+fn s(v: &str) -> Tok {
+    Tok::string(v, 1)
+}
+fn id(x: &str) -> Tok {
+    Tok::Ident(x.to_string(), 2)
+}
+fn p(c: char) -> Tok {
+    Tok::Punct(c, 3)
+}
+fn text(e: &Expansion) -> String {
+    let errs: Vec<&str> = e.errors.iter().map(|(m, _)| m.as_str()).collect();
+    format!("{}\n{}", e.code, errs.join("\n"))
+}
+
+const IL: &str = "FUNCTION_BLOCK F\nVAR x : INT; END_VAR\n    LD x\n    ST x\nEND_FUNCTION_BLOCK\n";
+
+#[test]
+fn serde_flag_derives_and_unknown_flags_are_refused() {
+    let plain = expand(&[s(IL)]);
+    assert!(plain.errors.is_empty() && !plain.code.contains("serde"), "{}", text(&plain));
+    let with = expand(&[s(IL), p(','), id("serde")]);
+    assert!(with.code.contains(":: serde :: Serialize"), "{}", text(&with));
+    let with_comma = expand(&[s(IL), p(','), id("serde"), p(',')]);
+    assert_eq!(with.code, with_comma.code);
+    let bad = expand(&[s(IL), p(','), id("serdes")]);
+    assert!(bad.code.is_empty() && bad.errors[0].0.contains("serde"), "{}", text(&bad));
+    assert_eq!(bad.errors[0].1, 2, "the error is at the unknown flag");
+    let trailing = expand(&[s(IL), p(',')]);
+    assert_eq!(trailing.code, plain.code);
+}
+
+#[test]
+fn malformed_calls_say_how_il_is_called() {
+    let cases: Vec<(Vec<Tok>, &str)> = vec![
+        (vec![], "il! takes"),
+        (vec![id("file")], "il! takes"),
+        (vec![id("file"), p('='), id("x")], "il! takes"),
+        (vec![id("files"), p('='), s("a.il")], "il! takes"),
+        (
+            vec![
+                id("files"),
+                p('='),
+                Tok::Group {
+                    open: '[',
+                    inner: vec![],
+                    span: 4,
+                },
+            ],
+            "lists no file",
+        ),
+        (
+            vec![
+                id("files"),
+                p('='),
+                Tok::Group {
+                    open: '[',
+                    inner: vec![s("a.il"), p(','), s("a.il")],
+                    span: 4,
+                },
+            ],
+            "`a.il` is listed twice",
+        ),
+        (vec![s(IL), s(IL)], "il! takes"),
+        (
+            vec![Tok::Literal {
+                text: "b\"LD x\"".into(),
+                line: 1,
+                span: 5,
+            }],
+            "il! takes",
+        ),
+        (vec![id("r#file"), p('='), s("a.il")], "il! takes"),
+    ];
+    for (toks, want) in cases {
+        let e = expand(&toks);
+        assert!(e.code.is_empty(), "{toks:?}");
+        assert_eq!(e.errors.len(), 1, "{toks:?}");
+        assert!(e.errors[0].0.contains(want), "{toks:?}: {}", e.errors[0].0);
+    }
+    // A missing token is reported at the call.
+    assert_eq!(expand(&[id("file"), p('=')]).errors[0].1, CALL_SITE);
+}
+
+#[test]
+fn raw_and_escaped_literals_are_read_as_rust_reads_them() {
+    let raw = Tok::Literal {
+        text: format!("r#\"{IL}\"#"),
+        line: 7,
+        span: 1,
+    };
+    let escaped = Tok::Literal {
+        text: format!("{IL:?}"),
+        line: 7,
+        span: 1,
+    };
+    assert_eq!(expand(&[raw]).code, expand(&[escaped]).code);
+    // Errors count lines from the literal's line.
+    let bad = Tok::Literal {
+        text: "r\"FUNCTION_BLOCK F\nVAR x : INT; END_VAR\n    LD y\nEND_FUNCTION_BLOCK\n\"".into(),
+        line: 10,
+        span: 6,
+    };
+    let e = expand(&[bad]);
+    assert_eq!(e.errors[0].1, 6);
+    assert!(e.errors[0].0.contains("line 12"), "{}", e.errors[0].0);
+    assert!(e.code.contains("struct F"), "stubs: {}", e.code);
+}
+
+#[test]
+fn an_input_over_16_mib_is_refused_with_its_code() {
+    let mut il = String::from("PROGRAM P\nVAR x : INT; END_VAR\n");
+    while il.len() <= super::MAX_MACRO_INPUT / 2 {
+        il.push_str("    LD x\n    ST x\n");
+    }
+    // Two files of 8 MiB each: the limit is on the call, not per file.
+    let dir = std::env::temp_dir().join(format!("il-expand-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (a, b) = (dir.join("a.il"), dir.join("b.il"));
+    std::fs::write(&a, format!("{il}END_PROGRAM\n")).unwrap();
+    std::fs::write(
+        &b,
+        format!("{}END_PROGRAM\n", il.replace("PROGRAM P", "PROGRAM Q")),
+    )
+    .unwrap();
+    let (a, b) = (a.display().to_string(), b.display().to_string());
+    let files = Tok::Group {
+        open: '[',
+        inner: vec![s(&a), p(','), s(&b)],
+        span: 4,
+    };
+    let out = expand(&[id("files"), p('='), files]);
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(out.errors[0].0.contains("IL0035"), "{}", out.errors[0].0);
+    assert!(out.code.is_empty(), "nothing is compiled");
+}
+
+#[test]
+fn std_option_selects_the_standard() {
+    let il = "PROGRAM P\nVAR s : SINT; i : INT; END_VAR\n    LD s\n    ST i\nEND_PROGRAM\n";
+    let plain = expand(&[s(il)]);
+    assert!(plain.errors.is_empty(), "{}", text(&plain));
+    let iec2013 = expand(&[s(il), p(','), id("std"), p('='), s("iec2013")]);
+    assert_eq!(iec2013.code, plain.code);
+    let strict = expand(&[
+        s(il),
+        p(','),
+        id("serde"),
+        p(','),
+        id("std"),
+        p('='),
+        s("IEC2003"),
+    ]);
+    let msg = &strict.errors[0].0;
+    assert!(msg.contains("IL0302"), "{msg}");
+    assert!(msg.contains("implicit conversion SINT → INT is a 3rd-edition feature"));
+    let bad = expand(&[s(il), p(','), id("std"), p('='), s("iec1993")]);
+    assert!(bad.errors[0].0.contains("unknown standard `iec1993`"), "{}", text(&bad));
+}
