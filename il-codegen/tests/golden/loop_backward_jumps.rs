@@ -19,18 +19,18 @@ pub fn SumTo(__ctx: &mut ::il_std::Cycle, mut __v_n: i32) -> i32 {
     let mut __cr_bool: bool = false;
     let mut __v_i: i32 = 0i32;
     let mut __v_acc: i32 = 0i32;
-    '__l1: {
-        // 5: LD   0
-        // 6: ST   acc
-        __v_acc = 0i32;
-        // 7: ST   i
-        __v_i = 0i32;
-        __cr_dint = 0i32;
-        '__c0: loop {
-            // 8: next:   LD   i
-            __cr_dint = __v_i;
-            // 9: GE   n
-            __cr_bool = __cr_dint >= __v_n;
+    // 5: LD   0
+    // 6: ST   acc
+    __v_acc = 0i32;
+    // 7: ST   i
+    __v_i = 0i32;
+    __cr_dint = 0i32;
+    '__c0: loop {
+        // 8: next:   LD   i
+        __cr_dint = __v_i;
+        // 9: GE   n
+        __cr_bool = __cr_dint >= __v_n;
+        '__l1: {
             // 10: JMPC done
             if __cr_bool {
                 break '__l1;
