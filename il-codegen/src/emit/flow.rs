@@ -90,8 +90,9 @@ fn structure(stmts: &[Stmt], label_pos: &[Option<usize>]) -> Option<Vec<Region>>
         });
     }
     // A block starts at its first jump, moved up to the start of any region
-    // it would otherwise start inside of and end after (a loop holding a
-    // jump but not the label, another block), until all nest. Starting at
+    // it would otherwise start inside of and end at or after (a loop holding
+    // a jump but not the label: a label right after the loop's last jump is
+    // outside it; another block), until all nest. Starting at
     // the top of the body instead nested every label's block around all
     // the code before it: 40 labels were 40 levels of indentation, 79% of
     // the bytes of the 10k-line benchmark's output.
@@ -105,7 +106,7 @@ fn structure(stmts: &[Stmt], label_pos: &[Option<usize>]) -> Option<Vec<Region>>
             let r = regions[b];
             if let Some(lo) = regions
                 .iter()
-                .filter(|s| s.lo < r.lo && r.lo < s.hi && s.hi < r.hi)
+                .filter(|s| s.lo < r.lo && r.lo < s.hi && s.hi <= r.hi)
                 .map(|s| s.lo)
                 .min()
             {

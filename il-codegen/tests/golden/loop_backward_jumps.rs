@@ -25,12 +25,12 @@ pub fn SumTo(__ctx: &mut ::il_std::Cycle, mut __v_n: i32) -> i32 {
     // 7: ST   i
     __v_i = 0i32;
     __cr_dint = 0i32;
-    '__c0: loop {
-        // 8: next:   LD   i
-        __cr_dint = __v_i;
-        // 9: GE   n
-        __cr_bool = __cr_dint >= __v_n;
-        '__l1: {
+    '__l1: {
+        '__c0: loop {
+            // 8: next:   LD   i
+            __cr_dint = __v_i;
+            // 9: GE   n
+            __cr_bool = __cr_dint >= __v_n;
             // 10: JMPC done
             if __cr_bool {
                 break '__l1;
