@@ -74,7 +74,7 @@ impl Mixed {
         for (h, &r) in self.hist.iter_mut().zip(&self.raw) {
             let v = scale(r, 0.125);
             *h = v;
-            sum = v + sum;
+            sum += v; // IL: v + sum (IEEE addition commutes exactly)
             if v > 100.0 {
                 high = high.wrapping_add(1);
             }
@@ -83,7 +83,7 @@ impl Mixed {
         self.phase = (self.phase + 1) % 40;
         let mut target = sum / 32.0;
         if self.phase >= 20 {
-            target = target + 50.0;
+            target += 50.0;
         }
         self.ax.target = target;
         self.ax.enable = self.run;
