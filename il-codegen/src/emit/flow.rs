@@ -4,8 +4,8 @@
 //! - Jumps that nest (see `structure`): a label reached by backward jumps
 //!   opens a labelled `loop` that ends after the last of them (`JMP L` is
 //!   `continue 'L`); a label reached by forward jumps closes a labelled block
-//!   that starts at the top of the innermost loop holding the jumps and the
-//!   label, or at the top of the body (`JMP L` is `break 'L`).
+//!   that starts at the first jump to it, or further up where it would
+//!   otherwise cross a loop or another block (`JMP L` is `break 'L`).
 //! - Any other pattern (a jump into a loop, overlapping loops): a dispatcher
 //!   loop over the code between labels, `__pc` holding the next block.
 
