@@ -119,6 +119,11 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
             });
             quote!(#st { #(#fs,)* })
         });
+        // VAR_IN_OUTs: the global itself (disjoint fields of `self`).
+        let inouts = pi.inouts.iter().map(|(_, g)| {
+            let (_, path) = global(g);
+            quote!(&mut #path,)
+        });
         let outs = pi.outputs.iter().map(|(n, g)| {
             let f = rust_ident(n);
             let (v, path) = global(g);
@@ -128,11 +133,15 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
                 None => quote!(#path = #src;),
             }
         });
+        let copy_in = super::config_vars::copies(c, r, p, true);
+        let copy_out = super::config_vars::copies(c, r, p, false);
         let (tname, pname) = (task, &pi.name);
         quote! {
             __trace(#tname, #pname);
             #(#sets)*
-            #base.#inst.call(__ctx, #ext);
+            #copy_in
+            #base.#inst.call(__ctx, #(#inouts)* #ext);
+            #copy_out
             #(#outs)*
             __ran += 1;
         }
@@ -141,15 +150,9 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
         let task = &c.resources[r].tasks[t];
         let due = format_ident!("__due_{}", k);
         let st = &state_ids[k];
-        let ns = task.interval;
-        let single = match &task.single {
-            Some(g) => {
-                let v = read_global(g);
-                quote!(::core::option::Option::Some(#v))
-            }
-            None => quote!(::core::option::Option::None),
-        };
-        dues.extend(quote!(let #due = self.#st.due(__now, ::il_std::TIME(#ns), #single);));
+        let single = super::tasks::single(task.single.as_ref(), &read_global);
+        let interval = super::tasks::interval(&task.interval, &read_global);
+        dues.extend(quote!(let #due = self.#st.due(__now, #interval, #single);));
         let progs: Vec<_> = c.resources[r]
             .programs
             .iter()
@@ -159,13 +162,9 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
             .collect();
         runs.extend(quote!(if #due { #(#progs)* }));
         let res_name = c.resources[r].name.clone().unwrap_or_default();
-        let single_name = match &task.single {
-            Some(g) => {
-                let n = &global(g).0.name;
-                quote!(::core::option::Option::Some(#n))
-            }
-            None => quote!(::core::option::Option::None),
-        };
+        let global_name = |g: &GlobalRef| global(g).0.name.clone();
+        let (_, single_name) = super::tasks::info(task.single.as_ref(), &global_name);
+        let (ns, interval_from) = super::tasks::info(Some(&task.interval), &global_name);
         let pnames = c.resources[r]
             .programs
             .iter()
@@ -174,7 +173,7 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
         let (tn, prio) = (&task.name, task.priority);
         infos.push(quote!(::il_std::TaskInfo {
             name: #tn, resource: #res_name, interval: ::il_std::TIME(#ns), priority: #prio,
-            single: #single_name, programs: &[#(#pnames),*],
+            interval_from: #interval_from, single: #single_name, programs: &[#(#pnames),*],
         }));
     }
     // Programs without a task run on every call, after the tasks.
@@ -186,12 +185,29 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
         }
     }
     let ntasks = tasks.len();
+    let cfg_inits = super::config_vars::inits(c);
+    let fresh = quote! {
+        Self {
+            #inits
+            #prog_inits
+            #res_inits
+            #(#state_ids: ::il_std::TaskState::new(),)*
+        }
+    };
+    // VAR_CONFIG initial values go onto the fresh configuration.
+    let new_self = if cfg_inits.is_empty() {
+        fresh
+    } else {
+        quote!(let mut __s = #fresh; #cfg_inits __s)
+    };
+    let access = super::access::methods(c);
     let retain = retain_items(c, &name, opts);
     let located = c
         .globals
         .iter()
         .chain(c.resources.iter().flat_map(|r| &r.globals))
-        .filter_map(|v| v.location.as_ref().map(|l| super::io::located(&v.name, l)));
+        .filter_map(|v| v.location.as_ref().map(|l| super::io::located(&v.name, l)))
+        .chain(super::config_vars::located(c));
     let mut io_accessors = TokenStream::new();
     for r in &c.resources {
         let prefix = r.name.as_ref().map(|n| format!("{n}_")).unwrap_or_default();
@@ -233,12 +249,7 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
         #[allow(dead_code, clippy::all)]
         impl ::core::default::Default for #name {
             fn default() -> Self {
-                Self {
-                    #inits
-                    #prog_inits
-                    #res_inits
-                    #(#state_ids: ::il_std::TaskState::new(),)*
-                }
+                #new_self
             }
         }
 
@@ -253,6 +264,7 @@ pub(crate) fn emit_config(c: &ConfigDef, opts: super::Options) -> TokenStream {
             /// The located globals (`AT %...`), which live in `Cycle::io`.
             pub const ADDRESSES: &'static [::il_std::Located] = &[#(#located),*];
             #io_accessors
+            #access
 
             /// Runs every task released at `__ctx.now()`, highest priority
             /// first (each task's programs in declaration order), then the

@@ -16,10 +16,12 @@ pub(super) fn addresses(pou: &CheckedPou) -> Vec<TokenStream> {
         .iter()
         .filter_map(|v| v.location.as_ref().map(|l| (v.name.as_str(), l)));
     let direct = pou.addresses.iter().map(|l| (l.text.as_str(), l));
-    located
+    let mut out: Vec<TokenStream> = located
         .chain(direct)
         .map(|(name, l)| self::located(name, l))
-        .collect()
+        .collect();
+    out.extend(super::partly::unbound(&pou.vars));
+    out
 }
 
 /// An `il_std::Located` entry of an `ADDRESSES` table.
@@ -30,7 +32,7 @@ pub(super) fn located(name: &str, l: &Loc) -> TokenStream {
         Some(b) => quote!(::core::option::Option::Some(#b)),
         None => quote!(::core::option::Option::None),
     };
-    quote!(::il_std::Located { name: #name, address: #text, area: #area, byte: #byte, bit: #bit, ty: #ty })
+    quote!(::il_std::Located { name: #name, address: #text, area: #area, byte: #byte, bit: #bit, ty: #ty, bound: true })
 }
 
 /// `io_NAME(ctx) -> T` and `set_io_NAME(ctx, v: T)` for every located

@@ -86,7 +86,15 @@ mod tests {
         assert_eq!(string_value("\"a\r\nb\"").unwrap(), "a\nb");
         assert_eq!(string_value(r##"r#"LD "x" \n"#"##).unwrap(), r#"LD "x" \n"#);
         assert_eq!(string_value(r#"r"x""#).unwrap(), "x");
-        for bad in ["b\"x\"", "c\"x\"", "1", "'x'", r#""\q""#, r#""\x80""#, "\"x"] {
+        for bad in [
+            "b\"x\"",
+            "c\"x\"",
+            "1",
+            "'x'",
+            r#""\q""#,
+            r#""\x80""#,
+            "\"x",
+        ] {
             assert!(string_value(bad).is_err(), "{bad}");
         }
     }

@@ -19,13 +19,25 @@ const IL: &str = "FUNCTION_BLOCK F\nVAR x : INT; END_VAR\n    LD x\n    ST x\nEN
 #[test]
 fn serde_flag_derives_and_unknown_flags_are_refused() {
     let plain = expand(&[s(IL)]);
-    assert!(plain.errors.is_empty() && !plain.code.contains("serde"), "{}", text(&plain));
+    assert!(
+        plain.errors.is_empty() && !plain.code.contains("serde"),
+        "{}",
+        text(&plain)
+    );
     let with = expand(&[s(IL), p(','), id("serde")]);
-    assert!(with.code.contains(":: serde :: Serialize"), "{}", text(&with));
+    assert!(
+        with.code.contains(":: serde :: Serialize"),
+        "{}",
+        text(&with)
+    );
     let with_comma = expand(&[s(IL), p(','), id("serde"), p(',')]);
     assert_eq!(with.code, with_comma.code);
     let bad = expand(&[s(IL), p(','), id("serdes")]);
-    assert!(bad.code.is_empty() && bad.errors[0].0.contains("serde"), "{}", text(&bad));
+    assert!(
+        bad.code.is_empty() && bad.errors[0].0.contains("serde"),
+        "{}",
+        text(&bad)
+    );
     assert_eq!(bad.errors[0].1, 2, "the error is at the unknown flag");
     let trailing = expand(&[s(IL), p(',')]);
     assert_eq!(trailing.code, plain.code);
@@ -156,5 +168,9 @@ fn std_option_selects_the_standard() {
     assert!(msg.contains("IL0302"), "{msg}");
     assert!(msg.contains("implicit conversion SINT → INT is a 3rd-edition feature"));
     let bad = expand(&[s(il), p(','), id("std"), p('='), s("iec1993")]);
-    assert!(bad.errors[0].0.contains("unknown standard `iec1993`"), "{}", text(&bad));
+    assert!(
+        bad.errors[0].0.contains("unknown standard `iec1993`"),
+        "{}",
+        text(&bad)
+    );
 }

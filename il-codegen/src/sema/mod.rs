@@ -3,6 +3,9 @@
 
 mod address;
 pub mod codes;
+mod config_args;
+mod config_tasks;
+mod config_vars;
 mod configuration;
 mod decls;
 mod env;
@@ -13,6 +16,7 @@ mod interface;
 pub mod ir;
 mod literals;
 mod nesting;
+mod partly;
 mod recursion;
 mod resolve;
 pub(crate) mod size;

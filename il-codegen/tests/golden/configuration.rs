@@ -27,6 +27,7 @@ impl Fast {
             byte: 0usize,
             bit: ::core::option::Option::Some(1u8),
             ty: "BOOL",
+            bound: true,
         },
     ];
     /// `lamp` (%QX0.1 BOOL) as the process image holds it now.
@@ -258,6 +259,7 @@ impl Plant {
             resource: "Cpu",
             interval: ::il_std::TIME(10000000i64),
             priority: 1u32,
+            interval_from: ::core::option::Option::None,
             single: ::core::option::Option::None,
             programs: &["fast"],
         },
@@ -266,6 +268,7 @@ impl Plant {
             resource: "Cpu",
             interval: ::il_std::TIME(1000000000i64),
             priority: 5u32,
+            interval_from: ::core::option::Option::None,
             single: ::core::option::Option::None,
             programs: &["slow"],
         },
@@ -279,6 +282,7 @@ impl Plant {
             byte: 0usize,
             bit: ::core::option::Option::Some(1u8),
             ty: "BOOL",
+            bound: true,
         },
     ];
     /// `lamp` (%QX0.1 BOOL) as the process image holds it now.

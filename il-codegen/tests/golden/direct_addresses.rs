@@ -25,6 +25,7 @@ impl Io {
             byte: 6usize,
             bit: ::core::option::Option::None,
             ty: "INT",
+            bound: true,
         },
         ::il_std::Located {
             name: "count",
@@ -33,6 +34,7 @@ impl Io {
             byte: 8usize,
             bit: ::core::option::Option::None,
             ty: "INT",
+            bound: true,
         },
         ::il_std::Located {
             name: "%IX0.3",
@@ -41,6 +43,7 @@ impl Io {
             byte: 0usize,
             bit: ::core::option::Option::Some(3u8),
             ty: "BOOL",
+            bound: true,
         },
         ::il_std::Located {
             name: "%QX1.0",
@@ -49,6 +52,7 @@ impl Io {
             byte: 1usize,
             bit: ::core::option::Option::Some(0u8),
             ty: "BOOL",
+            bound: true,
         },
         ::il_std::Located {
             name: "%IW2",
@@ -57,6 +61,7 @@ impl Io {
             byte: 4usize,
             bit: ::core::option::Option::None,
             ty: "WORD",
+            bound: true,
         },
     ];
     /// `level` (%IW3 INT) as the process image holds it now.

@@ -140,7 +140,7 @@ impl<'a> Lexer<'a> {
             (Mode::Config, Tok::EndConfiguration) => self.mode = Mode::Top,
             (Mode::Config, Tok::Resource) => self.in_resource = true,
             (Mode::Config, Tok::EndResource) => self.in_resource = false,
-            (Mode::Config, Tok::Var(_)) => {
+            (Mode::Config, Tok::Var(_) | Tok::VarConfig | Tok::VarAccess) => {
                 self.mode = Mode::Var;
                 self.var_ret = Mode::Config;
             }

@@ -123,6 +123,14 @@ pub enum Tok {
     Var(VarKind),
     /// `END_VAR`
     EndVar,
+    /// `VAR_CONFIG` (in a CONFIGURATION)
+    VarConfig,
+    /// `VAR_ACCESS` (in a CONFIGURATION or RESOURCE)
+    VarAccess,
+    /// `READ_WRITE`
+    ReadWrite,
+    /// `READ_ONLY`
+    ReadOnly,
     /// `CONSTANT`
     Constant,
     /// `RETAIN`
