@@ -60,9 +60,9 @@ impl Fast {
         let mut __cr_bool: bool = false;
         let mut __cr_dint: i32 = 0i32;
         '__body: {
+            // 8: LD  enable
+            __cr_bool = __s_enable;
             '__l0: {
-                // 8: LD  enable
-                __cr_bool = __s_enable;
                 // 9: JMPCN done
                 if !__cr_bool {
                     break '__l0;
@@ -142,11 +142,11 @@ impl Slow {
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle, mut __ext: Slow__Ext<'_>) {
         let mut __cr_dint: i32 = 0i32;
         let mut __cr_bool: bool = false;
+        // 23: LD  ticks
+        __cr_dint = (*__ext.ticks);
+        // 24: GE  limit
+        __cr_bool = __cr_dint >= (*__ext.limit);
         '__l0: {
-            // 23: LD  ticks
-            __cr_dint = (*__ext.ticks);
-            // 24: GE  limit
-            __cr_bool = __cr_dint >= (*__ext.limit);
             // 25: JMPCN keep
             if !__cr_bool {
                 break '__l0;
