@@ -24,6 +24,10 @@ fn big(lines: usize) -> SourceFile {
     SourceFile::new("big.il", generator::big_pou(lines, 1))
 }
 
+fn labels(lines: usize) -> SourceFile {
+    SourceFile::new("labels.il", generator::big_pou_labels(lines, 1))
+}
+
 fn straight(lines: usize) -> SourceFile {
     SourceFile::new("straight.il", generator::big_pou_straight(lines, 1))
 }
@@ -101,6 +105,28 @@ mod one_pou {
     #[divan::bench(args = LINES, max_time = 4)]
     fn whole_to_file(b: Bencher, lines: usize) {
         bench_to_file(b, big(lines));
+    }
+}
+
+/// One POU in MATIEC's style: a label every 45 lines (about 2,200 in
+/// 100k lines) and jumps between them, forward and backward. Up to 1M
+/// lines for parse and check, to show they stay linear.
+mod many_labels {
+    use super::*;
+
+    const LABEL_LINES: [usize; 3] = [10_000, 100_000, 1_000_000];
+
+    #[divan::bench(args = LABEL_LINES, max_time = 4)]
+    fn parse(b: Bencher, lines: usize) {
+        bench_parse(b, labels(lines));
+    }
+    #[divan::bench(args = LABEL_LINES, max_time = 4)]
+    fn check(b: Bencher, lines: usize) {
+        bench_check(b, labels(lines));
+    }
+    #[divan::bench(args = [10_000, 100_000], max_time = 4)]
+    fn whole(b: Bencher, lines: usize) {
+        bench_whole(b, labels(lines));
     }
 }
 

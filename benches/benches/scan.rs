@@ -7,9 +7,8 @@
 //! `cargo bench -p il-bench --bench scan`
 
 use divan::{Bencher, black_box};
-use il_bench::generator::XorShift;
 use il_bench::{generated as g, hand as h};
-use il_std::{Cycle, TIME};
+use il_std::Cycle;
 use std::time::{Duration, Instant};
 
 fn main() {
@@ -19,24 +18,9 @@ fn main() {
     }
 }
 
-const TICK: TIME = TIME::from_ms(10);
+use il_bench::inputs::{TICK, go, interlock_x as interlock_inputs, raw, samples};
 
-fn interlock_inputs() -> [bool; 64] {
-    let mut r = XorShift::new(5);
-    core::array::from_fn(|_| r.below(3) != 0)
-}
-
-fn samples() -> [i16; 256] {
-    let mut r = XorShift::new(9);
-    core::array::from_fn(|_| r.next_u64() as i16 >> 4)
-}
-
-fn go() -> [bool; 100] {
-    let mut r = XorShift::new(3);
-    core::array::from_fn(|_| r.below(4) != 0)
-}
-
-/// The four programs, set up with the same inputs on both sides.
+/// The programs, set up with the same inputs on both sides.
 struct Progs {
     ctx: Cycle,
     gi: g::Interlock,
@@ -48,6 +32,8 @@ struct Progs {
     gl: g::BlocksLoop,
     gp: g::ArrayProc,
     hp: h::ArrayProc,
+    gm: g::Mixed,
+    hm: h::Mixed,
 }
 
 impl Progs {
@@ -63,6 +49,8 @@ impl Progs {
             gl: g::BlocksLoop::default(),
             gp: g::ArrayProc::default(),
             hp: h::ArrayProc::default(),
+            gm: g::Mixed::default(),
+            hm: h::Mixed::default(),
         };
         p.gi.x = interlock_inputs();
         p.hi.x = p.gi.x;
@@ -71,6 +59,8 @@ impl Progs {
         p.gl.go = p.gb.go;
         p.gp.samples = samples();
         p.hp.samples = p.gp.samples;
+        p.gm.raw = raw();
+        p.hm.raw = p.gm.raw;
         p
     }
 }
@@ -154,6 +144,26 @@ mod array_proc {
     fn hand(b: Bencher) {
         let mut p = Progs::new();
         b.bench_local(|| black_box(&mut p.hp).call());
+    }
+}
+
+mod mixed {
+    use super::*;
+    #[divan::bench]
+    fn generated(b: Bencher) {
+        let mut p = Progs::new();
+        b.bench_local(|| {
+            p.ctx.advance(TICK);
+            black_box(&mut p.gm).call(black_box(&mut p.ctx))
+        });
+    }
+    #[divan::bench]
+    fn hand(b: Bencher) {
+        let mut p = Progs::new();
+        b.bench_local(|| {
+            p.ctx.advance(TICK);
+            black_box(&mut p.hm).call(black_box(&mut p.ctx))
+        });
     }
 }
 
@@ -244,5 +254,19 @@ fn ratios() {
         500,
         || black_box(&mut p.gp).call(black_box(&mut p.ctx)),
         || black_box(&mut p.hp).call(),
+    );
+    let mut pm = Progs::new();
+    let mut ctx4 = Cycle::new();
+    ab(
+        "mixed",
+        2000,
+        || {
+            pm.ctx.advance(TICK);
+            black_box(&mut pm.gm).call(black_box(&mut pm.ctx))
+        },
+        || {
+            ctx4.advance(TICK);
+            black_box(&mut pm.hm).call(black_box(&mut ctx4))
+        },
     );
 }

@@ -11,6 +11,7 @@
 pub mod generator; // `gen` is a reserved word in edition 2024
 
 pub mod hand;
+pub mod inputs;
 
 /// The scan benchmark programs, generated from `plc/*.il` by `build.rs`.
 pub mod generated {
@@ -19,4 +20,5 @@ pub mod generated {
     include!(concat!(env!("OUT_DIR"), "/blocks.rs"));
     include!(concat!(env!("OUT_DIR"), "/blocks_loop.rs"));
     include!(concat!(env!("OUT_DIR"), "/interlock.rs"));
+    include!(concat!(env!("OUT_DIR"), "/mixed.rs"));
 }

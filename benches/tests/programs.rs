@@ -125,3 +125,52 @@ fn blocks_loop_same_outputs() {
     }
     assert!(counted > 1000, "the counters count: {counted}");
 }
+
+#[test]
+fn mixed_same_outputs() {
+    let mut rng = XorShift::new(11);
+    let (mut ca, mut cb) = (Cycle::new(), Cycle::new());
+    let (mut a, mut b) = (g::Mixed::default(), h::Mixed::default());
+    let (mut high, mut moved) = (0, 0.0f32);
+    for scan in 0..400 {
+        // New samples every 50 scans; the program's phase flips the target
+        // every 20 scans, so the axis moves, settles and times out.
+        if scan % 50 == 0 {
+            for k in 0..32 {
+                let v = rng.next_u64() as i16 >> (scan % 7 + 2);
+                a.raw[k] = v;
+                b.raw[k] = v;
+            }
+        }
+        a.run = scan % 173 < 150;
+        b.run = a.run;
+        let before = a.pos;
+        a.call(&mut ca);
+        b.call(&mut cb);
+        assert_eq!(
+            (
+                a.sum.to_bits(),
+                a.high,
+                a.alarms,
+                a.pos.to_bits(),
+                a.hist.map(f32::to_bits)
+            ),
+            (
+                b.sum.to_bits(),
+                b.high,
+                b.alarms,
+                b.pos.to_bits(),
+                b.hist.map(f32::to_bits)
+            ),
+            "scan {scan}"
+        );
+        high += b.high;
+        moved += (a.pos - before).abs();
+        ca.advance(TIME::from_ms(10));
+        cb.advance(TIME::from_ms(10));
+    }
+    assert!(high > 100, "samples above 100.0 are counted: {high}");
+    assert!(moved > 100.0, "the axis moves: {moved}");
+    assert!(b.alarms >= 5, "slow moves are counted: {}", b.alarms);
+    assert_eq!(ca.fault_count(), 0);
+}

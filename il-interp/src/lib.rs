@@ -18,6 +18,7 @@
 //! ```
 
 mod calls;
+mod config;
 mod constants;
 mod expressions;
 mod flow;
@@ -26,6 +27,7 @@ mod places;
 mod stdfn;
 mod values;
 
+pub use config::ConfigMachine;
 pub use constants::parse_literal;
 pub use host::HostPlace;
 /// The runtime the interpreter runs on (for front ends without their own dependency).
@@ -103,7 +105,9 @@ fn find_var(pou: &CheckedPou, name: &str) -> Option<usize> {
 
 /// Whether the instance holds `v` between calls: its memory
 /// ([`Storage::Instance`]) and, unlike generated code, its VAR_EXTERNALs
-/// ([`Storage::External`] says why).
+/// ([`Storage::External`] says why). A VAR_IN_OUT is the caller's: a
+/// [`ConfigMachine`] copies the bound global in and out around each run of
+/// a PROGRAM (and a PROGRAM run alone keeps it, unseen, at its default).
 fn held(v: &Var) -> bool {
     matches!(v.storage, Storage::Instance | Storage::External)
 }
@@ -112,22 +116,7 @@ impl Machine {
     /// An instance of the PROGRAM or FUNCTION_BLOCK `name` (case-insensitive)
     /// with its declared initial values.
     pub fn new(prog: &Program, name: &str) -> Result<Machine, String> {
-        let names = prog
-            .pous
-            .iter()
-            .map(|p| &*Box::leak(p.name.clone().into_boxed_str()))
-            .collect();
-        let mut m = Machine {
-            prog: std::sync::Arc::new(prog.clone()),
-            names,
-            inst: Instance {
-                pou: 0,
-                vars: Vec::new(),
-                edge_mem: Vec::new(),
-            },
-            steps: 0,
-            error_located: false,
-        };
+        let mut m = Machine::bare(prog);
         let Some(pou) = m
             .prog
             .pous
@@ -152,6 +141,26 @@ impl Machine {
         };
         m.inst = m.new_instance(pou)?;
         Ok(m)
+    }
+
+    /// A machine without an instance yet (a configuration holds its own).
+    pub(crate) fn bare(prog: &Program) -> Machine {
+        let names = prog
+            .pous
+            .iter()
+            .map(|p| &*Box::leak(p.name.clone().into_boxed_str()))
+            .collect();
+        Machine {
+            prog: std::sync::Arc::new(prog.clone()),
+            names,
+            inst: Instance {
+                pou: 0,
+                vars: Vec::new(),
+                edge_mem: Vec::new(),
+            },
+            steps: 0,
+            error_located: false,
+        }
     }
 
     /// The POU this machine runs.

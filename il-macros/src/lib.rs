@@ -61,9 +61,15 @@ pub fn il(input: TokenStream) -> TokenStream {
     let mut spans = Vec::new();
     let toks = tokens(input, &mut spans);
     let out = expand(&toks);
-    let span = |id: SpanId| spans.get(id as usize).copied().unwrap_or_else(Span::call_site);
+    let span = |id: SpanId| {
+        spans
+            .get(id as usize)
+            .copied()
+            .unwrap_or_else(Span::call_site)
+    };
     let mut items: TokenStream = out.code.parse().unwrap_or_else(|e| {
-        let msg = format!("internal error in the IL compiler: the generated Rust does not lex ({e})");
+        let msg =
+            format!("internal error in the IL compiler: the generated Rust does not lex ({e})");
         compile_error(&msg, Span::call_site())
     });
     for (msg, at) in &out.errors {
@@ -125,7 +131,9 @@ fn compile_error(msg: &str, span: Span) -> TokenStream {
     out.extend(colons());
     out.push(Ident::new("compile_error", span).into());
     out.push(tree(Punct::new('!', Spacing::Alone).into()));
-    out.push(tree(Group::new(Delimiter::Parenthesis, TokenTree::from(msg).into()).into()));
+    out.push(tree(
+        Group::new(Delimiter::Parenthesis, TokenTree::from(msg).into()).into(),
+    ));
     out.push(tree(Punct::new(';', Spacing::Alone).into()));
     out.into_iter().collect()
 }

@@ -12,9 +12,13 @@ pub struct TaskInfo {
     pub resource: &'static str,
     /// `INTERVAL` (`T#0s`: no periodic release).
     pub interval: TIME,
+    /// The TIME global whose value is the interval, when `INTERVAL` names one
+    /// (then `interval` is `T#0s`).
+    pub interval_from: Option<&'static str>,
     /// `PRIORITY` (0 is the highest).
     pub priority: u32,
-    /// The BOOL global named by `SINGLE`, if any.
+    /// What `SINGLE` reads, if anything: a BOOL global's name or a bit
+    /// address (`"%IX0.0"`); `None` also for a literal `SINGLE := TRUE`.
     pub single: Option<&'static str>,
     /// The program instances it runs, in order.
     pub programs: &'static [&'static str],

@@ -67,12 +67,12 @@ END_VAR
 END_FUNCTION_BLOCK
 "#); }
 
-// Calls: LIMIT on an INT CR with a REAL upper bound (all LIMIT arguments have one type).
+// Calls: LIMIT on an INT CR with a UINT upper bound (one type; neither widens into the other).
 mod limit_wrong_arg_type { il_macros::il!(r#"
 FUNCTION_BLOCK Fb
 VAR
     n : INT;
-    hi : REAL;
+    hi : UINT;
     q : INT;
 END_VAR
     LD n

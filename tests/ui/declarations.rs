@@ -142,8 +142,8 @@ END_VAR
 END_FUNCTION_BLOCK
 "#); }
 
-// Declarations: VAR_IN_OUT of a PROGRAM is not supported (IL0121): share the
-// variable through VAR_GLOBAL / VAR_EXTERNAL instead.
+// Declarations: a PROGRAM's VAR_IN_OUT must be bound where the
+// configuration instantiates it (IL0130).
 mod var_in_out { il_macros::il!(r#"
 PROGRAM Main
 VAR_IN_OUT
@@ -153,6 +153,9 @@ END_VAR
     ADD 1
     ST n
 END_PROGRAM
+CONFIGURATION Plant
+    PROGRAM main1 : Main;
+END_CONFIGURATION
 "#); }
 
 // Semantics: a FUNCTION declaring a TON instance (a FUNCTION has no memory between calls).

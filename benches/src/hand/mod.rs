@@ -4,7 +4,9 @@
 //! that generated code is measured against.
 
 mod interlock;
+mod mixed;
 pub use interlock::Interlock;
+pub use mixed::{Axis, Mixed};
 
 use il_std::{CTU, Cycle, R_TRIG, TIME, TON};
 

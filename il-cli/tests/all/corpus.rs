@@ -122,7 +122,10 @@ const EXPECTED: &[Entry] = &[
     ),
     // `pv := maxval` passes a SINT into CTU's INT input: an implicit widening
     // (3rd edition), accepted by default (`corpus_under_iec2003` shows it
-    // refused there). Only the `dbg` built-in is left.
+    // refused there). Only the `dbg` built-in is left: echidna's own debug
+    // print, not IEC, so it stays refused by name (IL0114) rather than being
+    // given a meaning here; without that line the file compiles and runs
+    // (`echidna_ctu_without_dbg_runs`).
     ok(
         "61131_echidna_ctu.il",
         Refuse {
@@ -326,4 +329,44 @@ fn corpus_under_iec2003() {
     assert!(errors.iter().any(|(c, ..)| c == "IL0301"), "{errors:?}");
     let (_, errors) = check(&dir.join("beremiz_matiec_identifier_as_variable2.test"));
     assert!(!errors.iter().any(|(c, ..)| c == "IL0301" || c == "IL0025"));
+}
+
+/// The echidna `ctu` file minus its `dbg` line (echidna's debug print, the
+/// one non-IEC call): it compiles, its configuration included, and counts.
+#[test]
+fn echidna_ctu_without_dbg_runs() {
+    let dir = corpus_dir();
+    let Ok(text) = std::fs::read_to_string(dir.join("61131_echidna_ctu.il")) else {
+        println!("SKIPPED: ../shared/corpus not found");
+        return;
+    };
+    let kept: Vec<&str> = text
+        .lines()
+        .filter(|l| !l.trim_start().starts_with("dbg"))
+        .collect();
+    assert_eq!(kept.len() + 1, text.lines().count(), "one dbg line");
+    let tmp = std::env::temp_dir().join(format!("echidna_ctu_{}.il", std::process::id()));
+    std::fs::write(&tmp, kept.join("\n")).unwrap();
+    let (status, errors) = check(&tmp);
+    assert_eq!((status, errors.len()), (0, 0), "{errors:?}");
+    let o = Command::new(env!("CARGO_BIN_EXE_ilc"))
+        .args(["run", "--cycles", "3", "--watch", "count.CV"])
+        .arg(&tmp)
+        .output()
+        .expect("run ilc");
+    let _ = std::fs::remove_file(&tmp);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        o.status.success(),
+        "{out}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    // CU is TRUE on every call, so CTU counts once (one rising edge); R is
+    // the previous Q (CV >= PV = 10), which stays FALSE.
+    let cv: Vec<&str> = out
+        .lines()
+        .skip(1)
+        .map(|l| l.split_whitespace().last().unwrap_or(""))
+        .collect();
+    assert_eq!(cv, ["1", "1", "1"], "{out}");
 }

@@ -51,9 +51,15 @@ END_PROGRAM
     (
         "IL0121",
         "\
-PROGRAM Main
-VAR_IN_OUT a : INT; END_VAR   (* in-outs of a PROGRAM: use globals *)
+FUNCTION F : INT
+VAR_INPUT a : INT; END_VAR
     LD   a
+    ST   F
+END_FUNCTION
+PROGRAM Main
+VAR b : BOOL; END_VAR
+    LD   b
+    CALC F(a := 1)   (* CALC of a FUNCTION: jump around a plain call *)
 END_PROGRAM
 ",
     ),

@@ -12,6 +12,10 @@ pub struct Configuration {
     /// Resources; a configuration without RESOURCE gets one unnamed resource
     /// holding its tasks and programs (`name` = None).
     pub resources: Vec<Resource>,
+    /// The declarations of its `VAR_CONFIG` blocks.
+    pub var_config: Vec<ConfigVar>,
+    /// The declarations of its `VAR_ACCESS` blocks.
+    pub var_access: Vec<AccessVar>,
     /// `CONFIGURATION` to `END_CONFIGURATION`.
     pub span: Span,
 }
@@ -63,5 +67,40 @@ pub struct ProgramInstance {
     /// `a := x` binds an input to a global or a constant, `b => y` an output to a global.
     pub args: Vec<ParamAssign>,
     /// `PROGRAM` to `;`.
+    pub span: Span,
+}
+
+/// `Res.Prog.fb.x AT %QX1.0 : BOOL := TRUE;` in VAR_CONFIG (Ed.2 2.7.1): an
+/// address for a variable declared `AT %Q*`, and/or an initial value, for
+/// one variable inside one program instance.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConfigVar {
+    /// The instance path: resource (if named), program instance, FB
+    /// instances, variable.
+    pub path: Vec<Ident>,
+    /// `AT %QX1.0`
+    pub location: Option<DirectAddress>,
+    /// The type, which must be the variable's.
+    pub ty: TypeSpec,
+    /// `:= init`
+    pub init: Option<Initializer>,
+    /// From the path to the `;`.
+    pub span: Span,
+}
+
+/// `name : Res.Prog.x : INT READ_WRITE;` in VAR_ACCESS: an access path the
+/// configuration offers to the host.
+#[derive(Clone, Debug, PartialEq)]
+pub struct AccessVar {
+    /// The access path's name.
+    pub name: Ident,
+    /// What it names: a global (`g`), or a variable of a program instance
+    /// (`Res.Prog.x`, `Prog.x`).
+    pub path: Vec<Ident>,
+    /// The type, which must be the variable's.
+    pub ty: TypeSpec,
+    /// `READ_WRITE` (true) or `READ_ONLY` (false, also when omitted).
+    pub writable: bool,
+    /// From the name to the `;`.
     pub span: Span,
 }

@@ -83,7 +83,14 @@ impl SourceFile {
         let offset = (offset as usize).min(self.text.len());
         let line = self.line_starts.partition_point(|&s| s <= offset) - 1;
         let start = self.line_starts[line];
-        let col = self.chars_before(offset) - self.chars_before(start);
+        // Most columns are a few bytes from the line start: count those
+        // directly; far ones from the nearest block (long lines stay linear).
+        let col = match self.text.as_bytes().get(start..offset) {
+            Some(rest) if rest.len() <= CHAR_BLOCK => {
+                rest.iter().filter(|&&b| starts_char(b)).count()
+            }
+            _ => self.chars_before(offset) - self.chars_before(start),
+        };
         (line + 1, col + 1)
     }
 

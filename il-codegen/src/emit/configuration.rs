@@ -113,6 +113,12 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
             });
             format!(", {st} {{ {} }}", join(fs, ", "))
         };
+        // VAR_IN_OUTs: the global itself (disjoint fields of `self`).
+        let inouts: String = pi
+            .inouts
+            .iter()
+            .map(|(_, g)| format!(", &mut {}", global(g).1))
+            .collect();
         let outs: String = pi
             .outputs
             .iter()
@@ -126,22 +132,21 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
                 }
             })
             .collect();
+        let copy_in = super::config_vars::copies(c, r, p, true);
+        let copy_out = super::config_vars::copies(c, r, p, false);
         let (tname, pname) = (str_lit(task), str_lit(&pi.name));
         format!(
-            "__trace({tname}, {pname}); {sets} {base}.{inst}.call(__ctx{ext}); {outs} __ran += 1;"
+            "__trace({tname}, {pname}); {sets} {copy_in} {base}.{inst}.call(__ctx{inouts}{ext}); {copy_out} {outs} __ran += 1;"
         )
     };
     for (k, &(r, t)) in tasks.iter().enumerate() {
         let task = &c.resources[r].tasks[t];
         let due = format!("__due_{k}");
         let st = &state_ids[k];
-        let ns = task.interval;
-        let single = match &task.single {
-            Some(g) => format!("::core::option::Option::Some({})", read_global(g)),
-            None => "::core::option::Option::None".to_string(),
-        };
+        let single = super::tasks::single(task.single.as_ref(), &read_global);
+        let interval = super::tasks::interval(&task.interval, &read_global);
         dues.push_str(&format!(
-            "let {due} = self.{st}.due(__now, ::il_std::TIME({ns}i64), {single});"
+            "let {due} = self.{st}.due(__now, {interval}, {single});"
         ));
         let progs: Vec<_> = c.resources[r]
             .programs
@@ -152,13 +157,9 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
             .collect();
         runs.push_str(&format!("if {due} {{ {} }}", progs.concat()));
         let res_name = str_lit(&c.resources[r].name.clone().unwrap_or_default());
-        let single_name = match &task.single {
-            Some(g) => format!(
-                "::core::option::Option::Some({})",
-                str_lit(&global(g).0.name)
-            ),
-            None => "::core::option::Option::None".to_string(),
-        };
+        let global_name = |g: &GlobalRef| global(g).0.name.clone();
+        let (_, single_name) = super::tasks::info(task.single.as_ref(), &global_name);
+        let (ns, interval_from) = super::tasks::info(Some(&task.interval), &global_name);
         let pnames = c.resources[r]
             .programs
             .iter()
@@ -166,7 +167,7 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
             .map(|p| str_lit(&p.name));
         let (tn, prio) = (str_lit(&task.name), task.priority);
         infos.push(format!(
-            "::il_std::TaskInfo {{ name: {tn}, resource: {res_name}, interval: ::il_std::TIME({ns}i64), priority: {prio}, single: {single_name}, programs: &[{}], }}",
+            "::il_std::TaskInfo {{ name: {tn}, resource: {res_name}, interval: ::il_std::TIME({ns}i64), priority: {prio}, interval_from: {interval_from}, single: {single_name}, programs: &[{}], }}",
             join(pnames, ", ")
         ));
     }
@@ -183,7 +184,8 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
         .globals
         .iter()
         .chain(c.resources.iter().flat_map(|r| &r.globals))
-        .filter_map(|v| v.location.as_ref().map(|l| super::io::located(&v.name, l)));
+        .filter_map(|v| v.location.as_ref().map(|l| super::io::located(&v.name, l)))
+        .chain(super::config_vars::located(c));
     let located = each(located, ", ");
     let mut io_accessors = String::new();
     for r in &c.resources {
@@ -223,9 +225,18 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
             .map(|s| format!("{s}: ::il_std::TaskState::new()")),
         ", ",
     );
+    let fresh = format!("Self {{ {inits} {prog_inits} {res_inits} {state_inits} }}");
+    // VAR_CONFIG initial values go onto the fresh configuration.
+    let cfg_inits = super::config_vars::inits(c);
+    let new_self = if cfg_inits.is_empty() {
+        fresh
+    } else {
+        format!("let mut __s = {fresh}; {cfg_inits} __s")
+    };
+    let access = super::access::methods(c);
     o.code(&format!(
         "{d}#[derive(Clone, Debug, PartialEq)] #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)] pub struct {name} {{ {fields} {prog_fields} {res_fields} {state_fields} }} \
-         #[allow(dead_code, clippy::all)] impl ::core::default::Default for {name} {{ fn default() -> Self {{ Self {{ {inits} {prog_inits} {res_inits} {state_inits} }} }} }} \
+         #[allow(dead_code, clippy::all)] impl ::core::default::Default for {name} {{ fn default() -> Self {{ {new_self} }} }} \
          {sub_items}"
     ));
     retain_items(o, c, &name, opts);
@@ -241,7 +252,7 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
          pub const TASKS: &'static [::il_std::TaskInfo] = &[\n{infos}]; \
          /// The located globals (`AT %...`), which live in `Cycle::io`.\n\
          pub const ADDRESSES: &'static [::il_std::Located] = &[\n{located}]; \
-         {io_accessors} \
+         {io_accessors} {access} \
          /// Runs every task released at `__ctx.now()`, highest priority\n\
          /// first (each task's programs in declaration order), then the\n\
          /// programs without a task. Returns how many programs ran.\n\

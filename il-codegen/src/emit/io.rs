@@ -16,10 +16,12 @@ pub(super) fn addresses(pou: &CheckedPou) -> Vec<String> {
         .iter()
         .filter_map(|v| v.location.as_ref().map(|l| (v.name.as_str(), l)));
     let direct = pou.addresses.iter().map(|l| (l.text.as_str(), l));
-    located
+    let mut out: Vec<String> = located
         .chain(direct)
         .map(|(name, l)| self::located(name, l))
-        .collect()
+        .collect();
+    out.extend(super::partly::unbound(&pou.vars));
+    out
 }
 
 /// An `il_std::Located` entry of an `ADDRESSES` table.
@@ -36,7 +38,7 @@ pub(super) fn located(name: &str, l: &Loc) -> String {
         None => "::core::option::Option::None".to_string(),
     };
     format!(
-        "::il_std::Located {{ name: {name}, address: {text}, area: {area}, byte: {byte}, bit: {bit}, ty: {ty}, }}"
+        "::il_std::Located {{ name: {name}, address: {text}, area: {area}, byte: {byte}, bit: {bit}, ty: {ty}, bound: true, }}"
     )
 }
 

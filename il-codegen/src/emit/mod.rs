@@ -6,10 +6,14 @@
 //! DIV/MOD by zero yields 0 and records a fault in the cycle context, array
 //! accesses go through `get` and record a fault when out of range.
 
+mod access;
+mod config_vars;
 mod configuration;
 mod flow;
 mod io;
 mod names;
+mod partly;
+mod tasks;
 pub(crate) mod text;
 mod values;
 mod visit;

@@ -165,31 +165,9 @@ fn every_variable_kind_with_attributes_initial_values_and_addresses() {
     ] {
         assert!(il.contains(want), "missing {want:?} in\n{il}");
     }
-    // A PROGRAM cannot have VAR_IN_OUT (IL0121); the message points at the
-    // XML block. (VAR_EXTERNAL of a program is fine on its own: only a
-    // configuration that runs it binds it.)
-    let (input, d) = check(&xml);
-    let unsupported: Vec<_> = d.iter().filter(|d| d.code == "IL0121").collect();
-    assert_eq!(
-        unsupported.len(),
-        1,
-        "{}",
-        render(input.source(), &d, false)
-    );
-    for u in unsupported {
-        let (line, _) = at(&input, u);
-        let text = input.source().line_text(line);
-        assert!(text.contains("<inOutVars"), "{text}");
-    }
-    // Without them, the rest compiles.
-    let iface = iface
-        .replace(&block("inOutVars", "", &var("io", "<DINT/>")), "")
-        .replace(&block("externalVars", "", &var("e", "<LREAL/>")), "");
-    assert_clean(&project(
-        "",
-        &il_pou("P", "program", &iface, "LD i\nST i\n"),
-        "",
-    ));
+    // Every kind compiles, a PROGRAM's VAR_IN_OUT included (a configuration
+    // that runs it binds it, as it binds the VAR_EXTERNAL).
+    assert_clean(&xml);
 }
 
 #[test]

@@ -7,14 +7,11 @@
 
 use super::codes::*;
 use super::env::{Env, Names, PouSig};
-use super::init::init_value;
 use super::interface::pou_sig;
-use super::ir::{
-    ConfigDef, GlobalRef, Init, ProgArg, ProgramInst, ResourceDef, Retained, TaskDef, Var,
-};
+use super::ir::{ConfigDef, GlobalRef, ProgramInst, ResourceDef, Retained, Var};
 use super::types::Ty;
 use super::{Cx, suggest};
-use crate::ast::{self, LitKind, Operand, ParamKind, PouKind, Span, VarKind};
+use crate::ast::{self, PouKind, Span, VarKind};
 use std::collections::HashMap;
 
 /// Check every configuration; returns them with the index of their file.
@@ -63,6 +60,8 @@ pub(crate) fn collect(
             name: c.name.name.clone(),
             globals: globals.into_iter().map(|(v, _)| v).collect(),
             resources: Vec::new(),
+            var_config: Vec::new(),
+            access: Vec::new(),
         };
         for (ri, (r, rg)) in c.resources.iter().zip(res_globals).enumerate() {
             let rdef = ResourceDef {
@@ -72,11 +71,13 @@ pub(crate) fn collect(
                 programs: Vec::new(),
             };
             def.resources.push(rdef);
-            let tasks = tasks(cx, &def, ri, r);
+            let tasks = super::config_tasks::tasks(cx, &def, ri, r);
             def.resources[ri].tasks = tasks;
             let programs = programs(cx, env, &def, ri, r);
             def.resources[ri].programs = programs;
         }
+        def.var_config = super::config_vars::var_config(cx, names, env, &def, &c.var_config);
+        def.access = super::config_vars::access(cx, names, env, &def, &c.var_access);
         result.push((f, def));
     }
     result
@@ -104,10 +105,12 @@ fn globals(
             );
             continue;
         }
-        var_blocks.push(ast::VarBlock {
+        let mut b = ast::VarBlock {
             kind: VarKind::Var,
             ..b.clone()
-        });
+        };
+        super::partly::refuse_in_globals(cx, &mut b);
+        var_blocks.push(b);
     }
     let fake = ast::Pou {
         kind: PouKind::Program,
@@ -213,7 +216,7 @@ fn bind_located(cx: &mut Cx, env: &mut Env, g: &Var, l: &super::ir::Loc, span: S
 }
 
 /// A global by name: the resource's first, then the configuration's.
-fn lookup(def: &ConfigDef, res: usize, name: &str) -> Option<(GlobalRef, Var)> {
+pub(crate) fn lookup(def: &ConfigDef, res: usize, name: &str) -> Option<(GlobalRef, Var)> {
     let find = |vars: &[Var]| vars.iter().position(|v| v.name.eq_ignore_ascii_case(name));
     if let Some(r) = def.resources.get(res)
         && let Some(i) = find(&r.globals)
@@ -236,7 +239,7 @@ fn lookup(def: &ConfigDef, res: usize, name: &str) -> Option<(GlobalRef, Var)> {
     ))
 }
 
-fn all_global_names(def: &ConfigDef, res: usize) -> Vec<&str> {
+pub(crate) fn all_global_names(def: &ConfigDef, res: usize) -> Vec<&str> {
     def.globals
         .iter()
         .chain(
@@ -249,7 +252,13 @@ fn all_global_names(def: &ConfigDef, res: usize) -> Vec<&str> {
         .collect()
 }
 
-fn unknown_global(cx: &mut Cx, def: &ConfigDef, res: usize, name: &ast::Ident, what: &str) {
+pub(crate) fn unknown_global(
+    cx: &mut Cx,
+    def: &ConfigDef,
+    res: usize,
+    name: &ast::Ident,
+    what: &str,
+) {
     let names = all_global_names(def, res);
     let hint = suggest(&name.name, names).map(|s| format!("did you mean `{s}`?"));
     let d = cx.err(
@@ -261,83 +270,6 @@ fn unknown_global(cx: &mut Cx, def: &ConfigDef, res: usize, name: &ast::Ident, w
         ),
     );
     d.help = hint;
-}
-
-fn tasks(cx: &mut Cx, def: &ConfigDef, res: usize, r: &ast::Resource) -> Vec<TaskDef> {
-    let mut out: Vec<TaskDef> = Vec::new();
-    for t in &r.tasks {
-        if out.iter().any(|o| t.name.is(&o.name)) {
-            cx.err(
-                DUPLICATE_DECL,
-                t.name.span,
-                format!("task `{}` is declared twice", t.name),
-            );
-            continue;
-        }
-        let interval = match &t.interval {
-            None => 0,
-            Some(Operand::Lit(ast::Literal {
-                kind: LitKind::Time { nanos, .. },
-                ..
-            })) if *nanos >= 0 => *nanos,
-            Some(o) => {
-                cx.err(
-                    BAD_CONFIG,
-                    o.span(),
-                    "INTERVAL must be a non-negative TIME literal such as T#10ms",
-                );
-                0
-            }
-        };
-        let priority = match &t.priority {
-            None => 0,
-            Some(ast::Literal {
-                kind: LitKind::Int(n),
-                ..
-            }) if u32::try_from(*n).is_ok() => *n as u32,
-            Some(l) => {
-                cx.err(
-                    BAD_CONFIG,
-                    l.span,
-                    "PRIORITY must be a non-negative integer (0 is the highest)",
-                );
-                0
-            }
-        };
-        let single = match &t.single {
-            None => None,
-            Some(Operand::Var(v)) if v.path.is_empty() => match lookup(def, res, &v.base.name) {
-                Some((g, var)) if var.ty == Ty::BOOL => Some(g),
-                Some((_, var)) => {
-                    cx.err(
-                        BAD_CONFIG,
-                        v.span,
-                        format!("SINGLE needs a BOOL global; `{}` is {}", v.base, var.ty),
-                    );
-                    None
-                }
-                None => {
-                    unknown_global(cx, def, res, &v.base, "SINGLE");
-                    None
-                }
-            },
-            Some(o) => {
-                cx.err(
-                    BAD_CONFIG,
-                    o.span(),
-                    "SINGLE must name a BOOL global variable",
-                );
-                None
-            }
-        };
-        out.push(TaskDef {
-            name: t.name.name.clone(),
-            interval,
-            priority,
-            single,
-        });
-    }
-    out
 }
 
 fn programs(
@@ -439,106 +371,19 @@ fn programs(
                 Some((gr, _)) => externals.push((v.name.clone(), gr, v.constant)),
             }
         }
-        let (inputs, outputs) = program_args(cx, env, def, res, sig, pi);
+        let args = super::config_args::program_args(cx, env, def, res, sig, pi, &externals);
         out.push(ProgramInst {
             name: pi.name.name.clone(),
             program: sig.name.clone(),
             task,
             externals,
-            inputs,
-            outputs,
+            inputs: args.inputs,
+            outputs: args.outputs,
+            inouts: args.inouts,
             retain: !retained(env, sig).is_empty(),
         });
     }
     out
-}
-
-#[allow(clippy::type_complexity)]
-fn program_args(
-    cx: &mut Cx,
-    env: &Env,
-    def: &ConfigDef,
-    res: usize,
-    sig: &PouSig,
-    pi: &ast::ProgramInstance,
-) -> (Vec<(String, ProgArg)>, Vec<(String, GlobalRef)>) {
-    let mut inputs = Vec::new();
-    let mut outputs = Vec::new();
-    for a in &pi.args {
-        let want = match a.kind {
-            ParamKind::Input(_) => VarKind::Input,
-            ParamKind::Output { .. } => VarKind::Output,
-        };
-        let Some((_, v)) = sig.var(&a.name.name).filter(|(_, v)| v.kind == want) else {
-            cx.err(
-                BAD_CONFIG,
-                a.name.span,
-                format!(
-                    "program `{}` has no {} `{}`",
-                    sig.name,
-                    if want == VarKind::Input {
-                        "input"
-                    } else {
-                        "output"
-                    },
-                    a.name
-                ),
-            );
-            continue;
-        };
-        match &a.kind {
-            ParamKind::Input(Operand::Lit(l)) => {
-                let init = ast::Initializer::Simple(Operand::Lit(l.clone()));
-                if let Some(Init::Const(c)) = init_value(cx, &env.types, &init, &v.ty, v.range) {
-                    inputs.push((v.name.clone(), ProgArg::Const(c)));
-                }
-            }
-            ParamKind::Input(Operand::Var(g)) if g.path.is_empty() => {
-                match lookup(def, res, &g.base.name) {
-                    Some((gr, gv)) if gv.ty == v.ty => {
-                        inputs.push((v.name.clone(), ProgArg::Global(gr)))
-                    }
-                    Some((_, gv)) => {
-                        cx.err(
-                            BAD_CONFIG,
-                            g.span,
-                            format!("input `{}` is {}, the global is {}", v.name, v.ty, gv.ty),
-                        );
-                    }
-                    None => unknown_global(cx, def, res, &g.base, "program argument"),
-                }
-            }
-            ParamKind::Output {
-                negate: false,
-                target: Operand::Var(g),
-            } if g.path.is_empty() => match lookup(def, res, &g.base.name) {
-                Some((_, gv)) if gv.constant => {
-                    cx.err(
-                        NOT_WRITABLE,
-                        g.span,
-                        format!("the global `{}` is CONSTANT", gv.name),
-                    );
-                }
-                Some((gr, gv)) if gv.ty == v.ty => outputs.push((v.name.clone(), gr)),
-                Some((_, gv)) => {
-                    cx.err(
-                        BAD_CONFIG,
-                        g.span,
-                        format!("output `{}` is {}, the global is {}", v.name, v.ty, gv.ty),
-                    );
-                }
-                None => unknown_global(cx, def, res, &g.base, "program argument"),
-            },
-            _ => {
-                cx.err(
-                    BAD_CONFIG,
-                    a.span,
-                    "a program argument must be a literal or a global (`IN := g`, `OUT => g`)",
-                );
-            }
-        }
-    }
-    (inputs, outputs)
 }
 
 /// The variables of an FB/PROGRAM that its RETAIN snapshot holds.

@@ -13,7 +13,7 @@ use std::collections::{HashMap, HashSet};
 
 pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
     let mut env = Env {
-        pous: HashMap::new(),
+        pous: Default::default(),
         types: TypeTables::default(),
         holds_retain: Default::default(),
         configs: Vec::new(),

@@ -8,7 +8,7 @@ use std::collections::{HashMap, HashSet};
 
 /// The interfaces of every POU of the unit, by upper-case name.
 pub(crate) struct Env {
-    pub pous: HashMap<String, PouSig>,
+    pub pous: super::hash::FxMap<String, PouSig>,
     pub types: TypeTables,
     /// Checked configurations, with the index of the declaring file.
     pub configs: Vec<(usize, super::ir::ConfigDef)>,
@@ -63,7 +63,7 @@ pub(crate) struct PouSig {
     pub name: String,
     pub vars: Vec<Var>,
     /// Upper-case name → index into `vars`.
-    pub index: HashMap<String, usize>,
+    pub index: super::hash::FxMap<String, usize>,
     pub ret: Option<Ty>,
     /// Index of the source file that declares it.
     pub file: usize,
@@ -99,6 +99,14 @@ impl PouSig {
 
 impl Env {
     pub fn pou(&self, name: &str) -> Option<&PouSig> {
-        self.pous.get(&name.to_ascii_uppercase())
+        let mut buf = [0u8; 64];
+        match buf.get_mut(..name.len()) {
+            Some(b) => {
+                b.copy_from_slice(name.as_bytes());
+                b.make_ascii_uppercase();
+                self.pous.get(std::str::from_utf8(b).ok()?)
+            }
+            None => self.pous.get(&name.to_ascii_uppercase()),
+        }
     }
 }

@@ -17,7 +17,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
         kind: p.kind,
         name: p.name.name.clone(),
         vars: Vec::new(),
-        index: HashMap::new(),
+        index: Default::default(),
         ret: None,
         file: 0,
         poisoned: HashSet::new(),
@@ -52,10 +52,6 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
             (PouKind::Function, ast::VarKind::External) => Some((
                 BAD_SECTION,
                 "a FUNCTION cannot use globals (VAR_EXTERNAL): pass the value as an input or a VAR_IN_OUT",
-            )),
-            (PouKind::Program, ast::VarKind::InOut) => Some((
-                UNSUPPORTED,
-                "VAR_IN_OUT of a PROGRAM is not supported: share the variable through VAR_GLOBAL/VAR_EXTERNAL",
             )),
             _ => None,
         };
@@ -105,8 +101,19 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
                 );
                 continue;
             }
+            let partly = match &decl.location {
+                Some(a) if a.partial => {
+                    if !super::partly::allowed(cx, p.kind, block.kind, a, &ty) {
+                        sig.poisoned.extend(decl.names.iter().map(|n| n.key()));
+                        continue;
+                    }
+                    Some((a.area, cx.file.snippet(a.span).to_string()))
+                }
+                _ => None,
+            };
             let location = match &decl.location {
                 None => None,
+                Some(a) if a.partial => None,
                 Some(_) if p.kind == PouKind::Function => {
                     cx.err(
                         BAD_ADDRESS,
@@ -161,6 +168,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
                 sig.vars.push(Var {
                     name: name.name.clone(),
                     location: location.clone(),
+                    partly: partly.clone(),
                     edge: decl.edge,
                     range,
                     kind: block.kind,
@@ -182,6 +190,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
         sig.vars.push(Var {
             name: "ENO".into(),
             location: None,
+            partly: None,
             edge: None,
             range: None,
             kind: ast::VarKind::Output,

@@ -21,82 +21,8 @@ pub struct Program {
     pub configs: Vec<ConfigDef>,
 }
 
-/// A CONFIGURATION: its globals, and its resources with their tasks and
-/// program instances. It becomes a struct the host drives with the time.
-#[derive(Clone, Debug)]
-pub struct ConfigDef {
-    /// As declared (the generated struct keeps this spelling).
-    pub name: String,
-    /// VAR_GLOBAL of the configuration (kind `Global`; located ones live in the
-    /// process image and are not fields).
-    pub globals: Vec<Var>,
-    /// Its resources (at least one: the implicit one if it declares none).
-    pub resources: Vec<ResourceDef>,
-}
-
-/// A RESOURCE (or the unnamed one of a configuration without RESOURCE).
-#[derive(Clone, Debug)]
-pub struct ResourceDef {
-    /// `None`: the configuration declares its tasks and programs directly.
-    pub name: Option<String>,
-    /// VAR_GLOBAL of the resource (kind `Global`; located ones live in the process image).
-    pub globals: Vec<Var>,
-    /// Its tasks; [`ProgramInst::task`] indexes into this list.
-    pub tasks: Vec<TaskDef>,
-    /// Its program instances, in declaration order.
-    pub programs: Vec<ProgramInst>,
-}
-
-/// `TASK t (INTERVAL := T#10ms, PRIORITY := 1)`.
-#[derive(Clone, Debug)]
-pub struct TaskDef {
-    /// As declared.
-    pub name: String,
-    /// Nanoseconds; 0 = no periodic release.
-    pub interval: i64,
-    /// PRIORITY: 0 is the highest; orders tasks released in the same cycle.
-    pub priority: u32,
-    /// SINGLE: released on a rising edge of this BOOL global.
-    pub single: Option<GlobalRef>,
-}
-
-/// A global of a configuration: `resource` None = the configuration's own.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct GlobalRef {
-    /// Index into [`ConfigDef::resources`]; `None`: [`ConfigDef::globals`].
-    pub resource: Option<usize>,
-    /// Index into that list of globals.
-    pub index: usize,
-}
-
-/// `PROGRAM p WITH t : P (a := g, b => h)`.
-#[derive(Clone, Debug)]
-pub struct ProgramInst {
-    /// The instance's name (a field of the configuration struct).
-    pub name: String,
-    /// The PROGRAM type.
-    pub program: String,
-    /// Index into the resource's tasks; `None`: runs on every call, after the tasks.
-    pub task: Option<usize>,
-    /// The globals bound to the program's (non-located) VAR_EXTERNALs, in
-    /// their declaration order; `true` for a VAR_EXTERNAL CONSTANT.
-    pub externals: Vec<(String, GlobalRef, bool)>,
-    /// Inputs set before every run.
-    pub inputs: Vec<(String, ProgArg)>,
-    /// Outputs copied to globals after every run (target, source output).
-    pub outputs: Vec<(String, GlobalRef)>,
-    /// The program has RETAIN variables (a `retain()` snapshot).
-    pub retain: bool,
-}
-
-/// The value given to a program input in a configuration.
-#[derive(Clone, Debug)]
-pub enum ProgArg {
-    /// `a := g`: the value of a global, read before every run.
-    Global(GlobalRef),
-    /// `a := 5`: a constant.
-    Const(Const),
-}
+mod config;
+pub use config::*;
 
 /// A user type that becomes a Rust item.
 #[derive(Clone, Debug, PartialEq)]
@@ -221,6 +147,9 @@ pub struct Var {
     pub name: String,
     /// `AT %...`: the variable is that place of the process image.
     pub location: Option<Loc>,
+    /// `AT %I*` / `%Q*` / `%M*` (Ed.2 2.4.1.1): an ordinary field the host
+    /// binds, listed in `ADDRESSES` as unbound; the text as written.
+    pub partly: Option<(crate::ast::Area, String)>,
     /// R_EDGE / F_EDGE input: the body sees the edge, not the level.
     pub edge: Option<crate::ast::Edge>,
     /// Subrange bounds of an integer variable.

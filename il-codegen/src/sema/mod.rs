@@ -3,16 +3,21 @@
 
 mod address;
 pub mod codes;
+mod config_args;
+mod config_tasks;
+mod config_vars;
 mod configuration;
 mod decls;
 mod env;
 mod flow;
 mod graph;
+mod hash;
 mod init;
 mod interface;
 pub mod ir;
 mod literals;
 mod nesting;
+mod partly;
 mod recursion;
 mod resolve;
 pub(crate) mod size;

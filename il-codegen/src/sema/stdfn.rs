@@ -221,6 +221,12 @@ pub(crate) fn resolve(
                         t = Some(ty.clone());
                     }
                 }
+                // Ed.3 implicit widening: the wider of the two, into which
+                // each argument is then widened (`fit`; refused under
+                // iec2003 there, naming the conversion).
+                Some(u) if super::widen::wider(u, ty).is_some() => {
+                    t = super::widen::wider(u, ty);
+                }
                 Some(u) => {
                     return Err(err(
                         false,
@@ -301,9 +307,11 @@ pub(crate) fn resolve(
                 })?,
             },
         };
+        // A narrower argument is widened into the parameter by the caller.
         if let ArgShape::Ty(have) = a
             && *have != ty
             && !have.resizes_to(&ty)
+            && super::widen::widening(have, &ty).is_none()
         {
             return Err(err(
                 false,

@@ -30,6 +30,8 @@ pub enum Elem {
 #[allow(clippy::large_enum_variant)] // short-lived, built once per element
 pub enum CfgElem {
     Vars(VarBlock),
+    VarConfig(Vec<ConfigVar>, Span),
+    VarAccess(Vec<AccessVar>, Span),
     Resource(Resource),
     Task(Task),
     Program(ProgramInstance),
@@ -377,6 +379,7 @@ pub fn orphan(ctx: &mut Ctx, span: Span, els: Vec<Elem>) {
 pub fn configuration(name: Ident, els: Vec<CfgElem>, span: Span) -> Configuration {
     let mut globals = Vec::new();
     let mut resources = Vec::new();
+    let (mut var_config, mut var_access) = (Vec::new(), Vec::new());
     let mut loose = Resource {
         name: None,
         on: None,
@@ -388,6 +391,8 @@ pub fn configuration(name: Ident, els: Vec<CfgElem>, span: Span) -> Configuratio
     for e in els {
         match e {
             CfgElem::Vars(v) => globals.push(v),
+            CfgElem::VarConfig(v, _) => var_config.extend(v),
+            CfgElem::VarAccess(v, _) => var_access.extend(v),
             CfgElem::Resource(r) => resources.push(r),
             CfgElem::Task(t) => loose.tasks.push(t),
             CfgElem::Program(p) => loose.programs.push(p),
@@ -401,6 +406,8 @@ pub fn configuration(name: Ident, els: Vec<CfgElem>, span: Span) -> Configuratio
         name,
         globals,
         resources,
+        var_config,
+        var_access,
         span,
     }
 }
@@ -423,6 +430,16 @@ pub fn resource(
     for e in els {
         match e {
             CfgElem::Vars(v) => r.globals.push(v),
+            // Ed.2 B.1.7: access and instance-specific declarations are the
+            // configuration's, after its resources.
+            CfgElem::VarConfig(_, span) | CfgElem::VarAccess(_, span) => ctx.diags.push(
+                Diagnostic::error(
+                    code::CONFIG_SYNTAX,
+                    span,
+                    "VAR_CONFIG and VAR_ACCESS belong in the CONFIGURATION, not in a RESOURCE",
+                )
+                .with_label("inside a RESOURCE"),
+            ),
             CfgElem::Task(t) => r.tasks.push(t),
             CfgElem::Program(p) => r.programs.push(p),
             CfgElem::Resource(inner) => ctx.diags.push(

@@ -50,7 +50,7 @@ crate::diag::codes::codes! {
     DECL_SYNTAX = "IL0023", "a declaration that cannot be read",
         "Declarations have the form `a, b AT %IX0.0 : TYPE := initial;`.\n\n    VAR x : INT\n        y : BOOL; END_VAR\n\nEnd each declaration with `;`.";
     CONFIG_SYNTAX = "IL0024", "a CONFIGURATION element that cannot be read",
-        "A configuration holds VAR_GLOBAL blocks, RESOURCEs, TASKs and program instances.\n\n    TASK t (CYCLE := T#10ms);\n\nTASK parameters are SINGLE, INTERVAL and PRIORITY: `TASK t (INTERVAL := T#10ms, PRIORITY := 1);`.";
+        "A configuration holds VAR_GLOBAL blocks, RESOURCEs, TASKs and program instances, then VAR_ACCESS and VAR_CONFIG (which belong to the configuration, not to a RESOURCE).\n\n    TASK t (CYCLE := T#10ms);\n\nTASK parameters are SINGLE, INTERVAL and PRIORITY: `TASK t (INTERVAL := T#10ms, PRIORITY := 1);`.";
     PRAGMA = "IL0025", "a pragma `{ ... }` that is never closed",
         "A pragma starts with `{` and ends with the next `}`; the compiler ignores it (it stands wherever a comment may). One that is never closed would swallow the rest of the file.\n\n    {attribute 'hide'\n    PROGRAM Main\n\nClose it: `{attribute 'hide'}`.";
     TOO_LARGE = "IL0026", "a source file over 4 GiB",

@@ -46,7 +46,17 @@ pub fn parse_std(
     }
     let (toks, mut diags) = lexer::lex_std(&file.text, standard);
     let mut ctx = actions::Ctx::default();
-    let result = grammar::UnitParser::new().parse(&mut ctx, toks.iter().cloned());
+    // The parser takes the tokens (their names move into the tree instead
+    // of being copied); the messages of syntax errors, which look at the
+    // tokens around the error, get them from lexing again (the lexer is
+    // deterministic): only files with syntax errors pay for it.
+    let result = grammar::UnitParser::new().parse(&mut ctx, toks);
+    let failed = result.is_err() || !ctx.errors.is_empty();
+    let toks = if failed {
+        lexer::lex_std(&file.text, standard).0
+    } else {
+        Vec::new()
+    };
     let unit = match result {
         Ok(u) => u,
         Err(e) => {

@@ -345,3 +345,42 @@ fn a_part_cannot_be_bound_to_a_var_in_out() {
     assert_eq!(e.len(), 1, "{e:#?}");
     assert_eq!((e[0].0.as_str(), e[0].1), ("IL0130", 7));
 }
+
+#[test]
+fn standard_functions_take_their_widest_argument_type() {
+    for src in [
+        "    LIMIT(MN := s, IN := i, MX := 100)\n    ST i",
+        "    LD d\n    MAX i, s\n    ST d",
+        "    LD s\n    MIN i\n    ST i",
+        "    LD r\n    ADD i\n    ST r",
+        "    SEL(G := TRUE, IN0 := s, IN1 := d)\n    ST d",
+    ] {
+        assert_eq!(body(src), [], "{src}");
+    }
+    // The result has the wider type: storing it narrower is the usual error.
+    let e = body("    LIMIT(MN := s, IN := d, MX := 100)\n    ST i");
+    assert_eq!(e.len(), 1, "{e:#?}");
+    assert!(e[0].3.ends_with("convert with DINT_TO_INT"), "{e:#?}");
+    // Neither widens into the other: still one type needed.
+    let e = body("    LD i\n    MAX u\n    ST i");
+    assert_eq!(e.len(), 1, "{e:#?}");
+    assert_eq!(e[0].0, "IL0106");
+    assert!(
+        e[0].3
+            .starts_with("MAX needs arguments of one type; found INT and UINT"),
+        "{e:#?}"
+    );
+    // Under the 2nd edition each widened argument is named.
+    let e = errors_std(
+        "PROGRAM p\nVAR s : SINT; i : INT; END_VAR\n    LIMIT(MN := s, IN := i, MX := 100)\n    ST i\nEND_PROGRAM\n",
+        Standard::Iec2003,
+    );
+    assert_eq!(e.len(), 1, "{e:#?}");
+    assert_eq!(
+        (e[0].0.as_str(), e[0].3.as_str()),
+        (
+            "IL0302",
+            "implicit conversion SINT → INT is a 3rd-edition feature"
+        )
+    );
+}

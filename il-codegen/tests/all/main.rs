@@ -14,6 +14,7 @@ mod plcopen_corpus;
 mod render_golden;
 mod scaling;
 mod sema_calls;
+mod sema_config_forms;
 mod sema_corners;
 mod sema_hints;
 mod sema_hostile_names;

@@ -30,6 +30,7 @@ impl Fast {
             byte: 0,
             bit: ::core::option::Option::Some(1),
             ty: "BOOL",
+            bound: true,
         },
     ];
     /// `lamp` (%QX0.1 BOOL) as the process image holds it now.
@@ -51,9 +52,9 @@ impl Fast {
         let mut __cr_bool: bool = false;
         let mut __cr_dint: i32 = 0i32;
         '__body: {
+            // 8: LD  enable
+            __cr_bool = __s_enable;
             '__l0: {
-                // 8: LD  enable
-                __cr_bool = __s_enable;
                 // 9: JMPCN done
                 if !__cr_bool {
                     break '__l0;
@@ -122,11 +123,11 @@ impl Slow {
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle, mut __ext: Slow__Ext<'_>) {
         let mut __cr_dint: i32 = 0i32;
         let mut __cr_bool: bool = false;
+        // 23: LD  ticks
+        __cr_dint = (*__ext.ticks);
+        // 24: GE  limit
+        __cr_bool = __cr_dint >= (*__ext.limit);
         '__l0: {
-            // 23: LD  ticks
-            __cr_dint = (*__ext.ticks);
-            // 24: GE  limit
-            __cr_bool = __cr_dint >= (*__ext.limit);
             // 25: JMPCN keep
             if !__cr_bool {
                 break '__l0;
@@ -239,6 +240,7 @@ impl Plant {
             resource: "Cpu",
             interval: ::il_std::TIME(10000000i64),
             priority: 1,
+            interval_from: ::core::option::Option::None,
             single: ::core::option::Option::None,
             programs: &["fast"],
         },
@@ -247,6 +249,7 @@ impl Plant {
             resource: "Cpu",
             interval: ::il_std::TIME(1000000000i64),
             priority: 5,
+            interval_from: ::core::option::Option::None,
             single: ::core::option::Option::None,
             programs: &["slow"],
         },
@@ -260,6 +263,7 @@ impl Plant {
             byte: 0,
             bit: ::core::option::Option::Some(1),
             ty: "BOOL",
+            bound: true,
         },
     ];
     /// `lamp` (%QX0.1 BOOL) as the process image holds it now.

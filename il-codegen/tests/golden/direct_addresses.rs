@@ -27,6 +27,7 @@ impl Io {
             byte: 6,
             bit: ::core::option::Option::None,
             ty: "INT",
+            bound: true,
         },
         ::il_std::Located {
             name: "count",
@@ -35,6 +36,7 @@ impl Io {
             byte: 8,
             bit: ::core::option::Option::None,
             ty: "INT",
+            bound: true,
         },
         ::il_std::Located {
             name: "%IX0.3",
@@ -43,6 +45,7 @@ impl Io {
             byte: 0,
             bit: ::core::option::Option::Some(3),
             ty: "BOOL",
+            bound: true,
         },
         ::il_std::Located {
             name: "%QX1.0",
@@ -51,6 +54,7 @@ impl Io {
             byte: 1,
             bit: ::core::option::Option::Some(0),
             ty: "BOOL",
+            bound: true,
         },
         ::il_std::Located {
             name: "%IW2",
@@ -59,6 +63,7 @@ impl Io {
             byte: 4,
             bit: ::core::option::Option::None,
             ty: "WORD",
+            bound: true,
         },
     ];
     /// `level` (%IW3 INT) as the process image holds it now.

@@ -8,13 +8,13 @@ pub fn SumTo(__ctx: &mut ::il_std::Cycle, mut __v_n: i32) -> i32 {
     let mut __cr_bool: bool = false;
     let mut __v_i: i32 = 0i32;
     let mut __v_acc: i32 = 0i32;
+    // 5: LD   0
+    // 6: ST   acc
+    __v_acc = 0i32;
+    // 7: ST   i
+    __v_i = 0i32;
+    __cr_dint = 0i32;
     '__l1: {
-        // 5: LD   0
-        // 6: ST   acc
-        __v_acc = 0i32;
-        // 7: ST   i
-        __v_i = 0i32;
-        __cr_dint = 0i32;
         '__c0: loop {
             // 8: next:   LD   i
             __cr_dint = __v_i;

@@ -42,22 +42,22 @@ impl Motor {
         let mut __cr_bool: bool = false;
         let mut __cr_int: i16 = 0i16;
         '__body: {
+            // 14: LD   start
+            __cr_bool = __s_start;
+            // 15: OR   run
+            __cr_bool = __cr_bool | __s_run;
+            // 16: ANDN stop
+            __cr_bool = __cr_bool & !__s_stop;
+            // 17: ST   run
+            __s_run = __cr_bool;
+            // 18: CLK  edge       (* count rising edges of run *)
+            {
+                self.edge.CLK = __cr_bool;
+                self.edge.call(__ctx);
+            }
+            // 19: LD   edge.Q
+            __cr_bool = self.edge.Q;
             '__l0: {
-                // 14: LD   start
-                __cr_bool = __s_start;
-                // 15: OR   run
-                __cr_bool = __cr_bool | __s_run;
-                // 16: ANDN stop
-                __cr_bool = __cr_bool & !__s_stop;
-                // 17: ST   run
-                __s_run = __cr_bool;
-                // 18: CLK  edge       (* count rising edges of run *)
-                {
-                    self.edge.CLK = __cr_bool;
-                    self.edge.call(__ctx);
-                }
-                // 19: LD   edge.Q
-                __cr_bool = self.edge.Q;
                 // 20: JMPCN done
                 if !__cr_bool {
                     break '__l0;

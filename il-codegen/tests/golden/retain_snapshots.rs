@@ -34,14 +34,14 @@ impl Odometer {
         let mut __cr_bool: bool = false;
         let mut __cr_udint: u32 = 0u32;
         '__body: {
+            // 8: CAL edge(CLK := pulse)
+            {
+                self.edge.CLK = __s_pulse;
+                self.edge.call(__ctx);
+            }
+            // 9: LD  edge.Q
+            __cr_bool = self.edge.Q;
             '__l0: {
-                // 8: CAL edge(CLK := pulse)
-                {
-                    self.edge.CLK = __s_pulse;
-                    self.edge.call(__ctx);
-                }
-                // 9: LD  edge.Q
-                __cr_bool = self.edge.Q;
                 // 10: JMPCN done
                 if !__cr_bool {
                     break '__l0;

@@ -175,65 +175,65 @@ impl Plant {
         let mut __cr_bool: bool = false;
         let mut __cr_tankstate: TankState = ::core::default::Default::default();
         '__body: {
-            '__l1: {
-                '__l0: {
-                    // 49: LD   demand
-                    __cr_int = __s_demand;
-                    // 50: ST   pct                (* outside 0..100: skipped, SubrangeViolation *)
-                    {
-                        let __r: i16 = __cr_int;
-                        if __r >= 0i16 && __r <= 100i16 {
-                            __s_pct = __r;
-                        } else {
-                            __ctx.fault(::il_std::FaultKind::SubrangeViolation, "Plant", 50);
-                        }
-                    }
-                    // 51: LD   pct
-                    __cr_int = __s_pct;
-                    // 52: ST   main.level
-                    {
-                        let __r: i16 = __cr_int;
-                        if __r >= 0i16 && __r <= 100i16 {
-                            self.main.level = __r;
-                        } else {
-                            __ctx.fault(::il_std::FaultKind::SubrangeViolation, "Plant", 52);
-                        }
-                    }
-                    // 53: ST   tanks[i].level
-                    {
-                        let __r: i16 = __cr_int;
-                        if __r >= 0i16 && __r <= 100i16 {
-                            match self.tanks.get_mut(usize::try_from((__s_i as i64).wrapping_sub(1i64)).unwrap_or(usize::MAX)) {
-                                ::core::option::Option::Some(__p0) => {
-                                    __p0.level = __r;
-                                }
-                                ::core::option::Option::None => {
-                                    __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 53);
-                                }
-                            }
-                        } else {
-                            __ctx.fault(::il_std::FaultKind::SubrangeViolation, "Plant", 53);
-                        }
-                    }
-                    // 54: ST   grid[1, i]
-                    match self.grid[1].get_mut(__s_i as usize) {
+            // 49: LD   demand
+            __cr_int = __s_demand;
+            // 50: ST   pct                (* outside 0..100: skipped, SubrangeViolation *)
+            {
+                let __r: i16 = __cr_int;
+                if __r >= 0i16 && __r <= 100i16 {
+                    __s_pct = __r;
+                } else {
+                    __ctx.fault(::il_std::FaultKind::SubrangeViolation, "Plant", 50);
+                }
+            }
+            // 51: LD   pct
+            __cr_int = __s_pct;
+            // 52: ST   main.level
+            {
+                let __r: i16 = __cr_int;
+                if __r >= 0i16 && __r <= 100i16 {
+                    self.main.level = __r;
+                } else {
+                    __ctx.fault(::il_std::FaultKind::SubrangeViolation, "Plant", 52);
+                }
+            }
+            // 53: ST   tanks[i].level
+            {
+                let __r: i16 = __cr_int;
+                if __r >= 0i16 && __r <= 100i16 {
+                    match self.tanks.get_mut(usize::try_from((__s_i as i64).wrapping_sub(1i64)).unwrap_or(usize::MAX)) {
                         ::core::option::Option::Some(__p0) => {
-                            *__p0 = __cr_int;
+                            __p0.level = __r;
                         }
                         ::core::option::Option::None => {
-                            __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 54);
+                            __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 53);
                         }
                     }
-                    // 55: Scale(raw := pct, total := sum, ok => ok)
-                    __cr_int = {
-                        let __a0 = __s_pct;
-                        let mut __o0: bool = false;
-                        let __r = Scale(__ctx, __a0, &mut __s_sum, &mut __o0);
-                        __s_ok = __o0;
-                        __r
-                    };
-                    // 56: GT   6
-                    __cr_bool = __cr_int > 6i16;
+                } else {
+                    __ctx.fault(::il_std::FaultKind::SubrangeViolation, "Plant", 53);
+                }
+            }
+            // 54: ST   grid[1, i]
+            match self.grid[1].get_mut(__s_i as usize) {
+                ::core::option::Option::Some(__p0) => {
+                    *__p0 = __cr_int;
+                }
+                ::core::option::Option::None => {
+                    __ctx.fault(::il_std::FaultKind::IndexOutOfRange, "Plant", 54);
+                }
+            }
+            // 55: Scale(raw := pct, total := sum, ok => ok)
+            __cr_int = {
+                let __a0 = __s_pct;
+                let mut __o0: bool = false;
+                let __r = Scale(__ctx, __a0, &mut __s_sum, &mut __o0);
+                __s_ok = __o0;
+                __r
+            };
+            // 56: GT   6
+            __cr_bool = __cr_int > 6i16;
+            '__l1: {
+                '__l0: {
                     // 57: JMPC full
                     if __cr_bool {
                         break '__l0;

@@ -50,6 +50,10 @@ pub struct Located {
     pub bit: Option<u8>,
     /// IEC type name (`BOOL`, `INT`, ...).
     pub ty: &'static str,
+    /// `false` for a partly specified address (`AT %I*`, `%Q*`, `%M*`) that
+    /// no VAR_CONFIG completed: `byte` and `bit` mean nothing, and the host
+    /// binds the variable by reading or writing its field (`name`).
+    pub bound: bool,
 }
 
 /// The three byte areas.

@@ -7,7 +7,7 @@ macro_rules! dialect_tests {
     ($m:ident) => {
         mod $m {
             use super::*;
-            use il_tests::$m::{Widening, WideningCalls};
+            use il_tests::$m::{Widening, WideningCalls, WideningStd};
 
             #[test]
             fn widening_keeps_every_value() {
@@ -50,12 +50,50 @@ macro_rules! dialect_tests {
                 assert_eq!(f.sum, -200, "SINT into the INT input, INT output into DINT");
                 assert_eq!(f.lr, 0.1f32 as f64);
             }
+
+            #[test]
+            fn widening_into_standard_functions() {
+                for (s, i, d) in [(-100i8, 50i16, 7i32), (20, -300, 40_000), (100, 200, -5)] {
+                    let mut ctx = Cycle::new();
+                    let mut f = WideningStd::default();
+                    (f.s, f.i, f.d) = (s, i, d);
+                    f.call(&mut ctx);
+                    let got = (f.lim, f.big, f.small, f.q);
+                    let want = (
+                        i.clamp(s as i16, 100),
+                        d.max(i as i32).max(s as i32),
+                        (s as i16).min(i),
+                        s <= 1,
+                    );
+                    assert_eq!(got, want, "s={s} i={i} d={d}");
+                    assert_eq!(super::widening_std_interpreted(s, i, d), want);
+                }
+            }
         }
     };
 }
 
 dialect_tests!(via_build);
 dialect_tests!(via_macro);
+
+/// `WideningStd` through the interpreter: (lim, big, small, q).
+fn widening_std_interpreted(s: i8, i: i16, d: i32) -> (i16, i32, i16, bool) {
+    use il_codegen::sema::types::Elem;
+    let src = std::fs::read_to_string("plc/dialect.il").expect("read");
+    let prog = il_interp::load(&il_codegen::diag::SourceFile::new("dialect.il", src)).unwrap();
+    let mut m = il_interp::Machine::new(&prog, "WideningStd").unwrap();
+    m.set("s", il_interp::int(s.into(), Elem::SINT)).unwrap();
+    m.set("i", il_interp::int(i.into(), Elem::INT)).unwrap();
+    m.set("d", il_interp::int(d.into(), Elem::DINT)).unwrap();
+    m.scan(&mut Cycle::new()).unwrap();
+    let int = |n: &str| m.get(n).unwrap().as_i64();
+    (
+        int("lim") as i16,
+        int("big") as i32,
+        int("small") as i16,
+        m.get("q").unwrap().as_bool(),
+    )
+}
 
 macro_rules! bit_tests {
     ($name:ident, $m:ident) => {

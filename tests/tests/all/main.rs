@@ -6,6 +6,7 @@
 
 mod addresses;
 mod annex_f;
+mod cfg_forms;
 mod corners;
 mod dialect;
 mod differential;

@@ -14,7 +14,6 @@ use super::{Cx, stdfb, stdfn, suggest};
 use crate::ast::{
     self, Accessor, CallArgs, Cond, ExprOp, InstrKind, Operand, ParamKind, PouKind, Span, VarRef,
 };
-use std::collections::HashMap;
 
 mod fb_calls;
 mod fn_calls;
@@ -78,7 +77,7 @@ pub(crate) fn check_pou(
     pou: &ast::Pou,
     sig: &PouSig,
 ) -> Option<CheckedPou> {
-    let mut labels = HashMap::new();
+    let mut labels = super::hash::FxMap::default();
     let mut label_spans = Vec::new();
     let mut label_names = Vec::new();
     for s in &pou.body {
@@ -136,29 +135,44 @@ pub(crate) fn check_pou(
     // Forward edges are used in the same round, so straight-line code with
     // any number of labels settles in two rounds; each round adds backward
     // edges, and the per-label lattice is short, so loops settle quickly too.
+    //
+    // A round that settles ran on the very states a final pass would use
+    // (the label states and backward edges it leaves are the ones it
+    // started from), so its statements and diagnostics are the final ones.
+    // Every round but the first (which starts from nothing) therefore runs
+    // as the final pass and is kept when it settles: no extra walk over the
+    // body. A first round that settles is walked once more, as the final
+    // pass (without labels, the first round is the final pass).
+    let (stmts, steps) = output_size(&pou.body);
+    w.out = Vec::with_capacity(stmts + stmts / 16);
+    w.cr_steps = Vec::with_capacity(steps);
     let mut settled = false;
-    for _ in 0..64 {
+    for round in 0..64 {
+        w.final_pass = round > 0 || n == 0;
+        let mark = w.cx.diags.len();
         w.edges.iter_mut().for_each(Vec::clear);
         w.back_now.iter_mut().for_each(Vec::clear);
+        w.start_output();
         w.walk(&pou.body);
         let next: Vec<Cr> = w.edges.iter().map(|e| join(e)).collect();
         let same = next == w.label_in && w.back_now == w.back_prev;
-        w.label_in = next;
-        w.back_prev = w.back_now.clone();
-        if same {
+        if same && w.final_pass {
             settled = true;
             break;
         }
+        // Not the last round: what it reported is reported again later.
+        w.cx.diags.truncate(mark);
+        w.label_in = next;
+        std::mem::swap(&mut w.back_prev, &mut w.back_now);
     }
     if !settled {
         // Never silently: report it rather than emit code from unsettled states.
         w.cx.err(UNSUPPORTED, pou.name.span, format!("the flow analysis of `{}` did not settle (too many nested loops); please report this", pou.name));
+        w.final_pass = true;
+        w.edges.iter_mut().for_each(Vec::clear);
+        w.start_output();
+        w.walk(&pou.body);
     }
-    w.final_pass = true;
-    w.edges.iter_mut().for_each(Vec::clear);
-    w.out.clear();
-    w.cr_steps.clear();
-    w.walk(&pou.body);
     for (i, used) in w.jumped.iter().enumerate() {
         if !used {
             let span = label_spans[i];
@@ -187,6 +201,25 @@ pub(crate) fn check_pou(
         save_types: w.save_types,
         retained: super::configuration::retained(env, sig),
         cr_steps: w.cr_steps,
+    })
+}
+
+/// About how many statements and CR steps the final pass records for
+/// `body`: the output vectors are sized once (they are the largest part of
+/// the checked program; growing them by doubling copies them and leaves
+/// up to half unused).
+fn output_size(body: &[ast::Stmt]) -> (usize, usize) {
+    body.iter().fold((0, 0), |(stmts, steps), s| match s {
+        ast::Stmt::Label(_) => (stmts + 1, steps + 1),
+        ast::Stmt::Instr(i) => match &i.kind {
+            // Nop, save of the outer CR, the inner body, the operation.
+            InstrKind::Deferred { body, .. } => {
+                let (a, b) = output_size(body);
+                (stmts + 3 + a, steps + 1 + b)
+            }
+            // Nop and the operation.
+            _ => (stmts + 2, steps + 1),
+        },
     })
 }
 
@@ -289,7 +322,7 @@ struct Walk<'a, 'c> {
     cx: &'a mut Cx<'c>,
     env: &'a Env,
     sig: &'a PouSig,
-    labels: HashMap<String, usize>,
+    labels: super::hash::FxMap<String, usize>,
     /// Each label as declared (suggestions show the user's spelling).
     label_names: Vec<String>,
     /// CR after each label (from the previous round).
@@ -332,9 +365,14 @@ impl Walk<'_, '_> {
 
     /// The statements pushed next come from the source at `span`.
     fn at(&mut self, span: Span) {
-        let (line, col) = self.cx.file.line_col(span.lo);
-        self.line = line as u32;
-        self.col = col as u32;
+        // Only the final pass builds statements, which need the column.
+        if self.final_pass {
+            let (line, col) = self.cx.file.line_col(span.lo);
+            self.line = line as u32;
+            self.col = col as u32;
+        } else {
+            self.line = self.cx.file.line_of(span.lo) as u32;
+        }
     }
 
     /// A 3rd-edition form at `span` (an error under the 2nd edition).
@@ -362,6 +400,11 @@ impl Walk<'_, '_> {
     }
 
     fn push(&mut self, op: Op) {
+        // The rounds before the final pass only settle the label states;
+        // their statements would be thrown away.
+        if !self.final_pass {
+            return;
+        }
         if let Op::SetCr { ty, .. } = &op
             && !self.cr_types.contains(ty)
         {
@@ -372,6 +415,14 @@ impl Walk<'_, '_> {
             line: self.line,
             col: self.col,
         });
+    }
+
+    /// Forget the statements and records of an earlier round.
+    fn start_output(&mut self) {
+        self.out.clear();
+        self.cr_steps.clear();
+        self.cr_types.clear();
+        self.addresses.clear();
     }
 
     fn walk(&mut self, body: &[ast::Stmt]) {

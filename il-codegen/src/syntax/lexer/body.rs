@@ -264,7 +264,7 @@ impl<'a> Lexer<'a> {
                         type_prefix: None,
                         span: span(s, e),
                     };
-                    self.push(s, Tok::Lit(lit), e);
+                    self.push(s, Tok::Lit(Box::new(lit)), e);
                 } else if up == "NOT" && (self.arg_depth > 0 || !body) {
                     self.push(s, Tok::Not, e);
                 } else if !body && let Some(kw) = decl_keyword(&up) {
@@ -292,7 +292,7 @@ impl<'a> Lexer<'a> {
                         type_prefix: None,
                         span: span(start, end),
                     };
-                    self.push(start, Tok::Lit(lit), end);
+                    self.push(start, Tok::Lit(Box::new(lit)), end);
                 }
             }
             b'%' => self.address(start),

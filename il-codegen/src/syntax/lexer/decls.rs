@@ -65,7 +65,7 @@ impl<'a> Lexer<'a> {
                     type_prefix: None,
                     span: span(s, e),
                 };
-                self.push(s, Tok::Lit(lit), e);
+                self.push(s, Tok::Lit(Box::new(lit)), e);
             } else {
                 self.push(s, Tok::Ident(word.to_string()), e);
             }
@@ -140,7 +140,7 @@ impl<'a> Lexer<'a> {
             (Mode::Config, Tok::EndConfiguration) => self.mode = Mode::Top,
             (Mode::Config, Tok::Resource) => self.in_resource = true,
             (Mode::Config, Tok::EndResource) => self.in_resource = false,
-            (Mode::Config, Tok::Var(_)) => {
+            (Mode::Config, Tok::Var(_) | Tok::VarConfig | Tok::VarAccess) => {
                 self.mode = Mode::Var;
                 self.var_ret = Mode::Config;
             }

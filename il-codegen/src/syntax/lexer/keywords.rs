@@ -139,6 +139,10 @@ pub(super) fn decl_keyword(up: &str) -> Option<Tok> {
     }
     Some(match up {
         "END_VAR" => Tok::EndVar,
+        "VAR_CONFIG" => Tok::VarConfig,
+        "VAR_ACCESS" => Tok::VarAccess,
+        "READ_WRITE" => Tok::ReadWrite,
+        "READ_ONLY" => Tok::ReadOnly,
         "CONSTANT" => Tok::Constant,
         "RETAIN" => Tok::Retain,
         "NON_RETAIN" => Tok::NonRetain,

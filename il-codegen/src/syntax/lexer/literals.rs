@@ -126,7 +126,7 @@ impl<'a> Lexer<'a> {
             type_prefix,
             span: span(lo, i),
         };
-        self.push(lo, Tok::Lit(lit), i);
+        self.push(lo, Tok::Lit(Box::new(lit)), i);
     }
 
     /// End (exclusive) of the string literal starting with a quote at
@@ -217,7 +217,7 @@ impl<'a> Lexer<'a> {
                     type_prefix: None,
                     span: span(s, hi),
                 };
-                this.push(s, Tok::Lit(lit), hi);
+                this.push(s, Tok::Lit(Box::new(lit)), hi);
             };
         match up.as_str() {
             "T" | "TIME" | "LT" | "LTIME" => {
@@ -270,7 +270,7 @@ impl<'a> Lexer<'a> {
                             type_prefix: Some(prefix),
                             span: span(s, end),
                         };
-                        self.push(s, Tok::Lit(lit), end);
+                        self.push(s, Tok::Lit(Box::new(lit)), end);
                     }
                 } else if c.is_ascii_digit()
                     || (matches!(c, b'-' | b'+') && self.peek(1).is_ascii_digit())
@@ -311,7 +311,7 @@ impl<'a> Lexer<'a> {
                         type_prefix,
                         span: span(s, ve),
                     };
-                    self.push(s, Tok::Lit(lit), ve);
+                    self.push(s, Tok::Lit(Box::new(lit)), ve);
                 } else {
                     self.diag(
                         code::BAD_NUMBER,
@@ -461,6 +461,6 @@ impl<'a> Lexer<'a> {
             partial,
             span: span(start, i),
         };
-        self.push(start, Tok::Addr(addr), i);
+        self.push(start, Tok::Addr(Box::new(addr)), i);
     }
 }

@@ -58,10 +58,12 @@ pub enum Tok {
     Label(String),
     /// A name (spelling as written); also an operator word in operand position.
     Ident(String),
-    /// A literal: `5`, `16#FF`, `T#1s`, `'abc'`, `TRUE`.
-    Lit(Literal),
+    /// A literal: `5`, `16#FF`, `T#1s`, `'abc'`, `TRUE`. Boxed, like the
+    /// address: they are large (an `i128` value) and rare next to names and
+    /// operators, and every token is as large as the largest one.
+    Lit(Box<Literal>),
     /// A direct address: `%IX0.1`, `%MW10`.
-    Addr(DirectAddress),
+    Addr(Box<DirectAddress>),
     /// `%X3`, `%B1`, `%W0`, `%D1` right after a `.`: a partial access (3rd edition).
     Part(AddrSize, u32),
     // Operators (operator field of a body line).
@@ -123,6 +125,14 @@ pub enum Tok {
     Var(VarKind),
     /// `END_VAR`
     EndVar,
+    /// `VAR_CONFIG` (in a CONFIGURATION)
+    VarConfig,
+    /// `VAR_ACCESS` (in a CONFIGURATION or RESOURCE)
+    VarAccess,
+    /// `READ_WRITE`
+    ReadWrite,
+    /// `READ_ONLY`
+    ReadOnly,
     /// `CONSTANT`
     Constant,
     /// `RETAIN`

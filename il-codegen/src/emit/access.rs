@@ -1,0 +1,58 @@
+//! VAR_ACCESS in the generated configuration: a typed getter per access
+//! path and, for READ_WRITE, a setter.
+
+use super::text::doc;
+use super::{rust_ident, rust_ty};
+use crate::sema::ir::{AccessTarget, ConfigDef};
+
+/// `access_NAME(&self) -> T` and (READ_WRITE) `set_access_NAME(&mut self, v: T)`.
+pub(super) fn methods(c: &ConfigDef) -> String {
+    let mut out = String::new();
+    for a in &c.access {
+        let (path, what) = match &a.target {
+            AccessTarget::Global(g) => {
+                let (v, base) = match g.resource {
+                    None => (&c.globals[g.index], "self".to_string()),
+                    Some(r) => {
+                        let v = &c.resources[r].globals[g.index];
+                        match &c.resources[r].name {
+                            Some(n) => (v, format!("self.{}", rust_ident(n))),
+                            None => (v, "self".to_string()),
+                        }
+                    }
+                };
+                (
+                    format!("{base}.{}", rust_ident(&v.name)),
+                    format!("the global `{}`", v.name),
+                )
+            }
+            AccessTarget::Instance(p) => (
+                super::config_vars::place(c, "self", p),
+                format!("`{}`", p.text),
+            ),
+        };
+        let ty = rust_ty(&a.ty);
+        let get = rust_ident(&format!("access_{}", a.name));
+        let d = doc(&format!(
+            " VAR_ACCESS `{}` : {what} : {} {}.",
+            a.name,
+            a.ty,
+            if a.writable {
+                "READ_WRITE"
+            } else {
+                "READ_ONLY"
+            }
+        ));
+        out.push_str(&format!(
+            "{d}pub fn {get}(&self) -> {ty} {{ ::core::clone::Clone::clone(&{path}) }}"
+        ));
+        if a.writable {
+            let set = rust_ident(&format!("set_access_{}", a.name));
+            let d = doc(&format!(" Writes VAR_ACCESS `{}` (READ_WRITE).", a.name));
+            out.push_str(&format!(
+                "{d}pub fn {set}(&mut self, value: {ty}) {{ {path} = value; }}"
+            ));
+        }
+    }
+    out
+}

@@ -1,0 +1,432 @@
+//! A CONFIGURATION run by the interpreter as the generated struct runs it:
+//! its globals, its program instances, and `run`, which decides every task's
+//! release at the same instant (`il_std::TaskState`, the same code as the
+//! emitted scheduler) and then runs the released tasks by priority, each
+//! task's programs in declaration order, then the programs without a task.
+//!
+//! A program instance keeps its VAR_EXTERNALs and VAR_IN_OUTs as its own
+//! memory (see [`Storage::External`]); around each run they are copied in
+//! from the globals and back out. Programs run one after the other, so this
+//! is the same as the references the generated code passes.
+
+use crate::places::{io_read, io_write};
+use crate::values::{Instance, Value};
+use crate::{Machine, find_var};
+use il_codegen::ast::Area;
+use il_codegen::sema::ir::{
+    AccessTarget, ConfigDef, GlobalRef, InstancePath, ProgArg, Program, TaskSource,
+};
+use il_std::{Cycle, TIME, TaskState};
+
+/// An instance of a CONFIGURATION ready to run.
+#[derive(Clone, Debug)]
+pub struct ConfigMachine {
+    m: Machine,
+    def: ConfigDef,
+    globals: Vec<Value>,
+    res_globals: Vec<Vec<Value>>,
+    /// Per resource, its program instances in declaration order.
+    programs: Vec<Vec<Instance>>,
+    /// (resource, task) in the order they run: priority, then declaration.
+    order: Vec<(usize, usize)>,
+    states: Vec<TaskState>,
+}
+
+impl ConfigMachine {
+    /// The CONFIGURATION `name` (case-insensitive) with its initial values.
+    pub fn new(prog: &Program, name: &str) -> Result<ConfigMachine, String> {
+        let def = prog
+            .configs
+            .iter()
+            .find(|c| c.name.eq_ignore_ascii_case(name))
+            .cloned()
+            .ok_or_else(|| {
+                let avail: Vec<&str> = prog.configs.iter().map(|c| c.name.as_str()).collect();
+                format!(
+                    "no CONFIGURATION named `{name}` (there is {})",
+                    if avail.is_empty() {
+                        "none".to_string()
+                    } else {
+                        avail.join(", ")
+                    }
+                )
+            })?;
+        let m = Machine::bare(prog);
+        let init = |vs: &[il_codegen::sema::ir::Var]| -> Result<Vec<Value>, String> {
+            vs.iter()
+                .map(|v| m.init_of(&v.ty, v.init.as_ref()))
+                .collect()
+        };
+        let globals = init(&def.globals)?;
+        let res_globals = def
+            .resources
+            .iter()
+            .map(|r| init(&r.globals))
+            .collect::<Result<_, _>>()?;
+        let mut programs = Vec::new();
+        for r in &def.resources {
+            let mut insts = Vec::new();
+            for p in &r.programs {
+                let pou = m
+                    .prog
+                    .pous
+                    .iter()
+                    .position(|x| x.name.eq_ignore_ascii_case(&p.program))
+                    .ok_or_else(|| format!("internal: no program `{}`", p.program))?;
+                insts.push(m.new_instance(pou)?);
+            }
+            programs.push(insts);
+        }
+        let mut order: Vec<(usize, usize)> = def
+            .resources
+            .iter()
+            .enumerate()
+            .flat_map(|(r, res)| (0..res.tasks.len()).map(move |t| (r, t)))
+            .collect();
+        // Declaration order breaks ties (the sort is stable), as in the emitter.
+        order.sort_by_key(|&(r, t)| def.resources[r].tasks[t].priority);
+        let states = vec![TaskState::new(); order.len()];
+        let mut c = ConfigMachine {
+            m,
+            def,
+            globals,
+            res_globals,
+            programs,
+            order,
+            states,
+        };
+        // VAR_CONFIG initial values, over the declared ones.
+        for v in c.def.var_config.clone() {
+            if let Some(i) = &v.init {
+                let val = c.m.init_of(&v.target.ty, Some(i))?;
+                *c.field_mut(&v.target)? = val;
+            }
+        }
+        Ok(c)
+    }
+
+    /// The configuration this machine runs.
+    pub fn def(&self) -> &ConfigDef {
+        &self.def
+    }
+
+    /// A global's value: `name` of the configuration (or of the unnamed
+    /// resource), or `Resource.name`. Located globals: `None` (they are in
+    /// the process image).
+    pub fn global(&self, name: &str) -> Option<Value> {
+        let g = self.find_global(name)?;
+        if self.var_of(g).location.is_some() {
+            return None;
+        }
+        Some(self.slot(g).clone())
+    }
+
+    /// Set an unlocated global (the value must have its type).
+    pub fn set_global(&mut self, name: &str, v: Value) -> Result<(), String> {
+        let g = self
+            .find_global(name)
+            .ok_or_else(|| format!("configuration `{}` has no global `{name}`", self.def.name))?;
+        if self.var_of(g).location.is_some() {
+            return Err(format!("`{name}` is in the process image"));
+        }
+        *self.slot_mut(g) = v;
+        Ok(())
+    }
+
+    /// A variable of program instance `inst` (`Resource.inst` for a named resource).
+    pub fn program_var(&self, inst: &str, var: &str) -> Option<Value> {
+        let (r, p) = self.find_program(inst)?;
+        let i = &self.programs[r][p];
+        let idx = find_var(&self.m.prog.pous[i.pou], var)?;
+        Some(i.vars[idx].clone())
+    }
+
+    /// Read the VAR_ACCESS path `name`.
+    pub fn access(&self, name: &str) -> Option<Value> {
+        let a = self
+            .def
+            .access
+            .iter()
+            .find(|a| a.name.eq_ignore_ascii_case(name))?;
+        match &a.target {
+            AccessTarget::Global(g) => Some(self.slot(*g).clone()),
+            AccessTarget::Instance(p) => self.field(p).ok().cloned(),
+        }
+    }
+
+    /// Write the VAR_ACCESS path `name`; refused for READ_ONLY ones.
+    pub fn set_access(&mut self, name: &str, v: Value) -> Result<(), String> {
+        let a = self
+            .def
+            .access
+            .iter()
+            .find(|a| a.name.eq_ignore_ascii_case(name))
+            .cloned()
+            .ok_or_else(|| format!("no access path `{name}`"))?;
+        if !a.writable {
+            return Err(format!("the access path `{}` is READ_ONLY", a.name));
+        }
+        match &a.target {
+            AccessTarget::Global(g) => *self.slot_mut(*g) = v,
+            AccessTarget::Instance(p) => *self.field_mut(p)? = v,
+        }
+        Ok(())
+    }
+
+    /// Missed periodic releases per task, in run order (as the generated `overruns`).
+    pub fn overruns(&self) -> Vec<u64> {
+        self.states.iter().map(|s| s.overruns()).collect()
+    }
+
+    /// Run every task released at `ctx.now()`; how many programs ran.
+    pub fn run(&mut self, ctx: &mut Cycle) -> Result<usize, String> {
+        self.run_traced(ctx, |_, _| {})
+    }
+
+    /// [`Self::run`], calling `trace(task, program)` before each program
+    /// (`task` is `""` for programs without a task).
+    pub fn run_traced(
+        &mut self,
+        ctx: &mut Cycle,
+        mut trace: impl FnMut(&str, &str),
+    ) -> Result<usize, String> {
+        let now = ctx.now();
+        // Every task's release is decided at the same instant.
+        let mut due = Vec::with_capacity(self.order.len());
+        for k in 0..self.order.len() {
+            let (r, t) = self.order[k];
+            let task = &self.def.resources[r].tasks[t];
+            let interval = match &task.interval {
+                TaskSource::Fixed(ns) => *ns,
+                TaskSource::Global(g) => self.read(ctx, *g).as_i64(),
+                TaskSource::Addr(_) => 0,
+            };
+            let single = task.single.as_ref().map(|s| match s {
+                TaskSource::Fixed(b) => *b,
+                TaskSource::Global(g) => self.read(ctx, *g).as_bool(),
+                TaskSource::Addr(l) => io_read(ctx, l).as_bool(),
+            });
+            due.push(self.states[k].due(now, TIME(interval), single));
+        }
+        let mut ran = 0;
+        for (k, &(r, t)) in self.order.clone().iter().enumerate() {
+            if !due[k] {
+                continue;
+            }
+            for p in 0..self.def.resources[r].programs.len() {
+                if self.def.resources[r].programs[p].task == Some(t) {
+                    let task = self.def.resources[r].tasks[t].name.clone();
+                    trace(&task, &self.def.resources[r].programs[p].name);
+                    self.run_program(ctx, r, p)?;
+                    ran += 1;
+                }
+            }
+        }
+        for r in 0..self.def.resources.len() {
+            for p in 0..self.def.resources[r].programs.len() {
+                if self.def.resources[r].programs[p].task.is_none() {
+                    trace("", &self.def.resources[r].programs[p].name);
+                    self.run_program(ctx, r, p)?;
+                    ran += 1;
+                }
+            }
+        }
+        Ok(ran)
+    }
+
+    fn run_program(&mut self, ctx: &mut Cycle, r: usize, p: usize) -> Result<(), String> {
+        let pi = self.def.resources[r].programs[p].clone();
+        let mut inst = std::mem::replace(
+            &mut self.programs[r][p],
+            Instance {
+                pou: 0,
+                vars: Vec::new(),
+                edge_mem: Vec::new(),
+            },
+        );
+        let pou = inst.pou;
+        let idx = |m: &Machine, n: &str| {
+            find_var(&m.prog.pous[pou], n).ok_or_else(|| format!("internal: no variable `{n}`"))
+        };
+        for (n, a) in &pi.inputs {
+            let v = match a {
+                ProgArg::Const(c) => Value::from_const(c),
+                ProgArg::Global(g) => self.read(ctx, *g),
+            };
+            inst.vars[idx(&self.m, n)?] = v;
+        }
+        let refs = pi
+            .externals
+            .iter()
+            .map(|(n, g, _)| (n, g))
+            .chain(pi.inouts.iter().map(|(n, g)| (n, g)));
+        for (n, g) in refs.clone() {
+            inst.vars[idx(&self.m, n)?] = self.slot(*g).clone();
+        }
+        self.programs[r][p] = inst;
+        self.copy_config(ctx, r, p, true)?;
+        let mut inst = std::mem::replace(
+            &mut self.programs[r][p],
+            Instance {
+                pou: 0,
+                vars: Vec::new(),
+                edge_mem: Vec::new(),
+            },
+        );
+        self.m.steps = 0;
+        self.m.error_located = false;
+        let result = self.m.call_instance(&mut inst, ctx);
+        for (n, g) in refs {
+            let v = inst.vars[idx(&self.m, n)?].clone();
+            *self.slot_mut(*g) = v;
+        }
+        for (n, g) in &pi.outputs {
+            let v = inst.vars[idx(&self.m, n)?].clone();
+            match &self.var_of(*g).location {
+                Some(l) => io_write(ctx, l, &v),
+                None => *self.slot_mut(*g) = v,
+            }
+        }
+        self.programs[r][p] = inst;
+        self.copy_config(ctx, r, p, false)?;
+        result
+    }
+
+    /// The VAR_CONFIG addresses of program `p` of resource `r`: `%I`/`%M`
+    /// into the field before the run, the field to `%Q`/`%M` after it.
+    fn copy_config(
+        &mut self,
+        ctx: &mut Cycle,
+        r: usize,
+        p: usize,
+        before: bool,
+    ) -> Result<(), String> {
+        for v in self.def.var_config.clone() {
+            let Some(l) = &v.location else { continue };
+            if (v.target.resource, v.target.program) != (r, p) {
+                continue;
+            }
+            match (before, l.area) {
+                (true, Area::Input | Area::Memory) => *self.field_mut(&v.target)? = io_read(ctx, l),
+                (false, Area::Output | Area::Memory) => io_write(ctx, l, self.field(&v.target)?),
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+
+    fn field(&self, p: &InstancePath) -> Result<&Value, String> {
+        let prog = self.m.prog.clone();
+        let mut inst = &self.programs[p.resource][p.program];
+        for (k, f) in p.fields.iter().enumerate() {
+            let i =
+                find_var(&prog.pous[inst.pou], f).ok_or_else(|| format!("internal: no `{f}`"))?;
+            if k + 1 == p.fields.len() {
+                return Ok(&inst.vars[i]);
+            }
+            match &inst.vars[i] {
+                Value::Fb(b) => inst = b,
+                _ => return Err(format!("internal: `{f}` is not an instance")),
+            }
+        }
+        Err("internal: empty instance path".into())
+    }
+
+    fn field_mut(&mut self, p: &InstancePath) -> Result<&mut Value, String> {
+        let prog = self.m.prog.clone();
+        let mut inst = &mut self.programs[p.resource][p.program];
+        for (k, f) in p.fields.iter().enumerate() {
+            let i =
+                find_var(&prog.pous[inst.pou], f).ok_or_else(|| format!("internal: no `{f}`"))?;
+            if k + 1 == p.fields.len() {
+                return Ok(&mut inst.vars[i]);
+            }
+            match &mut inst.vars[i] {
+                Value::Fb(b) => inst = b,
+                _ => return Err(format!("internal: `{f}` is not an instance")),
+            }
+        }
+        Err("internal: empty instance path".into())
+    }
+
+    fn var_of(&self, g: GlobalRef) -> &il_codegen::sema::ir::Var {
+        match g.resource {
+            None => &self.def.globals[g.index],
+            Some(r) => &self.def.resources[r].globals[g.index],
+        }
+    }
+
+    fn slot(&self, g: GlobalRef) -> &Value {
+        match g.resource {
+            None => &self.globals[g.index],
+            Some(r) => &self.res_globals[r][g.index],
+        }
+    }
+
+    fn slot_mut(&mut self, g: GlobalRef) -> &mut Value {
+        match g.resource {
+            None => &mut self.globals[g.index],
+            Some(r) => &mut self.res_globals[r][g.index],
+        }
+    }
+
+    /// A global's value, from the process image when it is located.
+    fn read(&self, ctx: &Cycle, g: GlobalRef) -> Value {
+        match &self.var_of(g).location {
+            Some(l) => io_read(ctx, l),
+            None => self.slot(g).clone(),
+        }
+    }
+
+    fn find_global(&self, name: &str) -> Option<GlobalRef> {
+        let find = |vs: &[il_codegen::sema::ir::Var], n: &str| {
+            vs.iter().position(|v| v.name.eq_ignore_ascii_case(n))
+        };
+        if let Some((res, n)) = name.split_once('.') {
+            let r = self.def.resources.iter().position(|x| {
+                x.name
+                    .as_ref()
+                    .is_some_and(|rn| rn.eq_ignore_ascii_case(res))
+            })?;
+            let index = find(&self.def.resources[r].globals, n)?;
+            return Some(GlobalRef {
+                resource: Some(r),
+                index,
+            });
+        }
+        if let Some(index) = find(&self.def.globals, name) {
+            return Some(GlobalRef {
+                resource: None,
+                index,
+            });
+        }
+        let r = self.def.resources.iter().position(|x| x.name.is_none())?;
+        let index = find(&self.def.resources[r].globals, name)?;
+        Some(GlobalRef {
+            resource: Some(r),
+            index,
+        })
+    }
+
+    fn find_program(&self, name: &str) -> Option<(usize, usize)> {
+        let (res, n) = match name.split_once('.') {
+            Some((r, n)) => (Some(r), n),
+            None => (None, name),
+        };
+        self.def.resources.iter().enumerate().find_map(|(r, x)| {
+            let same_res = match (res, &x.name) {
+                (None, None) => true,
+                (Some(a), Some(b)) => a.eq_ignore_ascii_case(b),
+                _ => false,
+            };
+            if !same_res {
+                return None;
+            }
+            let p = x
+                .programs
+                .iter()
+                .position(|p| p.name.eq_ignore_ascii_case(n))?;
+            Some((r, p))
+        })
+    }
+}
