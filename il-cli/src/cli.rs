@@ -247,8 +247,7 @@ pub fn command() -> Command {
                     Arg::new("watch")
                         .long("watch")
                         .value_name("VAR,...")
-                        .help("Variables to show (members as t1.Q); default: all")
-                        .value_delimiter(',')
+                        .help("Variables to show (members as t1.Q, elements as m[1,2]); default: all")
                         .action(ArgAction::Append),
                 )
                 .arg(

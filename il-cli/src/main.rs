@@ -88,8 +88,7 @@ fn main() -> ExitCode {
                     .get_many::<String>("watch")
                     .into_iter()
                     .flatten()
-                    .map(|s| s.trim().to_string())
-                    .filter(|s| !s.is_empty())
+                    .flat_map(|s| run::split_watch(s))
                     .collect(),
                 color: check::use_color(
                     m.get_one::<String>("color").map_or("auto", String::as_str),

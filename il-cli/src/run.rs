@@ -46,6 +46,26 @@ pub struct SetArg {
     pub cycle: u64,
 }
 
+/// The names of one `--watch` value: split at commas outside brackets, so
+/// that `m[1,2]` (an element of a 2-D array) stays one name.
+pub fn split_watch(s: &str) -> Vec<String> {
+    let (mut out, mut depth, mut start) = (Vec::new(), 0usize, 0);
+    for (i, c) in s.char_indices() {
+        match c {
+            '[' => depth += 1,
+            ']' => depth = depth.saturating_sub(1),
+            ',' if depth == 0 => {
+                out.push(s[start..i].trim().to_string());
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    out.push(s[start..].trim().to_string());
+    out.retain(|n| !n.is_empty());
+    out
+}
+
 /// Parse `VAR=VALUE[@CYCLE]` (a usage error otherwise).
 pub fn parse_set(s: &str) -> Result<SetArg, String> {
     let (var, rest) = s
@@ -281,6 +301,14 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn watch_lists_keep_subscripts_whole() {
+        assert_eq!(split_watch("a, m[1,2] ,t1.Q"), ["a", "m[1,2]", "t1.Q"]);
+        assert_eq!(split_watch("v[i, j].x,,b"), ["v[i, j].x", "b"]);
+        assert_eq!(split_watch("%IX0.0"), ["%IX0.0"]);
+        assert!(split_watch(" , ").is_empty());
+    }
 
     #[test]
     fn set_syntax() {

@@ -500,3 +500,30 @@ fn readme_picture_is_up_to_date() {
         "docs/traffic-light-timing.svg is out of date; refresh it with `IL_BLESS=1 cargo test -p il-cli --test all waves`"
     );
 }
+
+#[test]
+fn an_element_of_a_2d_array_is_one_watched_name() {
+    let src = file("waves_elem.il", WAVES);
+    let o = ilc(&["run", &src, "--cycles", "2", "--watch", "m[2,1],n"]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        o.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let header = stdout.lines().next().unwrap_or_default();
+    assert!(
+        header.contains("m[2,1]") && header.contains('n'),
+        "{stdout}"
+    );
+    // n counts down from 2 and m[2, 1] takes it: 1 after scan 1, 0 after scan 2.
+    let rows: Vec<Vec<&str>> = stdout
+        .lines()
+        .skip(1)
+        .map(|l| l.split_whitespace().collect())
+        .filter(|r: &Vec<&str>| r.first().is_some_and(|c| c.parse::<u32>().is_ok()))
+        .collect();
+    assert_eq!(rows.len(), 2, "{stdout}");
+    assert_eq!(&rows[0][2..], ["1", "1"], "{stdout}");
+    assert_eq!(&rows[1][2..], ["0", "0"], "{stdout}");
+}
