@@ -33,11 +33,10 @@ pub const REALS: usize = 60;
 /// Instances of each standard block in the large POU.
 pub const BLOCKS: usize = 20;
 
-/// Most labels one generated POU holds. The checker's label fixpoint runs
-/// one pass over the body per label in a chain of forward jumps and stops
-/// after 64 passes, so a POU with more labels loses code (see
-/// BENCHMARKS.md); the generator stays under that and jumps many times into
-/// each label instead.
+/// Most labels one generated POU holds: few labels with many jumps into
+/// each, the shape of the first front-end figures (BENCHMARKS.md, group 1),
+/// kept so that they stay comparable. MATIEC-style programs with thousands
+/// of labels are [`big_pou_labels`].
 pub const MAX_LABELS: usize = 40;
 
 /// One PROGRAM `Big` of about `lines` lines (never fewer): mixed BOOL, INT
