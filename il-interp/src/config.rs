@@ -21,12 +21,12 @@ use il_std::{Cycle, TIME, TaskState};
 /// An instance of a CONFIGURATION ready to run.
 #[derive(Clone, Debug)]
 pub struct ConfigMachine {
-    m: Machine,
-    def: ConfigDef,
+    pub(crate) m: Machine,
+    pub(crate) def: ConfigDef,
     globals: Vec<Value>,
     res_globals: Vec<Vec<Value>>,
     /// Per resource, its program instances in declaration order.
-    programs: Vec<Vec<Instance>>,
+    pub(crate) programs: Vec<Vec<Instance>>,
     /// (resource, task) in the order they run: priority, then declaration.
     order: Vec<(usize, usize)>,
     states: Vec<TaskState>,
@@ -315,7 +315,7 @@ impl ConfigMachine {
         Ok(())
     }
 
-    fn field(&self, p: &InstancePath) -> Result<&Value, String> {
+    pub(crate) fn field(&self, p: &InstancePath) -> Result<&Value, String> {
         let prog = self.m.prog.clone();
         let mut inst = &self.programs[p.resource][p.program];
         for (k, f) in p.fields.iter().enumerate() {
@@ -332,7 +332,7 @@ impl ConfigMachine {
         Err("internal: empty instance path".into())
     }
 
-    fn field_mut(&mut self, p: &InstancePath) -> Result<&mut Value, String> {
+    pub(crate) fn field_mut(&mut self, p: &InstancePath) -> Result<&mut Value, String> {
         let prog = self.m.prog.clone();
         let mut inst = &mut self.programs[p.resource][p.program];
         for (k, f) in p.fields.iter().enumerate() {
@@ -349,21 +349,21 @@ impl ConfigMachine {
         Err("internal: empty instance path".into())
     }
 
-    fn var_of(&self, g: GlobalRef) -> &il_codegen::sema::ir::Var {
+    pub(crate) fn var_of(&self, g: GlobalRef) -> &il_codegen::sema::ir::Var {
         match g.resource {
             None => &self.def.globals[g.index],
             Some(r) => &self.def.resources[r].globals[g.index],
         }
     }
 
-    fn slot(&self, g: GlobalRef) -> &Value {
+    pub(crate) fn slot(&self, g: GlobalRef) -> &Value {
         match g.resource {
             None => &self.globals[g.index],
             Some(r) => &self.res_globals[r][g.index],
         }
     }
 
-    fn slot_mut(&mut self, g: GlobalRef) -> &mut Value {
+    pub(crate) fn slot_mut(&mut self, g: GlobalRef) -> &mut Value {
         match g.resource {
             None => &mut self.globals[g.index],
             Some(r) => &mut self.res_globals[r][g.index],
@@ -371,14 +371,14 @@ impl ConfigMachine {
     }
 
     /// A global's value, from the process image when it is located.
-    fn read(&self, ctx: &Cycle, g: GlobalRef) -> Value {
+    pub(crate) fn read(&self, ctx: &Cycle, g: GlobalRef) -> Value {
         match &self.var_of(g).location {
             Some(l) => io_read(ctx, l),
             None => self.slot(g).clone(),
         }
     }
 
-    fn find_global(&self, name: &str) -> Option<GlobalRef> {
+    pub(crate) fn find_global(&self, name: &str) -> Option<GlobalRef> {
         let find = |vs: &[il_codegen::sema::ir::Var], n: &str| {
             vs.iter().position(|v| v.name.eq_ignore_ascii_case(n))
         };
@@ -408,7 +408,7 @@ impl ConfigMachine {
         })
     }
 
-    fn find_program(&self, name: &str) -> Option<(usize, usize)> {
+    pub(crate) fn find_program(&self, name: &str) -> Option<(usize, usize)> {
         let (res, n) = match name.split_once('.') {
             Some((r, n)) => (Some(r), n),
             None => (None, name),
