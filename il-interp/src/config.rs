@@ -99,7 +99,7 @@ impl ConfigMachine {
         for v in c.def.var_config.clone() {
             if let Some(i) = &v.init {
                 let val = c.m.init_of(&v.target.ty, Some(i))?;
-                *c.field_mut(&v.target)? = val;
+                c.set_field(&v.target, val)?;
             }
         }
         Ok(c)
@@ -150,7 +150,7 @@ impl ConfigMachine {
             .find(|a| a.name.eq_ignore_ascii_case(name))?;
         match &a.target {
             AccessTarget::Global(g) => Some(self.slot(*g).clone()),
-            AccessTarget::Instance(p) => self.field(p).ok().cloned(),
+            AccessTarget::Instance(p) => self.field(p).ok(),
         }
     }
 
@@ -168,7 +168,7 @@ impl ConfigMachine {
         }
         match &a.target {
             AccessTarget::Global(g) => *self.slot_mut(*g) = v,
-            AccessTarget::Instance(p) => *self.field_mut(p)? = v,
+            AccessTarget::Instance(p) => self.set_field(p, v)?,
         }
         Ok(())
     }
@@ -307,15 +307,41 @@ impl ConfigMachine {
                 continue;
             }
             match (before, l.area) {
-                (true, Area::Input | Area::Memory) => *self.field_mut(&v.target)? = io_read(ctx, l),
-                (false, Area::Output | Area::Memory) => io_write(ctx, l, self.field(&v.target)?),
+                (true, Area::Input | Area::Memory) => self.set_field(&v.target, io_read(ctx, l))?,
+                (false, Area::Output | Area::Memory) => io_write(ctx, l, &self.field(&v.target)?),
                 _ => {}
             }
         }
         Ok(())
     }
 
-    pub(crate) fn field(&self, p: &InstancePath) -> Result<&Value, String> {
+    /// The value a path names (a standard block's member read from it).
+    pub(crate) fn field(&self, p: &InstancePath) -> Result<Value, String> {
+        let v = self.slot_of(p)?;
+        match (&p.member, v) {
+            (None, v) => Ok(v.clone()),
+            (Some(m), Value::StdFb(b)) => b.get(m).ok_or_else(|| format!("internal: no `{m}`")),
+            (Some(_), _) => Err(format!("internal: `{}` is not a standard block", p.text)),
+        }
+    }
+
+    /// Write the value a path names.
+    pub(crate) fn set_field(&mut self, p: &InstancePath, v: Value) -> Result<(), String> {
+        let slot = self.slot_of_mut(p)?;
+        match (&p.member, slot) {
+            (None, slot) => *slot = v,
+            (Some(m), Value::StdFb(b)) => {
+                if !b.set(m, &v) {
+                    return Err(format!("internal: cannot write `{}`", p.text));
+                }
+            }
+            (Some(_), _) => return Err(format!("internal: `{}` is not a standard block", p.text)),
+        }
+        Ok(())
+    }
+
+    /// The field a path's `fields` end at.
+    fn slot_of(&self, p: &InstancePath) -> Result<&Value, String> {
         let prog = self.m.prog.clone();
         let mut inst = &self.programs[p.resource][p.program];
         for (k, f) in p.fields.iter().enumerate() {
@@ -332,7 +358,7 @@ impl ConfigMachine {
         Err("internal: empty instance path".into())
     }
 
-    pub(crate) fn field_mut(&mut self, p: &InstancePath) -> Result<&mut Value, String> {
+    fn slot_of_mut(&mut self, p: &InstancePath) -> Result<&mut Value, String> {
         let prog = self.m.prog.clone();
         let mut inst = &mut self.programs[p.resource][p.program];
         for (k, f) in p.fields.iter().enumerate() {

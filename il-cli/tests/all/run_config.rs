@@ -87,7 +87,12 @@ fn the_default_watch_is_the_globals_and_access_paths() {
     assert!(o.status.success(), "{}", text(&o.stderr));
     let header: Vec<&str> = out.lines().next().unwrap().split_whitespace().collect();
     // `Mode` is the access path to `mode`: one column.
-    assert_eq!(header, ["cycle", "time", "mode", "Scans", "Limit", "Hits"]);
+    assert_eq!(
+        header,
+        [
+            "cycle", "time", "mode", "Scans", "Limit", "Hits", "Delay", "Done"
+        ]
+    );
 }
 
 const ONE: &str = "\
