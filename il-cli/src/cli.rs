@@ -208,7 +208,7 @@ pub fn command() -> Command {
         )
         .subcommand(
             Command::new("run")
-                .about("Simulate scans of a PROGRAM with the interpreter and print a table")
+                .about("Simulate scans of a PROGRAM or CONFIGURATION with the interpreter and print a table")
                 .after_long_help(crate::run::EXAMPLES)
                 .arg(
                     Arg::new("file")
@@ -217,7 +217,10 @@ pub fn command() -> Command {
                         .help("IL source file, or a PLCopen `.xml` project"),
                 )
                 .arg(Arg::new("program").long("program").value_name("NAME").help(
-                    "The PROGRAM (or FUNCTION_BLOCK) to run; default: the file's only PROGRAM",
+                    "The PROGRAM (or FUNCTION_BLOCK) to run; default: the file's only CONFIGURATION, else its only PROGRAM",
+                ))
+                .arg(Arg::new("config").long("config").value_name("NAME").help(
+                    "The CONFIGURATION to run: its tasks decide which programs each scan runs",
                 ))
                 .arg(
                     Arg::new("cycles")

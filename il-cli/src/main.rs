@@ -7,6 +7,7 @@ mod lsp;
 mod plot;
 mod progress;
 mod run;
+mod run_target;
 mod wave;
 
 use std::io::{self, IsTerminal};
@@ -73,6 +74,7 @@ fn main() -> ExitCode {
             let opts = run::Options {
                 file: m.get_one::<String>("file").cloned().unwrap_or_default(),
                 program: m.get_one::<String>("program").cloned(),
+                config: m.get_one::<String>("config").cloned(),
                 cycles: m.get_one::<u64>("cycles").copied().unwrap_or(10),
                 step: m
                     .get_one::<il_interp::il_std::TIME>("step")

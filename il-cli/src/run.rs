@@ -1,11 +1,13 @@
-//! `ilc run`: simulate scans of a PROGRAM with the reference interpreter (no
-//! Rust compilation) and print a table of watched variables per cycle.
+//! `ilc run`: simulate scans of a PROGRAM or a CONFIGURATION with the
+//! reference interpreter (no Rust compilation) and print a table of watched
+//! variables per cycle.
 
 use std::io::Write;
 
+use crate::run_target::Target;
 use il_codegen::sema::types::Ty;
 use il_interp::il_std::{self, Cycle, TIME};
-use il_interp::{HostPlace, Machine, Value, fmt_dur};
+use il_interp::{ConfigMachine, Machine, Value, fmt_dur};
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -16,6 +18,12 @@ Examples:
   ilc run tank.il --set valves[2].open=TRUE --set state=TankState#Filling --watch valves[2]
   ilc run motor.il --program Motor --cycles 8 --set start=TRUE@2 --set start=FALSE@3 --vcd motor.vcd
   ilc run motor.il --program Motor --cycles 8 --set start=TRUE@2 --watch start,run --plot motor.svg
+
+A CONFIGURATION runs with --config NAME (or alone when the file has one and no
+single PROGRAM): each scan runs the programs whose TASK is released at that
+time, then those without a task. Its names are globals (g, Resource.g), access
+paths (VAR_ACCESS), program variables (inst.v, Resource.inst.v) and addresses:
+  ilc run cfg.il --config Plant --cycles 6 --set start=TRUE@2 --watch count,Cpu.Main.n
 
 Cycles are numbered from 1; scan k runs at time (k-1) * step. A --set without
 @CYCLE is written before scan 1. Names are variables with members and elements
@@ -116,6 +124,8 @@ pub fn parse_step(s: &str) -> Result<TIME, String> {
 pub struct Options {
     pub file: String,
     pub program: Option<String>,
+    /// `--config NAME`: run this CONFIGURATION.
+    pub config: Option<String>,
     pub cycles: u64,
     pub step: TIME,
     pub sets: Vec<SetArg>,
@@ -151,37 +161,69 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
     let Some([prog]) = checked.ir() else {
         return Err(format!("`{}` has errors; nothing was run", o.file));
     };
+    if o.program.is_some() && o.config.is_some() {
+        return Err("give --program or --config, not both".to_string());
+    }
+    let programs: Vec<&str> = prog
+        .pous
+        .iter()
+        .filter(|p| p.kind == il_codegen::ast::PouKind::Program)
+        .map(|p| p.name.as_str())
+        .collect();
+    // A CONFIGURATION is run when named, or when no --program is given and
+    // the file's only CONFIGURATION is the one thing to run (a file with one
+    // PROGRAM runs that program, as it did before configurations could run).
+    let config = match (&o.config, &o.program, prog.configs.as_slice()) {
+        (Some(c), _, _) => Some(c.clone()),
+        (None, None, [one]) if programs.len() != 1 => Some(one.name.clone()),
+        _ => None,
+    };
+    if let Some(c) = config {
+        let mut m = ConfigMachine::new(prog, &c)?;
+        return scan_table(o, prog, &mut m, out, err);
+    }
     let name = match &o.program {
         Some(n) => n.clone(),
-        None => {
-            let programs: Vec<&str> = prog
-                .pous
-                .iter()
-                .filter(|p| p.kind == il_codegen::ast::PouKind::Program)
-                .map(|p| p.name.as_str())
-                .collect();
-            match programs.as_slice() {
-                [one] => one.to_string(),
-                [] => {
-                    return Err(format!(
-                        "`{}` has no PROGRAM; name a FUNCTION_BLOCK with --program",
-                        o.file
-                    ));
-                }
-                many => {
-                    return Err(format!(
-                        "`{}` has several PROGRAMs ({}); choose one with --program",
-                        o.file,
-                        many.join(", ")
-                    ));
-                }
+        None => match programs.as_slice() {
+            [one] => one.to_string(),
+            [] => {
+                return Err(format!(
+                    "`{}` has no PROGRAM; name a FUNCTION_BLOCK with --program",
+                    o.file
+                ));
             }
-        }
+            many => {
+                let configs: Vec<&str> = prog.configs.iter().map(|c| c.name.as_str()).collect();
+                let also = if configs.is_empty() {
+                    String::new()
+                } else {
+                    format!(
+                        ", or a CONFIGURATION ({}) with --config",
+                        configs.join(", ")
+                    )
+                };
+                return Err(format!(
+                    "`{}` has several PROGRAMs ({}); choose one with --program{also}",
+                    o.file,
+                    many.join(", ")
+                ));
+            }
+        },
     };
     let mut m = Machine::new(prog, &name)?;
+    scan_table(o, prog, &mut m, out, err)
+}
 
+/// Scan `m` `o.cycles` times and print the table (and the waves).
+fn scan_table<T: Target>(
+    o: &Options,
+    prog: &il_codegen::sema::ir::Program,
+    m: &mut T,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> Result<(), String> {
     // Every --set and --watch is resolved and checked before the first scan.
-    let mut sets: Vec<(u64, HostPlace, Value)> = Vec::new();
+    let mut sets: Vec<(u64, T::Place, Value)> = Vec::new();
     for s in &o.sets {
         let place = m
             .lookup(&s.var)
@@ -205,21 +247,28 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
     let mut watch = Vec::with_capacity(watch_names.len());
     for w in &watch_names {
         let place = m.lookup(w).map_err(|e| format!("--watch {w}: {e}"))?;
-        if matches!(place.ty, Ty::Fb(_)) {
+        if matches!(m.describe(&place).1, Ty::Fb(_)) {
             return Err(format!(
                 "--watch {w}: `{w}` is a function block instance; watch its members, e.g. `{w}.Q`"
             ));
         }
         watch.push(place);
     }
+    let described: Vec<(String, Ty)> = watch
+        .iter()
+        .map(|p| {
+            let (t, ty) = m.describe(p);
+            (t.to_string(), ty.clone())
+        })
+        .collect();
 
     let mut header = vec!["cycle".to_string(), "time".to_string()];
-    header.extend(watch.iter().map(|p| p.text.clone()));
+    header.extend(described.iter().map(|(t, _)| t.clone()));
     let mut rows = Vec::new();
     let mut waves = crate::wave::Waves::new(
         prog,
-        &m.pou().name,
-        &watch,
+        &m.top(),
+        &described,
         o.step,
         o.vcd.as_ref(),
         o.plot.as_ref(),

@@ -6,9 +6,9 @@ use std::path::PathBuf;
 
 use il_codegen::sema::ir::{Program, TypeDef};
 use il_codegen::sema::types::{Elem, Ty};
+use il_interp::Value;
 use il_interp::il_std::TIME;
 use il_interp::il_std::trace::{Value as TValue, Visitor};
-use il_interp::{HostPlace, Value};
 use il_trace::{AtomicFile, Recorder};
 
 use crate::plot::{Lanes, Plot};
@@ -86,7 +86,7 @@ impl<'p> Waves<'p> {
     pub fn new(
         prog: &'p Program,
         top: &str,
-        watch: &[HostPlace],
+        watch: &[(String, Ty)],
         step: TIME,
         vcd: Option<&PathBuf>,
         plot: Option<&PathBuf>,
@@ -96,7 +96,7 @@ impl<'p> Waves<'p> {
         }
         let mut tree = Tree::default();
         for (i, p) in watch.iter().enumerate() {
-            let (scopes, name) = split_path(&p.text);
+            let (scopes, name) = split_path(&p.0);
             tree.insert(&scopes, i, name);
         }
         let vcd = match vcd {
@@ -113,7 +113,7 @@ impl<'p> Waves<'p> {
             prog,
             top: top.to_string(),
             tree,
-            tys: watch.iter().map(|p| p.ty.clone()).collect(),
+            tys: watch.iter().map(|p| p.1.clone()).collect(),
             vcd,
             plot: plot.map(|p| (p.clone(), Lanes::new(step))),
         }))

@@ -21,12 +21,12 @@ use il_std::{Cycle, TIME, TaskState};
 /// An instance of a CONFIGURATION ready to run.
 #[derive(Clone, Debug)]
 pub struct ConfigMachine {
-    m: Machine,
-    def: ConfigDef,
+    pub(crate) m: Machine,
+    pub(crate) def: ConfigDef,
     globals: Vec<Value>,
     res_globals: Vec<Vec<Value>>,
     /// Per resource, its program instances in declaration order.
-    programs: Vec<Vec<Instance>>,
+    pub(crate) programs: Vec<Vec<Instance>>,
     /// (resource, task) in the order they run: priority, then declaration.
     order: Vec<(usize, usize)>,
     states: Vec<TaskState>,
@@ -99,7 +99,7 @@ impl ConfigMachine {
         for v in c.def.var_config.clone() {
             if let Some(i) = &v.init {
                 let val = c.m.init_of(&v.target.ty, Some(i))?;
-                *c.field_mut(&v.target)? = val;
+                c.set_field(&v.target, val)?;
             }
         }
         Ok(c)
@@ -150,7 +150,7 @@ impl ConfigMachine {
             .find(|a| a.name.eq_ignore_ascii_case(name))?;
         match &a.target {
             AccessTarget::Global(g) => Some(self.slot(*g).clone()),
-            AccessTarget::Instance(p) => self.field(p).ok().cloned(),
+            AccessTarget::Instance(p) => self.field(p).ok(),
         }
     }
 
@@ -168,7 +168,7 @@ impl ConfigMachine {
         }
         match &a.target {
             AccessTarget::Global(g) => *self.slot_mut(*g) = v,
-            AccessTarget::Instance(p) => *self.field_mut(p)? = v,
+            AccessTarget::Instance(p) => self.set_field(p, v)?,
         }
         Ok(())
     }
@@ -307,15 +307,41 @@ impl ConfigMachine {
                 continue;
             }
             match (before, l.area) {
-                (true, Area::Input | Area::Memory) => *self.field_mut(&v.target)? = io_read(ctx, l),
-                (false, Area::Output | Area::Memory) => io_write(ctx, l, self.field(&v.target)?),
+                (true, Area::Input | Area::Memory) => self.set_field(&v.target, io_read(ctx, l))?,
+                (false, Area::Output | Area::Memory) => io_write(ctx, l, &self.field(&v.target)?),
                 _ => {}
             }
         }
         Ok(())
     }
 
-    fn field(&self, p: &InstancePath) -> Result<&Value, String> {
+    /// The value a path names (a standard block's member read from it).
+    pub(crate) fn field(&self, p: &InstancePath) -> Result<Value, String> {
+        let v = self.slot_of(p)?;
+        match (&p.member, v) {
+            (None, v) => Ok(v.clone()),
+            (Some(m), Value::StdFb(b)) => b.get(m).ok_or_else(|| format!("internal: no `{m}`")),
+            (Some(_), _) => Err(format!("internal: `{}` is not a standard block", p.text)),
+        }
+    }
+
+    /// Write the value a path names.
+    pub(crate) fn set_field(&mut self, p: &InstancePath, v: Value) -> Result<(), String> {
+        let slot = self.slot_of_mut(p)?;
+        match (&p.member, slot) {
+            (None, slot) => *slot = v,
+            (Some(m), Value::StdFb(b)) => {
+                if !b.set(m, &v) {
+                    return Err(format!("internal: cannot write `{}`", p.text));
+                }
+            }
+            (Some(_), _) => return Err(format!("internal: `{}` is not a standard block", p.text)),
+        }
+        Ok(())
+    }
+
+    /// The field a path's `fields` end at.
+    fn slot_of(&self, p: &InstancePath) -> Result<&Value, String> {
         let prog = self.m.prog.clone();
         let mut inst = &self.programs[p.resource][p.program];
         for (k, f) in p.fields.iter().enumerate() {
@@ -332,7 +358,7 @@ impl ConfigMachine {
         Err("internal: empty instance path".into())
     }
 
-    fn field_mut(&mut self, p: &InstancePath) -> Result<&mut Value, String> {
+    fn slot_of_mut(&mut self, p: &InstancePath) -> Result<&mut Value, String> {
         let prog = self.m.prog.clone();
         let mut inst = &mut self.programs[p.resource][p.program];
         for (k, f) in p.fields.iter().enumerate() {
@@ -349,21 +375,21 @@ impl ConfigMachine {
         Err("internal: empty instance path".into())
     }
 
-    fn var_of(&self, g: GlobalRef) -> &il_codegen::sema::ir::Var {
+    pub(crate) fn var_of(&self, g: GlobalRef) -> &il_codegen::sema::ir::Var {
         match g.resource {
             None => &self.def.globals[g.index],
             Some(r) => &self.def.resources[r].globals[g.index],
         }
     }
 
-    fn slot(&self, g: GlobalRef) -> &Value {
+    pub(crate) fn slot(&self, g: GlobalRef) -> &Value {
         match g.resource {
             None => &self.globals[g.index],
             Some(r) => &self.res_globals[r][g.index],
         }
     }
 
-    fn slot_mut(&mut self, g: GlobalRef) -> &mut Value {
+    pub(crate) fn slot_mut(&mut self, g: GlobalRef) -> &mut Value {
         match g.resource {
             None => &mut self.globals[g.index],
             Some(r) => &mut self.res_globals[r][g.index],
@@ -371,14 +397,14 @@ impl ConfigMachine {
     }
 
     /// A global's value, from the process image when it is located.
-    fn read(&self, ctx: &Cycle, g: GlobalRef) -> Value {
+    pub(crate) fn read(&self, ctx: &Cycle, g: GlobalRef) -> Value {
         match &self.var_of(g).location {
             Some(l) => io_read(ctx, l),
             None => self.slot(g).clone(),
         }
     }
 
-    fn find_global(&self, name: &str) -> Option<GlobalRef> {
+    pub(crate) fn find_global(&self, name: &str) -> Option<GlobalRef> {
         let find = |vs: &[il_codegen::sema::ir::Var], n: &str| {
             vs.iter().position(|v| v.name.eq_ignore_ascii_case(n))
         };
@@ -408,7 +434,7 @@ impl ConfigMachine {
         })
     }
 
-    fn find_program(&self, name: &str) -> Option<(usize, usize)> {
+    pub(crate) fn find_program(&self, name: &str) -> Option<(usize, usize)> {
         let (res, n) = match name.split_once('.') {
             Some((r, n)) => (Some(r), n),
             None => (None, name),

@@ -284,6 +284,24 @@ impl Machine {
     /// `42`, `16#FF`, `T#10ms`, `'text'`) and enumeration values
     /// (`TankState#Filling` or `Filling`).
     pub fn parse_for(&self, p: &HostPlace, text: &str) -> Result<Value, String> {
+        self.parse_typed(&p.text, &p.ty, p.range, text)
+    }
+
+    /// [`Self::parse_for`] for a place named `place` of type `ty` (also the
+    /// places of a configuration).
+    pub(crate) fn parse_typed(
+        &self,
+        place: &str,
+        ty: &Ty,
+        range: Option<(i128, i128)>,
+        text: &str,
+    ) -> Result<Value, String> {
+        let p = HostPlace {
+            text: place.to_string(),
+            ty: ty.clone(),
+            range,
+            target: Target::Var(0, Vec::new()),
+        };
         let t = text.trim();
         if let Ty::Enum(n) = &p.ty {
             let TypeDef::Enum { name, values, .. } = self.type_def(n)? else {
@@ -331,7 +349,7 @@ impl Machine {
     }
 
     /// Whether `v` is a value of type `t`.
-    fn fits(&self, v: &Value, t: &Ty) -> Result<bool, String> {
+    pub(crate) fn fits(&self, v: &Value, t: &Ty) -> Result<bool, String> {
         Ok(match (v, t) {
             (Value::Enum { ty, .. }, Ty::Enum(n)) => ty.eq_ignore_ascii_case(n),
             (Value::Struct(s), Ty::Struct(n)) => s.ty.eq_ignore_ascii_case(n),

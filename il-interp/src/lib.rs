@@ -19,6 +19,7 @@
 
 mod calls;
 mod config;
+mod config_host;
 mod constants;
 mod expressions;
 mod flow;
@@ -28,6 +29,7 @@ mod stdfn;
 mod values;
 
 pub use config::ConfigMachine;
+pub use config_host::ConfigPlace;
 pub use constants::parse_literal;
 pub use host::HostPlace;
 /// The runtime the interpreter runs on (for front ends without their own dependency).

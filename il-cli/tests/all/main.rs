@@ -10,5 +10,6 @@ mod explain;
 mod lsp;
 mod plcopen;
 mod run;
+mod run_config;
 mod ui;
 mod waves;

@@ -32,7 +32,7 @@ skip:
 END_PROGRAM
 ";
 
-fn file(name: &str, text: &str) -> String {
+pub(crate) fn file(name: &str, text: &str) -> String {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("ilc_run");
     std::fs::create_dir_all(&dir).unwrap();
     let p = dir.join(name);
@@ -40,7 +40,7 @@ fn file(name: &str, text: &str) -> String {
     p.display().to_string()
 }
 
-fn ilc(args: &[&str]) -> Output {
+pub(crate) fn ilc(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_ilc"))
         .args(args)
         .env("NO_COLOR", "1")
@@ -48,7 +48,7 @@ fn ilc(args: &[&str]) -> Output {
         .expect("run ilc")
 }
 
-fn text(b: &[u8]) -> String {
+pub(crate) fn text(b: &[u8]) -> String {
     String::from_utf8_lossy(b).into_owned()
 }
 
@@ -208,7 +208,7 @@ cycle  time  t1.ET  done
 const TANK: &str = include_str!("tank.il");
 
 /// The table's rows as cells, without the header.
-fn rows(out: &str) -> Vec<Vec<String>> {
+pub(crate) fn rows(out: &str) -> Vec<Vec<String>> {
     out.lines()
         .skip(1)
         .map(|l| l.split_whitespace().map(str::to_string).collect())

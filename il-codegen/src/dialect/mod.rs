@@ -76,6 +76,14 @@ pub enum Feature {
     },
     /// `v.3`, `v.%X3`, `v.%B1` ...: as written.
     PartialAccess(String),
+    /// `AT %I*` (as written) in VAR_INPUT or VAR_OUTPUT (`section`): a
+    /// CODESYS-family placement; Ed.2 2.4.1.1 allows it only in VAR.
+    PartlyInInterface {
+        /// The address as written.
+        text: String,
+        /// `VAR_INPUT` or `VAR_OUTPUT`.
+        section: &'static str,
+    },
 }
 
 impl Feature {
@@ -99,6 +107,13 @@ impl Feature {
                 format!("partial access `{text}` is a 3rd-edition feature"),
                 "partial access",
                 "mask and shift with AND and SHR, or check with the default standard (iec2013)"
+                    .to_string(),
+            ),
+            Feature::PartlyInInterface { text, section } => (
+                codes::PARTLY_IN_INTERFACE,
+                format!("a partly specified address `{text}` in {section} is a vendor form"),
+                "partly specified address",
+                "declare the variable in VAR (the 2nd edition binds `%I*` there only), or check with the default standard (iec2013)"
                     .to_string(),
             ),
         };

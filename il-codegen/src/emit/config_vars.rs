@@ -7,7 +7,8 @@ use super::{rust_ident, values};
 use crate::ast::Area;
 use crate::sema::ir::{ConfigDef, InstancePath};
 
-/// `base.Res.prog.fb.x` for an instance path (`base` is `self` or `__s`).
+/// `base.Res.prog.fb.x` for an instance path (`base` is `self` or `__s`);
+/// a standard block's member is its il-std field (`tmr.PT`).
 pub(super) fn place(c: &ConfigDef, base: &str, p: &InstancePath) -> String {
     let mut t = base.to_string();
     if let Some(r) = &c.resources[p.resource].name {
@@ -18,7 +19,7 @@ pub(super) fn place(c: &ConfigDef, base: &str, p: &InstancePath) -> String {
     t.push_str(&rust_ident(
         &c.resources[p.resource].programs[p.program].name,
     ));
-    for f in &p.fields {
+    for f in p.fields.iter().chain(&p.member) {
         t.push('.');
         t.push_str(&rust_ident(f));
     }

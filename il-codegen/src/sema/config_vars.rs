@@ -30,7 +30,7 @@ pub(crate) fn var_config(
             continue;
         }
         if out.iter().any(|o| {
-            o.target.fields == target.fields
+            (&o.target.fields, &o.target.member) == (&target.fields, &target.member)
                 && (o.target.resource, o.target.program) == (target.resource, target.program)
         }) {
             cx.err(
@@ -183,14 +183,33 @@ fn same_type(cx: &mut Cx, names: &Names, spec: &ast::TypeSpec, p: &InstancePath)
     }
 }
 
-/// `Res.Prog.fb.x` (or `Prog.x` in a configuration without RESOURCE): the
-/// variable it names and its declaration.
-fn instance_path<'e>(
+/// What VAR_CONFIG and VAR_ACCESS need of the declaration a path names.
+struct Named {
+    /// `AT %I*` (the area and the address as written).
+    partly: Option<(ast::Area, String)>,
+    range: Option<(i128, i128)>,
+    constant: bool,
+}
+
+impl Named {
+    fn of(v: &super::ir::Var) -> Named {
+        Named {
+            partly: v.partly.clone(),
+            range: v.range,
+            constant: v.constant,
+        }
+    }
+}
+
+/// `Res.Prog.fb.x` (or `Prog.x` in a configuration without RESOURCE; the
+/// last step may be an input or output of a standard FB instance,
+/// `Prog.tmr.PT`): the variable it names and its declaration.
+fn instance_path(
     cx: &mut Cx,
-    env: &'e Env,
+    env: &Env,
     def: &ConfigDef,
     path: &[Ident],
-) -> Option<(InstancePath, &'e super::ir::Var)> {
+) -> Option<(InstancePath, Named)> {
     let text = path
         .iter()
         .map(|i| i.name.as_str())
@@ -243,6 +262,7 @@ fn instance_path<'e>(
     };
     let mut sig: &PouSig = env.pou(&progs[program].program)?;
     let mut fields = Vec::new();
+    let mut member = None;
     let mut found = None;
     for (k, part) in rest[1..].iter().enumerate() {
         let Some((_, v)) = sig.var(&part.name) else {
@@ -275,17 +295,44 @@ fn instance_path<'e>(
         }
         fields.push(v.name.clone());
         if k + 2 == rest.len() {
-            found = Some(v);
+            found = Some((v.ty.clone(), Named::of(v)));
             break;
         }
         match &v.ty {
             Ty::Fb(fb) if env.pou(fb).is_some() => sig = env.pou(fb)?,
+            Ty::Fb(fb) if k + 3 == rest.len() && super::stdfb::lookup(fb).is_some() => {
+                let std = super::stdfb::lookup(fb)?;
+                let m = &rest[k + 2];
+                let params = || std.inputs.iter().chain(&std.outputs);
+                let Some((name, elem)) = params().find(|(n, _)| m.is(n)) else {
+                    let hint = suggest(&m.name, params().map(|(n, _)| *n))
+                        .map(|s| format!("did you mean `{s}`?"));
+                    cx.err(
+                        BAD_CONFIG,
+                        m.span,
+                        format!(
+                            "the standard block {} has no input or output `{m}`",
+                            std.name
+                        ),
+                    )
+                    .help = hint;
+                    return None;
+                };
+                member = Some(name.to_string());
+                let named = Named {
+                    partly: None,
+                    range: None,
+                    constant: v.constant,
+                };
+                found = Some((Ty::Elem(*elem), named));
+                break;
+            }
             t => {
                 cx.err(
                     BAD_CONFIG,
                     part.span,
                     format!(
-                        "`{}` is {t}: only instances of user FUNCTION_BLOCKs can be stepped into",
+                        "`{}` is {t}: only instances of FUNCTION_BLOCKs can be stepped into (a standard one's input or output ends the path)",
                         v.name
                     ),
                 );
@@ -293,7 +340,7 @@ fn instance_path<'e>(
             }
         }
     }
-    let Some(var) = found else {
+    let Some((ty, var)) = found else {
         cx.err(
             BAD_CONFIG,
             span,
@@ -306,7 +353,8 @@ fn instance_path<'e>(
             resource,
             program,
             fields,
-            ty: var.ty.clone(),
+            member,
+            ty,
             text,
         },
         var,

@@ -11,7 +11,8 @@ use crate::ast::{self, AddrSize, PouKind, VarKind};
 /// `kind` section of a `pou`; reports why not.
 ///
 /// Ed.2 allows them in the VAR sections of PROGRAMs and FUNCTION_BLOCKs;
-/// VAR_INPUT and VAR_OUTPUT are accepted too, as CODESYS-family tools do.
+/// VAR_INPUT and VAR_OUTPUT are accepted too, as CODESYS-family tools do,
+/// except under the 2nd edition (IL0304).
 /// A FUNCTION has no memory to bind, VAR_TEMP lives for one call, and
 /// VAR_IN_OUT / VAR_EXTERNAL refer to another variable.
 pub(crate) fn allowed(
@@ -35,6 +36,17 @@ pub(crate) fn allowed(
             format!("a partly specified address `{text}` cannot be used in {place}: declare it in the VAR of a PROGRAM or FUNCTION_BLOCK"),
         );
         return false;
+    }
+    if let Some(section) = match kind {
+        VarKind::Input => Some("VAR_INPUT"),
+        VarKind::Output => Some("VAR_OUTPUT"),
+        _ => None,
+    } {
+        let feature = crate::dialect::Feature::PartlyInInterface {
+            text: text.clone(),
+            section,
+        };
+        cx.feature(feature, a.span);
     }
     let fits = match (a.size, ty) {
         // `%I*` without size: any type (the host binds the whole variable).

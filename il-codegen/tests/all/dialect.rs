@@ -384,3 +384,37 @@ fn standard_functions_take_their_widest_argument_type() {
         )
     );
 }
+
+/// `AT %I*` in VAR_INPUT / VAR_OUTPUT: a vendor placement (Ed.2 2.4.1.1
+/// allows it only in VAR), accepted by default, refused under the 2nd
+/// edition; in VAR it is accepted by both.
+#[test]
+fn partly_specified_interface_variables_are_refused_under_iec2003() {
+    let fb = |decl: &str| {
+        format!("FUNCTION_BLOCK B\n{decl}\n    LD TRUE\n    ST q\nEND_FUNCTION_BLOCK\n")
+    };
+    let interface = fb("VAR_INPUT x AT %I* : BOOL; END_VAR\nVAR_OUTPUT q AT %QX* : BOOL; END_VAR");
+    assert_eq!(errors(&interface), []);
+    let e = errors_std(&interface, Standard::Iec2003);
+    let msgs: Vec<(&str, usize, &str)> = e
+        .iter()
+        .map(|e| (e.0.as_str(), e.1, e.3.as_str()))
+        .collect();
+    assert_eq!(
+        msgs,
+        [
+            (
+                "IL0304",
+                2,
+                "a partly specified address `%I*` in VAR_INPUT is a vendor form"
+            ),
+            (
+                "IL0304",
+                3,
+                "a partly specified address `%QX*` in VAR_OUTPUT is a vendor form"
+            ),
+        ]
+    );
+    let var = fb("VAR x AT %I* : BOOL; q AT %Q* : BOOL; END_VAR");
+    assert_eq!(errors_std(&var, Standard::Iec2003), []);
+}

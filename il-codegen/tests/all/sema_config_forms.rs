@@ -168,6 +168,26 @@ fn var_config_and_var_access_accepted() {
     assert_eq!(errors(&src), []);
 }
 
+/// A path may end at an input or output of a standard FB instance.
+#[test]
+fn paths_into_standard_blocks_are_accepted() {
+    let src = io_config(
+        "VAR_CONFIG\nR.m.t.PT : TIME := T#1s;\nEND_VAR\nVAR_ACCESS\nq : R.m.t.Q : BOOL;\net : R.m.t.et : TIME;\npt : R.m.t.PT : TIME READ_WRITE;\nEND_VAR",
+    );
+    assert_eq!(errors(&src), []);
+    let e = errors(&io_config(
+        "VAR_CONFIG\nR.m.t.PT : TIME := T#1s;\nR.m.t.pt : TIME := T#2s;\nEND_VAR",
+    ));
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert_eq!(e[0].3, "VAR_CONFIG already configures `R.m.t.pt`");
+    let e = errors(&io_config("VAR_ACCESS\nq : R.m.t.Q : TIME;\nEND_VAR"));
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert_eq!(
+        e[0].3,
+        "the access path `q` is declared TIME, but what it names is BOOL"
+    );
+}
+
 #[test]
 fn var_config_refuses_what_does_not_fit() {
     let cases = [
@@ -184,12 +204,27 @@ fn var_config_refuses_what_does_not_fit() {
         (
             "R.m.n.x : INT := 1;",
             "IL0131",
-            "`n` is INT: only instances of user FUNCTION_BLOCKs can be stepped into",
+            "`n` is INT: only instances of FUNCTION_BLOCKs can be stepped into",
         ),
         (
-            "R.m.t.PT : TIME := T#1s;",
+            "R.m.t.PT.x : TIME := T#1s;",
             "IL0131",
-            "`t` is TON: only instances of user FUNCTION_BLOCKs can be stepped into",
+            "`t` is TON: only instances of FUNCTION_BLOCKs can be stepped into (a standard one's input or output ends the path)",
+        ),
+        (
+            "R.m.t.PX : TIME := T#1s;",
+            "IL0131",
+            "the standard block TON has no input or output `PX`",
+        ),
+        (
+            "R.m.t.PT : INT := 1;",
+            "IL0131",
+            "`R.m.t.PT` is TIME, not INT",
+        ),
+        (
+            "R.m.t.Q AT %QX0.0 : BOOL;",
+            "IL0131",
+            "`R.m.t.Q` is not declared `AT %I*`",
         ),
         (
             "R.m.tmp : INT := 1;",

@@ -228,6 +228,25 @@ macro_rules! io_tests {
             }
 
             #[test]
+            fn access_paths_and_var_config_reach_into_a_standard_block() {
+                let mut c = CfgIo::default();
+                // VAR_CONFIG `Cpu.Io.tmr.PT := T#20ms`.
+                assert_eq!(c.Cpu.Io.tmr.PT, TIME::from_ms(20));
+                let mut ctx = Cycle::new();
+                let mut out = Vec::new();
+                for ms in [0, 10, 20, 30] {
+                    ctx.set_now(TIME::from_ms(ms));
+                    if ms == 20 {
+                        c.set_access_Delay(TIME::from_ms(30));
+                    }
+                    c.run(&mut ctx);
+                    out.push((c.access_Delay().as_ms(), c.access_Done()));
+                }
+                assert_eq!(out, super::timer_interpreted());
+                assert_eq!(out, [(20, false), (20, false), (30, false), (30, true)]);
+            }
+
+            #[test]
             fn the_configured_io_is_copied_around_each_run() {
                 // %IW4 is byte 8; %QX1.0 follows %IX2.3 of the same run.
                 assert_eq!(run(), [(true, 5, 7, 5), (false, 7, 9, 2), (true, 9, 10, 2)]);
@@ -272,6 +291,28 @@ fn io_interpreted() -> IoOutcome {
             int(c.access("Hits")),
             int(c.access("Limit")),
         ));
+    }
+    out
+}
+
+/// `timer` of `io_tests` through the interpreter's access paths.
+fn timer_interpreted() -> Vec<(i64, bool)> {
+    use il_interp::{ConfigMachine, Value};
+    let src = std::fs::read_to_string("plc/cfg_forms.il").expect("read");
+    let file = il_codegen::diag::SourceFile::new("cfg_forms.il", src);
+    let prog = il_interp::load(&file).expect("checks");
+    let mut c = ConfigMachine::new(&prog, "CfgIo").expect("configuration");
+    let mut ctx = Cycle::new();
+    let mut out = Vec::new();
+    for ms in [0, 10, 20, 30] {
+        ctx.set_now(TIME::from_ms(ms));
+        if ms == 20 {
+            let v = Value::Time(30_000_000, il_codegen::sema::types::Elem::TIME);
+            c.set_access("Delay", v).unwrap();
+        }
+        c.run(&mut ctx).unwrap();
+        let delay = c.access("Delay").expect("Delay").as_i64() / 1_000_000;
+        out.push((delay, c.access("Done").expect("Done").as_bool()));
     }
     out
 }

@@ -33,6 +33,9 @@ pub struct InstancePath {
     /// The variable of the program, then of each FB instance, as declared;
     /// at least one. Every step is an instance field (storage `Instance`).
     pub fields: Vec<String>,
+    /// `Some(m)`: the last field is a standard FB instance and the path
+    /// names its input or output `m` (the il-std field, `PT`, `Q`).
+    pub member: Option<String>,
     /// The variable's type.
     pub ty: Ty,
     /// The path as written (`Cpu.Main.sensor`).
