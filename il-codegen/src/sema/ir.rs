@@ -412,8 +412,10 @@ pub enum Value {
     Cr(Ty),
     /// A typed constant.
     Const(Const),
-    /// The current value of a variable or part of one.
-    Read(Place),
+    /// The current value of a variable or part of one. Boxed: a place is
+    /// almost twice the other values, and inline it would set the size of
+    /// every value (two in every binary expression).
+    Read(Box<Place>),
     /// A saved outer CR of a deferred parenthesis.
     Saved(usize, Ty),
     /// A value converted implicitly to a wider type (3rd edition).

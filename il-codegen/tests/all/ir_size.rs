@@ -26,6 +26,9 @@ fn ir_shapes_stay_small() {
         println!("size_of::<{name}>() = {size} (bound {bound})");
     }
     for (name, size, bound) in sizes {
-        assert!(size <= bound, "size_of::<{name}>() is {size}, bound {bound}");
+        assert!(
+            size <= bound,
+            "size_of::<{name}>() is {size}, bound {bound}"
+        );
     }
 }

@@ -109,7 +109,8 @@ impl Walk<'_, '_> {
                     );
                     return cr;
                 }
-                if let (Some(&(lo, hi)), Value::Const(Const::Int(v, _))) = (place.range.as_deref(), &value)
+                if let (Some(&(lo, hi)), Value::Const(Const::Int(v, _))) =
+                    (place.range.as_deref(), &value)
                     && (*v < lo || *v > hi)
                 {
                     self.err(

@@ -66,7 +66,11 @@ impl Walk<'_, '_> {
                     );
                     return None;
                 }
-                Some(l) => (Root::Addr(Box::new(l.clone())), var.ty.clone(), var.constant),
+                Some(l) => (
+                    Root::Addr(Box::new(l.clone())),
+                    var.ty.clone(),
+                    var.constant,
+                ),
                 None if write && var.edge.is_some() => {
                     self.err(
                         NOT_WRITABLE,
