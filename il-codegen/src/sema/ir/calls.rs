@@ -1,4 +1,4 @@
-//! The calls of the checked IR, boxed in [`Expr`] and [`Op`]: rare and
+//! The calls of the checked IR, boxed in [`super::Expr`] and [`super::Op`]: rare and
 //! large, inline they would set the size of every expression and statement.
 
 use super::{Condition, Place, StdCall, Value, Widen};
