@@ -27,7 +27,10 @@ impl Machine {
         ctx: &mut Cycle,
         line: u32,
     ) -> Result<Value, String> {
-        let Expr::CallUser {
+        let Expr::CallUser(c) = call else {
+            return Err("internal: not a user function call".into());
+        };
+        let il_codegen::sema::ir::UserCall {
             en,
             eno,
             ret,
@@ -36,10 +39,7 @@ impl Machine {
             inouts,
             out_types: _,
             outputs,
-        } = call
-        else {
-            return Err("internal: not a user function call".into());
-        };
+        } = &**c;
         if let Some(en) = en
             && !self.value(f, en, ctx, line)?.as_bool()
         {
@@ -92,17 +92,17 @@ impl Machine {
         ctx: &mut Cycle,
         line: u32,
     ) -> Result<Value, String> {
-        let Expr::CallStd {
+        let Expr::CallStd(c) = e else {
+            return Err("internal: not a standard function call".into());
+        };
+        let il_codegen::sema::ir::StdFnCall {
             en,
             call,
             args,
             ret,
             fault,
             arg_types: _,
-        } = e
-        else {
-            return Err("internal: not a standard function call".into());
-        };
+        } = &**c;
         // EN FALSE: not evaluated, the result is the type's default.
         if let Some(en) = en
             && !self.value(f, en, ctx, line)?.as_bool()
@@ -129,17 +129,17 @@ impl Machine {
         ctx: &mut Cycle,
         line: u32,
     ) -> Result<(), String> {
-        let Op::CallFb {
+        let Op::CallFb(c) = op else {
+            return Err("internal: not a CAL".into());
+        };
+        let il_codegen::sema::ir::FbCall {
             inst,
             inputs,
             outputs,
             inouts,
             externals,
             cond: _,
-        } = op
-        else {
-            return Err("internal: not a CAL".into());
-        };
+        } = &**c;
         let mut ins = Vec::with_capacity(inputs.len());
         for (n, v) in inputs {
             ins.push((n.clone(), self.value(f, v, ctx, line)?));

@@ -103,8 +103,8 @@ impl Machine {
                 };
                 Ok(Value::Time(v, *time))
             }
-            Expr::CallUser { .. } => self.call_user(f, e, ctx, line),
-            Expr::CallStd { .. } => self.call_std(f, e, ctx, line),
+            Expr::CallUser(_) => self.call_user(f, e, ctx, line),
+            Expr::CallStd(_) => self.call_std(f, e, ctx, line),
         }
     }
 

@@ -86,7 +86,7 @@ impl Machine {
                 };
                 // As the emitter: a store outside a subrange (an inline
                 // `INT (0..100)`) is skipped and recorded.
-                if let (Some((lo, hi)), Value::Int(x, _)) = (place.range, &v)
+                if let (Some(&(lo, hi)), Value::Int(x, _)) = (place.range.as_deref(), &v)
                     && !(lo..=hi).contains(x)
                 {
                     self.fault(ctx, f, FaultKind::SubrangeViolation, line);
@@ -99,8 +99,8 @@ impl Machine {
                     self.write(f, place, Value::Bool(*value), ctx, line)?;
                 }
             }
-            Op::CallFb { cond, .. } => {
-                if self.condition(f, cond, ctx, line)? {
+            Op::CallFb(c) => {
+                if self.condition(f, &c.cond, ctx, line)? {
                     self.cal(f, &s.op, ctx, line)?;
                 }
             }

@@ -153,7 +153,7 @@ fn fenced_rungs(stmts: &[Stmt], cached: impl Fn(usize) -> bool) -> Vec<usize> {
                     run.push(k);
                 }
             }
-            Op::CallFb { .. } => {
+            Op::CallFb(_) => {
                 if run.len() >= FENCED_RUNGS {
                     out.append(&mut run);
                 }
@@ -375,7 +375,7 @@ impl PouEmitter<'_> {
                     }
                     (false, v) => self.value(v, line),
                 };
-                match (&place.range, place.ty.elem()) {
+                match (place.range.as_deref(), place.ty.elem()) {
                     // A subrange store outside the bounds is skipped and recorded.
                     (Some((lo, hi)), Some(e)) => {
                         let ty = e.rust();
@@ -397,14 +397,15 @@ impl PouEmitter<'_> {
                 let w = self.write(place, value.to_string(), line);
                 format!("if {c} {{ {w} }}")
             }
-            Op::CallFb {
-                inst,
-                inputs,
-                outputs,
-                inouts,
-                externals,
-                cond,
-            } => {
+            Op::CallFb(c) => {
+                let crate::sema::ir::FbCall {
+                    inst,
+                    inputs,
+                    outputs,
+                    inouts,
+                    externals,
+                    cond,
+                } = &**c;
                 let (io_lets, io_args, io_back) = self.bind_inouts(inouts, Some(inst), line);
                 let ext = (!externals.is_empty()).then(|| {
                     let Ty::Fb(fb) = &inst.ty else {

@@ -21,7 +21,9 @@ pub struct Program {
     pub configs: Vec<ConfigDef>,
 }
 
+mod calls;
 mod config;
+pub use calls::*;
 pub use config::*;
 
 /// A user type that becomes a Rust item.
@@ -316,8 +318,9 @@ pub struct Place {
     pub path: Vec<PathElem>,
     /// The type of the place itself (after the path).
     pub ty: Ty,
-    /// Subrange bounds to check on stores.
-    pub range: Option<(i128, i128)>,
+    /// Subrange bounds to check on stores. Boxed: rare, and inline the pair
+    /// of `i128` would more than double every place (and every value).
+    pub range: Option<Box<(i128, i128)>>,
 }
 
 /// Where a [`Place`] starts.
@@ -328,7 +331,8 @@ pub enum Root {
     /// The FUNCTION's result variable (named like the function).
     Ret,
     /// A place of the process image (a direct address or a located variable).
-    Addr(Loc),
+    /// Boxed: rarer than variables, and a `Loc` is five times a `usize`.
+    Addr(Box<Loc>),
 }
 
 /// A resolved direct address.
@@ -408,8 +412,10 @@ pub enum Value {
     Cr(Ty),
     /// A typed constant.
     Const(Const),
-    /// The current value of a variable or part of one.
-    Read(Place),
+    /// The current value of a variable or part of one. Boxed: a place is
+    /// almost twice the other values, and inline it would set the size of
+    /// every value (two in every binary expression).
+    Read(Box<Place>),
     /// A saved outer CR of a deferred parenthesis.
     Saved(usize, Ty),
     /// A value converted implicitly to a wider type (3rd edition).
@@ -489,47 +495,11 @@ pub enum Expr {
         /// The factor or divisor.
         rhs: Value,
     },
-    /// A call of a user FUNCTION: arguments in declaration order of its
-    /// inputs; `out_types` are all its outputs, `outputs` the ones read with
-    /// `=>` (index into `out_types`, target, complemented).
-    CallUser {
-        /// EN := value: run only when TRUE.
-        en: Option<Value>,
-        /// Places bound to the VAR_IN_OUTs, in their declaration order.
-        inouts: Vec<Place>,
-        /// Index of the implicit ENO among the outputs, if the function sets ENO.
-        eno: Option<usize>,
-        /// The FUNCTION's result type.
-        ret: Ty,
-        /// The FUNCTION's name, as declared.
-        name: String,
-        /// The input arguments, in declaration order of its inputs.
-        args: Vec<Value>,
-        /// The types of all its VAR_OUTPUTs, in declaration order.
-        out_types: Vec<Ty>,
-        /// The outputs read with `=>`: (index into `out_types`, target,
-        /// complemented, widened to the target's type).
-        outputs: Vec<(usize, Place, bool, Option<Widen>)>,
-    },
+    /// A call of a user FUNCTION (boxed, as the other calls: rare and large,
+    /// inline they would set the size of every expression).
+    CallUser(Box<UserCall>),
     /// A call of an il-std function.
-    CallStd {
-        /// `EN := value` of a formal call: evaluated only when TRUE, else the
-        /// result is the type's default (and `ENO =>` targets get FALSE).
-        en: Option<Value>,
-        /// Which il-std function, and how to call it.
-        call: StdCall,
-        /// The arguments, CR first for the operator form.
-        args: Vec<Value>,
-        /// Their types, one per argument.
-        arg_types: Vec<Ty>,
-        /// The result type.
-        ret: Ty,
-        /// The runtime fault the call may record, from the signature table
-        /// ([`il_std::signature::Signature::fault_for`] of the argument types):
-        /// the emitter calls the `*_checked` companion and records it, the
-        /// interpreter checks the same condition.
-        fault: Option<il_std::FaultKind>,
-    },
+    CallStd(Box<StdFnCall>),
 }
 
 /// How to call a standard function.
@@ -595,24 +565,9 @@ pub enum Op {
         /// The BOOL condition (the CR).
         cond: Value,
     },
-    /// Call an FB instance after setting inputs; then copy outputs.
-    CallFb {
-        /// The instance.
-        inst: Place,
-        /// Inputs set before the call: (input name, value).
-        inputs: Vec<(String, Value)>,
-        /// Outputs copied after the call: (output name, target, complemented,
-        /// widened to the target's type).
-        outputs: Vec<(String, Place, bool, Option<Widen>)>,
-        /// Places bound to the FB's VAR_IN_OUTs, in their declaration order.
-        inouts: Vec<Place>,
-        /// The FB's (non-located) VAR_EXTERNALs, in declaration order: the
-        /// caller passes its own externals of the same names. `true`: the
-        /// FB declares it CONSTANT (a shared reference suffices).
-        externals: Vec<(String, bool)>,
-        /// `CALC` / `CALCN`: call only when the condition holds.
-        cond: Condition,
-    },
+    /// Call an FB instance after setting inputs; then copy outputs (boxed:
+    /// rare and large, inline it would set the size of every statement).
+    CallFb(Box<FbCall>),
     /// `JMP`, `JMPC`, `JMPCN`: go to a label of the same POU.
     Jump {
         /// Index of the label (below [`CheckedPou::label_count`]).

@@ -9,6 +9,7 @@ mod corpus_configurations;
 mod dialect;
 mod front_end_robustness;
 mod golden_emit;
+mod ir_size;
 mod pipeline_snippet;
 mod plcopen_corpus;
 mod render_golden;

@@ -60,16 +60,17 @@ impl PouEmitter<'_> {
                     }
                 }
             }
-            Expr::CallUser {
-                name,
-                args,
-                inouts,
-                outputs,
-                out_types,
-                en,
-                eno,
-                ret,
-            } => {
+            Expr::CallUser(c) => {
+                let crate::sema::ir::UserCall {
+                    name,
+                    args,
+                    inouts,
+                    outputs,
+                    out_types,
+                    en,
+                    eno,
+                    ret,
+                } = &**c;
                 let call = self.user_call(name, args, inouts, outputs, out_types, line);
                 let Some(en) = en else { return call };
                 // EN = FALSE: the function does not run; its result is the
@@ -86,14 +87,15 @@ impl PouEmitter<'_> {
                     .collect();
                 format!("if {en} {{ {call} }} else {{ {eno_false} {d} }}")
             }
-            Expr::CallStd {
-                en,
-                call,
-                args,
-                arg_types: _,
-                ret,
-                fault,
-            } => {
+            Expr::CallStd(c) => {
+                let crate::sema::ir::StdFnCall {
+                    en,
+                    call,
+                    args,
+                    arg_types: _,
+                    ret,
+                    fault,
+                } = &**c;
                 let call = {
                     let args: Vec<_> = args.iter().map(|a| self.value(a, line)).collect();
                     match (call, fault) {

@@ -63,14 +63,14 @@ impl Walk<'_, '_> {
             );
             return cr;
         }
-        self.push(Op::CallFb {
+        self.push(Op::CallFb(Box::new(crate::sema::ir::FbCall {
             inst,
             inputs: vec![(name, value)],
             outputs: Vec::new(),
             inouts: Vec::new(),
             externals,
             cond: None,
-        });
+        })));
         cr
     }
 

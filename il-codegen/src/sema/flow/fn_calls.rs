@@ -277,7 +277,7 @@ impl Walk<'_, '_> {
                 .position(|o| o.name == "ENO");
             self.push(Op::SetCr {
                 ty: ret.clone(),
-                expr: Expr::CallUser {
+                expr: Expr::CallUser(Box::new(crate::sema::ir::UserCall {
                     name: fname,
                     inouts,
                     args,
@@ -286,7 +286,7 @@ impl Walk<'_, '_> {
                     en: en.clone(),
                     eno,
                     ret: ret.clone(),
-                },
+                })),
             });
             for (place, negate) in eno_plain {
                 let value = en.clone().unwrap_or(Value::Const(Const::Bool(true)));
@@ -453,14 +453,14 @@ impl Walk<'_, '_> {
         let ret = res.ret.clone();
         self.push(Op::SetCr {
             ty: ret.clone(),
-            expr: Expr::CallStd {
+            expr: Expr::CallStd(Box::new(crate::sema::ir::StdFnCall {
                 en,
                 call: res.call,
                 args: values,
                 arg_types: res.params,
                 ret: res.ret,
                 fault: res.fault,
-            },
+            })),
         });
         ret
     }

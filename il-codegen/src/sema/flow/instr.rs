@@ -109,7 +109,8 @@ impl Walk<'_, '_> {
                     );
                     return cr;
                 }
-                if let (Some((lo, hi)), Value::Const(Const::Int(v, _))) = (place.range, &value)
+                if let (Some(&(lo, hi)), Value::Const(Const::Int(v, _))) =
+                    (place.range.as_deref(), &value)
                     && (*v < lo || *v > hi)
                 {
                     self.err(
@@ -384,14 +385,14 @@ impl Walk<'_, '_> {
                             .map(|(_, p)| p.clone())
                     })
                     .collect();
-                self.push(Op::CallFb {
+                self.push(Op::CallFb(Box::new(crate::sema::ir::FbCall {
                     inst,
                     inputs,
                     outputs,
                     inouts,
                     externals,
                     cond: cond_v,
-                });
+                })));
                 Cr::Undef(Why::AfterCal(self.line))
             }
             InstrKind::FnCall { name, args } => self.fn_call(name, args, cr, span, false),

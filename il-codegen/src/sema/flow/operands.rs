@@ -64,11 +64,13 @@ impl Walk<'_, '_> {
             },
             Operand::Var(v) => {
                 let p = self.place(v, false)?;
-                Some(Arg::Typed(Value::Read(p.clone()), p.ty))
+                let ty = p.ty.clone();
+                Some(Arg::Typed(Value::Read(Box::new(p)), ty))
             }
             Operand::Addr(a) => {
                 let p = self.addr_place(a, false)?;
-                Some(Arg::Typed(Value::Read(p.clone()), p.ty))
+                let ty = p.ty.clone();
+                Some(Arg::Typed(Value::Read(Box::new(p)), ty))
             }
         }
     }

@@ -13,7 +13,7 @@ impl Walk<'_, '_> {
             return l.map(|l| Place {
                 range: None,
                 ty: Ty::Elem(l.elem),
-                root: Root::Addr(l),
+                root: Root::Addr(Box::new(l)),
                 path: Vec::new(),
             });
         }
@@ -35,7 +35,7 @@ impl Walk<'_, '_> {
         Some(Place {
             range: None,
             ty: Ty::Elem(l.elem),
-            root: Root::Addr(l),
+            root: Root::Addr(Box::new(l)),
             path: Vec::new(),
         })
     }
@@ -66,7 +66,11 @@ impl Walk<'_, '_> {
                     );
                     return None;
                 }
-                Some(l) => (Root::Addr(l.clone()), var.ty.clone(), var.constant),
+                Some(l) => (
+                    Root::Addr(Box::new(l.clone())),
+                    var.ty.clone(),
+                    var.constant,
+                ),
                 None if write && var.edge.is_some() => {
                     self.err(
                         NOT_WRITABLE,
@@ -223,7 +227,7 @@ impl Walk<'_, '_> {
             root,
             path,
             ty,
-            range,
+            range: range.map(Box::new),
         })
     }
 

@@ -1,0 +1,70 @@
+//! The calls of the checked IR, boxed in [`super::Expr`] and [`super::Op`]: rare and
+//! large, inline they would set the size of every expression and statement.
+
+use super::{Condition, Place, StdCall, Value, Widen};
+use crate::sema::types::Ty;
+
+/// A call of a user FUNCTION: arguments in declaration order of its
+/// inputs; `out_types` are all its outputs, `outputs` the ones read with
+/// `=>` (index into `out_types`, target, complemented).
+#[derive(Clone, Debug, PartialEq)]
+pub struct UserCall {
+    /// EN := value: run only when TRUE.
+    pub en: Option<Value>,
+    /// Places bound to the VAR_IN_OUTs, in their declaration order.
+    pub inouts: Vec<Place>,
+    /// Index of the implicit ENO among the outputs, if the function sets ENO.
+    pub eno: Option<usize>,
+    /// The FUNCTION's result type.
+    pub ret: Ty,
+    /// The FUNCTION's name, as declared.
+    pub name: String,
+    /// The input arguments, in declaration order of its inputs.
+    pub args: Vec<Value>,
+    /// The types of all its VAR_OUTPUTs, in declaration order.
+    pub out_types: Vec<Ty>,
+    /// The outputs read with `=>`: (index into `out_types`, target,
+    /// complemented, widened to the target's type).
+    pub outputs: Vec<(usize, Place, bool, Option<Widen>)>,
+}
+
+/// A call of an il-std function.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StdFnCall {
+    /// `EN := value` of a formal call: evaluated only when TRUE, else the
+    /// result is the type's default (and `ENO =>` targets get FALSE).
+    pub en: Option<Value>,
+    /// Which il-std function, and how to call it.
+    pub call: StdCall,
+    /// The arguments, CR first for the operator form.
+    pub args: Vec<Value>,
+    /// Their types, one per argument.
+    pub arg_types: Vec<Ty>,
+    /// The result type.
+    pub ret: Ty,
+    /// The runtime fault the call may record, from the signature table
+    /// ([`il_std::signature::Signature::fault_for`] of the argument types):
+    /// the emitter calls the `*_checked` companion and records it, the
+    /// interpreter checks the same condition.
+    pub fault: Option<il_std::FaultKind>,
+}
+
+/// Call an FB instance after setting inputs; then copy outputs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FbCall {
+    /// The instance.
+    pub inst: Place,
+    /// Inputs set before the call: (input name, value).
+    pub inputs: Vec<(String, Value)>,
+    /// Outputs copied after the call: (output name, target, complemented,
+    /// widened to the target's type).
+    pub outputs: Vec<(String, Place, bool, Option<Widen>)>,
+    /// Places bound to the FB's VAR_IN_OUTs, in their declaration order.
+    pub inouts: Vec<Place>,
+    /// The FB's (non-located) VAR_EXTERNALs, in declaration order: the
+    /// caller passes its own externals of the same names. `true`: the
+    /// FB declares it CONSTANT (a shared reference suffices).
+    pub externals: Vec<(String, bool)>,
+    /// `CALC` / `CALCN`: call only when the condition holds.
+    pub cond: Condition,
+}

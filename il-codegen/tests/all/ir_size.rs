@@ -1,0 +1,37 @@
+//! The sizes of the checked IR's shapes, pinned with upper bounds: the IR is
+//! most of the front end's peak memory (two statements per instruction), and
+//! one large rare variant sets the size of every value of its enum, so a new
+//! field or variant must not grow them back silently (issue 17). Boxed: the
+//! rare large parts (calls, ranges, addresses, the place a value reads).
+//! The bounds are today's sizes on 64-bit targets: shrinking is welcome
+//! (lower the bound), growing needs a reason (issue 17: before boxing, a
+//! `Stmt` was 448 bytes, a `Value` and a `Place` 160).
+
+use il_codegen::sema::ir::{Const, Expr, Loc, Op, PathElem, Place, Root, Stmt, Value};
+use il_codegen::sema::types::Ty;
+use std::mem::size_of;
+
+#[test]
+fn ir_shapes_stay_small() {
+    let sizes = [
+        ("Stmt", size_of::<Stmt>(), 240),
+        ("Op", size_of::<Op>(), 224),
+        ("Expr", size_of::<Expr>(), 176),
+        ("Value", size_of::<Value>(), 64),
+        ("Place", size_of::<Place>(), 88),
+        ("Root", size_of::<Root>(), 16),
+        ("PathElem", size_of::<PathElem>(), 48),
+        ("Const", size_of::<Const>(), 48),
+        ("Ty", size_of::<Ty>(), 40),
+        ("Loc", size_of::<Loc>(), 40),
+    ];
+    for (name, size, bound) in sizes {
+        println!("size_of::<{name}>() = {size} (bound {bound})");
+    }
+    for (name, size, bound) in sizes {
+        assert!(
+            size <= bound,
+            "size_of::<{name}>() is {size}, bound {bound}"
+        );
+    }
+}
