@@ -6,7 +6,7 @@
 
 use std::io::{self, Write};
 
-use crate::readme_motor::Motor;
+use crate::readme_motor::{Motor, operator};
 use crate::{SCAN, Timeline};
 use il_std::Cycle;
 use il_trace::Recorder;
@@ -23,33 +23,7 @@ pub fn record(out: &mut dyn Write) -> io::Result<Timeline> {
     let mut ctx = Cycle::new();
     let mut m = Motor::default();
     while ctx.now().as_ms() <= 2_000 {
-        let note = match ctx.now().as_ms() {
-            200 => {
-                m.start = true;
-                "press start"
-            }
-            400 => {
-                m.start = false;
-                "release: sealed in"
-            }
-            1_000 => {
-                m.stop = true;
-                "press stop"
-            }
-            1_200 => {
-                m.stop = false;
-                ""
-            }
-            1_500 => {
-                m.start = true;
-                "press start again"
-            }
-            1_700 => {
-                m.start = false;
-                ""
-            }
-            _ => "",
-        };
+        let note = operator(&mut m, ctx.now().as_ms());
         m.call(&mut ctx);
         // After the scan: what a logic analyser on the PLC would see.
         rec.sample(ctx.now(), &m)?;
