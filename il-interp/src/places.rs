@@ -313,17 +313,6 @@ pub(crate) fn self_root<'a>(f: &'a mut Frame, r: &Root) -> Result<&'a mut Value,
     }
 }
 
-/// The mask of a part's bits and its shift in the whole.
-fn part_mask(part: Elem, index: u32) -> (u64, u32) {
-    let bits = PathElem::part_bits(part);
-    let mask = if bits >= 64 {
-        u64::MAX
-    } else {
-        (1u64 << bits) - 1
-    };
-    (mask, index * bits)
-}
-
 fn raw_bits(v: &Value) -> u64 {
     match v {
         Value::Int(x, _) => *x as u64,
@@ -334,7 +323,7 @@ fn raw_bits(v: &Value) -> u64 {
 
 /// Part `index` of `w` (a partial access, `v.3` / `v.%B1`).
 fn part_read(w: &Value, part: Elem, index: u32) -> Value {
-    let (mask, shift) = part_mask(part, index);
+    let (mask, shift) = PathElem::part_mask(part, index);
     let x = (raw_bits(w) >> shift) & mask;
     if part == Elem::BOOL {
         Value::Bool(x != 0)
@@ -345,7 +334,7 @@ fn part_read(w: &Value, part: Elem, index: u32) -> Value {
 
 /// `w` (of type `whole`) with part `index` replaced by `v`.
 fn part_write(w: &Value, v: &Value, whole: Elem, part: Elem, index: u32) -> Value {
-    let (mask, shift) = part_mask(part, index);
+    let (mask, shift) = PathElem::part_mask(part, index);
     let x = (raw_bits(w) & !(mask << shift)) | ((raw_bits(v) & mask) << shift);
     Value::Int(crate::values::wrap(x as i128, whole), whole)
 }

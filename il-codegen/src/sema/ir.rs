@@ -389,6 +389,18 @@ impl PathElem {
             _ => 64,
         }
     }
+
+    /// The mask of part `index` of type `part` and its shift in the whole:
+    /// how the emitter and the interpreter both read and write a part.
+    pub fn part_mask(part: Elem, index: u32) -> (u64, u32) {
+        let bits = Self::part_bits(part);
+        let mask = if bits >= 64 {
+            u64::MAX
+        } else {
+            (1u64 << bits) - 1
+        };
+        (mask, index * bits)
+    }
 }
 
 impl Place {

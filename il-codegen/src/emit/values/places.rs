@@ -451,22 +451,11 @@ fn hex(v: u64) -> String {
     format!("{v:#x}u64")
 }
 
-/// The mask of a part's bits and its shift in the whole.
-fn part_mask(part: Elem, index: u32) -> (u64, u32) {
-    let bits = PathElem::part_bits(part);
-    let mask = if bits >= 64 {
-        u64::MAX
-    } else {
-        (1u64 << bits) - 1
-    };
-    (mask, index * bits)
-}
-
 /// Part `index` of the value `w` of type `whole`: a shift and a mask in
 /// `u64` (the checker proved the part lies inside the whole, so neither
 /// can overflow).
 pub(super) fn part_read(w: String, part: Elem, index: u32) -> String {
-    let (mask, shift) = part_mask(part, index);
+    let (mask, shift) = PathElem::part_mask(part, index);
     if part == Elem::BOOL {
         return format!("{{ let __w = {w}; ((__w as u64 >> {shift}) & 1) != 0 }}");
     }
@@ -477,7 +466,7 @@ pub(super) fn part_read(w: String, part: Elem, index: u32) -> String {
 
 /// The value `w` of type `whole` with part `index` replaced by `v`.
 pub(super) fn part_write(w: String, v: String, whole: Elem, part: Elem, index: u32) -> String {
-    let (mask, shift) = part_mask(part, index);
+    let (mask, shift) = PathElem::part_mask(part, index);
     let keep = hex(!(mask << shift));
     let mask = hex(mask);
     let t = whole.rust();
