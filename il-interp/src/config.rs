@@ -22,7 +22,7 @@ use il_std::{Cycle, TIME, TaskState};
 #[derive(Clone, Debug)]
 pub struct ConfigMachine {
     pub(crate) m: Machine,
-    pub(crate) def: ConfigDef,
+    pub(crate) def: std::sync::Arc<ConfigDef>,
     globals: Vec<Value>,
     res_globals: Vec<Vec<Value>>,
     /// Per resource, its program instances in declaration order.
@@ -88,7 +88,7 @@ impl ConfigMachine {
         let states = vec![TaskState::new(); order.len()];
         let mut c = ConfigMachine {
             m,
-            def,
+            def: std::sync::Arc::new(def),
             globals,
             res_globals,
             programs,
@@ -96,7 +96,8 @@ impl ConfigMachine {
             states,
         };
         // VAR_CONFIG initial values, over the declared ones.
-        for v in c.def.var_config.clone() {
+        let def = std::sync::Arc::clone(&c.def);
+        for v in &def.var_config {
             if let Some(i) = &v.init {
                 let val = c.m.init_of(&v.target.ty, Some(i))?;
                 c.set_field(&v.target, val)?;
@@ -235,15 +236,10 @@ impl ConfigMachine {
     }
 
     fn run_program(&mut self, ctx: &mut Cycle, r: usize, p: usize) -> Result<(), String> {
-        let pi = self.def.resources[r].programs[p].clone();
-        let mut inst = std::mem::replace(
-            &mut self.programs[r][p],
-            Instance {
-                pou: 0,
-                vars: Vec::new(),
-                edge_mem: Vec::new(),
-            },
-        );
+        // The definition is shared (an Arc), so a scan clones none of it.
+        let def = std::sync::Arc::clone(&self.def);
+        let pi = &def.resources[r].programs[p];
+        let mut inst = std::mem::take(&mut self.programs[r][p]);
         let pou = inst.pou;
         let idx = |m: &Machine, n: &str| {
             find_var(&m.prog.pous[pou], n).ok_or_else(|| format!("internal: no variable `{n}`"))
@@ -265,14 +261,7 @@ impl ConfigMachine {
         }
         self.programs[r][p] = inst;
         self.copy_config(ctx, r, p, true)?;
-        let mut inst = std::mem::replace(
-            &mut self.programs[r][p],
-            Instance {
-                pou: 0,
-                vars: Vec::new(),
-                edge_mem: Vec::new(),
-            },
-        );
+        let mut inst = std::mem::take(&mut self.programs[r][p]);
         self.m.steps = 0;
         self.m.error_located = false;
         let result = self.m.call_instance(&mut inst, ctx);
@@ -301,7 +290,8 @@ impl ConfigMachine {
         p: usize,
         before: bool,
     ) -> Result<(), String> {
-        for v in self.def.var_config.clone() {
+        let def = std::sync::Arc::clone(&self.def);
+        for v in &def.var_config {
             let Some(l) = &v.location else { continue };
             if (v.target.resource, v.target.program) != (r, p) {
                 continue;

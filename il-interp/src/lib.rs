@@ -229,14 +229,7 @@ impl Machine {
     pub fn scan(&mut self, ctx: &mut Cycle) -> Result<(), String> {
         self.steps = 0;
         self.error_located = false;
-        let mut inst = std::mem::replace(
-            &mut self.inst,
-            Instance {
-                pou: 0,
-                vars: Vec::new(),
-                edge_mem: Vec::new(),
-            },
-        );
+        let mut inst = std::mem::take(&mut self.inst);
         let r = self.call_instance(&mut inst, ctx);
         self.inst = inst;
         r

@@ -73,7 +73,7 @@ impl Struct {
 }
 
 /// The memory of a user FUNCTION_BLOCK or PROGRAM instance.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Instance {
     /// Index into `Program::pous`.
     pub pou: usize,
