@@ -77,14 +77,7 @@ impl ConfigMachine {
             }
             programs.push(insts);
         }
-        let mut order: Vec<(usize, usize)> = def
-            .resources
-            .iter()
-            .enumerate()
-            .flat_map(|(r, res)| (0..res.tasks.len()).map(move |t| (r, t)))
-            .collect();
-        // Declaration order breaks ties (the sort is stable), as in the emitter.
-        order.sort_by_key(|&(r, t)| def.resources[r].tasks[t].priority);
+        let order = def.task_order();
         let states = vec![TaskState::new(); order.len()];
         let mut c = ConfigMachine {
             m,

@@ -64,20 +64,7 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
     }
 
     // Tasks in priority order (ties: declaration order), each with its programs.
-    let mut tasks: Vec<(usize, usize)> = c
-        .resources
-        .iter()
-        .enumerate()
-        .flat_map(|(r, res)| (0..res.tasks.len()).map(move |t| (r, t)))
-        .collect();
-    let number = |r: usize, t: usize| -> usize {
-        c.resources[..r]
-            .iter()
-            .map(|x| x.tasks.len())
-            .sum::<usize>()
-            + t
-    };
-    tasks.sort_by_key(|&(r, t)| (c.resources[r].tasks[t].priority, number(r, t)));
+    let tasks = c.task_order();
     let state_ids: Vec<_> = (0..tasks.len()).map(|n| format!("__task_{n}")).collect();
     let mut dues = String::new();
     let mut runs = String::new();

@@ -22,6 +22,23 @@ pub struct ConfigDef {
     pub access: Vec<AccessDef>,
 }
 
+impl ConfigDef {
+    /// Every task as `(resource, task)`, in the order a cycle releases them:
+    /// by priority, ties in declaration order. The emitted scheduler and the
+    /// interpreter both take this order.
+    pub fn task_order(&self) -> Vec<(usize, usize)> {
+        let mut order: Vec<(usize, usize)> = self
+            .resources
+            .iter()
+            .enumerate()
+            .flat_map(|(r, res)| (0..res.tasks.len()).map(move |t| (r, t)))
+            .collect();
+        // The sort is stable: declaration order breaks ties.
+        order.sort_by_key(|&(r, t)| self.resources[r].tasks[t].priority);
+        order
+    }
+}
+
 /// A variable inside a program instance, named from the configuration
 /// (`Res.Prog.fb.x`): the resource, the instance, then fields down.
 #[derive(Clone, Debug, PartialEq)]
