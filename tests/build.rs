@@ -48,6 +48,15 @@ fn main() {
         .compile()
         .unwrap_or_else(|e| panic!("\n{e}"));
 
+    // Host functions ({extern}): the crate provides their bodies
+    // (src/lib.rs, host_impl), so they get modules of their own.
+    println!("cargo:rerun-if-changed=plc-host");
+    il_codegen::Builder::new()
+        .file("plc-host/host.il")
+        .out_dir(out.join("host"))
+        .compile()
+        .unwrap_or_else(|e| panic!("\n{e}"));
+
     let corpus = Path::new("../../shared/corpus");
     let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));
     if corpus.join("beremiz_matiec_cmd_monitor_il.txt").exists() {

@@ -222,6 +222,15 @@ fn scan_table<T: Target>(
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> Result<(), String> {
+    for p in prog.pous.iter().filter(|p| p.host) {
+        let ret = p.ret.as_ref().map_or("BOOL".to_string(), |t| t.to_string());
+        writeln!(
+            err,
+            "note: `{}` is a host function ({{extern}}): its body is the crate's Rust code, which `ilc run` does not have; each call returns the {ret} default and leaves its outputs at their initial values",
+            p.name
+        )
+        .map_err(|e| e.to_string())?;
+    }
     // Every --set and --watch is resolved and checked before the first scan.
     let mut sets: Vec<(u64, T::Place, Value)> = Vec::new();
     for s in &o.sets {

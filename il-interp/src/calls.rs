@@ -341,7 +341,24 @@ impl Machine {
         }
         let n = p.vars.len();
         let mut f = self.frame(pou, vars, vec![None; n])?;
-        self.run(&mut f, ctx)?;
+        if p.host {
+            if let Some(h) = self.hosts.get(&p.name).cloned() {
+                let r = h(ctx, &mut f.vars);
+                // The closure is the embedder's: a value of another kind
+                // than the declared result would break the program later.
+                if std::mem::discriminant(&r) != std::mem::discriminant(&f.ret) {
+                    let ty = p.ret.as_ref().map_or("BOOL".to_string(), |t| t.to_string());
+                    return Err(format!(
+                        "host function `{}` returned {}, which is no {ty}",
+                        p.name,
+                        r.display(),
+                    ));
+                }
+                f.ret = r;
+            }
+        } else {
+            self.run(&mut f, ctx)?;
+        }
         let p = &self.prog.pous[pou];
         let outs = p
             .vars

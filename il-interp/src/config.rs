@@ -33,6 +33,15 @@ pub struct ConfigMachine {
 }
 
 impl ConfigMachine {
+    /// [`Machine::host_function`] for every program of the configuration.
+    pub fn host_function(
+        &mut self,
+        name: &str,
+        f: impl Fn(&mut il_std::Cycle, &mut [Value]) -> Value + Send + Sync + 'static,
+    ) -> Result<(), String> {
+        self.m.host_function(name, f)
+    }
+
     /// The CONFIGURATION `name` (case-insensitive) with its initial values.
     pub fn new(prog: &Program, name: &str) -> Result<ConfigMachine, String> {
         let def = prog

@@ -24,6 +24,7 @@ mod constants;
 mod expressions;
 mod flow;
 mod host;
+mod host_fn;
 mod places;
 mod stdfn;
 mod values;
@@ -32,6 +33,7 @@ pub use config::ConfigMachine;
 pub use config_host::ConfigPlace;
 pub use constants::parse_literal;
 pub use host::HostPlace;
+pub use host_fn::HostFn;
 /// The runtime the interpreter runs on (for front ends without their own dependency).
 pub use il_std;
 pub use values::StdFb;
@@ -74,6 +76,38 @@ pub fn load_std(file: &SourceFile, standard: il_codegen::Standard) -> Result<Pro
     Err(msgs.join("\n"))
 }
 
+/// The host FUNCTIONs (`{extern}`) of `prog`.
+fn host_functions(prog: &Program) -> Vec<&str> {
+    prog.pous
+        .iter()
+        .filter(|p| p.host)
+        .map(|p| p.name.as_str())
+        .collect()
+}
+
+fn host_function(
+    prog: &Program,
+    hosts: &mut host_fn::HostFns,
+    name: &str,
+    f: std::sync::Arc<HostFn>,
+) -> Result<(), String> {
+    let names = host_functions(prog);
+    match names.iter().find(|n| n.eq_ignore_ascii_case(name)) {
+        Some(n) => {
+            hosts.set(n, f);
+            Ok(())
+        }
+        None => Err(format!(
+            "no host FUNCTION named `{name}` (`{{extern}}` FUNCTIONs: {})",
+            if names.is_empty() {
+                "none".to_string()
+            } else {
+                names.join(", ")
+            }
+        )),
+    }
+}
+
 /// A program (or function block) instance ready to scan.
 #[derive(Clone, Debug)]
 pub struct Machine {
@@ -84,6 +118,8 @@ pub struct Machine {
     steps: u64,
     /// The error of this scan already says where it comes from.
     error_located: bool,
+    /// Implementations of the program's host FUNCTIONs.
+    hosts: host_fn::HostFns,
 }
 
 /// The state of one call of a POU: its variables, current results and saves.
@@ -162,7 +198,25 @@ impl Machine {
             },
             steps: 0,
             error_located: false,
+            hosts: Default::default(),
         }
+    }
+
+    /// Run `f` for each call of the host FUNCTION `name` (an `{extern}`
+    /// FUNCTION: the generated code calls the crate's Rust function of that
+    /// name, the interpreter this closure). Without one, a call returns the
+    /// result type's default and leaves the outputs at their initial values.
+    pub fn host_function(
+        &mut self,
+        name: &str,
+        f: impl Fn(&mut Cycle, &mut [Value]) -> Value + Send + Sync + 'static,
+    ) -> Result<(), String> {
+        host_function(&self.prog, &mut self.hosts, name, std::sync::Arc::new(f))
+    }
+
+    /// The host FUNCTIONs of the program (`{extern}`), by name.
+    pub fn host_functions(&self) -> Vec<&str> {
+        host_functions(&self.prog)
     }
 
     /// The POU this machine runs.

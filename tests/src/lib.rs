@@ -26,6 +26,37 @@ pub mod hostile_macro {
     il_macros::il!(file = "plc-hostile/hostile.il");
 }
 
+/// The Rust bodies of the host functions of `plc-host/host.il` (`{extern}`
+/// FUNCTIONs): the generated code calls them like its own FUNCTIONs.
+pub mod host_impl {
+    use il_std::Cycle;
+
+    /// `raw` limited to `lo..=hi`; `clipped` says whether it was.
+    pub fn clamp_sensor(_ctx: &mut Cycle, raw: i16, lo: i16, hi: i16, clipped: &mut bool) -> i16 {
+        let v = raw.clamp(lo, hi.max(lo));
+        *clipped = v != raw;
+        v
+    }
+
+    /// Counts its calls in the caller's variable.
+    pub fn bump(_ctx: &mut Cycle, counter: &mut i32) -> bool {
+        *counter = counter.wrapping_add(1);
+        true
+    }
+}
+
+/// `plc-host/host.il` through build.rs, beside the host's functions.
+pub mod host_build {
+    use super::host_impl::*;
+    include!(concat!(env!("OUT_DIR"), "/host/host.rs"));
+}
+
+/// The same through `il!(file = ...)`.
+pub mod host_macro {
+    use super::host_impl::*;
+    il_macros::il!(file = "plc-host/host.il");
+}
+
 /// The tank controller of the new-user test (`new-user/plc`): two files,
 /// one program, through one `il!(files = [...])`.
 pub mod tank_macro {

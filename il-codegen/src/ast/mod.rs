@@ -137,4 +137,7 @@ pub struct Pou {
     pub span: Span,
     /// The END_FUNCTION / END_FUNCTION_BLOCK / END_PROGRAM keyword.
     pub end_span: Span,
+    /// The `{extern}` pragma before a FUNCTION: the host crate provides its
+    /// body (see `syntax::host`).
+    pub host: Option<Span>,
 }

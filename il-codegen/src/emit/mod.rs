@@ -177,6 +177,7 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
         pou.name
     ));
     match pou.kind {
+        PouKind::Function if pou.host => emit_host_check(o, pou),
         PouKind::Function => {
             let ret_ty = pou
                 .ret
@@ -454,6 +455,40 @@ pub(crate) fn snapshot_item(
 }
 
 /// `__v_x: &mut T` for every VAR_IN_OUT, in declaration order.
+/// A host FUNCTION (`{extern}`) is the crate's own Rust function, called
+/// like a generated one. What is emitted is a check of its signature, so a
+/// missing or mistyped function is a rustc error that names it here.
+fn emit_host_check(o: &mut Out, pou: &CheckedPou) {
+    let name = item_ident(&pou.name);
+    let ret_ty = pou
+        .ret
+        .as_ref()
+        .map(rust_ty)
+        .unwrap_or_else(|| "bool".to_string());
+    let of = |k: VarKind| pou.vars.iter().filter(move |v| v.kind == k);
+    let inputs = of(VarKind::Input).map(|v| rust_ty(&v.ty));
+    let refs = of(VarKind::InOut)
+        .chain(of(VarKind::Output))
+        .map(|v| format!("&mut {}", rust_ty(&v.ty)));
+    let params = tail(inputs.chain(refs));
+    let named = tail(
+        of(VarKind::Input)
+            .map(|v| format!("{}: {}", rust_ident(&v.name), rust_ty(&v.ty)))
+            .chain(
+                of(VarKind::InOut)
+                    .chain(of(VarKind::Output))
+                    .map(|v| format!("{}: &mut {}", rust_ident(&v.name), rust_ty(&v.ty))),
+            ),
+    );
+    let d = doc(&format!(
+        " Host FUNCTION `{}` (`{{extern}}`): not generated. The crate provides `fn {name}(ctx: &mut ::il_std::Cycle{named}) -> {ret_ty}` beside this code; this constant checks that it exists with that signature.",
+        pou.name
+    ));
+    o.code(&format!(
+        "{d} const _: fn(&mut ::il_std::Cycle{params}) -> {ret_ty} = {name};"
+    ));
+}
+
 fn inout_params(pou: &CheckedPou) -> Vec<String> {
     pou.vars
         .iter()

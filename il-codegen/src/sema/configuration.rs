@@ -121,6 +121,7 @@ fn globals(
         begin_il: false,
         span: owner.span,
         end_span: owner.span,
+        host: None,
     };
     let sig: PouSig = pou_sig(cx, names, &env.types, &fake);
     sig.vars

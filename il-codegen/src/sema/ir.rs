@@ -89,6 +89,9 @@ pub struct CheckedPou {
     /// tools show (the language server's hover and inlay hints), decided here
     /// once instead of being recomputed there.
     pub cr_steps: Vec<CrStep>,
+    /// A host FUNCTION (`{extern}`): no body here; the crate around the
+    /// generated code provides it, and the emitter only checks its signature.
+    pub host: bool,
 }
 
 /// The CR at one instruction or label, as the checker proved it.

@@ -350,6 +350,7 @@ pub fn pou(
         begin_il,
         span,
         end_span,
+        host: None,
     }
 }
 

@@ -10,6 +10,7 @@ use crate::diag::{Diagnostic, SourceFile, codes::CodeInfo};
 mod actions;
 pub mod code;
 pub mod errors;
+mod host;
 pub mod lexer;
 mod literal_message;
 
@@ -44,7 +45,7 @@ pub fn parse_std(
         .with_help("split the program into several files");
         return (CompilationUnit::default(), vec![d]);
     }
-    let (toks, mut diags) = lexer::lex_std(&file.text, standard);
+    let (toks, mut diags, host_marks) = lexer::lex_marked(&file.text, standard);
     let mut ctx = actions::Ctx::default();
     // The parser takes the tokens (their names move into the tree instead
     // of being copied); the messages of syntax errors, which look at the
@@ -57,7 +58,7 @@ pub fn parse_std(
     } else {
         Vec::new()
     };
-    let unit = match result {
+    let mut unit = match result {
         Ok(u) => u,
         Err(e) => {
             diags.extend(errors::parse_error(file, &toks, &e));
@@ -68,6 +69,7 @@ pub fn parse_std(
         diags.extend(errors::parse_error(file, &toks, &e.error));
     }
     diags.extend(ctx.diags);
+    host::mark(&mut unit, &host_marks, &mut diags);
     diags.sort_by_key(|d| (d.span.lo, d.span.hi));
     diags.dedup_by(|a, b| a.span == b.span && a.code == b.code);
     crate::diag::limit(&mut diags);

@@ -16,6 +16,7 @@ mod fb_calls;
 mod functions;
 mod fuzz_replay;
 mod globals_tasks;
+mod host_functions;
 mod hostile;
 mod jumps;
 mod labels_parens;

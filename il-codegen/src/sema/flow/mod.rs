@@ -77,6 +77,9 @@ pub(crate) fn check_pou(
     pou: &ast::Pou,
     sig: &PouSig,
 ) -> Option<CheckedPou> {
+    if pou.host.is_some() {
+        return Some(host_pou(cx, env, pou, sig));
+    }
     let mut labels = super::hash::FxMap::default();
     let mut label_spans = Vec::new();
     let mut label_names = Vec::new();
@@ -201,7 +204,57 @@ pub(crate) fn check_pou(
         save_types: w.save_types,
         retained: super::configuration::retained(env, sig),
         cr_steps: w.cr_steps,
+        host: false,
     })
+}
+
+/// A host FUNCTION (`{extern}`): its interface only. Instructions or locals
+/// would be silently dropped, so they are IL0140.
+fn host_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou, sig: &PouSig) -> CheckedPou {
+    if let Some(first) = pou.body.first() {
+        let span = match first {
+            ast::Stmt::Label(id) => id.span,
+            ast::Stmt::Instr(i) => i.span,
+        };
+        cx.err(
+            HOST_BODY,
+            span,
+            format!(
+                "host FUNCTION `{}` has instructions: its body is the crate's Rust function",
+                pou.name
+            ),
+        );
+    }
+    for b in &pou.var_blocks {
+        if !matches!(
+            b.kind,
+            ast::VarKind::Input | ast::VarKind::Output | ast::VarKind::InOut
+        ) {
+            cx.err(
+                HOST_BODY,
+                b.span,
+                format!(
+                    "host FUNCTION `{}` declares {}: it has only inputs, outputs and in-outs",
+                    pou.name,
+                    b.kind.keyword()
+                ),
+            );
+        }
+    }
+    CheckedPou {
+        kind: pou.kind,
+        name: sig.name.clone(),
+        vars: sig.vars.clone(),
+        ret: sig.ret.clone(),
+        body: Vec::new(),
+        label_count: 0,
+        addresses: Vec::new(),
+        cr_types: Vec::new(),
+        save_types: Vec::new(),
+        retained: super::configuration::retained(env, sig),
+        cr_steps: Vec::new(),
+        host: true,
+    }
 }
 
 /// About how many statements and CR steps the final pass records for

@@ -230,6 +230,8 @@ pub struct Lexer<'a> {
     diags: Vec<Diagnostic>,
     /// Pragmas are errors under the 2nd edition.
     standard: crate::dialect::Standard,
+    /// `{extern}` pragmas, which mark the next FUNCTION as a host function.
+    host_marks: Vec<Span>,
 }
 
 fn is_ident_start(c: u8) -> bool {
@@ -250,6 +252,17 @@ pub fn lex(src: &str) -> (Vec<Spanned>, Vec<Diagnostic>) {
 
 /// [`lex`] against a standard (pragmas are errors under the 2nd edition).
 pub fn lex_std(src: &str, standard: crate::dialect::Standard) -> (Vec<Spanned>, Vec<Diagnostic>) {
+    let (toks, diags, _) = lex_marked(src, standard);
+    (toks, diags)
+}
+
+/// [`lex_std`], also returning the spans of the `{extern}` pragmas (the only
+/// pragma with a meaning: the FUNCTION after it is the host's, see
+/// `syntax::host`).
+pub fn lex_marked(
+    src: &str,
+    standard: crate::dialect::Standard,
+) -> (Vec<Spanned>, Vec<Diagnostic>, Vec<Span>) {
     let mut lx = Lexer {
         src,
         b: src.as_bytes(),
@@ -271,12 +284,13 @@ pub fn lex_std(src: &str, standard: crate::dialect::Standard) -> (Vec<Spanned>, 
         out: Vec::new(),
         diags: Vec::new(),
         standard,
+        host_marks: Vec::new(),
     };
     if src.starts_with('\u{feff}') {
         lx.pos = 3;
     }
     lx.run();
-    (lx.out, lx.diags)
+    (lx.out, lx.diags, lx.host_marks)
 }
 
 impl<'a> Lexer<'a> {
@@ -409,6 +423,10 @@ impl<'a> Lexer<'a> {
                     }
                     if let Some(i) = self.src[start..end].find('\n') {
                         nl.get_or_insert(start + i);
+                    }
+                    let inner = self.src[start + 1..end].trim_end_matches('}').trim();
+                    if inner.eq_ignore_ascii_case("extern") {
+                        self.host_marks.push(span(start, end));
                     }
                     self.pos = end;
                 }
