@@ -370,3 +370,49 @@ fn echidna_ctu_without_dbg_runs() {
         .collect();
     assert_eq!(cv, ["1", "1", "1"], "{out}");
 }
+
+/// echidna's `dbg` built-in declared as a host function (`{extern}`) in a
+/// file beside the corpus file: blink then compiles whole, with nothing
+/// dropped. The ctu file calls `dbg count.q` right after a `CAL`, where the
+/// CR is undefined (IEC: a function used as an operator takes the CR as its
+/// first input; echidna's `dbg` ignores it), so it stays refused there, with
+/// that error and no other.
+#[test]
+fn echidna_dbg_as_a_host_function() {
+    let dir = corpus_dir();
+    if !dir.exists() {
+        println!("SKIPPED: ../shared/corpus not found");
+        return;
+    }
+    let tmp = std::env::temp_dir().join(format!("echidna_host_{}", std::process::id()));
+    std::fs::create_dir_all(&tmp).unwrap();
+    let host = tmp.join("echidna_host.il");
+    std::fs::write(
+        &host,
+        "{extern}\nFUNCTION dbg : BOOL\nVAR_INPUT cr : BOOL; value : INT; END_VAR\nEND_FUNCTION\n",
+    )
+    .unwrap();
+    let run = |name: &str| {
+        let o = Command::new(env!("CARGO_BIN_EXE_ilc"))
+            .arg("check")
+            .arg(&host)
+            .arg(dir.join(name))
+            .output()
+            .expect("run ilc");
+        (
+            o.status.success(),
+            String::from_utf8_lossy(&o.stderr).to_string(),
+        )
+    };
+    let (ok, err) = run("61131_echidna_blink.il");
+    assert!(ok && !err.contains("error"), "{err}");
+    let (ok, err) = run("61131_echidna_ctu.il");
+    assert!(!ok);
+    assert_eq!(err.matches("error[").count(), 1, "{err}");
+    assert!(err.contains("61131_echidna_ctu.il:10:"), "{err}");
+    assert!(
+        err.contains("IL0108") && err.contains("after the CAL"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&tmp);
+}

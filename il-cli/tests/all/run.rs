@@ -375,3 +375,24 @@ fn tank_wrong_names_addresses_and_values() {
         assert!(text(&o.stdout).is_empty());
     }
 }
+
+/// A host function (`{extern}`) has no body `ilc run` could run: the run goes
+/// on with its interface (default result, outputs at their initial values)
+/// and says so.
+#[test]
+fn host_functions_are_run_by_their_interface_and_named() {
+    let f = file(
+        "host.il",
+        "{extern}\nFUNCTION read_sensor : INT\nVAR_INPUT ch : INT; END_VAR\nEND_FUNCTION\nPROGRAM Main\nVAR v : INT; n : INT; END_VAR\n    LD 3\n    read_sensor\n    ADD 1\n    ST v\n    LD n\n    ADD 1\n    ST n\nEND_PROGRAM\n",
+    );
+    let o = ilc(&["run", &f, "--cycles", "2"]);
+    let (out, err) = (text(&o.stdout), text(&o.stderr));
+    assert!(o.status.success(), "{out}{err}");
+    assert!(
+        err.contains("note: `read_sensor` is a host function ({extern})")
+            && err.contains("returns the INT default"),
+        "{err}"
+    );
+    let last: Vec<&str> = out.lines().last().unwrap().split_whitespace().collect();
+    assert_eq!(last[2..], ["1", "2"], "{out}");
+}

@@ -30,7 +30,7 @@ codes! {
     NOT_AN_FB = "IL0113", "not a function block instance",
         "CAL and the input operators (IN, PT, CU, ...) need an instance of a function block.\n\n    CAL  count   (* count is an INT *)";
     UNKNOWN_FUNCTION = "IL0114", "unknown function",
-        "An unknown word in the operator field is taken as a function call, and no FUNCTION of that name exists (neither standard nor in this file). Vendor built-ins are not IEC 61131-3.\n\n    dbg 1";
+        "An unknown word in the operator field is taken as a function call, and no FUNCTION of that name exists (neither standard nor in this file). Vendor built-ins are not IEC 61131-3.\n\n    dbg 1\n\nCall a FUNCTION that exists, or, when the runtime provides it, declare it as a host function (`{extern}`, IL0140) and give its body in Rust.";
     ARG_COUNT = "IL0115", "wrong number of arguments",
         "The call passes more or fewer arguments than the function takes. In IL the current result is the first argument.\n\n    LD x\n    LIMIT 0     (* LIMIT(MN, IN, MX): CR is MN... write LIMIT 0, 100 *)";
     LITERAL_RANGE = "IL0116", "literal does not fit its type",

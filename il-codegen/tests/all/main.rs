@@ -18,6 +18,7 @@ mod sema_calls;
 mod sema_config_forms;
 mod sema_corners;
 mod sema_hints;
+mod sema_host_functions;
 mod sema_hostile_names;
 mod sema_literals;
 mod sema_types;

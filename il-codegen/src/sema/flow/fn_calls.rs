@@ -438,6 +438,7 @@ impl Walk<'_, '_> {
             } else {
                 d.help = hint;
                 d.notes.push("a word in the operator field that is not an IL operator must name a FUNCTION; vendor built-ins are not IEC 61131-3".into());
+                d.notes.push(format!("if the runtime provides `{name}`, declare it as a host function, whose body is the crate's Rust code: `{{extern}} FUNCTION {name} : BOOL VAR_INPUT ... END_VAR END_FUNCTION`"));
             }
         }
         bad
