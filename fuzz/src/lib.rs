@@ -310,7 +310,8 @@ fn strip_markers(ts: proc_macro2::TokenStream) -> proc_macro2::TokenStream {
     out.into_iter().collect()
 }
 
-/// Every top-level item is a struct, enum, fn or impl, and every struct,
+/// Every top-level item is a struct, enum, fn or impl (or the `const _`
+/// signature check of a host function), and every struct,
 /// enum and fn is named after a POU or a user type (the POU list does not
 /// hold types, so only count them).
 fn assert_items(f: &syn::File, pous: &[String]) {
@@ -318,6 +319,8 @@ fn assert_items(f: &syn::File, pous: &[String]) {
     for item in &f.items {
         match item {
             syn::Item::Struct(_) | syn::Item::Enum(_) | syn::Item::Fn(_) => named += 1,
+            // A host FUNCTION (`{extern}`): the check of the crate's function.
+            syn::Item::Const(c) if c.ident == "_" => named += 1,
             syn::Item::Impl(_) => {}
             other => panic!("unexpected top-level item: {}", quote_item(other)),
         }
