@@ -197,7 +197,8 @@ pub(super) fn access_path(
         range: gv.range,
         constant: gv.constant,
     };
-    let (steps, ty, named) = walk(cx, env, gv.ty.clone(), start, &rest[1..], Section::Access)?;
+    let from = (gv.ty.clone(), first.name.as_str());
+    let (steps, ty, named) = walk(cx, env, from, start, &rest[1..], Section::Access)?;
     Some((AccessTarget::Global { global, steps }, ty, named))
 }
 
@@ -262,7 +263,8 @@ fn instance(
         );
         return None;
     }
-    let prog = Ty::Fb(def.resources[resource].programs[program].program.clone());
+    let inst = &def.resources[resource].programs[program];
+    let prog = (Ty::Fb(inst.program.clone()), inst.name.as_str());
     let start = Named {
         partly: None,
         range: None,
@@ -281,18 +283,18 @@ fn instance(
     ))
 }
 
-/// The steps `segs` take from a place of type `ty`.
+/// The steps `segs` take from a place of type `ty` named `from`.
 fn walk(
     cx: &mut Cx,
     env: &Env,
-    mut ty: Ty,
+    (mut ty, from): (Ty, &str),
     mut named: Named,
     segs: &[Seg],
     section: Section,
 ) -> Option<(Vec<PathElem>, Ty, Named)> {
     let mut steps = Vec::new();
     // What the place so far is called in messages (`n`, `a[2]`).
-    let mut prev = String::new();
+    let mut prev = from.to_string();
     for seg in segs {
         match seg {
             Seg::Name(part) => {
