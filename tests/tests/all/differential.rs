@@ -222,41 +222,45 @@ fn interpret_config(
     Ok(lines)
 }
 
-/// The same calls of the generated configuration struct.
+/// The same calls of the generated configuration struct (the access paths
+/// read by one function, not once per call: the crate's build is most of
+/// this test's time).
 fn config_driver(i: usize, c: &CfgCase) -> String {
     let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "fn access(c: &{}, ran: usize, trace: String) -> Vec<(&'static str, String)> {{",
+        c.name
+    );
+    let _ = writeln!(
+        s,
+        "    let over: Vec<String> = c.overruns().iter().map(u64::to_string).collect();"
+    );
+    let _ = writeln!(
+        s,
+        "    vec![(\"ran\", ran.to_string()), (\"trace\", trace), (\"over\", over.join(\",\")),"
+    );
+    for (n, _, _) in &c.access {
+        let _ = writeln!(
+            s,
+            "        (\"{n}\", crate::Canon::canon(&c.access_{n}())),"
+        );
+    }
+    let _ = writeln!(s, "    ]\n}}");
     let _ = writeln!(s, "pub fn run_config(out: &mut String) {{");
     let _ = writeln!(s, "    let mut ctx = il_std::Cycle::new();");
     let _ = writeln!(s, "    let mut c = {}::default();", c.name);
+    let _ = writeln!(
+        s,
+        "    fn step(c: &mut {}, ctx: &mut il_std::Cycle, out: &mut String, k: usize) {{ let mut trace = String::new(); let ran = c.run_traced(ctx, |t, p| {{ trace.push_str(t); trace.push(':'); trace.push_str(p); trace.push(','); }}); crate::line(out, {i}, 1000 + k, ctx, &access(c, ran, trace)); ctx.advance(il_std::TIME({}i64)); }}",
+        c.name,
+        generator::config::STEP_NS
+    );
     for k in 0..generator::config::STEPS {
         for (n, t, l) in config_writes(c, k) {
             let _ = writeln!(s, "    c.set_access_{n}({});", lit_rust(t, &l));
         }
-        let _ = writeln!(
-            s,
-            "    let mut trace = String::new(); let ran = c.run_traced(&mut ctx, |t, p| {{ trace.push_str(t); trace.push(':'); trace.push_str(p); trace.push(','); }});"
-        );
-        let _ = writeln!(
-            s,
-            "    let over: Vec<String> = c.overruns().iter().map(u64::to_string).collect();"
-        );
-        let _ = writeln!(
-            s,
-            "    crate::line(out, {i}, {}, &ctx, &[(\"ran\", ran.to_string()), (\"trace\", trace), (\"over\", over.join(\",\")),",
-            1000 + k
-        );
-        for (n, _, _) in &c.access {
-            let _ = writeln!(
-                s,
-                "        (\"{n}\", crate::Canon::canon(&c.access_{n}())),"
-            );
-        }
-        let _ = writeln!(s, "    ]);");
-        let _ = writeln!(
-            s,
-            "    ctx.advance(il_std::TIME({}i64));",
-            generator::config::STEP_NS
-        );
+        let _ = writeln!(s, "    step(&mut c, &mut ctx, out, {k});");
     }
     s.push_str("}\n");
     s
