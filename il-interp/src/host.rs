@@ -46,6 +46,10 @@ impl HostPlace {
 /// A member: its declared name, type and subrange bounds.
 type Member = (String, Ty, Option<(i128, i128)>);
 
+/// Where a path's parts lead: the steps, and the type and subrange bounds
+/// of the place they end at.
+pub(crate) type Resolved = (Vec<Step>, Ty, Option<(i128, i128)>);
+
 /// One part of a path: `.name` or `[i, j]`.
 pub(crate) enum Part<'a> {
     Field(&'a str),
@@ -162,7 +166,7 @@ impl Machine {
         mut range: Option<(i128, i128)>,
         parts: &[Part<'_>],
         text: &str,
-    ) -> Result<(Vec<Step>, Ty, Option<(i128, i128)>), String> {
+    ) -> Result<Resolved, String> {
         let mut steps = Vec::new();
         for part in parts {
             match part {
