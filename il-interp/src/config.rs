@@ -9,12 +9,12 @@
 //! from the globals and back out. Programs run one after the other, so this
 //! is the same as the references the generated code passes.
 
-use crate::places::{io_read, io_write};
+use crate::places::{Step, io_read, io_write};
 use crate::values::{Instance, Value};
 use crate::{Machine, find_var};
 use il_codegen::ast::Area;
 use il_codegen::sema::ir::{
-    AccessTarget, ConfigDef, GlobalRef, InstancePath, ProgArg, Program, TaskSource,
+    AccessTarget, ConfigDef, GlobalRef, InstancePath, PathElem, ProgArg, Program, TaskSource,
 };
 use il_std::{Cycle, TIME, TaskState};
 
@@ -152,7 +152,7 @@ impl ConfigMachine {
             .iter()
             .find(|a| a.name.eq_ignore_ascii_case(name))?;
         match &a.target {
-            AccessTarget::Global(g) => Some(self.slot(*g).clone()),
+            AccessTarget::Global { global, steps } => self.global_at(*global, steps).ok(),
             AccessTarget::Instance(p) => self.field(p).ok(),
         }
     }
@@ -170,7 +170,7 @@ impl ConfigMachine {
             return Err(format!("the access path `{}` is READ_ONLY", a.name));
         }
         match &a.target {
-            AccessTarget::Global(g) => *self.slot_mut(*g) = v,
+            AccessTarget::Global { global, steps } => self.set_global_at(*global, steps, v)?,
             AccessTarget::Instance(p) => self.set_field(p, v)?,
         }
         Ok(())
@@ -309,62 +309,53 @@ impl ConfigMachine {
 
     /// The value a path names (a standard block's member read from it).
     pub(crate) fn field(&self, p: &InstancePath) -> Result<Value, String> {
-        let v = self.slot_of(p)?;
-        match (&p.member, v) {
-            (None, v) => Ok(v.clone()),
-            (Some(m), Value::StdFb(b)) => b.get(m).ok_or_else(|| format!("internal: no `{m}`")),
-            (Some(_), _) => Err(format!("internal: `{}` is not a standard block", p.text)),
-        }
+        let (first, rest) = path_steps(&p.steps)?;
+        let inst = &self.programs[p.resource][p.program];
+        let i = find_var(&self.m.prog.pous[inst.pou], &first)
+            .ok_or_else(|| format!("internal: no `{first}`"))?;
+        self.m
+            .read_at(&inst.vars[i], &rest)
+            .ok_or_else(|| format!("internal: cannot read `{}`", p.text))
     }
 
     /// Write the value a path names.
     pub(crate) fn set_field(&mut self, p: &InstancePath, v: Value) -> Result<(), String> {
-        let slot = self.slot_of_mut(p)?;
-        match (&p.member, slot) {
-            (None, slot) => *slot = v,
-            (Some(m), Value::StdFb(b)) => {
-                if !b.set(m, &v) {
-                    return Err(format!("internal: cannot write `{}`", p.text));
-                }
-            }
-            (Some(_), _) => return Err(format!("internal: `{}` is not a standard block", p.text)),
+        let (first, rest) = path_steps(&p.steps)?;
+        let pou = self.programs[p.resource][p.program].pou;
+        let i = find_var(&self.m.prog.pous[pou], &first)
+            .ok_or_else(|| format!("internal: no `{first}`"))?;
+        let slot = &mut self.programs[p.resource][p.program].vars[i];
+        if self.m.write_at(slot, &rest, v) {
+            Ok(())
+        } else {
+            Err(format!("internal: cannot write `{}`", p.text))
         }
-        Ok(())
     }
 
-    /// The field a path's `fields` end at.
-    fn slot_of(&self, p: &InstancePath) -> Result<&Value, String> {
-        let prog = self.m.prog.clone();
-        let mut inst = &self.programs[p.resource][p.program];
-        for (k, f) in p.fields.iter().enumerate() {
-            let i =
-                find_var(&prog.pous[inst.pou], f).ok_or_else(|| format!("internal: no `{f}`"))?;
-            if k + 1 == p.fields.len() {
-                return Ok(&inst.vars[i]);
-            }
-            match &inst.vars[i] {
-                Value::Fb(b) => inst = b,
-                _ => return Err(format!("internal: `{f}` is not an instance")),
-            }
-        }
-        Err("internal: empty instance path".into())
+    /// The value of a global access path (`g`, `g.field`, `g[3]`).
+    pub(crate) fn global_at(&self, g: GlobalRef, steps: &[PathElem]) -> Result<Value, String> {
+        let steps = interp_steps(steps)?;
+        self.m
+            .read_at(self.slot(g), &steps)
+            .ok_or_else(|| "internal: cannot read a global's path".to_string())
     }
 
-    fn slot_of_mut(&mut self, p: &InstancePath) -> Result<&mut Value, String> {
-        let prog = self.m.prog.clone();
-        let mut inst = &mut self.programs[p.resource][p.program];
-        for (k, f) in p.fields.iter().enumerate() {
-            let i =
-                find_var(&prog.pous[inst.pou], f).ok_or_else(|| format!("internal: no `{f}`"))?;
-            if k + 1 == p.fields.len() {
-                return Ok(&mut inst.vars[i]);
-            }
-            match &mut inst.vars[i] {
-                Value::Fb(b) => inst = b,
-                _ => return Err(format!("internal: `{f}` is not an instance")),
-            }
+    /// Write a global access path.
+    pub(crate) fn set_global_at(
+        &mut self,
+        g: GlobalRef,
+        steps: &[PathElem],
+        v: Value,
+    ) -> Result<(), String> {
+        let steps = interp_steps(steps)?;
+        let mut slot = std::mem::replace(self.slot_mut(g), Value::Bool(false));
+        let ok = self.m.write_at(&mut slot, &steps, v);
+        *self.slot_mut(g) = slot;
+        if ok {
+            Ok(())
+        } else {
+            Err("internal: cannot write a global's path".into())
         }
-        Err("internal: empty instance path".into())
     }
 
     pub(crate) fn var_of(&self, g: GlobalRef) -> &il_codegen::sema::ir::Var {
@@ -446,5 +437,28 @@ impl ConfigMachine {
                 .position(|p| p.name.eq_ignore_ascii_case(n))?;
             Some((r, p))
         })
+    }
+}
+
+/// The interpreter's steps for the steps of a configuration path (members
+/// by name, elements by their row-major index, as the checker fixed them).
+pub(crate) fn interp_steps(steps: &[PathElem]) -> Result<Vec<Step>, String> {
+    steps
+        .iter()
+        .map(|e| match e {
+            PathElem::Field(f) => Ok(Step::Field(f.clone())),
+            _ => e
+                .constant_index()
+                .map(|(_, flat)| Step::Index(Some(flat)))
+                .ok_or_else(|| "internal: a configuration path with a run-time subscript".into()),
+        })
+        .collect()
+}
+
+/// The program variable a path starts at, and the steps after it.
+fn path_steps(steps: &[PathElem]) -> Result<(String, Vec<Step>), String> {
+    match steps.split_first() {
+        Some((PathElem::Field(f), rest)) => Ok((f.clone(), interp_steps(rest)?)),
+        _ => Err("internal: an instance path that does not start at a variable".into()),
     }
 }

@@ -1,9 +1,11 @@
 //! Places of a running CONFIGURATION named by a host (`ilc run --set`,
 //! `--watch`): its globals (`g`, `Resource.g`), its VAR_ACCESS paths, the
-//! variables of its program instances (`inst.v`, `Resource.inst.v`) and
+//! variables of its program instances (`inst.v`, `Resource.inst.v`), each
+//! with members and elements after it (`g.field`, `Res.inst.v.f[2]`), and
 //! direct addresses. Located globals are their place in the process image.
 
-use crate::places::{io_read, io_write};
+use crate::host::{Part, hint, split};
+use crate::places::{Step, io_read, io_write};
 use crate::values::Value;
 use crate::{ConfigMachine, find_var, held};
 use il_codegen::sema::ir::{GlobalRef, Loc, Storage};
@@ -25,18 +27,23 @@ pub struct ConfigPlace {
 
 #[derive(Clone, Debug)]
 enum Target {
-    Global(GlobalRef),
+    /// A global and the steps into it (`g`, `g.field`, `Res.h[3]`).
+    Global(GlobalRef, Vec<Step>),
     Addr(Loc),
-    /// Index into the configuration's access paths.
-    Access(usize),
-    /// (resource, program instance, variable index).
-    Program(usize, usize, usize),
+    /// Index into the configuration's access paths, and the steps into
+    /// the value it names (`Ap.field`).
+    Access(usize, Vec<Step>),
+    /// (resource, program instance, variable index) and the steps into the
+    /// variable (`Res.inst.var.field[2]`).
+    Program(usize, usize, usize, Vec<Step>),
 }
 
 impl ConfigMachine {
     /// Resolve `text`: a direct address, an access path, a global, or a
-    /// variable of a program instance, in that order (an access path and a
-    /// global are distinct names in one configuration).
+    /// variable of a program instance (`inst.v`, `Resource.inst.v`), each
+    /// followed by members and elements (`g.field`, `Res.inst.v.f[2]`).
+    /// Every error names what is wrong and, where one is close, the name
+    /// meant.
     pub fn lookup(&self, text: &str) -> Result<ConfigPlace, String> {
         let text = text.trim();
         let place = |ty: Ty, range, target| ConfigPlace {
@@ -49,27 +56,80 @@ impl ConfigMachine {
             let l = parse_address(text)?;
             return Ok(place(Ty::Elem(l.elem), None, Target::Addr(l)));
         }
-        if let Some(i) = (self.def.access.iter()).position(|a| a.name.eq_ignore_ascii_case(text)) {
-            let a = &self.def.access[i];
-            return Ok(place(a.ty.clone(), None, Target::Access(i)));
+        let (root, parts) = split(text)?;
+        if let Some(i) = (self.def.access.iter()).position(|a| a.name.eq_ignore_ascii_case(root)) {
+            let ty = self.def.access[i].ty.clone();
+            let (steps, ty, range) = self.m.resolve_parts(ty, None, &parts, text)?;
+            return Ok(place(ty, range, Target::Access(i, steps)));
         }
-        if let Some(g) = self.find_global(text) {
+        // `Res.x...`: x is a global or a program instance of that resource.
+        let res = (self.def.resources.iter()).position(|r| {
+            r.name
+                .as_ref()
+                .is_some_and(|n| n.eq_ignore_ascii_case(root))
+        });
+        let (scope, name, rest) = match (res, parts.split_first()) {
+            (Some(r), Some((Part::Field(n), rest))) => (Some(r), *n, rest),
+            (Some(r), _) => {
+                return Err(format!(
+                    "`{text}` names the resource `{root}`: add one of its globals or program instances ({})",
+                    self.scope_names(Some(r)).join(", ")
+                ));
+            }
+            (None, _) => (None, root, &parts[..]),
+        };
+        let full = match scope {
+            Some(r) => format!(
+                "{}.{name}",
+                self.def.resources[r].name.as_deref().unwrap_or_default()
+            ),
+            None => name.to_string(),
+        };
+        // A resource sees the configuration's globals too (`Res.g`, as the
+        // checker's access paths).
+        let global = self.find_global(&full).or_else(|| {
+            scope?;
+            self.find_global(name).filter(|g| g.resource.is_none())
+        });
+        if let Some(g) = global {
             let v = self.var_of(g);
-            return Ok(match &v.location {
-                Some(l) => place(v.ty.clone(), v.range, Target::Addr(l.clone())),
-                None => place(v.ty.clone(), v.range, Target::Global(g)),
-            });
+            if let Some(l) = &v.location {
+                if !rest.is_empty() {
+                    return Err(format!(
+                        "`{full}` is located at {}: it has no members",
+                        l.text
+                    ));
+                }
+                return Ok(place(v.ty.clone(), v.range, Target::Addr(l.clone())));
+            }
+            let (steps, ty, range) = self.m.resolve_parts(v.ty.clone(), v.range, rest, text)?;
+            return Ok(place(ty, range, Target::Global(g, steps)));
         }
-        if let Some((inst, var)) = text.rsplit_once('.')
-            && let Some((r, p)) = self.find_program(inst)
-        {
+        if let Some((r, p)) = self.find_program(&full) {
+            let Some((Part::Field(var), rest)) = rest.split_first() else {
+                return Err(format!(
+                    "`{text}` names the program instance `{full}`: add one of its variables (`{full}.var`)"
+                ));
+            };
             let pou = &self.m.prog.pous[self.programs[r][p].pou];
-            let i = find_var(pou, var)
-                .ok_or_else(|| format!("program `{}` has no variable `{var}`", pou.name))?;
+            let Some(i) = find_var(pou, var) else {
+                let names = pou.vars.iter().filter(|v| held(v)).map(|v| v.name.as_str());
+                return Err(format!(
+                    "program `{}` (instance `{full}`) has no variable `{var}`{}",
+                    pou.name,
+                    hint(var, names)
+                ));
+            };
             let v = &pou.vars[i];
             if v.storage == Storage::Located
                 && let Some(l) = &v.location
             {
+                if !rest.is_empty() {
+                    return Err(format!(
+                        "`{var}` is located at {}: it has no members",
+                        l.text
+                    ));
+                }
                 return Ok(place(v.ty.clone(), v.range, Target::Addr(l.clone())));
             }
             if !held(v) {
@@ -78,26 +138,66 @@ impl ConfigMachine {
                     pou.name
                 ));
             }
-            return Ok(place(v.ty.clone(), v.range, Target::Program(r, p, i)));
+            let (steps, ty, range) = self.m.resolve_parts(v.ty.clone(), v.range, rest, text)?;
+            return Ok(place(ty, range, Target::Program(r, p, i, steps)));
         }
-        Err(format!(
-            "configuration `{}` has no global, access path or program variable `{text}` (globals and access paths: {}; a program's variable is `instance.var`, `Resource.instance.var` in a RESOURCE)",
-            self.def.name,
-            self.watchable().join(", ")
-        ))
+        let names = self.scope_names(scope);
+        let near = hint(name, names.iter().map(String::as_str));
+        Err(match scope {
+            Some(r) => format!(
+                "resource `{}` has no global or program instance `{name}`{near}",
+                self.def.resources[r].name.as_deref().unwrap_or_default()
+            ),
+            None => format!(
+                "configuration `{}` has no global, access path, resource or program instance `{name}`{near} (a program's variable is `instance.var`, `Resource.instance.var` in a RESOURCE)",
+                self.def.name
+            ),
+        })
+    }
+
+    /// The names a path may start with in `scope` (a named resource), or at
+    /// the top: globals, access paths, resources and program instances.
+    fn scope_names(&self, scope: Option<usize>) -> Vec<String> {
+        let d = &self.def;
+        let mut names: Vec<String> = Vec::new();
+        let res_names = |r: &il_codegen::sema::ir::ResourceDef| -> Vec<String> {
+            (r.globals.iter().map(|v| v.name.clone()))
+                .chain(r.programs.iter().map(|p| p.name.clone()))
+                .collect()
+        };
+        match scope {
+            Some(r) => {
+                names.extend(res_names(&d.resources[r]));
+                names.extend(d.globals.iter().map(|v| v.name.clone()));
+            }
+            None => {
+                names.extend(d.globals.iter().map(|v| v.name.clone()));
+                names.extend(d.access.iter().map(|a| a.name.clone()));
+                for r in &d.resources {
+                    match &r.name {
+                        Some(n) => names.push(n.clone()),
+                        None => names.extend(res_names(r)),
+                    }
+                }
+            }
+        }
+        names
     }
 
     /// The current value of a place (the process image is the cycle's).
     pub fn get_at(&self, ctx: &Cycle, p: &ConfigPlace) -> Value {
-        match &p.target {
-            Target::Addr(l) => io_read(ctx, l),
-            Target::Global(g) => self.slot(*g).clone(),
-            Target::Access(i) => {
+        let got = match &p.target {
+            Target::Addr(l) => Some(io_read(ctx, l)),
+            Target::Global(g, steps) => self.m.read_at(self.slot(*g), steps),
+            Target::Access(i, steps) => {
                 let name = self.def.access[*i].name.clone();
-                self.access(&name).unwrap_or(Value::Bool(false))
+                self.access(&name).and_then(|v| self.m.read_at(&v, steps))
             }
-            Target::Program(r, p, i) => self.programs[*r][*p].vars[*i].clone(),
-        }
+            Target::Program(r, p, i, steps) => {
+                self.m.read_at(&self.programs[*r][*p].vars[*i], steps)
+            }
+        };
+        got.unwrap_or(Value::Bool(false))
     }
 
     /// Write a place; the value must have its type (and stay in its
@@ -106,14 +206,39 @@ impl ConfigMachine {
         if !self.m.fits(&v, &p.ty)? {
             return Err(format!("`{}` is {}, not {}", p.text, p.ty, v.display()));
         }
+        if let (Some((lo, hi)), Value::Int(x, _)) = (p.range, &v)
+            && !(lo..=hi).contains(x)
+        {
+            return Err(format!(
+                "`{}`: {x} is outside its subrange {lo}..{hi}",
+                p.text
+            ));
+        }
+        let cannot = || format!("cannot write `{}`", p.text);
         match &p.target {
             Target::Addr(l) => io_write(ctx, l, &v),
-            Target::Global(g) => *self.slot_mut(*g) = v,
-            Target::Access(i) => {
-                let name = self.def.access[*i].name.clone();
-                self.set_access(&name, v)?;
+            Target::Global(g, steps) => {
+                let mut slot = std::mem::replace(self.slot_mut(*g), Value::Bool(false));
+                let ok = self.m.write_at(&mut slot, steps, v);
+                *self.slot_mut(*g) = slot;
+                ok.then_some(()).ok_or_else(cannot)?;
             }
-            Target::Program(r, p, i) => self.programs[*r][*p].vars[*i] = v,
+            Target::Access(i, steps) => {
+                let name = self.def.access[*i].name.clone();
+                let mut whole = self.access(&name).ok_or_else(cannot)?;
+                self.m
+                    .write_at(&mut whole, steps, v)
+                    .then_some(())
+                    .ok_or_else(cannot)?;
+                self.set_access(&name, whole)?;
+            }
+            Target::Program(r, p, i, steps) => {
+                let slot = &mut self.programs[*r][*p].vars[*i];
+                self.m
+                    .write_at(slot, steps, v)
+                    .then_some(())
+                    .ok_or_else(cannot)?;
+            }
         }
         Ok(())
     }
@@ -122,7 +247,7 @@ impl ConfigMachine {
     /// [`crate::Machine::parse_for`]); a READ_ONLY access path is refused here,
     /// before the run.
     pub fn parse_for(&self, p: &ConfigPlace, text: &str) -> Result<Value, String> {
-        if let Target::Access(i) = &p.target
+        if let Target::Access(i, _) = &p.target
             && !self.def.access[*i].writable
         {
             return Err(format!(

@@ -46,8 +46,12 @@ impl HostPlace {
 /// A member: its declared name, type and subrange bounds.
 type Member = (String, Ty, Option<(i128, i128)>);
 
+/// Where a path's parts lead: the steps, and the type and subrange bounds
+/// of the place they end at.
+pub(crate) type Resolved = (Vec<Step>, Ty, Option<(i128, i128)>);
+
 /// One part of a path: `.name` or `[i, j]`.
-enum Part<'a> {
+pub(crate) enum Part<'a> {
     Field(&'a str),
     Index(Vec<&'a str>),
 }
@@ -57,7 +61,7 @@ fn is_ident(c: char) -> bool {
 }
 
 /// Split `a.b[1, 2].c` into its root and parts.
-fn split(text: &str) -> Result<(&str, Vec<Part<'_>>), String> {
+pub(crate) fn split(text: &str) -> Result<(&str, Vec<Part<'_>>), String> {
     let bad = || format!("`{text}` is not a variable path like `tank.level` or `valves[2].open`");
     let end = text.find(|c: char| !is_ident(c)).unwrap_or(text.len());
     let (root, mut rest) = text.split_at(end);
@@ -85,7 +89,7 @@ fn split(text: &str) -> Result<(&str, Vec<Part<'_>>), String> {
 }
 
 /// ", did you mean `x`?" when a candidate is close.
-fn hint<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> String {
+pub(crate) fn hint<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> String {
     suggest(name, candidates)
         .map(|s| format!("; did you mean `{s}`?"))
         .unwrap_or_default()
@@ -144,8 +148,25 @@ impl Machine {
                 pou.name
             ));
         }
-        let mut ty = var.ty.clone();
-        let mut range = var.range;
+        let (steps, ty, range) = self.resolve_parts(var.ty.clone(), var.range, &parts, text)?;
+        Ok(HostPlace {
+            text: text.to_string(),
+            ty,
+            range,
+            target: Target::Var(i, steps),
+        })
+    }
+
+    /// The steps `parts` take into a place of type `ty` (subrange `range`):
+    /// the steps, the type and subrange of the place they end at. `text` is
+    /// the whole path, for the messages.
+    pub(crate) fn resolve_parts(
+        &self,
+        mut ty: Ty,
+        mut range: Option<(i128, i128)>,
+        parts: &[Part<'_>],
+        text: &str,
+    ) -> Result<Resolved, String> {
         let mut steps = Vec::new();
         for part in parts {
             match part {
@@ -156,7 +177,12 @@ impl Machine {
                     range = frange;
                 }
                 Part::Index(subs) => {
-                    let Ty::Array { dims, elem, .. } = &ty else {
+                    let Ty::Array {
+                        dims,
+                        elem,
+                        range: elem_range,
+                    } = &ty
+                    else {
                         return Err(format!("`{text}`: {ty} is not an array"));
                     };
                     if subs.len() != dims.len() {
@@ -179,17 +205,13 @@ impl Machine {
                         flat = flat * (hi - lo + 1) as usize + (k - lo) as usize;
                     }
                     steps.push(Step::Index(Some(flat)));
+                    // An element of an array of a subrange keeps its bounds.
+                    range = elem_range.as_deref().copied();
                     ty = (**elem).clone();
-                    range = None;
                 }
             }
         }
-        Ok(HostPlace {
-            text: text.to_string(),
-            ty,
-            range,
-            target: Target::Var(i, steps),
-        })
+        Ok((steps, ty, range))
     }
 
     /// The member `f` of a value of type `ty`: its declared name, type and subrange.

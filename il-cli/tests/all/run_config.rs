@@ -1,10 +1,12 @@
 //! `ilc run` on a CONFIGURATION: its tasks decide which programs each scan
 //! runs; `--set`/`--watch` name globals, access paths, program variables
-//! (`Resource.instance.var`) and direct addresses.
+//! (`Resource.instance.var`), members and elements of each (`g.x`, `h[3]`,
+//! `Res.inst.var.field[2]`) and direct addresses.
 
 use crate::run::{file, ilc, rows, text};
 
 const CFG_FORMS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/plc/cfg_forms.il");
+const CFG_PATHS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/plc/cfg_paths.il");
 
 /// The column `name` of a table, top to bottom.
 fn column(out: &str, name: &str) -> Vec<String> {
@@ -165,11 +167,11 @@ fn wrong_configuration_names_exit_1() {
         ),
         (
             vec!["--config", "CfgIo", "--watch", "Io.limit"],
-            "--watch Io.limit: configuration `CfgIo` has no global, access path or program variable `Io.limit`",
+            "--watch Io.limit: configuration `CfgIo` has no global, access path, resource or program instance `Io`",
         ),
         (
             vec!["--config", "CfgIo", "--watch", "Cpu.Io.nothing"],
-            "--watch Cpu.Io.nothing: program `CfIo` has no variable `nothing`",
+            "--watch Cpu.Io.nothing: program `CfIo` (instance `Cpu.Io`) has no variable `nothing`",
         ),
     ] {
         let mut all = vec!["run", CFG_FORMS];
@@ -178,5 +180,80 @@ fn wrong_configuration_names_exit_1() {
         let err = text(&o.stderr);
         assert_eq!(o.status.code(), Some(1), "{args:?}: {err}");
         assert!(err.contains(want), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn members_and_elements_of_globals_access_paths_and_program_variables() {
+    let o = ilc(&[
+        "run",
+        CFG_PATHS,
+        "--config",
+        "CfgPaths",
+        "--cycles",
+        "4",
+        "--set",
+        "g.x=5@2",
+        "--set",
+        "h[3]=7",
+        "--set",
+        "RES1.P1.cells[2].total=100@3",
+        "--watch",
+        "g.x,h[3],RES1.h[2],RES1.P1.p.y[3],RES1.P1.m[2,3],RES1.P1.cells[2].total,RES1.P1.t[2].Q,A2",
+    ]);
+    let out = text(&o.stdout);
+    assert!(o.status.success(), "{out}{}", text(&o.stderr));
+    // g.x is set before scan 2; p.y[3] is g.x + the run count.
+    assert_eq!(column(&out, "g.x"), ["0", "5", "5", "5"]);
+    assert_eq!(column(&out, "RES1.P1.p.y[3]"), ["1", "7", "8", "9"]);
+    // h[3] is set before scan 1 and read into a[3], which cells[2] adds up.
+    assert_eq!(column(&out, "h[3]"), ["7"; 4]);
+    assert_eq!(
+        column(&out, "RES1.P1.cells[2].total"),
+        ["7", "14", "107", "114"]
+    );
+    // `RES1.h`: the configuration's global seen from the resource.
+    assert_eq!(column(&out, "RES1.h[2]"), ["1", "2", "3", "4"]);
+    assert_eq!(column(&out, "RES1.P1.m[2,3]"), ["2", "4", "6", "8"]);
+    assert_eq!(column(&out, "A2"), ["1", "2", "3", "4"]);
+    assert_eq!(
+        column(&out, "RES1.P1.t[2].Q"),
+        ["FALSE", "FALSE", "FALSE", "TRUE"]
+    );
+}
+
+#[test]
+fn wrong_paths_into_a_configuration_say_what_was_meant() {
+    for (watch, want) in [
+        ("g.z", "`g.z`: CpPoint has no member `z`; did you mean `x`?"),
+        ("h[5]", "`h[5]`: subscript 5 is outside the bounds 1..4"),
+        (
+            "gg",
+            "configuration `CfgPaths` has no global, access path, resource or program instance `gg`; did you mean `g`?",
+        ),
+        (
+            "RES1.P2.n",
+            "resource `RES1` has no global or program instance `P2`; did you mean `P1`?",
+        ),
+        (
+            "RES1.P1.nn",
+            "program `CpMain` (instance `RES1.P1`) has no variable `nn`; did you mean `n`?",
+        ),
+        (
+            "RES1.P1.cells[1].QQ",
+            "CpCell has no member `QQ`; did you mean `Q`?",
+        ),
+        ("RES1.P1.a.x", "ARRAY[0..3] OF INT has no members"),
+        (
+            "RES1.P1",
+            "`RES1.P1` names the program instance `RES1.P1`: add one of its variables",
+        ),
+    ] {
+        let o = ilc(&[
+            "run", CFG_PATHS, "--config", "CfgPaths", "--cycles", "1", "--watch", watch,
+        ]);
+        let err = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{watch}: {err}");
+        assert!(err.contains(want), "{watch}: {err}");
     }
 }

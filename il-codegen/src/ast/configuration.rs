@@ -76,8 +76,9 @@ pub struct ProgramInstance {
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConfigVar {
     /// The instance path: resource (if named), program instance, FB
-    /// instances, variable.
-    pub path: Vec<Ident>,
+    /// instances, variable (the checker refuses subscripts and members of
+    /// structures here, which Ed.2 2.7.1 does not allow).
+    pub path: VarRef,
     /// `AT %QX1.0`
     pub location: Option<DirectAddress>,
     /// The type, which must be the variable's.
@@ -94,9 +95,10 @@ pub struct ConfigVar {
 pub struct AccessVar {
     /// The access path's name.
     pub name: Ident,
-    /// What it names: a global (`g`), or a variable of a program instance
-    /// (`Res.Prog.x`, `Prog.x`).
-    pub path: Vec<Ident>,
+    /// What it names: a global (`g`, `g.field`, `g[3]`), or a variable of a
+    /// program instance (`Res.Prog.x`, `Prog.fbs[1].Q`), with members of
+    /// structures and elements of arrays (constant subscripts).
+    pub path: VarRef,
     /// The type, which must be the variable's.
     pub ty: TypeSpec,
     /// `READ_WRITE` (true) or `READ_ONLY` (false, also when omitted).

@@ -3,14 +3,14 @@
 
 use super::text::doc;
 use super::{rust_ident, rust_ty};
-use crate::sema::ir::{AccessTarget, ConfigDef};
+use crate::sema::ir::{AccessTarget, ConfigDef, Const, PathElem, Value};
 
 /// `access_NAME(&self) -> T` and (READ_WRITE) `set_access_NAME(&mut self, v: T)`.
 pub(super) fn methods(c: &ConfigDef) -> String {
     let mut out = String::new();
     for a in &c.access {
         let (path, what) = match &a.target {
-            AccessTarget::Global(g) => {
+            AccessTarget::Global { global: g, steps } => {
                 let (v, base) = match g.resource {
                     None => (&c.globals[g.index], "self".to_string()),
                     Some(r) => {
@@ -22,8 +22,12 @@ pub(super) fn methods(c: &ConfigDef) -> String {
                     }
                 };
                 (
-                    format!("{base}.{}", rust_ident(&v.name)),
-                    format!("the global `{}`", v.name),
+                    format!(
+                        "{base}.{}{}",
+                        rust_ident(&v.name),
+                        super::config_vars::steps(steps)
+                    ),
+                    format!("the global `{}`", written(&v.name, steps)),
                 )
             }
             AccessTarget::Instance(p) => (
@@ -55,4 +59,29 @@ pub(super) fn methods(c: &ConfigDef) -> String {
         }
     }
     out
+}
+
+/// `g.x`, `h[3]`: a global's path as IEC writes it, for the doc comment.
+fn written(global: &str, steps: &[PathElem]) -> String {
+    let mut t = global.to_string();
+    for e in steps {
+        match e {
+            PathElem::Field(f) => {
+                t.push('.');
+                t.push_str(f);
+            }
+            PathElem::Index { subs, .. } => {
+                let subs: Vec<String> = subs
+                    .iter()
+                    .map(|s| match s {
+                        Value::Const(Const::Int(n, _)) => n.to_string(),
+                        _ => "?".to_string(),
+                    })
+                    .collect();
+                t.push_str(&format!("[{}]", subs.join(", ")));
+            }
+            PathElem::Part { index, .. } => t.push_str(&format!(".{index}")),
+        }
+    }
+    t
 }

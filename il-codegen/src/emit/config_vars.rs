@@ -5,10 +5,11 @@
 
 use super::{rust_ident, values};
 use crate::ast::Area;
-use crate::sema::ir::{ConfigDef, InstancePath};
+use crate::sema::ir::{ConfigDef, InstancePath, PathElem};
 
-/// `base.Res.prog.fb.x` for an instance path (`base` is `self` or `__s`);
-/// a standard block's member is its il-std field (`tmr.PT`).
+/// `base.Res.prog.fb.x` (`base.Res.prog.a[1].b`) for an instance path
+/// (`base` is `self` or `__s`); a standard block's member is its il-std
+/// field (`tmr.PT`).
 pub(super) fn place(c: &ConfigDef, base: &str, p: &InstancePath) -> String {
     let mut t = base.to_string();
     if let Some(r) = &c.resources[p.resource].name {
@@ -19,9 +20,27 @@ pub(super) fn place(c: &ConfigDef, base: &str, p: &InstancePath) -> String {
     t.push_str(&rust_ident(
         &c.resources[p.resource].programs[p.program].name,
     ));
-    for f in p.fields.iter().chain(&p.member) {
-        t.push('.');
-        t.push_str(&rust_ident(f));
+    t.push_str(&steps(&p.steps));
+    t
+}
+
+/// `.field[k]...` for the steps of a configuration path: members by their
+/// Rust names, elements by literal offsets (the checker proved them inside
+/// the bounds, so indexing cannot fail).
+pub(super) fn steps(steps: &[PathElem]) -> String {
+    let mut t = String::new();
+    for e in steps {
+        match e {
+            PathElem::Field(f) => {
+                t.push('.');
+                t.push_str(&rust_ident(f));
+            }
+            _ => {
+                for k in e.constant_index().map(|(o, _)| o).unwrap_or_default() {
+                    t.push_str(&format!("[{k}]"));
+                }
+            }
+        }
     }
     t
 }

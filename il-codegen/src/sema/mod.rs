@@ -4,6 +4,7 @@
 mod address;
 pub mod codes;
 mod config_args;
+mod config_paths;
 mod config_tasks;
 mod config_vars;
 mod configuration;

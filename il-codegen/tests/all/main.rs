@@ -16,6 +16,7 @@ mod render_golden;
 mod scaling;
 mod sema_calls;
 mod sema_config_forms;
+mod sema_config_paths;
 mod sema_corners;
 mod sema_hints;
 mod sema_host_functions;

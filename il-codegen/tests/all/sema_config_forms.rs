@@ -204,12 +204,12 @@ fn var_config_refuses_what_does_not_fit() {
         (
             "R.m.n.x : INT := 1;",
             "IL0131",
-            "`n` is INT: only instances of FUNCTION_BLOCKs can be stepped into",
+            "`n` is INT, which has no members",
         ),
         (
             "R.m.t.PT.x : TIME := T#1s;",
             "IL0131",
-            "`t` is TON: only instances of FUNCTION_BLOCKs can be stepped into (a standard one's input or output ends the path)",
+            "`PT` is TIME, which has no members",
         ),
         (
             "R.m.t.PX : TIME := T#1s;",
@@ -305,7 +305,7 @@ fn var_access_refuses_what_does_not_fit() {
         (
             "a : Q.m.n : INT;",
             "IL0131",
-            "configuration `C` has no resource `Q`",
+            "configuration `C` has no resource or global `Q`",
         ),
     ];
     for (decl, code, want) in cases {

@@ -226,3 +226,43 @@ fn host_paths_values_and_errors() {
         "a value of another type"
     );
 }
+
+/// A host store into an element of an array of a subrange keeps to the
+/// subrange, in a program and in a configuration's global.
+#[test]
+fn host_stores_into_subrange_elements_keep_the_bounds() {
+    let src = "TYPE Pct : INT (0..100); END_TYPE
+PROGRAM Hs
+VAR_EXTERNAL gl : ARRAY[1..2] OF Pct; END_VAR
+VAR a : ARRAY[1..3] OF Pct; END_VAR
+    LD gl[1]
+    ST a[1]
+END_PROGRAM
+CONFIGURATION Hc
+VAR_GLOBAL gl : ARRAY[1..2] OF Pct; END_VAR
+PROGRAM p : Hs;
+END_CONFIGURATION
+";
+    let prog = load(&SourceFile::new("hs.il", src)).unwrap();
+    let mut m = Machine::new(&prog, "Hs").unwrap();
+    let mut ctx = Cycle::new();
+    let p = m.lookup("a[2]").unwrap();
+    m.set_at(&mut ctx, &p, il_interp::int(100, Elem::INT))
+        .unwrap();
+    let e = m
+        .set_at(&mut ctx, &p, il_interp::int(101, Elem::INT))
+        .unwrap_err();
+    assert_eq!(e, "`a[2]`: 101 is outside its subrange 0..100");
+    let mut c = il_interp::ConfigMachine::new(&prog, "Hc").unwrap();
+    for (path, v, ok) in [
+        ("gl[2]", 7, true),
+        ("gl[2]", -1, false),
+        ("p.a[3]", 101, false),
+    ] {
+        let place = c.lookup(path).unwrap();
+        let r = c.set_at(&mut ctx, &place, il_interp::int(v, Elem::INT));
+        assert_eq!(r.is_ok(), ok, "{path} := {v}: {r:?}");
+    }
+    let place = c.lookup("gl[2]").unwrap();
+    assert_eq!(c.get_at(&ctx, &place), il_interp::int(7, Elem::INT));
+}

@@ -82,4 +82,10 @@ pub const CONSTRUCTS: &[&str] = &[
     "2-d array",
     "located variables",
     "direct addresses",
+    // configurations over simulated time (config.rs)
+    "CONFIGURATION: tasks, programs, VAR_ACCESS",
+    "CONFIGURATION with two RESOURCEs",
+    "TASK SINGLE",
+    "program instance without a task",
+    "VAR_ACCESS through elements and members",
 ];

@@ -22,6 +22,7 @@
 
 mod bodies;
 mod calls;
+pub mod config;
 pub mod coverage;
 mod dialect;
 mod text;
@@ -278,6 +279,10 @@ fn decls(vars: &[Var]) -> String {
 /// Generate program number `seed`.
 pub fn generate(seed: u64) -> Program {
     let mut rng = Rng::new(seed);
+    // The configuration draws from a stream of its own, so the rest of a
+    // seed's program is the same with and without it.
+    let mut crng = Rng::new(seed ^ 0xC0F1_6000_0000_0001);
+    let with_config = crng.chance(25);
     let mut types = vec![T::Bool];
     for _ in 0..1 + rng.below(3) {
         let t = *rng.pick(&[NUMERIC, BITS].concat());
@@ -530,8 +535,18 @@ pub fn generate(seed: u64) -> Program {
         .iter()
         .map(|(n, t)| format!("    {n} : {t};\n"))
         .collect();
+    // With a configuration, the second local of each type is a VAR_OUTPUT
+    // it can bind to a global.
+    let (outputs, locals): (Vec<Var>, Vec<Var>) = locals
+        .into_iter()
+        .partition(|v| with_config && v.name.starts_with('v') && v.name.ends_with("_1"));
+    let output_decls = if outputs.is_empty() {
+        String::new()
+    } else {
+        format!("VAR_OUTPUT\n{}END_VAR\n", decls(&outputs))
+    };
     il.push_str(&format!(
-        "PROGRAM Main\nVAR_INPUT\n{}END_VAR\nVAR\n{}    arr : ARRAY[0..3] OF {};\n{}{}END_VAR\n{}\nEND_PROGRAM\n",
+        "PROGRAM Main\nVAR_INPUT\n{}END_VAR\n{output_decls}VAR\n{}    arr : ARRAY[0..3] OF {};\n{}{}END_VAR\n{}\nEND_PROGRAM\n",
         decls(&inputs),
         decls(&locals),
         arr_t.name(),
@@ -539,7 +554,61 @@ pub fn generate(seed: u64) -> Program {
         extras.decls + &text_decls,
         body
     ));
-    let il = format!("{}{il}", extras.types);
+    let mut il = format!("{}{il}", extras.types);
+    if with_config {
+        let mut paths: Vec<Var> = locals
+            .iter()
+            .chain(&outputs)
+            .filter(|v| v.name.starts_with('v'))
+            .cloned()
+            .collect();
+        for k in 0..4 {
+            paths.push(Var {
+                name: format!("arr[{k}]"),
+                ty: arr_t,
+            });
+        }
+        paths.push(Var {
+            name: "b1.y".into(),
+            ty: ft,
+        });
+        paths.push(Var {
+            name: "b1.acc".into(),
+            ty: ft,
+        });
+        paths.push(Var {
+            name: "t1.Q".into(),
+            ty: T::Bool,
+        });
+        paths.push(Var {
+            name: "t2.ET".into(),
+            ty: T::Time,
+        });
+        if types.contains(&T::Int) {
+            paths.push(Var {
+                name: "c1.CV".into(),
+                ty: T::Int,
+            });
+        }
+        // Members and elements with constant subscripts (not the subrange
+        // members, whose type is `Sub`).
+        paths.extend(
+            extras
+                .vars
+                .iter()
+                .filter(|v| v.name.contains(['.', '[']) && !v.name.contains("cnt"))
+                .filter(|v| !v.name.ends_with(".s") && !v.name.starts_with('%'))
+                .cloned(),
+        );
+        let shape = config::Shape {
+            inputs: inputs.clone(),
+            outputs: outputs.clone(),
+            paths,
+        };
+        let (text, k) = config::configuration(&mut crng, &shape);
+        il.push_str(&text);
+        kinds.extend(k);
+    }
     // Located inputs are driven like the VAR_INPUTs (through the image).
     inputs.extend(extras.inputs.iter().cloned());
 

@@ -151,7 +151,119 @@ fn interpret(prog: &il_codegen::sema::ir::Program, p: &Program) -> Result<Vec<St
         lines.push(line);
         ctx.advance(il_std::TIME(p.step_ns));
     }
+    if let Some(c) = config_case(prog) {
+        lines.extend(interpret_config(prog, &c)?);
+    }
     Ok(lines)
+}
+
+/// The configuration of a generated program (gen/config.rs): its name and
+/// access paths (name, type, READ_WRITE), from the checked IR.
+struct CfgCase {
+    name: String,
+    access: Vec<(String, T, bool)>,
+}
+
+fn config_case(prog: &il_codegen::sema::ir::Program) -> Option<CfgCase> {
+    let def = prog.configs.first()?;
+    Some(CfgCase {
+        name: def.name.clone(),
+        access: def
+            .access
+            .iter()
+            .map(|a| (a.name.clone(), gen_type(&a.ty), a.writable))
+            .collect(),
+    })
+}
+
+/// The host's writes before call `k`: (access path, type, value) of every
+/// READ_WRITE path.
+fn config_writes(c: &CfgCase, k: usize) -> Vec<(&str, T, Lit)> {
+    c.access
+        .iter()
+        .filter(|a| a.2)
+        .enumerate()
+        .map(|(j, (n, t, _))| (n.as_str(), *t, generator::config::write_value(k, j, *t)))
+        .collect()
+}
+
+/// The configuration under the interpreter: one line per call (tagged
+/// 1000 + k): faults and image, programs run, the (task, program) trace,
+/// overruns per task, then every access path.
+fn interpret_config(
+    prog: &il_codegen::sema::ir::Program,
+    c: &CfgCase,
+) -> Result<Vec<String>, String> {
+    let mut m = il_interp::ConfigMachine::new(prog, &c.name)?;
+    let mut ctx = il_std::Cycle::new();
+    let mut lines = Vec::new();
+    for k in 0..generator::config::STEPS {
+        for (n, t, l) in config_writes(c, k) {
+            m.set_access(n, lit_value(t, &l))?;
+        }
+        let mut trace = String::new();
+        let ran = m.run_traced(&mut ctx, |t, p| {
+            let _ = write!(trace, "{t}:{p},");
+        })?;
+        let over: Vec<String> = m.overruns().iter().map(u64::to_string).collect();
+        let mut line = format!(
+            "{} {} ran={ran} trace={trace} over={}",
+            1000 + k,
+            fault_text(&ctx),
+            over.join(",")
+        );
+        for (n, _, _) in &c.access {
+            let v = m.access(n).ok_or_else(|| format!("no access path {n}"))?;
+            let _ = write!(line, " {n}={}", canon(&v));
+        }
+        lines.push(line);
+        ctx.advance(il_std::TIME(generator::config::STEP_NS));
+    }
+    Ok(lines)
+}
+
+/// The same calls of the generated configuration struct (the access paths
+/// read by one function, not once per call: the crate's build is most of
+/// this test's time).
+fn config_driver(i: usize, c: &CfgCase) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "fn access(c: &{}, ran: usize, trace: String) -> Vec<(&'static str, String)> {{",
+        c.name
+    );
+    let _ = writeln!(
+        s,
+        "    let over: Vec<String> = c.overruns().iter().map(u64::to_string).collect();"
+    );
+    let _ = writeln!(
+        s,
+        "    vec![(\"ran\", ran.to_string()), (\"trace\", trace), (\"over\", over.join(\",\")),"
+    );
+    for (n, _, _) in &c.access {
+        let _ = writeln!(
+            s,
+            "        (\"{n}\", crate::Canon::canon(&c.access_{n}())),"
+        );
+    }
+    let _ = writeln!(s, "    ]\n}}");
+    let _ = writeln!(s, "pub fn run_config(out: &mut String) {{");
+    let _ = writeln!(s, "    let mut ctx = il_std::Cycle::new();");
+    let _ = writeln!(s, "    let mut c = {}::default();", c.name);
+    let _ = writeln!(
+        s,
+        "    fn step(c: &mut {}, ctx: &mut il_std::Cycle, out: &mut String, k: usize) {{ let mut trace = String::new(); let ran = c.run_traced(ctx, |t, p| {{ trace.push_str(t); trace.push(':'); trace.push_str(p); trace.push(','); }}); crate::line(out, {i}, 1000 + k, ctx, &access(c, ran, trace)); ctx.advance(il_std::TIME({}i64)); }}",
+        c.name,
+        generator::config::STEP_NS
+    );
+    for k in 0..generator::config::STEPS {
+        for (n, t, l) in config_writes(c, k) {
+            let _ = writeln!(s, "    c.set_access_{n}({});", lit_rust(t, &l));
+        }
+        let _ = writeln!(s, "    step(&mut c, &mut ctx, out, {k});");
+    }
+    s.push_str("}\n");
+    s
 }
 
 /// How the driver sets an input: a field of `Main`, or the process image
@@ -206,7 +318,13 @@ fn canon_impls(prog: &il_codegen::sema::ir::Program) -> String {
 }
 
 /// The Rust driver of one program: a module with the generated code and `run`.
-fn driver(i: usize, names: &[String], p: &Program, locs: &[Option<Loc>]) -> String {
+fn driver(
+    i: usize,
+    names: &[String],
+    p: &Program,
+    locs: &[Option<Loc>],
+    config: Option<&CfgCase>,
+) -> String {
     let mut s = String::new();
     // The watched variables once, not once per scan: the generated crate is
     // a third smaller, and its build is most of this test's time.
@@ -229,7 +347,13 @@ fn driver(i: usize, names: &[String], p: &Program, locs: &[Option<Loc>]) -> Stri
         let _ = writeln!(s, "    crate::line(out, {i}, {k}, &ctx, &vars(&m));");
         let _ = writeln!(s, "    ctx.advance(il_std::TIME({}i64));", p.step_ns);
     }
-    s.push_str("}\n");
+    if let Some(c) = config {
+        let _ = writeln!(s, "    run_config(out);");
+        s.push_str("}\n");
+        s.push_str(&config_driver(i, c));
+    } else {
+        s.push_str("}\n");
+    }
     s
 }
 
@@ -271,6 +395,8 @@ struct Case {
     /// Where each input lives when it is located (the checker's decision).
     locs: Vec<Option<Loc>>,
     canon_impls: String,
+    /// The configuration it declares, run after the program's scans.
+    config: Option<CfgCase>,
 }
 
 /// Build one crate with every case and run it; the output lines per case.
@@ -305,7 +431,7 @@ fn build_and_run(dir: &Path, cases: &[Case]) -> Vec<Vec<String>> {
             "{}\n{}\n{}",
             c.rust,
             c.canon_impls,
-            driver(c.index, &c.names, &c.program, &c.locs)
+            driver(c.index, &c.names, &c.program, &c.locs, c.config.as_ref())
         );
         write_if_changed(&src.join(&name), &text);
         let _ = writeln!(main, "#[path = {name:?}] mod p{};", c.index);
@@ -372,6 +498,7 @@ fn prepare(index: usize, seed: u64, program: Program) -> Result<Case, String> {
         .map(|v| m.lookup(&v.name).map(|p| p.location().cloned()))
         .collect::<Result<Vec<_>, _>>()?;
     let canon_impls = canon_impls(&prog);
+    let config = config_case(&prog);
     let rust = il_codegen::Program::new()
         .il(file.clone())
         .check()
@@ -387,6 +514,7 @@ fn prepare(index: usize, seed: u64, program: Program) -> Result<Case, String> {
         names,
         locs,
         canon_impls,
+        config,
     })
 }
 

@@ -7,6 +7,7 @@
 mod addresses;
 mod annex_f;
 mod cfg_forms;
+mod cfg_paths;
 mod corners;
 mod dialect;
 mod differential;

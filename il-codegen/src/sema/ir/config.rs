@@ -2,7 +2,7 @@
 //! program instances with their arguments, VAR_CONFIG and VAR_ACCESS.
 
 use super::super::types::Ty;
-use super::{Const, Init, Loc, Var};
+use super::{Const, Init, Loc, PathElem, Value, Var};
 
 /// A CONFIGURATION: its globals, and its resources with their tasks and
 /// program instances. It becomes a struct the host drives with the time.
@@ -40,20 +40,23 @@ impl ConfigDef {
 }
 
 /// A variable inside a program instance, named from the configuration
-/// (`Res.Prog.fb.x`): the resource, the instance, then fields down.
+/// (`Res.Prog.fb.x`, `Res.Prog.a[2]`): the resource, the instance, then the
+/// steps down to the place.
 #[derive(Clone, Debug, PartialEq)]
 pub struct InstancePath {
     /// Index into [`ConfigDef::resources`].
     pub resource: usize,
     /// Index into that resource's programs.
     pub program: usize,
-    /// The variable of the program, then of each FB instance, as declared;
-    /// at least one. Every step is an instance field (storage `Instance`).
-    pub fields: Vec<String>,
-    /// `Some(m)`: the last field is a standard FB instance and the path
-    /// names its input or output `m` (the il-std field, `PT`, `Q`).
-    pub member: Option<String>,
-    /// The variable's type.
+    /// From the program instance down, at least one step, the first a
+    /// [`PathElem::Field`] naming a variable of the program. A `Field` is a
+    /// variable of an FB instance (storage `Instance`), a member of a
+    /// STRUCT, or an input or output of a standard block (the il-std field,
+    /// `PT`, `Q`: always the last step); an [`PathElem::Index`] has constant
+    /// subscripts the checker proved inside the bounds. VAR_CONFIG paths
+    /// have fields only (Ed.2 2.7.1).
+    pub steps: Vec<PathElem>,
+    /// The type of the place.
     pub ty: Ty,
     /// The path as written (`Cpu.Main.sensor`).
     pub text: String,
@@ -88,8 +91,15 @@ pub struct AccessDef {
 /// What an access path names.
 #[derive(Clone, Debug, PartialEq)]
 pub enum AccessTarget {
-    /// An unlocated global of the configuration.
-    Global(GlobalRef),
+    /// An unlocated global of the configuration, or a member or element of
+    /// one (`g.field`, `g[3]`: `steps` as in [`InstancePath::steps`], empty
+    /// for the whole global).
+    Global {
+        /// The global.
+        global: GlobalRef,
+        /// Members and elements inside it.
+        steps: Vec<PathElem>,
+    },
     /// A variable inside a program instance.
     Instance(InstancePath),
 }
@@ -173,4 +183,32 @@ pub enum ProgArg {
     Global(GlobalRef),
     /// `a := 5`: a constant.
     Const(Const),
+}
+
+impl PathElem {
+    /// For an [`PathElem::Index`] of constant subscripts inside the bounds
+    /// (the checker makes only these in configuration paths): the offset of
+    /// each from its lower bound, which the emitter indexes nested arrays
+    /// with, and the row-major index over all dimensions, which the
+    /// interpreter's flat arrays use. `None` for anything else.
+    pub fn constant_index(&self) -> Option<(Vec<usize>, usize)> {
+        let PathElem::Index { dims, subs } = self else {
+            return None;
+        };
+        let mut offsets = Vec::new();
+        let mut flat = 0usize;
+        for (s, &(lo, hi)) in subs.iter().zip(dims) {
+            let Value::Const(Const::Int(n, _)) = s else {
+                return None;
+            };
+            if *n < lo as i128 || *n > hi as i128 {
+                return None;
+            }
+            let k = usize::try_from(*n - lo as i128).ok()?;
+            let size = usize::try_from(hi - lo + 1).ok()?;
+            flat = flat.checked_mul(size)?.checked_add(k)?;
+            offsets.push(k);
+        }
+        Some((offsets, flat))
+    }
 }
