@@ -76,7 +76,9 @@ pub fn complete(ws: &Workspace, uri: &Uri, pos: Position) -> Vec<CompletionItem>
     if prefix.contains("(*") && !prefix.contains("*)") {
         return Vec::new(); // in a comment
     }
-    let ix = &ws.analysis.index;
+    let Some(ix) = ws.analysis.index(k) else {
+        return Vec::new();
+    };
     let pou = ix.pou_at(k, off);
     if let Some(items) = call_params(ix, pou, text, off) {
         return items;

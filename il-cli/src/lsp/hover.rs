@@ -11,7 +11,7 @@ use il_interp::il_std::signature::{Class, Ext, ParamTy, Signature};
 
 pub fn hover(ws: &Workspace, uri: &Uri, pos: Position) -> Option<Hover> {
     let (k, off) = ws.locate(uri, pos)?;
-    let ix = &ws.analysis.index;
+    let ix = ws.analysis.index(k)?;
     let (span, text) = match ix.ref_at(k, off) {
         Some((span, t)) => (span, target_text(ix, t)),
         None => {

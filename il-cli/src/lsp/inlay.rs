@@ -17,7 +17,12 @@ pub fn hints(ws: &Workspace, uri: &Uri, range: Range) -> Vec<InlayHint> {
         return Vec::new();
     };
     let (doc, lines) = (&ws.docs[k], &ws.analysis.lines[k]);
-    let Some(steps) = ws.analysis.index.files.get(k).map(|f| &f.steps) else {
+    let Some(steps) = ws
+        .analysis
+        .index(k)
+        .and_then(|ix| ix.file(k))
+        .map(|f| &f.steps)
+    else {
         return Vec::new();
     };
     let lo = lines.offset(&doc.text, lsp_types::Position::new(range.start.line, 0)) as u32;

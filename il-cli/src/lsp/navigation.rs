@@ -4,33 +4,33 @@ use std::collections::HashMap;
 
 use lsp_types::{Location, Position, PrepareRenameResponse, TextEdit, Uri, WorkspaceEdit};
 
-use super::index::{Kind, SymId, Target};
+use super::index::{Index, Kind, SymId, Target};
 use super::workspace::Workspace;
 
-/// The symbol named at a position.
-fn symbol_at(
-    ws: &Workspace,
+/// The symbol named at a position, and the index of its program.
+fn symbol_at<'w>(
+    ws: &'w Workspace,
     uri: &Uri,
     pos: Position,
-) -> Option<(usize, il_codegen::ast::Span, SymId)> {
+) -> Option<(usize, il_codegen::ast::Span, SymId, &'w Index)> {
     let (k, off) = ws.locate(uri, pos)?;
-    match ws.analysis.index.ref_at(k, off)? {
-        (span, Target::Sym(s)) => Some((k, span, s)),
+    let ix = ws.analysis.index(k)?;
+    match ix.ref_at(k, off)? {
+        (span, Target::Sym(s)) => Some((k, span, s, ix)),
         _ => None,
     }
 }
 
 pub fn definition(ws: &Workspace, uri: &Uri, pos: Position) -> Option<Location> {
-    let (_, _, s) = symbol_at(ws, uri, pos)?;
-    let sym = &ws.analysis.index.symbols[s];
+    let (_, _, s, ix) = symbol_at(ws, uri, pos)?;
+    let sym = &ix.symbols[s];
     ws.location(sym.file, sym.span)
 }
 
 pub fn references(ws: &Workspace, uri: &Uri, pos: Position, with_decl: bool) -> Vec<Location> {
-    let Some((_, _, s)) = symbol_at(ws, uri, pos) else {
+    let Some((_, _, s, ix)) = symbol_at(ws, uri, pos) else {
         return Vec::new();
     };
-    let ix = &ws.analysis.index;
     let sym = &ix.symbols[s];
     ix.uses[s]
         .iter()
@@ -44,9 +44,8 @@ fn renamable(kind: Kind) -> bool {
 }
 
 pub fn prepare_rename(ws: &Workspace, uri: &Uri, pos: Position) -> Option<PrepareRenameResponse> {
-    let (k, span, s) = symbol_at(ws, uri, pos)?;
-    renamable(ws.analysis.index.symbols[s].kind)
-        .then(|| PrepareRenameResponse::Range(ws.range(k, span)))
+    let (k, span, s, ix) = symbol_at(ws, uri, pos)?;
+    renamable(ix.symbols[s].kind).then(|| PrepareRenameResponse::Range(ws.range(k, span)))
 }
 
 /// An IEC identifier: a letter or `_`, then letters, digits and single `_`.
@@ -64,10 +63,9 @@ pub fn rename(
     pos: Position,
     new_name: &str,
 ) -> Result<Option<WorkspaceEdit>, String> {
-    let Some((_, _, s)) = symbol_at(ws, uri, pos) else {
+    let Some((_, _, s, ix)) = symbol_at(ws, uri, pos) else {
         return Ok(None);
     };
-    let ix = &ws.analysis.index;
     if !renamable(ix.symbols[s].kind) {
         return Err("only variables and labels can be renamed".into());
     }

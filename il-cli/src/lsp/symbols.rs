@@ -10,7 +10,7 @@ pub fn document(ws: &Workspace, uri: &Uri) -> Vec<DocumentSymbol> {
     let Some(k) = ws.doc(uri) else {
         return Vec::new();
     };
-    let Some(file) = ws.analysis.index.files.get(k) else {
+    let Some(file) = ws.analysis.index(k).and_then(|ix| ix.file(k)) else {
         return Vec::new();
     };
     file.outline.iter().map(|o| convert(ws, k, o)).collect()
@@ -37,11 +37,13 @@ const MAX_RESULTS: usize = 1000;
 #[allow(deprecated)]
 pub fn workspace(ws: &Workspace, query: &str) -> Vec<SymbolInformation> {
     let q = query.to_ascii_lowercase();
-    let ix = &ws.analysis.index;
-    ix.symbols
+    let all = ws
+        .analysis
+        .indexes
         .iter()
-        .filter(|s| s.name.to_ascii_lowercase().contains(&q))
-        .filter_map(|s| {
+        .flat_map(|ix| ix.symbols.iter().map(move |s| (ix, s)));
+    all.filter(|(_, s)| s.name.to_ascii_lowercase().contains(&q))
+        .filter_map(|(ix, s)| {
             Some(SymbolInformation {
                 name: s.name.clone(),
                 kind: match s.kind {

@@ -1,9 +1,10 @@
 //! The documents the server knows (open in the editor, or `.il` files of
 //! the workspace folders) and the result of checking them together.
 //!
-//! Every document belongs to one program, as with `ilc check a.il b.il`: an
-//! edit re-checks all of them (full sync), which costs what the front end
-//! costs; the index of that check then answers every request.
+//! The documents of one folder are one program, as with `ilc check
+//! plc/a.il plc/b.il` (see [`programs`]): an edit re-checks them all (full
+//! sync), which costs what the front end costs; the index of each program's
+//! check then answers the requests on its documents.
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -35,7 +36,40 @@ pub struct Analysis {
     pub lines: Vec<LineIndex>,
     /// Each document's diagnostics, converted.
     pub diagnostics: Vec<Vec<lsp_types::Diagnostic>>,
-    pub index: Index,
+    /// One index per program (see [`programs`]).
+    pub indexes: Vec<Index>,
+    /// Each document's program: an index into `indexes`.
+    pub program_of: Vec<usize>,
+}
+
+impl Analysis {
+    /// The index of the program that holds document `k`.
+    pub fn index(&self, k: usize) -> Option<&Index> {
+        self.indexes.get(*self.program_of.get(k)?)
+    }
+}
+
+/// The documents checked together: those of one folder, as a crate's
+/// `il!(files = [...])` or build.rs builder takes its `plc/` folder. A
+/// workspace often holds several such programs (examples, tests, two
+/// crates), each with its own `PROGRAM Main`; checking every file as one
+/// program made those duplicates of each other. Groups of document
+/// numbers, ascending, in the order of their first document.
+fn programs(docs: &[Doc]) -> Vec<Vec<usize>> {
+    let mut groups: Vec<(String, Vec<usize>)> = Vec::new();
+    let mut by_dir: HashMap<String, usize> = HashMap::new();
+    for (k, d) in docs.iter().enumerate() {
+        let dir = Path::new(&d.name)
+            .parent()
+            .map(|p| p.to_string_lossy().into_owned())
+            .unwrap_or_default();
+        let g = *by_dir.entry(dir.clone()).or_insert_with(|| {
+            groups.push((dir, Vec::new()));
+            groups.len() - 1
+        });
+        groups[g].1.push(k);
+    }
+    groups.into_iter().map(|(_, g)| g).collect()
 }
 
 /// Client settings.
@@ -224,24 +258,32 @@ impl Workspace {
         Some(uri.clone())
     }
 
-    /// Check every document as one program and index the result.
+    /// Check the documents of each folder as one program (see [`programs`])
+    /// and index the results.
     pub fn check(&mut self) {
-        let program = self.docs.iter().fold(Program::new(), |p, d| {
-            p.source(SourceFile::new(d.name.clone(), d.text.clone()))
-        });
-        let checked = program.check();
         let lines: Vec<LineIndex> = self.docs.iter().map(|d| LineIndex::new(&d.text)).collect();
-        let diagnostics = checked
-            .diagnostics()
-            .iter()
-            .enumerate()
-            .map(|(k, ds)| diagnostics::convert(&self.docs, &lines, k, ds))
-            .collect();
-        let index = Index::build(&checked);
+        let mut diagnostics = vec![Vec::new(); self.docs.len()];
+        let mut indexes = Vec::new();
+        let mut program_of = vec![0; self.docs.len()];
+        for group in programs(&self.docs) {
+            let program = group.iter().fold(Program::new(), |p, &k| {
+                let d = &self.docs[k];
+                p.source(SourceFile::new(d.name.clone(), d.text.clone()))
+            });
+            let checked = program.check();
+            for (&k, ds) in group.iter().zip(checked.diagnostics()) {
+                diagnostics[k] = diagnostics::convert(&self.docs, &lines, k, ds);
+                program_of[k] = indexes.len();
+            }
+            let mut index = Index::build(&checked);
+            index.relocate(group);
+            indexes.push(index);
+        }
         self.analysis = Analysis {
             lines,
             diagnostics,
-            index,
+            indexes,
+            program_of,
         };
     }
 

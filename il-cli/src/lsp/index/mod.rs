@@ -100,7 +100,11 @@ pub struct FileIndex {
 #[derive(Debug, Default)]
 pub struct Index {
     pub symbols: Vec<Symbol>,
+    /// Per file of the program checked, in the order of `docs`.
     pub files: Vec<FileIndex>,
+    /// The workspace document of each file (see [`Index::relocate`]);
+    /// [`Symbol::file`] and [`Index::uses`] hold these numbers.
+    pub docs: Vec<usize>,
     /// Every place each symbol is written: (file, span).
     pub uses: Vec<Vec<(usize, Span)>>,
     pub pou_by_name: HashMap<String, SymId>,
@@ -120,6 +124,7 @@ impl Index {
         let mut ix = Index::default();
         let n = checked.inputs().len();
         ix.files = (0..n).map(|_| FileIndex::default()).collect();
+        ix.docs = (0..n).collect();
         let empty = ast::CompilationUnit::default();
         let units = checked.syntax();
         let irs = checked.partial_ir();
@@ -175,8 +180,27 @@ impl Index {
 
     /// The reference at byte `off` of file `f` (a name containing it, or
     /// ending right at it: the cursor after a name).
+    /// The index of workspace document `doc`, if this program holds it.
+    pub fn file(&self, doc: usize) -> Option<&FileIndex> {
+        let k = self.docs.binary_search(&doc).ok()?;
+        self.files.get(k)
+    }
+
+    /// Number the files as the workspace's documents `docs` (ascending; the
+    /// program's file `k` is document `docs[k]`), so that every file number
+    /// the index hands out is a document's.
+    pub fn relocate(&mut self, docs: Vec<usize>) {
+        for s in &mut self.symbols {
+            s.file = docs[s.file];
+        }
+        for u in self.uses.iter_mut().flatten() {
+            u.0 = docs[u.0];
+        }
+        self.docs = docs;
+    }
+
     pub fn ref_at(&self, f: usize, off: usize) -> Option<(Span, Target)> {
-        let refs = &self.files.get(f)?.refs;
+        let refs = &self.file(f)?.refs;
         let off = off as u32;
         let i = refs.partition_point(|(s, _)| s.lo <= off);
         let (s, t) = *refs.get(i.checked_sub(1)?)?;
@@ -185,7 +209,7 @@ impl Index {
 
     /// The innermost instruction or label at byte `off` of file `f`.
     pub fn step_at(&self, f: usize, off: usize) -> Option<&Step> {
-        let steps = &self.files.get(f)?.steps;
+        let steps = &self.file(f)?.steps;
         let off = off as u32;
         let i = steps.partition_point(|s| s.span.lo <= off);
         // Steps are sorted by start: the innermost holding `off` is the
@@ -200,7 +224,7 @@ impl Index {
 
     /// The POU whose text holds byte `off` of file `f`.
     pub fn pou_at(&self, f: usize, off: usize) -> Option<SymId> {
-        let pous = &self.files.get(f)?.pous;
+        let pous = &self.file(f)?.pous;
         let off = off as u32;
         let i = pous.partition_point(|(s, _)| s.lo <= off);
         let (s, id) = *pous.get(i.checked_sub(1)?)?;
