@@ -212,13 +212,13 @@ fn output_size(body: &[ast::Stmt]) -> (usize, usize) {
     body.iter().fold((0, 0), |(stmts, steps), s| match s {
         ast::Stmt::Label(_) => (stmts + 1, steps + 1),
         ast::Stmt::Instr(i) => match &i.kind {
-            // Nop, save of the outer CR, the inner body, the operation.
+            // Save of the outer CR, the inner body, the operation.
             InstrKind::Deferred { body, .. } => {
                 let (a, b) = output_size(body);
-                (stmts + 3 + a, steps + 1 + b)
+                (stmts + 2 + a, steps + 1 + b)
             }
-            // Nop and the operation.
-            _ => (stmts + 2, steps + 1),
+            // The operation (a `Nop` where there is none: `Walk::line_stmt`).
+            _ => (stmts + 1, steps + 1),
         },
     })
 }
@@ -417,6 +417,25 @@ impl Walk<'_, '_> {
         });
     }
 
+    /// Keep the line of the instruction whose statements start at `at`: the
+    /// emitter writes an IL line's comment above its first statement, so a
+    /// `Nop` is needed only when the instruction pushed none on its own line
+    /// (`LD 5`, or `ADD(` whose operand is on the next line). Most
+    /// instructions push one statement on their line; a `Nop` before each
+    /// was half the checked IR.
+    fn line_stmt(&mut self, at: usize, line: u32, col: u32) {
+        if !self.final_pass || self.out.get(at).is_some_and(|s| s.line == line) {
+            return;
+        }
+        let nop = ir::Stmt {
+            op: Op::Nop,
+            line,
+            col,
+        };
+        // Only this instruction's statements move.
+        self.out.insert(at, nop);
+    }
+
     /// Forget the statements and records of an earlier round.
     fn start_output(&mut self) {
         self.out.clear();
@@ -469,8 +488,9 @@ impl Walk<'_, '_> {
                         self.step(i.span, false, &Cr::Dead, &Cr::Dead);
                         continue;
                     }
-                    self.push(Op::Nop);
+                    let (at, line, col) = (self.out.len(), self.line, self.col);
                     cr = self.instr(i, cr, false);
+                    self.line_stmt(at, line, col);
                 }
             }
         }
