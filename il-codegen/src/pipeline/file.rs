@@ -20,6 +20,7 @@ pub(crate) fn format_file_with<'a>(
     out.push_str(". Do not edit: edit the IL source and rebuild.\n\n");
     // The emitter's text is already laid out (emit/text.rs).
     for line in text.lines() {
+        crate::work::add(1);
         let t = line.trim_start();
         if let Some(rest) = t.strip_prefix("__il_line!(") {
             let n: usize = rest.trim_end_matches(");").trim().parse().unwrap_or(0);
