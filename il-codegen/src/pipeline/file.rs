@@ -21,9 +21,16 @@ pub(crate) fn format_file_with<'a>(
     // The emitter's text is already laid out (emit/text.rs).
     for line in text.lines() {
         crate::work::add(1);
-        let t = line.trim_start();
+        // The emitter indents with spaces: a byte scan, not `trim_start`'s
+        // Unicode one (a tenth of `ilc emit` went to this loop).
+        let t = line.trim_start_matches([' ', '\t']);
         if let Some(rest) = t.strip_prefix("__il_line!(") {
-            let n: usize = rest.trim_end_matches(");").trim().parse().unwrap_or(0);
+            let n: usize = rest
+                .strip_suffix(");")
+                .unwrap_or(rest)
+                .trim()
+                .parse()
+                .unwrap_or(0);
             let indent = &line[..line.len() - t.len()];
             let (shown, src) = il_line(n);
             out.push_str(indent);
@@ -32,8 +39,9 @@ pub(crate) fn format_file_with<'a>(
             out.push_str(": ");
             out.push_str(&sanitize_comment(src.trim()));
             out.push('\n');
-        } else if let (Some(kind), true, Some((head, rest))) =
-            (lines_of, t.starts_with("///"), line.split_once("(IL line "))
+        } else if let Some(kind) = lines_of
+            && t.starts_with("///")
+            && let Some((head, rest)) = line.split_once("(IL line ")
         {
             let (num, tail) = rest.split_once(')').unwrap_or((rest, ""));
             let shown = num.trim().parse().map_or(0, |n| il_line(n).0);
@@ -60,7 +68,12 @@ fn itoa(mut n: usize, buf: &mut [u8; 20]) -> &str {
     std::str::from_utf8(&buf[at..]).unwrap_or("0")
 }
 
-/// The text of a `//` comment (see `emit::text::comment_text`).
-fn sanitize_comment(s: &str) -> String {
-    crate::emit::text::comment_text(s)
+/// The text of a `//` comment (see `emit::text::comment_text`): most IL
+/// lines are printable ASCII without `*/`, which stay as they are.
+fn sanitize_comment(s: &str) -> std::borrow::Cow<'_, str> {
+    if s.bytes().all(|b| (b' '..=b'~').contains(&b)) && !s.contains("*/") {
+        std::borrow::Cow::Borrowed(s)
+    } else {
+        std::borrow::Cow::Owned(crate::emit::text::comment_text(s))
+    }
 }
