@@ -108,6 +108,10 @@ pub fn run(
     bar.finish(err);
     let _ = out.flush();
     let _ = err.flush();
+    // The process ends after this: freeing the tree and the checked IR one
+    // allocation at a time (about 5% of `ilc check` on a 100k-line POU) is
+    // left to the operating system.
+    std::mem::forget(checked);
     totals
 }
 

@@ -54,7 +54,10 @@ pub fn run(
     }
     bar.stage("Compiling", err);
     let program = front.program(sources);
-    let checked = program.check();
+    let mut checked = program.check();
+    // The syntax tree is not needed for code: its memory is reused for
+    // the text.
+    checked.drop_syntax();
     let opts = il_codegen::emit::Options {
         line_markers: true,
         ..Default::default()
@@ -84,5 +87,9 @@ pub fn run(
         }
     }
     bar.finish(err);
+    // The process ends after this: freeing the checked IR one allocation at
+    // a time is left to the operating system.
+    std::mem::forget(compiled);
+    std::mem::forget(checked);
     true
 }

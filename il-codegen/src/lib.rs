@@ -46,6 +46,7 @@ pub mod diag;
 pub mod dialect;
 pub mod plcopen;
 pub mod read;
+pub mod work;
 
 // The stages and the front-end glue: public for the other crates of this
 // workspace (the macro crate, il-interp, the benchmarks, the tests),

@@ -319,14 +319,15 @@ impl PouEmitter<'_> {
         };
         let mut last_line = 0;
         for (k, s) in stmts.iter().enumerate() {
+            // The line's comment first: a rung's fence is part of its first line.
+            if self.opts.line_markers && s.line != last_line && s.line != 0 {
+                o.code(&format!("__il_line!({});", s.line));
+                last_line = s.line;
+            }
             if fenced.binary_search(&k).is_ok() {
                 o.code(
                     "::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);",
                 );
-            }
-            if self.opts.line_markers && s.line != last_line && s.line != 0 {
-                o.code(&format!("__il_line!({});", s.line));
-                last_line = s.line;
             }
             o.code(&self.stmt(s, base + k, mode));
         }

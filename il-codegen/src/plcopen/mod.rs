@@ -209,6 +209,7 @@ impl Import {
             .text
             .split('\n')
             .map(|line| {
+                crate::work::add(1);
                 let lead = line.len() - line.trim_start().len();
                 let off = u32::try_from(start + lead).unwrap_or(u32::MAX);
                 start += line.len() + 1;

@@ -597,7 +597,9 @@ pub enum Op {
         /// `None` for `RET`; the CR and the value that returns otherwise.
         cond: Condition,
     },
-    /// Nothing to do (an instruction whose effect is only on the checker's
-    /// state, like loading a literal); keeps its line comment.
+    /// Nothing to do: keeps the line (and its comment) of an instruction
+    /// that pushed no statement on its own line (one whose effect is only on
+    /// the checker's state, like loading a literal). Any other instruction's
+    /// line is that of its first statement.
     Nop,
 }

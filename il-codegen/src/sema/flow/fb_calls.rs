@@ -51,7 +51,7 @@ impl Walk<'_, '_> {
         let Some(arg) = self.use_cr(&cr, span) else {
             return cr;
         };
-        let Some(value) = self.fit_to(arg, &ty, span, &format!("input `{name}` of {fb}")) else {
+        let Some(value) = self.fit_to(arg, &ty, span, || format!("input `{name}` of {fb}")) else {
             return cr;
         };
         let (inouts, externals) = self.fb_refs(&fb);
@@ -206,7 +206,7 @@ impl Walk<'_, '_> {
                             }
                             let Some(a) = self.operand(o) else { continue };
                             if let Some(v) =
-                                self.fit_to(a, &ty, o.span(), &format!("input `{name}` of {fb}"))
+                                self.fit_to(a, &ty, o.span(), || format!("input `{name}` of {fb}"))
                             {
                                 ins.push((name, v));
                             }
@@ -278,7 +278,7 @@ impl Walk<'_, '_> {
                 for (o, (name, ty)) in list.iter().zip(inputs) {
                     let Some(a) = self.operand(o) else { continue };
                     if let Some(v) =
-                        self.fit_to(a, &ty, o.span(), &format!("input `{name}` of {fb}"))
+                        self.fit_to(a, &ty, o.span(), || format!("input `{name}` of {fb}"))
                     {
                         ins.push((name, v));
                     }

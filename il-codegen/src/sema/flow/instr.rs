@@ -12,6 +12,7 @@ impl Walk<'_, '_> {
     /// 256 levels overflowed a 2 MiB thread (a debug `cargo test` thread)
     /// and aborted the process.
     pub(super) fn instr(&mut self, i: &ast::Instr, cr: Cr, in_parens: bool) -> Cr {
+        crate::work::add(1);
         // Only the final pass records the CR for tools; the copy is kept
         // out of this frame's hot path (see above).
         let before = self.final_pass.then(|| Box::new(cr.clone()));
@@ -97,8 +98,10 @@ impl Walk<'_, '_> {
                 let Some(arg) = self.use_cr(&cr, span) else {
                     return cr;
                 };
-                let dest = format!("`{}`", self.cx.file.snippet(target.span()));
-                let Some(value) = self.fit_to(arg, &place.ty, span, &dest) else {
+                // The target's text only for a message (not on every store).
+                let file = self.cx.file;
+                let dest = || format!("`{}`", file.snippet(target.span()));
+                let Some(value) = self.fit_to(arg, &place.ty, span, dest) else {
                     return cr;
                 };
                 if *negate && !place.ty.is_logic() {

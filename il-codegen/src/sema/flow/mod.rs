@@ -125,6 +125,7 @@ pub(crate) fn check_pou(
         back_now: vec![Vec::new(); n],
         final_pass: false,
         out: Vec::new(),
+        counted: 0,
         cr_types: Vec::new(),
         save_types: Vec::new(),
         jumped: vec![false; n],
@@ -147,11 +148,17 @@ pub(crate) fn check_pou(
     // body. A first round that settles is walked once more, as the final
     // pass (without labels, the first round is the final pass).
     let (stmts, steps) = output_size(&pou.body);
-    w.out = Vec::with_capacity(stmts + stmts / 16);
     w.cr_steps = Vec::with_capacity(steps);
     let mut settled = false;
     for round in 0..64 {
         w.final_pass = round > 0 || n == 0;
+        // Sized once: from the first round's count when there is one (a
+        // later round's label states change few statements), else from the
+        // syntax tree.
+        if w.final_pass && w.out.capacity() == 0 {
+            let want = if round == 0 { stmts } else { w.counted };
+            w.out = Vec::with_capacity(want + want / 32);
+        }
         let mark = w.cx.diags.len();
         w.edges.iter_mut().for_each(Vec::clear);
         w.back_now.iter_mut().for_each(Vec::clear);
@@ -265,13 +272,15 @@ fn output_size(body: &[ast::Stmt]) -> (usize, usize) {
     body.iter().fold((0, 0), |(stmts, steps), s| match s {
         ast::Stmt::Label(_) => (stmts + 1, steps + 1),
         ast::Stmt::Instr(i) => match &i.kind {
-            // Nop, save of the outer CR, the inner body, the operation.
+            // Save of the outer CR, the inner body, the operation, and room
+            // for a pending call or a conversion (deep parentheses grew the
+            // vector by doubling without it).
             InstrKind::Deferred { body, .. } => {
                 let (a, b) = output_size(body);
                 (stmts + 3 + a, steps + 1 + b)
             }
-            // Nop and the operation.
-            _ => (stmts + 2, steps + 1),
+            // The operation (a `Nop` where there is none: `Walk::line_stmt`).
+            _ => (stmts + 1, steps + 1),
         },
     })
 }
@@ -391,6 +400,9 @@ struct Walk<'a, 'c> {
     back_now: Vec<Vec<(Span, Class, u32)>>,
     final_pass: bool,
     out: Vec<ir::Stmt>,
+    /// The statements a round before the final pass would have pushed (it
+    /// pushes none): the final pass's `out` is sized from it.
+    counted: usize,
     cr_types: Vec<Ty>,
     save_types: Vec<Ty>,
     jumped: Vec<bool>,
@@ -454,8 +466,9 @@ impl Walk<'_, '_> {
 
     fn push(&mut self, op: Op) {
         // The rounds before the final pass only settle the label states;
-        // their statements would be thrown away.
+        // their statements would be thrown away: only counted.
         if !self.final_pass {
+            self.counted += 1;
             return;
         }
         if let Op::SetCr { ty, .. } = &op
@@ -470,9 +483,36 @@ impl Walk<'_, '_> {
         });
     }
 
+    /// Keep the line of the instruction whose statements start at `at`: the
+    /// emitter writes an IL line's comment above its first statement, so a
+    /// `Nop` is needed only when the instruction pushed none on its own line
+    /// (`LD 5`, or `ADD(` whose operand is on the next line). Most
+    /// instructions push one statement on their line; a `Nop` before each
+    /// was half the checked IR.
+    fn line_stmt(&mut self, at: usize, line: u32, col: u32) {
+        if !self.final_pass {
+            // `at` is the count before the instruction here.
+            if self.counted == at {
+                self.counted += 1;
+            }
+            return;
+        }
+        if self.out.get(at).is_some_and(|s| s.line == line) {
+            return;
+        }
+        let nop = ir::Stmt {
+            op: Op::Nop,
+            line,
+            col,
+        };
+        // Only this instruction's statements move.
+        self.out.insert(at, nop);
+    }
+
     /// Forget the statements and records of an earlier round.
     fn start_output(&mut self) {
         self.out.clear();
+        self.counted = 0;
         self.cr_steps.clear();
         self.cr_types.clear();
         self.addresses.clear();
@@ -499,6 +539,7 @@ impl Walk<'_, '_> {
                     // previous round's backward edges.
                     let mut into = self.edges[l].clone();
                     into.extend(self.back_prev[l].iter().cloned());
+                    crate::work::add(1 + into.len() as u64);
                     let before = cr;
                     cr = match join(&into) {
                         Cr::Undef(Why::Mixed(paths)) => {
@@ -522,8 +563,14 @@ impl Walk<'_, '_> {
                         self.step(i.span, false, &Cr::Dead, &Cr::Dead);
                         continue;
                     }
-                    self.push(Op::Nop);
+                    let at = if self.final_pass {
+                        self.out.len()
+                    } else {
+                        self.counted
+                    };
+                    let (line, col) = (self.line, self.col);
                     cr = self.instr(i, cr, false);
+                    self.line_stmt(at, line, col);
                 }
             }
         }

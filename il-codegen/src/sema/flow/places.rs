@@ -53,7 +53,9 @@ impl Walk<'_, '_> {
 
     /// Resolve a variable reference; `write` checks that it may be stored to.
     pub(super) fn place(&mut self, v: &VarRef, write: bool) -> Option<Place> {
-        let (root, mut ty, constant) = if let Some((i, var)) = self.sig.var(&v.base.name) {
+        // One lookup of the name (a place is in most instructions).
+        let (root, mut ty, constant, var_range) = if let Some((i, var)) = self.sig.var(&v.base.name)
+        {
             match &var.location {
                 Some(l) if write && l.area == ast::Area::Input => {
                     self.err(
@@ -70,6 +72,7 @@ impl Walk<'_, '_> {
                     Root::Addr(Box::new(l.clone())),
                     var.ty.clone(),
                     var.constant,
+                    None,
                 ),
                 None if write && var.edge.is_some() => {
                     self.err(
@@ -82,10 +85,10 @@ impl Walk<'_, '_> {
                     );
                     return None;
                 }
-                None => (Root::Var(i), var.ty.clone(), var.constant),
+                None => (Root::Var(i), var.ty.clone(), var.constant, var.range),
             }
         } else if self.sig.kind == PouKind::Function && v.base.is(&self.sig.name) {
-            (Root::Ret, self.sig.ret.clone()?, false)
+            (Root::Ret, self.sig.ret.clone()?, false, None)
         } else if self.sig.poisoned.contains(&v.base.key()) {
             return None; // its declaration was already reported
         } else {
@@ -107,11 +110,7 @@ impl Walk<'_, '_> {
             self.err(NOT_WRITABLE, v.span, format!("`{}` is a CONSTANT", v.base));
             return None;
         }
-        let mut range = self
-            .sig
-            .var(&v.base.name)
-            .and_then(|(_, var)| var.range)
-            .filter(|_| matches!(root, Root::Var(_)));
+        let mut range = var_range;
         let mut path = Vec::new();
         for acc in &v.path {
             match acc {

@@ -97,7 +97,13 @@ impl Walk<'_, '_> {
 
     /// Make an argument a value of type `ty` for `dest` ("`x`", "input `PT` of t"):
     /// like [`Self::fit`], with a message that names both sides.
-    pub(super) fn fit_to(&mut self, arg: Arg, ty: &Ty, span: Span, dest: &str) -> Option<Value> {
+    pub(super) fn fit_to(
+        &mut self,
+        arg: Arg,
+        ty: &Ty,
+        span: Span,
+        dest: impl FnOnce() -> String,
+    ) -> Option<Value> {
         if let Arg::Typed(v, t) = &arg
             && t != ty
             && !t.resizes_to(ty)
@@ -110,7 +116,7 @@ impl Walk<'_, '_> {
             } else {
                 "the value"
             };
-            let msg = format!("{dest} is {ty}, but {src} is {t}{}", narrowing(t, ty));
+            let msg = format!("{} is {ty}, but {src} is {t}{}", dest(), narrowing(t, ty));
             if let Some(d) = self.err(TYPE_MISMATCH, span, msg) {
                 d.help = conversion_hint(t, ty);
             }
