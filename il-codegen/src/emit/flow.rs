@@ -11,6 +11,7 @@
 
 use super::PouEmitter;
 use super::text::{Out, join, tail};
+use super::writeback::WriteBacks;
 use crate::ast::PouKind;
 use crate::sema::ir::{Expr, Op, PathElem, Root, Stmt, Value};
 use crate::sema::types::Ty;
@@ -178,7 +179,10 @@ fn loop_lifetime(l: usize) -> String {
 }
 
 impl PouEmitter<'_> {
-    pub(crate) fn body(&self, o: &mut Out) {
+    /// The body; returns the cached variables to write back at its end (see
+    /// `writeback.rs`: the others are written back where their last store
+    /// leaves them final).
+    pub(crate) fn body(&self, o: &mut Out) -> Vec<usize> {
         let mut stmts: &[Stmt] = &self.pou.body;
         // A RET at the very end is where the body ends anyway.
         if let Some(Stmt {
@@ -220,10 +224,27 @@ impl PouEmitter<'_> {
             }
             Mode::Dispatch { block_of_label }
         };
+        let spans: Option<Vec<(usize, usize)>> = match (&mode, &regions) {
+            (Mode::Straight, _) => Some(Vec::new()),
+            (Mode::Structured { .. }, Some(rs)) => Some(rs.iter().map(|r| (r.lo, r.hi)).collect()),
+            _ => None,
+        };
+        let wb = self.write_backs(stmts, spans.as_deref());
+        let wb_top = spans.is_some().then_some(&wb);
         match (&mode, regions) {
             (Mode::Structured { .. }, Some(regions)) => {
                 let mut next = 0;
-                self.nested(o, stmts, 0, stmts.len(), &regions, &mut next, &mode, false)
+                self.nested(
+                    o,
+                    stmts,
+                    0,
+                    stmts.len(),
+                    &regions,
+                    &mut next,
+                    &mode,
+                    false,
+                    wb_top,
+                )
             }
             (Mode::Dispatch { .. }, _) => {
                 let segments: Vec<&[Stmt]> =
@@ -233,7 +254,7 @@ impl PouEmitter<'_> {
                 o.code("let mut __pc: usize = 0; '__dispatch: loop { match __pc {");
                 for (k, seg) in segments.iter().enumerate() {
                     o.code(&format!("{k} => {{"));
-                    self.seq(o, seg, base, &mode, false);
+                    self.seq(o, seg, base, &mode, false, None);
                     base += seg.len() + 1;
                     let ends = matches!(
                         seg.last(),
@@ -253,12 +274,15 @@ impl PouEmitter<'_> {
                 }
                 o.code("_ => break '__dispatch, } }");
             }
-            _ => self.seq(o, stmts, 0, &mode, true),
+            _ => self.seq(o, stmts, 0, &mode, true, wb_top),
         }
+        wb.before(stmts.len()).to_vec()
     }
 
     /// Statements `[lo, hi)` with the regions that start at or after
     /// `regions[*next]` and lie inside `[lo, hi)`, as nested blocks/loops.
+    /// `wb`: at the top level, the write-backs (see `writeback.rs`), which
+    /// fall between statements outside every region.
     #[allow(clippy::too_many_arguments)]
     fn nested(
         &self,
@@ -270,16 +294,20 @@ impl PouEmitter<'_> {
         next: &mut usize,
         mode: &Mode,
         in_loop: bool,
+        wb: Option<&WriteBacks>,
     ) {
         let mut at = lo;
         while let Some(r) = regions.get(*next).copied().filter(|r| r.lo < hi) {
             *next += 1;
-            self.seq(o, &stmts[at..r.lo], at, mode, !in_loop);
+            self.seq(o, &stmts[at..r.lo], at, mode, !in_loop, wb);
+            if let Some(wb) = wb {
+                self.write_back(o, wb.before(r.lo));
+            }
             let inner_loop = in_loop || r.is_loop;
             if r.is_loop {
                 let lt = loop_lifetime(r.label);
                 o.code(&format!("{lt}: loop {{"));
-                self.nested(o, stmts, r.lo, r.hi, regions, next, mode, inner_loop);
+                self.nested(o, stmts, r.lo, r.hi, regions, next, mode, inner_loop, None);
                 // Falling off the end of the region leaves the loop.
                 if !matches!(
                     stmts[r.hi - 1].op,
@@ -290,12 +318,12 @@ impl PouEmitter<'_> {
                 o.code("}");
             } else {
                 o.code(&format!("{}: {{", label_lifetime(r.label)));
-                self.nested(o, stmts, r.lo, r.hi, regions, next, mode, inner_loop);
+                self.nested(o, stmts, r.lo, r.hi, regions, next, mode, inner_loop, None);
                 o.code("}");
             }
             at = r.hi;
         }
-        self.seq(o, &stmts[at..hi], at, mode, !in_loop);
+        self.seq(o, &stmts[at..hi], at, mode, !in_loop, wb);
     }
 
     /// Straight-line statements; `base` is the position of the first in the body.
@@ -311,7 +339,17 @@ impl PouEmitter<'_> {
     /// does. Not in loops, where keeping `self` fields in registers is what
     /// pays, nor around FB calls, whose outputs LLVM forwards to the next
     /// rung (`blocks` ran 3% more instructions with fences there).
-    fn seq(&self, o: &mut Out, stmts: &[Stmt], base: usize, mode: &Mode, fences: bool) {
+    ///
+    /// `wb`: the write-backs due before each statement (top level only).
+    fn seq(
+        &self,
+        o: &mut Out,
+        stmts: &[Stmt],
+        base: usize,
+        mode: &Mode,
+        fences: bool,
+        wb: Option<&WriteBacks>,
+    ) {
         let fenced = if fences {
             fenced_rungs(stmts, |i| self.cached(i))
         } else {
@@ -319,6 +357,9 @@ impl PouEmitter<'_> {
         };
         let mut last_line = 0;
         for (k, s) in stmts.iter().enumerate() {
+            if let Some(wb) = wb {
+                self.write_back(o, wb.before(base + k));
+            }
             if fenced.binary_search(&k).is_ok() {
                 o.code(
                     "::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);",

@@ -17,6 +17,7 @@ mod tasks;
 pub(crate) mod text;
 mod values;
 mod visit;
+mod writeback;
 
 use crate::ast::{PouKind, VarKind};
 use crate::sema::ir::{CheckedPou, Program, Storage};
@@ -313,12 +314,9 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
                 p.body(o);
             } else {
                 o.code("'__body: {");
-                p.body(o);
+                let at_end = p.body(o);
                 o.code("}");
-                for v in &cached {
-                    let (id, l) = (rust_ident(&v.name), names::cache_ident(&v.name));
-                    o.code(&format!("self.{id} = {l};"));
-                }
+                p.write_back(o, &at_end);
             }
             o.code("} }");
             // The generic trait fits blocks called with the context alone.
