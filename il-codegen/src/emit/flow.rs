@@ -179,6 +179,11 @@ fn loop_lifetime(l: usize) -> String {
 }
 
 impl PouEmitter<'_> {
+    /// Whether the body has a network of rungs that `seq` fences.
+    pub(crate) fn has_fenced_rungs(&self) -> bool {
+        !fenced_rungs(&self.pou.body, |i| self.cached(i)).is_empty()
+    }
+
     /// The body; returns the cached variables to write back at its end (see
     /// `writeback.rs`: the others are written back where their last store
     /// leaves them final).

@@ -30,7 +30,7 @@ impl WriteBacks {
 
 /// The variables `s` stores to (in any way: a store, S/R, an FB output, an
 /// in-out binding, a function's `=>` output): `written(i)` is called for each.
-fn stores(s: &Stmt, written: &mut impl FnMut(usize)) {
+pub(crate) fn stores(s: &Stmt, written: &mut impl FnMut(usize)) {
     let mut place = |p: &Place| {
         if let Root::Var(i) = p.root {
             written(i)
