@@ -137,10 +137,17 @@ fn structure(stmts: &[Stmt], label_pos: &[Option<usize>]) -> Option<Vec<Region>>
 /// See [`PouEmitter::seq`].
 const FENCED_RUNGS: usize = 8;
 
+/// Rungs per fence in a fenced network: between two fences LLVM may keep
+/// the loads of a few rungs in registers (`interlock`: 2,129 instructions
+/// per scan with a fence before every rung, 2,125 every 4th, 2,122 every
+/// 8th), but too many rungs between fences bring the spills back.
+const RUNGS_PER_FENCE: usize = 4;
+
 /// Positions in `stmts` where a rung starts (a `SetCr` whose previous
 /// statement other than a `Nop` is a `Store`) by reading memory (not a
 /// variable that `cached` says lives in a local), in runs of at least
-/// [`FENCED_RUNGS`] such starts with no FB call between them.
+/// [`FENCED_RUNGS`] such starts with no FB call between them; of those,
+/// every [`RUNGS_PER_FENCE`]th.
 fn fenced_rungs(stmts: &[Stmt], cached: impl Fn(usize) -> bool) -> Vec<usize> {
     let (mut out, mut run) = (Vec::new(), Vec::new());
     let mut stored = false;
@@ -156,7 +163,11 @@ fn fenced_rungs(stmts: &[Stmt], cached: impl Fn(usize) -> bool) -> Vec<usize> {
             }
             Op::CallFb(_) => {
                 if run.len() >= FENCED_RUNGS {
-                    out.append(&mut run);
+                    out.extend(
+                        run.iter()
+                            .skip(RUNGS_PER_FENCE - 1)
+                            .step_by(RUNGS_PER_FENCE),
+                    );
                 }
                 run.clear();
             }
@@ -165,7 +176,11 @@ fn fenced_rungs(stmts: &[Stmt], cached: impl Fn(usize) -> bool) -> Vec<usize> {
         stored = matches!(s.op, Op::Store { .. });
     }
     if run.len() >= FENCED_RUNGS {
-        out.append(&mut run);
+        out.extend(
+            run.iter()
+                .skip(RUNGS_PER_FENCE - 1)
+                .step_by(RUNGS_PER_FENCE),
+        );
     }
     out
 }
@@ -334,13 +349,13 @@ impl PouEmitter<'_> {
     /// Straight-line statements; `base` is the position of the first in the body.
     ///
     /// `fences` (code outside loops): in a network of at least
-    /// [`FENCED_RUNGS`] rungs without a function block call, each rung (a CR
-    /// load right after a store) starts with a `compiler_fence` (no machine
-    /// instruction). Without it LLVM keeps every value loaded from `self` in
+    /// [`FENCED_RUNGS`] rungs without a function block call, every
+    /// [`RUNGS_PER_FENCE`]th rung (a CR load right after a store) starts
+    /// with a `compiler_fence` (no machine instruction). Without it LLVM keeps every value loaded from `self` in
     /// a register across all later rungs (`&mut self` tells it nothing else
     /// writes them), runs out of registers in a long network and spills to
     /// the stack: `interlock`'s 300 rungs did ~900 stack stores and reloads
-    /// per scan. With it each rung reloads its operands from `self`, as C
+    /// per scan. With it the rungs reload their operands from `self`, as C
     /// does. Not in loops, where keeping `self` fields in registers is what
     /// pays, nor around FB calls, whose outputs LLVM forwards to the next
     /// rung (`blocks` ran 3% more instructions with fences there).

@@ -43,7 +43,6 @@ impl LongNetwork {
             self.m[0] = __cr_bool;
         }
         // 10: LD   x[1]
-        ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[1];
         // 11: ANDN x[4]
         __cr_bool = __cr_bool & __not_x[4];
@@ -54,7 +53,6 @@ impl LongNetwork {
             self.m[1] = __cr_bool;
         }
         // 14: LD   x[2]
-        ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[2];
         // 15: ANDN x[5]
         __cr_bool = __cr_bool & __not_x[5];
@@ -65,7 +63,6 @@ impl LongNetwork {
             self.m[2] = __cr_bool;
         }
         // 18: LD   x[3]
-        ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[3];
         // 19: ANDN x[6]
         __cr_bool = __cr_bool & __not_x[6];
@@ -87,7 +84,6 @@ impl LongNetwork {
             self.m[4] = __cr_bool;
         }
         // 26: LD   x[5]
-        ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[5];
         // 27: ANDN x[0]
         __cr_bool = __cr_bool & __not_x[0];
@@ -98,7 +94,6 @@ impl LongNetwork {
             self.m[5] = __cr_bool;
         }
         // 30: LD   x[6]
-        ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[6];
         // 31: ANDN x[1]
         __cr_bool = __cr_bool & __not_x[1];
@@ -109,7 +104,6 @@ impl LongNetwork {
             self.m[6] = __cr_bool;
         }
         // 34: LD   x[7]
-        ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[7];
         // 35: ANDN x[2]
         __cr_bool = __cr_bool & __not_x[2];
