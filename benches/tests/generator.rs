@@ -25,3 +25,18 @@ fn big_pou_of_1k_lines_checks() {
 fn many_small_pous_check() {
     assert_clean("many.il", generator::many_pous(50, 1));
 }
+
+#[test]
+fn matiec_style_program_checks_in_pous_iec2c_translates() {
+    let text = generator::matiec_program(2000, 1);
+    let pous: Vec<&str> = text.split("END_FUNCTION_BLOCK").collect();
+    assert!(pous.len() >= 5, "{} POUs", pous.len());
+    for p in &pous {
+        let n = p.lines().count();
+        assert!(n <= generator::MATIEC_POU_LINES + 10, "a POU of {n} lines");
+    }
+    // The forms iec2c (6bb2c33) refuses or stops on are not there.
+    assert!(!text.contains(":= T#") && !text.contains("\n    S    "));
+    assert!(text.lines().count() >= 2000);
+    assert_clean("matiec.il", text);
+}

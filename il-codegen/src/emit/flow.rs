@@ -11,6 +11,7 @@
 
 use super::PouEmitter;
 use super::text::{Out, join, tail};
+use super::writeback::WriteBacks;
 use crate::ast::PouKind;
 use crate::sema::ir::{Expr, Op, PathElem, Root, Stmt, Value};
 use crate::sema::types::Ty;
@@ -136,10 +137,17 @@ fn structure(stmts: &[Stmt], label_pos: &[Option<usize>]) -> Option<Vec<Region>>
 /// See [`PouEmitter::seq`].
 const FENCED_RUNGS: usize = 8;
 
+/// Rungs per fence in a fenced network: between two fences LLVM may keep
+/// the loads of a few rungs in registers (`interlock`: 2,129 instructions
+/// per scan with a fence before every rung, 2,125 every 4th, 2,122 every
+/// 8th), but too many rungs between fences bring the spills back.
+const RUNGS_PER_FENCE: usize = 4;
+
 /// Positions in `stmts` where a rung starts (a `SetCr` whose previous
 /// statement other than a `Nop` is a `Store`) by reading memory (not a
 /// variable that `cached` says lives in a local), in runs of at least
-/// [`FENCED_RUNGS`] such starts with no FB call between them.
+/// [`FENCED_RUNGS`] such starts with no FB call between them; of those,
+/// every [`RUNGS_PER_FENCE`]th.
 fn fenced_rungs(stmts: &[Stmt], cached: impl Fn(usize) -> bool) -> Vec<usize> {
     let (mut out, mut run) = (Vec::new(), Vec::new());
     let mut stored = false;
@@ -155,7 +163,11 @@ fn fenced_rungs(stmts: &[Stmt], cached: impl Fn(usize) -> bool) -> Vec<usize> {
             }
             Op::CallFb(_) => {
                 if run.len() >= FENCED_RUNGS {
-                    out.append(&mut run);
+                    out.extend(
+                        run.iter()
+                            .skip(RUNGS_PER_FENCE - 1)
+                            .step_by(RUNGS_PER_FENCE),
+                    );
                 }
                 run.clear();
             }
@@ -164,7 +176,11 @@ fn fenced_rungs(stmts: &[Stmt], cached: impl Fn(usize) -> bool) -> Vec<usize> {
         stored = matches!(s.op, Op::Store { .. });
     }
     if run.len() >= FENCED_RUNGS {
-        out.append(&mut run);
+        out.extend(
+            run.iter()
+                .skip(RUNGS_PER_FENCE - 1)
+                .step_by(RUNGS_PER_FENCE),
+        );
     }
     out
 }
@@ -178,7 +194,15 @@ fn loop_lifetime(l: usize) -> String {
 }
 
 impl PouEmitter<'_> {
-    pub(crate) fn body(&self, o: &mut Out) {
+    /// Whether the body has a network of rungs that `seq` fences.
+    pub(crate) fn has_fenced_rungs(&self) -> bool {
+        !fenced_rungs(&self.pou.body, |i| self.cached(i)).is_empty()
+    }
+
+    /// The body; returns the cached variables to write back at its end (see
+    /// `writeback.rs`: the others are written back where their last store
+    /// leaves them final).
+    pub(crate) fn body(&self, o: &mut Out) -> Vec<usize> {
         let mut stmts: &[Stmt] = &self.pou.body;
         // A RET at the very end is where the body ends anyway.
         if let Some(Stmt {
@@ -220,10 +244,27 @@ impl PouEmitter<'_> {
             }
             Mode::Dispatch { block_of_label }
         };
+        let spans: Option<Vec<(usize, usize)>> = match (&mode, &regions) {
+            (Mode::Straight, _) => Some(Vec::new()),
+            (Mode::Structured { .. }, Some(rs)) => Some(rs.iter().map(|r| (r.lo, r.hi)).collect()),
+            _ => None,
+        };
+        let wb = self.write_backs(stmts, spans.as_deref());
+        let wb_top = spans.is_some().then_some(&wb);
         match (&mode, regions) {
             (Mode::Structured { .. }, Some(regions)) => {
                 let mut next = 0;
-                self.nested(o, stmts, 0, stmts.len(), &regions, &mut next, &mode, false)
+                self.nested(
+                    o,
+                    stmts,
+                    0,
+                    stmts.len(),
+                    &regions,
+                    &mut next,
+                    &mode,
+                    false,
+                    wb_top,
+                )
             }
             (Mode::Dispatch { .. }, _) => {
                 let segments: Vec<&[Stmt]> =
@@ -233,7 +274,7 @@ impl PouEmitter<'_> {
                 o.code("let mut __pc: usize = 0; '__dispatch: loop { match __pc {");
                 for (k, seg) in segments.iter().enumerate() {
                     o.code(&format!("{k} => {{"));
-                    self.seq(o, seg, base, &mode, false);
+                    self.seq(o, seg, base, &mode, false, None);
                     base += seg.len() + 1;
                     let ends = matches!(
                         seg.last(),
@@ -253,12 +294,15 @@ impl PouEmitter<'_> {
                 }
                 o.code("_ => break '__dispatch, } }");
             }
-            _ => self.seq(o, stmts, 0, &mode, true),
+            _ => self.seq(o, stmts, 0, &mode, true, wb_top),
         }
+        wb.before(stmts.len()).to_vec()
     }
 
     /// Statements `[lo, hi)` with the regions that start at or after
     /// `regions[*next]` and lie inside `[lo, hi)`, as nested blocks/loops.
+    /// `wb`: at the top level, the write-backs (see `writeback.rs`), which
+    /// fall between statements outside every region.
     #[allow(clippy::too_many_arguments)]
     fn nested(
         &self,
@@ -270,16 +314,20 @@ impl PouEmitter<'_> {
         next: &mut usize,
         mode: &Mode,
         in_loop: bool,
+        wb: Option<&WriteBacks>,
     ) {
         let mut at = lo;
         while let Some(r) = regions.get(*next).copied().filter(|r| r.lo < hi) {
             *next += 1;
-            self.seq(o, &stmts[at..r.lo], at, mode, !in_loop);
+            self.seq(o, &stmts[at..r.lo], at, mode, !in_loop, wb);
+            if let Some(wb) = wb {
+                self.write_back(o, wb.before(r.lo));
+            }
             let inner_loop = in_loop || r.is_loop;
             if r.is_loop {
                 let lt = loop_lifetime(r.label);
                 o.code(&format!("{lt}: loop {{"));
-                self.nested(o, stmts, r.lo, r.hi, regions, next, mode, inner_loop);
+                self.nested(o, stmts, r.lo, r.hi, regions, next, mode, inner_loop, None);
                 // Falling off the end of the region leaves the loop.
                 if !matches!(
                     stmts[r.hi - 1].op,
@@ -290,28 +338,38 @@ impl PouEmitter<'_> {
                 o.code("}");
             } else {
                 o.code(&format!("{}: {{", label_lifetime(r.label)));
-                self.nested(o, stmts, r.lo, r.hi, regions, next, mode, inner_loop);
+                self.nested(o, stmts, r.lo, r.hi, regions, next, mode, inner_loop, None);
                 o.code("}");
             }
             at = r.hi;
         }
-        self.seq(o, &stmts[at..hi], at, mode, !in_loop);
+        self.seq(o, &stmts[at..hi], at, mode, !in_loop, wb);
     }
 
     /// Straight-line statements; `base` is the position of the first in the body.
     ///
     /// `fences` (code outside loops): in a network of at least
-    /// [`FENCED_RUNGS`] rungs without a function block call, each rung (a CR
-    /// load right after a store) starts with a `compiler_fence` (no machine
-    /// instruction). Without it LLVM keeps every value loaded from `self` in
+    /// [`FENCED_RUNGS`] rungs without a function block call, every
+    /// [`RUNGS_PER_FENCE`]th rung (a CR load right after a store) starts
+    /// with a `compiler_fence` (no machine instruction). Without it LLVM keeps every value loaded from `self` in
     /// a register across all later rungs (`&mut self` tells it nothing else
     /// writes them), runs out of registers in a long network and spills to
     /// the stack: `interlock`'s 300 rungs did ~900 stack stores and reloads
-    /// per scan. With it each rung reloads its operands from `self`, as C
+    /// per scan. With it the rungs reload their operands from `self`, as C
     /// does. Not in loops, where keeping `self` fields in registers is what
     /// pays, nor around FB calls, whose outputs LLVM forwards to the next
     /// rung (`blocks` ran 3% more instructions with fences there).
-    fn seq(&self, o: &mut Out, stmts: &[Stmt], base: usize, mode: &Mode, fences: bool) {
+    ///
+    /// `wb`: the write-backs due before each statement (top level only).
+    fn seq(
+        &self,
+        o: &mut Out,
+        stmts: &[Stmt],
+        base: usize,
+        mode: &Mode,
+        fences: bool,
+        wb: Option<&WriteBacks>,
+    ) {
         let fenced = if fences {
             fenced_rungs(stmts, |i| self.cached(i))
         } else {
@@ -319,7 +377,11 @@ impl PouEmitter<'_> {
         };
         let mut last_line = 0;
         for (k, s) in stmts.iter().enumerate() {
-            // The line's comment first: a rung's fence is part of its first line.
+            // A write-back belongs to the statements before this one.
+            if let Some(wb) = wb {
+                self.write_back(o, wb.before(base + k));
+            }
+            // The line's comment next: a rung's fence is part of its first line.
             if self.opts.line_markers && s.line != last_line && s.line != 0 {
                 o.code(&format!("__il_line!({});", s.line));
                 last_line = s.line;

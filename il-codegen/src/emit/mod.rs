@@ -7,6 +7,7 @@
 //! accesses go through `get` and record a fault when out of range.
 
 mod access;
+mod complement;
 mod config_vars;
 mod configuration;
 mod flow;
@@ -17,6 +18,7 @@ mod tasks;
 pub(crate) mod text;
 mod values;
 mod visit;
+mod writeback;
 
 use crate::ast::{PouKind, VarKind};
 use crate::sema::ir::{CheckedPou, Program, Storage};
@@ -122,6 +124,8 @@ fn is_std_fb(name: &str) -> bool {
 struct PouEmitter<'a> {
     pou: &'a CheckedPou,
     opts: Options,
+    /// Per variable: the body reads its complement (see `complement.rs`).
+    complemented: Vec<bool>,
 }
 
 impl PouEmitter<'_> {
@@ -169,7 +173,12 @@ impl PouEmitter<'_> {
 }
 
 fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
-    let p = PouEmitter { pou, opts };
+    let mut p = PouEmitter {
+        pou,
+        opts,
+        complemented: Vec::new(),
+    };
+    p.complemented = complement::complemented(pou, p.has_fenced_rungs());
     let name = item_ident(&pou.name);
     let pdoc = doc(&format!(
         " IEC 61131-3 {} `{}`, generated from Instruction List.",
@@ -308,18 +317,16 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
                 let (id, l) = (rust_ident(&v.name), names::cache_ident(&v.name));
                 o.code(&format!("let mut {l}: {} = self.{id};", rust_ty(&v.ty)));
             }
+            p.complements(o);
             p.locals(o);
             // RET leaves the labelled block, so the values are written back.
             if cached.is_empty() {
                 p.body(o);
             } else {
                 o.code("'__body: {");
-                p.body(o);
+                let at_end = p.body(o);
                 o.code("}");
-                for v in &cached {
-                    let (id, l) = (rust_ident(&v.name), names::cache_ident(&v.name));
-                    o.code(&format!("self.{id} = {l};"));
-                }
+                p.write_back(o, &at_end);
             }
             o.code("} }");
             // The generic trait fits blocks called with the context alone.

@@ -68,6 +68,7 @@ impl Fast {
                 // 13: ST  seen
                 __s_seen = __cr_dint;
             }
+            self.seen = __s_seen;
             // 14: done:
             // 15: LD  ticks
             __cr_dint = (*__ext.ticks);
@@ -79,8 +80,6 @@ impl Fast {
                 __ctx.io.set_bit(::il_std::Area::Output, 0, 1, __v);
             }
         }
-        self.enable = __s_enable;
-        self.seen = __s_seen;
     }
 }
 #[allow(dead_code, unused_variables, clippy::all)]

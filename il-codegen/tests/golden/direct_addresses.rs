@@ -107,6 +107,7 @@ impl Io {
             __cr_word = __ctx.io.word(::il_std::Area::Input, 4);
             // 7: ST   w
             __s_w = __cr_word;
+            self.w = __s_w;
             // 8: LD   level
             __cr_int = __ctx.io.word(::il_std::Area::Input, 6).cast_signed();
             // 9: ADD  1
@@ -117,7 +118,6 @@ impl Io {
                 __ctx.io.set_word(::il_std::Area::Memory, 8, __v as u16);
             }
         }
-        self.w = __s_w;
     }
 }
 impl ::il_std::FunctionBlock for Io {

@@ -98,7 +98,6 @@ impl Dispatch {
                 }
             }
         }
-        self.start_mid = __s_start_mid;
         self.i = __s_i;
         self.j = __s_j;
         self.n = __s_n;

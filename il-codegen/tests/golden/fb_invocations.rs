@@ -57,6 +57,7 @@ impl Station {
                 self.c.call(__ctx);
                 __s_q = self.c.Q;
             }
+            self.q = __s_q;
             // 8: LD   b
             __cr_bool = __s_b;
             // 9: CALC t(IN := a, PT := T#1s)
@@ -75,9 +76,6 @@ impl Station {
                 self.edge.call(__ctx);
             }
         }
-        self.a = __s_a;
-        self.b = __s_b;
-        self.q = __s_q;
     }
 }
 impl ::il_std::FunctionBlock for Station {

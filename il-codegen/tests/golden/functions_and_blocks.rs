@@ -96,10 +96,7 @@ impl Filler {
             // 24: ST   valve
             __s_valve = __cr_bool;
         }
-        self.level = __s_level;
-        self.start = __s_start;
         self.valve = __s_valve;
-        self.slot = __s_slot;
     }
 }
 impl ::il_std::FunctionBlock for Filler {

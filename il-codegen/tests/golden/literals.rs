@@ -47,31 +47,31 @@ impl Literals {
             // 5: LD   1
             // 6: ST   a              (* a : BOOL *)
             __s_a = true;
+            self.a = __s_a;
             // 7: LD   2.5
             // 8: ST   r              (* r : REAL, 32-bit *)
             __s_r = 2.5f32;
+            self.r = __s_r;
             // 9: LD   n
             __cr_int = __s_n;
             // 10: ADD  300            (* the CR is INT *)
             __cr_int = __cr_int.wrapping_add(300i16);
             // 11: ST   n
             __s_n = __cr_int;
+            self.n = __s_n;
             // 12: LD   t
             __cr_time = __s_t;
             // 13: ADD  T#1s500ms      (* the CR is TIME, nanoseconds *)
             __cr_time = ::il_std::TIME(__cr_time.0.wrapping_add(::il_std::TIME(1500000000i64).0));
             // 14: ST   t
             __s_t = __cr_time;
+            self.t = __s_t;
             // 15: LD   16#00F0
             // 16: AND  w
             __cr_word = 240u16 & __s_w;
             // 17: ST   w
             __s_w = __cr_word;
         }
-        self.a = __s_a;
-        self.r = __s_r;
-        self.n = __s_n;
-        self.t = __s_t;
         self.w = __s_w;
     }
 }

@@ -29,11 +29,13 @@ impl LongNetwork {
     /// Run one scan.
     #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
+        let mut __copy__not_x: [bool; 8] = self.x.map(|__b| !__b);
+        let __not_x = &mut *::core::hint::black_box(&mut __copy__not_x);
         let mut __cr_bool: bool = false;
         // 6: LD   x[0]
         __cr_bool = self.x[0];
         // 7: ANDN x[3]
-        __cr_bool = __cr_bool & !self.x[3];
+        __cr_bool = __cr_bool & __not_x[3];
         // 8: OR   m[5]
         __cr_bool = __cr_bool | self.m[5];
         // 9: ST   m[0]
@@ -41,10 +43,9 @@ impl LongNetwork {
             self.m[0] = __cr_bool;
         }
         // 10: LD   x[1]
-        ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[1];
         // 11: ANDN x[4]
-        __cr_bool = __cr_bool & !self.x[4];
+        __cr_bool = __cr_bool & __not_x[4];
         // 12: OR   m[6]
         __cr_bool = __cr_bool | self.m[6];
         // 13: ST   m[1]
@@ -52,10 +53,9 @@ impl LongNetwork {
             self.m[1] = __cr_bool;
         }
         // 14: LD   x[2]
-        ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[2];
         // 15: ANDN x[5]
-        __cr_bool = __cr_bool & !self.x[5];
+        __cr_bool = __cr_bool & __not_x[5];
         // 16: OR   m[7]
         __cr_bool = __cr_bool | self.m[7];
         // 17: ST   m[2]
@@ -63,10 +63,9 @@ impl LongNetwork {
             self.m[2] = __cr_bool;
         }
         // 18: LD   x[3]
-        ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[3];
         // 19: ANDN x[6]
-        __cr_bool = __cr_bool & !self.x[6];
+        __cr_bool = __cr_bool & __not_x[6];
         // 20: OR   m[8]
         __cr_bool = __cr_bool | self.m[8];
         // 21: ST   m[3]
@@ -77,7 +76,7 @@ impl LongNetwork {
         ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[4];
         // 23: ANDN x[7]
-        __cr_bool = __cr_bool & !self.x[7];
+        __cr_bool = __cr_bool & __not_x[7];
         // 24: OR   m[9]
         __cr_bool = __cr_bool | self.m[9];
         // 25: ST   m[4]
@@ -85,10 +84,9 @@ impl LongNetwork {
             self.m[4] = __cr_bool;
         }
         // 26: LD   x[5]
-        ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[5];
         // 27: ANDN x[0]
-        __cr_bool = __cr_bool & !self.x[0];
+        __cr_bool = __cr_bool & __not_x[0];
         // 28: OR   m[10]
         __cr_bool = __cr_bool | self.m[10];
         // 29: ST   m[5]
@@ -96,10 +94,9 @@ impl LongNetwork {
             self.m[5] = __cr_bool;
         }
         // 30: LD   x[6]
-        ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[6];
         // 31: ANDN x[1]
-        __cr_bool = __cr_bool & !self.x[1];
+        __cr_bool = __cr_bool & __not_x[1];
         // 32: OR   m[11]
         __cr_bool = __cr_bool | self.m[11];
         // 33: ST   m[6]
@@ -107,10 +104,9 @@ impl LongNetwork {
             self.m[6] = __cr_bool;
         }
         // 34: LD   x[7]
-        ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[7];
         // 35: ANDN x[2]
-        __cr_bool = __cr_bool & !self.x[2];
+        __cr_bool = __cr_bool & __not_x[2];
         // 36: OR   m[0]
         __cr_bool = __cr_bool | self.m[0];
         // 37: ST   m[7]
@@ -121,7 +117,7 @@ impl LongNetwork {
         ::core::sync::atomic::compiler_fence(::core::sync::atomic::Ordering::SeqCst);
         __cr_bool = self.x[0];
         // 39: ANDN x[3]
-        __cr_bool = __cr_bool & !self.x[3];
+        __cr_bool = __cr_bool & __not_x[3];
         // 40: OR   m[1]
         __cr_bool = __cr_bool | self.m[1];
         // 41: ST   m[8]

@@ -50,6 +50,7 @@ impl Motor {
             __cr_bool = __cr_bool & !__s_stop;
             // 17: ST   run
             __s_run = __cr_bool;
+            self.run = __s_run;
             // 18: CLK  edge       (* count rising edges of run *)
             {
                 self.edge.CLK = __cr_bool;
@@ -69,12 +70,9 @@ impl Motor {
                 // 23: ST   starts
                 __s_starts = __cr_int;
             }
+            self.starts = __s_starts;
             // 24: done:
         }
-        self.start = __s_start;
-        self.stop = __s_stop;
-        self.run = __s_run;
-        self.starts = __s_starts;
     }
 }
 impl ::il_std::FunctionBlock for Motor {

@@ -53,10 +53,9 @@ impl Odometer {
                 // 13: ST  total
                 __s_total = __cr_udint;
             }
+            self.total = __s_total;
             // 14: done:
         }
-        self.pulse = __s_pulse;
-        self.total = __s_total;
     }
 }
 impl ::il_std::FunctionBlock for Odometer {
@@ -169,10 +168,10 @@ impl Line {
             __cr_int = __cr_int.wrapping_add(1i16);
             // 30: ST  shifts
             __s_shifts = __cr_int;
+            self.shifts = __s_shifts;
             // 31: ST  scratch
             __s_scratch = __cr_int;
         }
-        self.shifts = __s_shifts;
         self.scratch = __s_scratch;
     }
 }
@@ -284,7 +283,6 @@ impl OnlyNested {
                 self.wheel.call(__ctx);
             }
         }
-        self.x = __s_x;
     }
 }
 impl ::il_std::FunctionBlock for OnlyNested {

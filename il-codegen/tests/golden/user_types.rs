@@ -186,6 +186,7 @@ impl Plant {
                     __ctx.fault(::il_std::FaultKind::SubrangeViolation, "Plant", 50);
                 }
             }
+            self.pct = __s_pct;
             // 51: LD   pct
             __cr_int = __s_pct;
             // 52: ST   main.level
@@ -230,6 +231,8 @@ impl Plant {
                 __s_ok = __o0;
                 __r
             };
+            self.sum = __s_sum;
+            self.ok = __s_ok;
             // 56: GT   6
             __cr_bool = __cr_int > 6i16;
             '__l1: {
@@ -284,12 +287,6 @@ impl Plant {
                 }
             }
         }
-        self.demand = __s_demand;
-        self.r#ref = __s_ref;
-        self.pct = __s_pct;
-        self.i = __s_i;
-        self.sum = __s_sum;
-        self.ok = __s_ok;
     }
 }
 impl ::il_std::FunctionBlock for Plant {

@@ -7,10 +7,7 @@ impl PouEmitter<'_> {
     pub(crate) fn expr(&self, e: &Expr, line: u32) -> String {
         match e {
             Expr::Value(v) => self.value(v, line),
-            Expr::Not(v) => {
-                let v = self.value(v, line);
-                format!("!{v}")
-            }
+            Expr::Not(v) => self.negated(v, line),
             Expr::Bin {
                 op,
                 ty,
@@ -19,10 +16,11 @@ impl PouEmitter<'_> {
                 negate_rhs,
             } => {
                 let l = self.receiver(lhs, line);
-                let mut r = self.value(rhs, line);
-                if *negate_rhs {
-                    r = format!("!{r}");
-                }
+                let r = if *negate_rhs {
+                    self.negated(rhs, line)
+                } else {
+                    self.value(rhs, line)
+                };
                 // A literal divisor other than 0 needs no zero check.
                 let nonzero =
                     !*negate_rhs && matches!(rhs, Value::Const(Const::Int(n, _)) if *n != 0);
