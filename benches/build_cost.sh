@@ -10,6 +10,9 @@
 # (`*_opt2`), the README's advice for large IL files.
 # Prints one line per crate. Takes several minutes (cold builds compile syn
 # and the compiler). Usage: bash benches/build_cost.sh [WORKDIR]
+# BUILD_COST_CRATES="baseline with_macro" builds only those crates;
+# BUILD_COST_ROUNDS=3 repeats the list that many times, so that crates
+# compared with each other alternate under the same load.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 work=${1:-$(mktemp -d)}
@@ -98,8 +101,11 @@ done
 
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 t() { local s=$(date +%s.%N); "$@" >/dev/null 2>&1; echo "$(date +%s.%N) - $s" | bc; }
-for c in plain baseline with_macro with_buildrs with_macro_opt2 with_buildrs_opt2; do
+crates=${BUILD_COST_CRATES:-plain baseline with_macro with_buildrs with_macro_opt2 with_buildrs_opt2}
+for round in $(seq "${BUILD_COST_ROUNDS:-1}"); do
+for c in $crates; do
   cd "$work/$c"
+  rm -rf target
   cold=$(t cargo build --offline)
   touch src/lib.rs
   inc_rs=$(t cargo build --offline)
@@ -107,4 +113,5 @@ for c in plain baseline with_macro with_buildrs with_macro_opt2 with_buildrs_opt
   inc_il=$(t cargo build --offline)
   printf '%-18s cold %6.2f s   touch lib.rs %5.2f s   edit motor.il %5.2f s   (load %s)\n' \
     "$c" "$cold" "$inc_rs" "$inc_il" "$(cut -d' ' -f1 /proc/loadavg)"
+done
 done
