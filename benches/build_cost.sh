@@ -5,11 +5,16 @@
 #   baseline       a trivial proc macro with syn 2 (default features) + quote,
 #                  the cost of any crate that uses a derive
 #   with_macro     il!(file = "plc/motor.il")
+#   with_macro_il_only  the same, il-macros without its default `plcopen`
+#                  feature (no XML import: no roxmltree, memchr)
 #   with_buildrs   build.rs + include!
 # and the last two again with `[profile.dev.build-override] opt-level = 2`
 # (`*_opt2`), the README's advice for large IL files.
 # Prints one line per crate. Takes several minutes (cold builds compile syn
 # and the compiler). Usage: bash benches/build_cost.sh [WORKDIR]
+# BUILD_COST_CRATES="baseline with_macro" builds only those crates;
+# BUILD_COST_ROUNDS=3 repeats the list that many times, so that crates
+# compared with each other alternate under the same load.
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/.." && pwd)
 work=${1:-$(mktemp -d)}
@@ -82,6 +87,9 @@ cat > "$work/baseline/src/lib.rs" <<'EOT'
 pub struct Motor { pub run: bool }
 EOT
 
+mk with_macro_il_only "il-macros = { path = \"$repo/il-macros\", default-features = false }" "" ""
+echo 'il_macros::il!(file = "plc/motor.il");' > "$work/with_macro_il_only/src/lib.rs"
+
 for v in "" _opt2; do
   prof=""; [ -n "$v" ] && prof="$opt2"
   mk "with_macro$v" "il-macros = { path = \"$repo/il-macros\" }" "" "$prof"
@@ -98,8 +106,11 @@ done
 
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 t() { local s=$(date +%s.%N); "$@" >/dev/null 2>&1; echo "$(date +%s.%N) - $s" | bc; }
-for c in plain baseline with_macro with_buildrs with_macro_opt2 with_buildrs_opt2; do
+crates=${BUILD_COST_CRATES:-plain baseline with_macro with_macro_il_only with_buildrs with_macro_opt2 with_buildrs_opt2}
+for round in $(seq "${BUILD_COST_ROUNDS:-1}"); do
+for c in $crates; do
   cd "$work/$c"
+  rm -rf target
   cold=$(t cargo build --offline)
   touch src/lib.rs
   inc_rs=$(t cargo build --offline)
@@ -107,4 +118,5 @@ for c in plain baseline with_macro with_buildrs with_macro_opt2 with_buildrs_opt
   inc_il=$(t cargo build --offline)
   printf '%-18s cold %6.2f s   touch lib.rs %5.2f s   edit motor.il %5.2f s   (load %s)\n' \
     "$c" "$cold" "$inc_rs" "$inc_il" "$(cut -d' ' -f1 /proc/loadavg)"
+done
 done

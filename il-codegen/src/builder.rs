@@ -433,6 +433,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "plcopen")]
     fn plcopen_file_becomes_stem_rs_and_errors_show_xml_lines() {
         let dir = std::env::temp_dir().join(format!("il-builder-xml-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
@@ -498,6 +499,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "plcopen")]
     fn two_inputs_with_one_stem_are_refused_and_nothing_is_written() {
         let dir = temp("clash");
         for (sub, file, pou) in [("a", "m.il", "A"), ("b", "m.il", "B"), ("c", "M.xml", "C")] {

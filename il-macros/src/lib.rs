@@ -25,7 +25,9 @@
 //!   `'text'` are not Rust tokens).
 //! - `il!(file = "plc/motor.il")`: a file relative to the crate root
 //!   (`CARGO_MANIFEST_DIR`); edits to it rebuild the crate. A `.xml` file is
-//!   a PLCopen TC6 XML project.
+//!   a PLCopen TC6 XML project (the `plcopen` feature, on by default; a crate
+//!   that reads only IL can turn default features off and compiles no XML
+//!   parser).
 //! - `il!(files = ["plc/types.il", "plc/tank.il"])`: several files as one
 //!   program.
 //!

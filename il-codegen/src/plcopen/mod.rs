@@ -15,11 +15,20 @@
 //! yet, and a constant cannot differ between the two). A configuration
 //! whose program instances run a POU that was not translated is left out
 //! with a warning (IL0204).
+//!
+//! Reading XML is the `plcopen` feature (roxmltree and the translation):
+//! `il!` users who compile only IL can leave it out of their build
+//! (`il-macros` with `default-features = false`); without it, an XML source
+//! is one error (IL0210) saying how to turn it on.
 
+#[cfg(feature = "plcopen")]
 mod limits;
 mod map;
+#[cfg(feature = "plcopen")]
 mod text;
+#[cfg(feature = "plcopen")]
 mod translate;
+#[cfg(feature = "plcopen")]
 mod validate;
 
 pub use map::SpanMap;
@@ -50,11 +59,32 @@ pub mod codes {
         "An element has more than 128 attributes, or more than 64 namespace declarations (`xmlns`, `xmlns:p`) are in scope at once. Reading such XML costs time that grows with the square of its size, so the file is refused before it is read; no PLCopen project needs this many.\n\n    <variable name=\"x\" a1=\"\" a2=\"\" ... a129=\"\">";
     BODY_ESCAPES = "IL0209", "IL body reaches outside its POU",
         "The text of an `<IL>` body is copied into the POU as it is, so it must not end the POU (`END_PROGRAM`, `END_FUNCTION_BLOCK` ...), start another POU, a `TYPE` or a `CONFIGURATION`, or open a comment `(*` that it does not close (which would swallow what follows). The POU is left out.\n\n    <IL><xhtml:p>LD a\n    END_PROGRAM\n    PROGRAM Other ...</xhtml:p></IL>";
+    NOT_BUILT = "IL0210", "PLCopen XML import not built in",
+        "A `.xml` source (a PLCopen project) reached a build of the compiler without its `plcopen` feature, which reads XML. `il-macros` and `il-codegen` have the feature by default; a crate that turned default features off to build faster gets it back by naming it:\n\n    il-macros = { version = \"0.1\", default-features = false, features = [\"plcopen\"] }";
     }
 }
 pub use codes::CODES;
 
+#[cfg(feature = "plcopen")]
 use codes::{MALFORMED_XML, TOO_COMPLEX};
+
+/// Longest identifier the import accepts: far above any real project, small
+/// enough that quoting one in a message stays readable (a longer word in a
+/// diagnostic is not looked up among the POUs left out).
+pub(crate) const MAX_NAME: usize = 255;
+
+#[cfg(feature = "plcopen")]
+use translate::Translation;
+
+/// What an import made of the XML (without the `plcopen` feature, only the
+/// error that says so).
+#[cfg(not(feature = "plcopen"))]
+struct Translation {
+    text: String,
+    map: SpanMap,
+    diags: Vec<Diagnostic>,
+    pous: Vec<PouInfo>,
+}
 
 /// What happened to one POU of the project.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -101,6 +131,7 @@ pub(crate) fn language_name(tc6: &str) -> &'static str {
 }
 
 /// The byte offset of a 1-based line and character column.
+#[cfg(feature = "plcopen")]
 fn offset_of(text: &str, row: u32, col: u32) -> usize {
     let mut start = 0;
     for _ in 1..row {
@@ -122,6 +153,49 @@ impl Import {
     /// Translate a PLCopen XML file. Never fails: a malformed file gives an
     /// import with an empty IL text and an error (IL0201) in `diagnostics`.
     pub fn new(xml: SourceFile) -> Import {
+        let t = Self::translate(&xml);
+        let il = SourceFile::new(xml.name.clone(), t.text);
+        let mut left_out = HashMap::new();
+        for (k, p) in t.pous.iter().enumerate().filter(|(_, p)| !p.translated) {
+            left_out.entry(p.name.to_ascii_lowercase()).or_insert(k);
+        }
+        Import {
+            xml,
+            il,
+            diagnostics: t.diags,
+            pous: t.pous,
+            map: t.map,
+            left_out,
+        }
+    }
+
+    /// Without the `plcopen` feature: no IL, one error at the file's start.
+    #[cfg(not(feature = "plcopen"))]
+    fn translate(xml: &SourceFile) -> Translation {
+        let first = xml.text.chars().next().map_or(0, char::len_utf8);
+        Translation {
+            text: String::new(),
+            map: SpanMap::default(),
+            diags: vec![
+                Diagnostic::error(
+                    codes::NOT_BUILT,
+                    Span::new(0, first),
+                    format!(
+                        "`{}` is a PLCopen XML project, and this build of the IL compiler cannot read XML",
+                        xml.name
+                    ),
+                )
+                .with_label("PLCopen XML")
+                .with_note(
+                    "turn on the `plcopen` feature of il-macros (or il-codegen), which is on by default",
+                ),
+            ],
+            pous: Vec::new(),
+        }
+    }
+
+    #[cfg(feature = "plcopen")]
+    fn translate(xml: &SourceFile) -> Translation {
         let opts = roxmltree::ParsingOptions {
             allow_dtd: false,
             ..roxmltree::ParsingOptions::default()
@@ -152,27 +226,14 @@ impl Import {
                 .with_label("the XML parser stopped here")
             }),
         };
-        let t = match parsed {
+        match parsed {
             Ok(doc) => translate::translate(&doc, &xml.text),
-            Err(d) => translate::Translation {
+            Err(d) => Translation {
                 text: String::new(),
                 map: SpanMap::default(),
                 diags: vec![d],
                 pous: Vec::new(),
             },
-        };
-        let il = SourceFile::new(xml.name.clone(), t.text);
-        let mut left_out = HashMap::new();
-        for (k, p) in t.pous.iter().enumerate().filter(|(_, p)| !p.translated) {
-            left_out.entry(p.name.to_ascii_lowercase()).or_insert(k);
-        }
-        Import {
-            xml,
-            il,
-            diagnostics: t.diags,
-            pous: t.pous,
-            map: t.map,
-            left_out,
         }
     }
 
@@ -183,7 +244,7 @@ impl Import {
         if let Some(p) = self
             .left_out
             .get(&word.to_ascii_lowercase())
-            .filter(|_| word.len() <= validate::MAX_NAME)
+            .filter(|_| word.len() <= MAX_NAME)
             .map(|&k| &self.pous[k])
         {
             d.notes.push(format!(
@@ -221,9 +282,45 @@ impl Import {
     }
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "plcopen"))]
 mod tests;
-#[cfg(test)]
+#[cfg(all(test, feature = "plcopen"))]
 mod tests_hostile;
-#[cfg(test)]
+#[cfg(all(test, feature = "plcopen"))]
 mod tests_limits;
+
+#[cfg(all(test, not(feature = "plcopen")))]
+mod tests_not_built {
+    use crate::diag::SourceFile;
+    use crate::pipeline::Program;
+
+    /// `cargo test -p il-codegen --no-default-features --lib plcopen`.
+    #[test]
+    fn an_xml_source_is_one_error_that_names_the_feature() {
+        let xml = SourceFile::new(
+            "plc/cell.xml",
+            "<?xml version=\"1.0\"?><project/>".to_string(),
+        );
+        let checked = Program::new().source(xml).check();
+        let diags: Vec<_> = checked
+            .reports()
+            .flat_map(|(_, d)| d.iter().cloned())
+            .collect();
+        assert_eq!(diags.len(), 1, "{diags:?}");
+        assert_eq!(diags[0].code, super::codes::NOT_BUILT);
+        assert!(
+            diags[0].message.contains("plc/cell.xml"),
+            "{}",
+            diags[0].message
+        );
+        assert!(
+            diags[0]
+                .notes
+                .iter()
+                .any(|n| n.contains("`plcopen` feature")),
+            "{:?}",
+            diags[0].notes
+        );
+        assert!(checked.emit(Default::default()).is_none());
+    }
+}

@@ -48,9 +48,7 @@ impl Kind {
     }
 }
 
-/// Longest identifier accepted: far above any real project, small enough
-/// that quoting one in a message stays readable.
-pub(crate) const MAX_NAME: usize = 255;
+pub(crate) use super::MAX_NAME;
 /// Longest literal accepted (a long STRING initial value is the largest).
 const MAX_VALUE: usize = 64 * 1024;
 

@@ -11,6 +11,7 @@ mod front_end_robustness;
 mod golden_emit;
 mod ir_size;
 mod pipeline_snippet;
+#[cfg(feature = "plcopen")]
 mod plcopen_corpus;
 mod render_golden;
 mod scaling;

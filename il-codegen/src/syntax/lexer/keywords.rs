@@ -122,7 +122,9 @@ pub(super) fn end_pou_kind(up: &str) -> Option<PouKind> {
 }
 
 /// Whether an upper-cased word is a declaration keyword (`END_VAR`,
-/// `PROGRAM`, `ON` ...): such a word can never be a name.
+/// `PROGRAM`, `ON` ...): such a word can never be a name (the PLCopen
+/// import checks names with it).
+#[cfg(feature = "plcopen")]
 pub(crate) fn is_decl_keyword(up: &str) -> bool {
     decl_keyword(up).is_some()
 }

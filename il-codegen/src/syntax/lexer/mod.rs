@@ -28,6 +28,7 @@ mod decls;
 mod keywords;
 mod literals;
 
+#[cfg(feature = "plcopen")]
 pub(crate) use keywords::is_decl_keyword;
 pub use keywords::operator;
 use keywords::*;
