@@ -1,5 +1,5 @@
 // auto-generated: "lalrpop 0.23.2"
-// sha3: 8f8757fcf0047fa1e44997f8237ac1518c66b74185d2a9a252d604f783489c99
+// sha3: 458f3214b6269625ffa4a94b441f90ab2dc6bfc0d9db03050e0b24a536cbe716
 // features: 
 use crate::ast::*;
 use super::lexer::{Tok, LexError, ExprTok};
