@@ -1,5 +1,5 @@
 // auto-generated: "lalrpop 0.23.2"
-// sha3: 458f3214b6269625ffa4a94b441f90ab2dc6bfc0d9db03050e0b24a536cbe716
+// sha3: 31891cb3701a011fa4329c7081bbf0b434139b82a8323a73a95c8f7f3bead9b5
 // features: 
 use crate::ast::*;
 use super::lexer::{Tok, LexError, ExprTok};
