@@ -178,7 +178,7 @@ pub(crate) fn decl_span(blocks: &[ast::VarBlock], name: &str) -> Option<Span> {
 /// Every VAR_EXTERNAL named like the located global `g` becomes located there.
 fn bind_located(cx: &mut Cx, env: &mut Env, g: &Var, l: &super::ir::Loc, span: Span) {
     for sig in env.pous.values_mut() {
-        let Some(&i) = sig.index.get(&g.name.to_ascii_uppercase()) else {
+        let Some(i) = sig.index.get(&g.name) else {
             continue;
         };
         let v = &mut sig.vars[i];

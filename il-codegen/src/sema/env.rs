@@ -62,8 +62,8 @@ pub(crate) struct PouSig {
     pub kind: PouKind,
     pub name: String,
     pub vars: Vec<Var>,
-    /// Upper-case name → index into `vars`.
-    pub index: super::hash::FxMap<String, usize>,
+    /// Name (any case) → index into `vars`.
+    pub index: super::name_index::NameIndex,
     pub ret: Option<Ty>,
     /// Index of the source file that declares it.
     pub file: usize,
@@ -75,17 +75,8 @@ pub(crate) struct PouSig {
 
 impl PouSig {
     pub fn var(&self, name: &str) -> Option<(usize, &Var)> {
-        // Called for every variable reference: upper-case short names on
-        // the stack instead of allocating a String per lookup.
-        let mut buf = [0u8; 64];
-        let i = match buf.get_mut(..name.len()) {
-            Some(b) => {
-                b.copy_from_slice(name.as_bytes());
-                b.make_ascii_uppercase();
-                *self.index.get(std::str::from_utf8(b).ok()?)?
-            }
-            None => *self.index.get(&name.to_ascii_uppercase())?,
-        };
+        // Called for every variable reference: the index folds case itself.
+        let i = self.index.get(name)?;
         Some((i, &self.vars[i]))
     }
     /// Inputs in declaration order (what a non-formal call fills).

@@ -164,7 +164,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
                     continue;
                 }
                 spans.insert(key.clone(), name.span);
-                sig.index.insert(key, sig.vars.len());
+                sig.index.insert(&key, sig.vars.len());
                 sig.vars.push(Var {
                     name: name.name.clone(),
                     location: location.clone(),
@@ -186,7 +186,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
     if p.kind == PouKind::Function && mentions(&p.body, "ENO") {
         // ENO exists on every function; it is an output (TRUE on entry) of
         // those whose body sets it.
-        sig.index.insert("ENO".into(), sig.vars.len());
+        sig.index.insert("ENO", sig.vars.len());
         sig.vars.push(Var {
             name: "ENO".into(),
             location: None,

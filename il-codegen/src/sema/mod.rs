@@ -17,6 +17,7 @@ mod init;
 mod interface;
 pub mod ir;
 mod literals;
+mod name_index;
 mod nesting;
 mod partly;
 mod recursion;

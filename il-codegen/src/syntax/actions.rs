@@ -27,15 +27,25 @@ pub enum Elem {
     EndIl(Span),
 }
 
-#[allow(clippy::large_enum_variant)] // short-lived, built once per element
+/// Each variant is small: the parser's stack entry is as large as its
+/// largest symbol (see [`unbox`]), so a `Task` is boxed.
 pub enum CfgElem {
     Vars(VarBlock),
     VarConfig(Vec<ConfigVar>, Span),
     VarAccess(Vec<AccessVar>, Span),
     Resource(Resource),
-    Task(Task),
+    Task(Box<Task>),
     Program(ProgramInstance),
     Error,
+}
+
+/// The items of a list whose nonterminal is boxed. lalrpop keeps every
+/// symbol on its stack in one enum, as large as the largest nonterminal, and
+/// moves one on every shift and reduce: declarations, type specs, POUs and
+/// the other rare, large results are boxed in the grammar so that the entry
+/// is sized by an instruction (the common symbol) instead of a `VarDecl`.
+pub fn unbox<T>(v: Vec<Box<T>>) -> Vec<T> {
+    v.into_iter().map(|b| *b).collect()
 }
 
 pub fn instr(kind: InstrKind, lo: usize, op_hi: usize, hi: usize) -> Instr {
@@ -89,7 +99,7 @@ pub fn var_block(
     ctx: &mut Ctx,
     kind: VarKind,
     quals: Vec<(Tok, Span)>,
-    decls: Vec<Option<VarDecl>>,
+    decls: Vec<Option<Box<VarDecl>>>,
     _closed: bool,
     span: Span,
 ) -> VarBlock {
@@ -123,7 +133,7 @@ pub fn var_block(
         kind,
         constant,
         retain,
-        decls: decls.into_iter().flatten().collect(),
+        decls: decls.into_iter().flatten().map(|d| *d).collect(),
         span,
     }
 }
@@ -404,7 +414,7 @@ pub fn configuration(name: Ident, els: Vec<CfgElem>, span: Span) -> Configuratio
             CfgElem::VarConfig(v, _) => var_config.extend(v),
             CfgElem::VarAccess(v, _) => var_access.extend(v),
             CfgElem::Resource(r) => resources.push(r),
-            CfgElem::Task(t) => loose.tasks.push(t),
+            CfgElem::Task(t) => loose.tasks.push(*t),
             CfgElem::Program(p) => loose.programs.push(p),
             CfgElem::Error => {}
         }
@@ -450,7 +460,7 @@ pub fn resource(
                 )
                 .with_label("inside a RESOURCE"),
             ),
-            CfgElem::Task(t) => r.tasks.push(t),
+            CfgElem::Task(t) => r.tasks.push(*t),
             CfgElem::Program(p) => r.programs.push(p),
             CfgElem::Resource(inner) => ctx.diags.push(
                 Diagnostic::error(

@@ -1,5 +1,5 @@
 // auto-generated: "lalrpop 0.23.2"
-// sha3: b3365d9be1e3423c622f14bb2c9c70b8fe8376055909265cb22f4a20e2906f4f
+// sha3: 31891cb3701a011fa4329c7081bbf0b434139b82a8323a73a95c8f7f3bead9b5
 // features: 
 use crate::ast::*;
 use super::lexer::{Tok, LexError, ExprTok};
@@ -42,31 +42,31 @@ mod __parse__Unit {
         Variant9(VarKind),
         Variant10(PouKind),
         Variant11(__lalrpop_util::ErrorRecovery<usize, Tok, LexError>),
-        Variant12(Vec<ParamAssign>),
-        Variant13(Option<Vec<ParamAssign>>),
-        Variant14(TypeSpec),
-        Variant15(Option<TypeSpec>),
+        Variant12(Vec<Box<ParamAssign>>),
+        Variant13(Option<Vec<Box<ParamAssign>>>),
+        Variant14(Box<TypeSpec>),
+        Variant15(Option<Box<TypeSpec>>),
         Variant16(Initializer),
         Variant17(Option<Initializer>),
         Variant18(Ident),
         Variant19(usize),
         Variant20(Option<bool>),
-        Variant21(Option<AccessVar>),
+        Variant21(Option<Box<AccessVar>>),
         Variant22(Accessor),
         Variant23(alloc::vec::Vec<Accessor>),
-        Variant24((Option<Literal>, Initializer)),
+        Variant24(Box<(Option<Literal>, Initializer)>),
         Variant25(CfgElem),
-        Variant26(Vec<(Option<Literal>, Initializer)>),
+        Variant26(Vec<Box<(Option<Literal>, Initializer)>>),
         Variant27(Vec<EnumValue>),
         Variant28(Vec<(Ident, Initializer)>),
         Variant29(Vec<Ident>),
         Variant30(Vec<Operand>),
         Variant31(Option<Vec<Operand>>),
-        Variant32(Vec<Subrange>),
+        Variant32(Vec<Box<Subrange>>),
         Variant33(Vec<Subscript>),
         Variant34(Vec<(Ident, Operand)>),
         Variant35(Configuration),
-        Variant36(Option<ConfigVar>),
+        Variant36(Option<Box<ConfigVar>>),
         Variant37(ConstExpr),
         Variant38(VarRef),
         Variant39(Edge),
@@ -78,16 +78,16 @@ mod __parse__Unit {
         Variant45(EnumValue),
         Variant46((Ident, Initializer)),
         Variant47(Instr),
-        Variant48(Option<Item>),
+        Variant48(Option<Box<Item>>),
         Variant49(Vec<Stmt>),
-        Variant50(Vec<Option<AccessVar>>),
+        Variant50(Vec<Option<Box<AccessVar>>>),
         Variant51(Vec<CfgElem>),
-        Variant52(Vec<Option<ConfigVar>>),
+        Variant52(Vec<Option<Box<ConfigVar>>>),
         Variant53(Vec<Elem>),
-        Variant54(Vec<Option<Item>>),
+        Variant54(Vec<Option<Box<Item>>>),
         Variant55(Vec<Vec<Stmt>>),
-        Variant56(Vec<Option<TypeDecl>>),
-        Variant57(Vec<Option<VarDecl>>),
+        Variant56(Vec<Option<Box<TypeDecl>>>),
+        Variant57(Vec<Option<Box<VarDecl>>>),
         Variant58(Vec<(Tok, Span)>),
         Variant59(Operand),
         Variant60(Option<Box<Literal>>),
@@ -95,22 +95,22 @@ mod __parse__Unit {
         Variant62(Option<Ident>),
         Variant63(Option<Operand>),
         Variant64(Option<Retain>),
-        Variant65(ParamAssign),
+        Variant65(Box<ParamAssign>),
         Variant66(CallArgs),
         Variant67(Option<CallArgs>),
-        Variant68(Pou),
+        Variant68(Box<Pou>),
         Variant69(ProgramInstance),
         Variant70(Retain),
         Variant71(Option<ConstExpr>),
         Variant72(Subscript),
-        Variant73(Subrange),
-        Variant74(Task),
+        Variant73(Box<Subrange>),
+        Variant74(Box<Task>),
         Variant75((Ident, Operand)),
-        Variant76(Option<TypeDecl>),
+        Variant76(Option<Box<TypeDecl>>),
         Variant77(Vec<TypeDecl>),
         Variant78(CompilationUnit),
         Variant79(VarBlock),
-        Variant80(Option<VarDecl>),
+        Variant80(Option<Box<VarDecl>>),
         Variant81((Tok, Span)),
     }
     const __ACTION: &[i16] = &[
@@ -3889,16 +3889,6 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
-    fn __pop_Variant24<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, (Option<Literal>, Initializer), usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant24(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
     fn __pop_Variant43<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -3929,6 +3919,16 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
+    fn __pop_Variant24<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Box<(Option<Literal>, Initializer)>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant24(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
     fn __pop_Variant3<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -3946,6 +3946,56 @@ mod __parse__Unit {
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant2(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant65<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Box<ParamAssign>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant65(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant68<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Box<Pou>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant68(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant73<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Box<Subrange>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant73(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant74<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Box<Task>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant74(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant14<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Box<TypeSpec>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant14(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -4112,10 +4162,20 @@ mod __parse__Unit {
     fn __pop_Variant21<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Option<AccessVar>, usize)
+    ) -> (usize, Option<Box<AccessVar>>, usize)
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant21(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant36<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Option<Box<ConfigVar>>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant36(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -4129,6 +4189,16 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
+    fn __pop_Variant48<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Option<Box<Item>>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant48(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
     fn __pop_Variant60<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -4139,6 +4209,36 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
+    fn __pop_Variant76<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Option<Box<TypeDecl>>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant76(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant15<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Option<Box<TypeSpec>>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant15(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant80<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Option<Box<VarDecl>>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant80(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
     fn __pop_Variant67<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -4146,16 +4246,6 @@ mod __parse__Unit {
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant67(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant36<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Option<ConfigVar>, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant36(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -4199,16 +4289,6 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
-    fn __pop_Variant48<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Option<Item>, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant48(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
     fn __pop_Variant63<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -4229,33 +4309,13 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
-    fn __pop_Variant76<
+    fn __pop_Variant13<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Option<TypeDecl>, usize)
+    ) -> (usize, Option<Vec<Box<ParamAssign>>>, usize)
      {
         match __symbols.pop() {
-            Some((__l, __Symbol::Variant76(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant15<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Option<TypeSpec>, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant15(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant80<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Option<VarDecl>, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant80(__v), __r)) => (__l, __v, __r),
+            Some((__l, __Symbol::Variant13(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -4269,16 +4329,6 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
-    fn __pop_Variant13<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Option<Vec<ParamAssign>>, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant13(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
     fn __pop_Variant20<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -4286,26 +4336,6 @@ mod __parse__Unit {
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant20(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant65<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, ParamAssign, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant65(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant68<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Pou, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant68(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -4349,16 +4379,6 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
-    fn __pop_Variant73<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Subrange, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant73(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
     fn __pop_Variant72<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -4369,16 +4389,6 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
-    fn __pop_Variant74<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Task, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant74(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
     fn __pop_Variant0<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -4386,16 +4396,6 @@ mod __parse__Unit {
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant0(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant14<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, TypeSpec, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant14(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -4449,16 +4449,6 @@ mod __parse__Unit {
             _ => __symbol_type_mismatch()
         }
     }
-    fn __pop_Variant26<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Vec<(Option<Literal>, Initializer)>, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant26(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
     fn __pop_Variant58<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
@@ -4466,6 +4456,36 @@ mod __parse__Unit {
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant58(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant26<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Vec<Box<(Option<Literal>, Initializer)>>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant26(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant12<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Vec<Box<ParamAssign>>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant12(__v), __r)) => (__l, __v, __r),
+            _ => __symbol_type_mismatch()
+        }
+    }
+    fn __pop_Variant32<
+    >(
+        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
+    ) -> (usize, Vec<Box<Subrange>>, usize)
+     {
+        match __symbols.pop() {
+            Some((__l, __Symbol::Variant32(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -4522,7 +4542,7 @@ mod __parse__Unit {
     fn __pop_Variant50<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Vec<Option<AccessVar>>, usize)
+    ) -> (usize, Vec<Option<Box<AccessVar>>>, usize)
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant50(__v), __r)) => (__l, __v, __r),
@@ -4532,7 +4552,7 @@ mod __parse__Unit {
     fn __pop_Variant52<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Vec<Option<ConfigVar>>, usize)
+    ) -> (usize, Vec<Option<Box<ConfigVar>>>, usize)
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant52(__v), __r)) => (__l, __v, __r),
@@ -4542,7 +4562,7 @@ mod __parse__Unit {
     fn __pop_Variant54<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Vec<Option<Item>>, usize)
+    ) -> (usize, Vec<Option<Box<Item>>>, usize)
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant54(__v), __r)) => (__l, __v, __r),
@@ -4552,7 +4572,7 @@ mod __parse__Unit {
     fn __pop_Variant56<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Vec<Option<TypeDecl>>, usize)
+    ) -> (usize, Vec<Option<Box<TypeDecl>>>, usize)
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant56(__v), __r)) => (__l, __v, __r),
@@ -4562,20 +4582,10 @@ mod __parse__Unit {
     fn __pop_Variant57<
     >(
         __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Vec<Option<VarDecl>>, usize)
+    ) -> (usize, Vec<Option<Box<VarDecl>>>, usize)
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant57(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant12<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Vec<ParamAssign>, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant12(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -4586,16 +4596,6 @@ mod __parse__Unit {
      {
         match __symbols.pop() {
             Some((__l, __Symbol::Variant49(__v), __r)) => (__l, __v, __r),
-            _ => __symbol_type_mismatch()
-        }
-    }
-    fn __pop_Variant32<
-    >(
-        __symbols: &mut alloc::vec::Vec<(usize,__Symbol<>,usize)>
-    ) -> (usize, Vec<Subrange>, usize)
-     {
-        match __symbols.pop() {
-            Some((__l, __Symbol::Variant32(__v), __r)) => (__l, __v, __r),
             _ => __symbol_type_mismatch()
         }
     }
@@ -8566,10 +8566,10 @@ fn __action1<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, items, _): (usize, Vec<Option<Item>>, usize),
+    (_, items, _): (usize, Vec<Option<Box<Item>>>, usize),
 ) -> CompilationUnit
 {
-    CompilationUnit { items: items.into_iter().flatten().collect() }
+    CompilationUnit { items: items.into_iter().flatten().map(|i| *i).collect() }
 }
 
 #[allow(unused_variables)]
@@ -8578,10 +8578,10 @@ fn __action2<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, p, _): (usize, Pou, usize),
-) -> Option<Item>
+    (_, p, _): (usize, Box<Pou>, usize),
+) -> Option<Box<Item>>
 {
-    Some(Item::Pou(p))
+    Some(Box::new(Item::Pou(*p)))
 }
 
 #[allow(unused_variables)]
@@ -8591,9 +8591,9 @@ fn __action3<
 >(
     ctx: &'c mut Ctx,
     (_, t, _): (usize, Vec<TypeDecl>, usize),
-) -> Option<Item>
+) -> Option<Box<Item>>
 {
-    Some(Item::Types(t))
+    Some(Box::new(Item::Types(t)))
 }
 
 #[allow(unused_variables)]
@@ -8603,9 +8603,9 @@ fn __action4<
 >(
     ctx: &'c mut Ctx,
     (_, c, _): (usize, Configuration, usize),
-) -> Option<Item>
+) -> Option<Box<Item>>
 {
-    Some(Item::Configuration(c))
+    Some(Box::new(Item::Configuration(c)))
 }
 
 #[allow(unused_variables)]
@@ -8619,7 +8619,7 @@ fn __action5<
     (_, els, _): (usize, Vec<Elem>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, hi, _): (usize, usize, usize),
-) -> Option<Item>
+) -> Option<Box<Item>>
 {
     {
         build::orphan(ctx, sp(lo, hi), els);
@@ -8651,13 +8651,13 @@ fn __action7<
     (_, k, _): (usize, PouKind, usize),
     (_, klo, _): (usize, usize, usize),
     (_, name, _): (usize, Ident, usize),
-    (_, ret, _): (usize, Option<TypeSpec>, usize),
+    (_, ret, _): (usize, Option<Box<TypeSpec>>, usize),
     (_, els, _): (usize, alloc::vec::Vec<Elem>, usize),
     (_, end, _): (usize, Option<(PouKind, Span)>, usize),
     (_, hi, _): (usize, usize, usize),
-) -> Pou
+) -> Box<Pou>
 {
-    build::pou(ctx, k, sp(lo, klo), Some(name), ret, els, end, sp(lo, hi))
+    Box::new(build::pou(ctx, k, sp(lo, klo), Some(name), ret.map(|t| *t), els, end, sp(lo, hi)))
 }
 
 #[allow(unused_variables)]
@@ -9061,11 +9061,11 @@ fn __action33<
 >(
     ctx: &'c mut Ctx,
     (_, _, _): (usize, Tok, usize),
-    (_, __0, _): (usize, Vec<ParamAssign>, usize),
+    (_, __0, _): (usize, Vec<Box<ParamAssign>>, usize),
     (_, _, _): (usize, Tok, usize),
 ) -> CallArgs
 {
-    CallArgs::Formal(__0)
+    CallArgs::Formal(build::unbox(__0))
 }
 
 #[allow(unused_variables)]
@@ -9093,9 +9093,9 @@ fn __action35<
     (_, _, _): (usize, Tok, usize),
     (_, o, _): (usize, Operand, usize),
     (_, hi, _): (usize, usize, usize),
-) -> ParamAssign
+) -> Box<ParamAssign>
 {
-    ParamAssign { name, kind: ParamKind::Input(o), span: sp(lo, hi) }
+    Box::new(ParamAssign { name, kind: ParamKind::Input(o), span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
@@ -9109,9 +9109,9 @@ fn __action36<
     (_, _, _): (usize, Tok, usize),
     (_, o, _): (usize, Operand, usize),
     (_, hi, _): (usize, usize, usize),
-) -> ParamAssign
+) -> Box<ParamAssign>
 {
-    ParamAssign { name, kind: ParamKind::Output { negate: false, target: o }, span: sp(lo, hi) }
+    Box::new(ParamAssign { name, kind: ParamKind::Output { negate: false, target: o }, span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
@@ -9126,9 +9126,9 @@ fn __action37<
     (_, _, _): (usize, Tok, usize),
     (_, o, _): (usize, Operand, usize),
     (_, hi, _): (usize, usize, usize),
-) -> ParamAssign
+) -> Box<ParamAssign>
 {
-    ParamAssign { name, kind: ParamKind::Output { negate: true, target: o }, span: sp(lo, hi) }
+    Box::new(ParamAssign { name, kind: ParamKind::Output { negate: true, target: o }, span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
@@ -9346,7 +9346,7 @@ fn __action53<
     (_, lo, _): (usize, usize, usize),
     (_, k, _): (usize, VarKind, usize),
     (_, q, _): (usize, Vec<(Tok, Span)>, usize),
-    (_, decls, _): (usize, Vec<Option<VarDecl>>, usize),
+    (_, decls, _): (usize, Vec<Option<Box<VarDecl>>>, usize),
     (_, closed, _): (usize, bool, usize),
     (_, hi, _): (usize, usize, usize),
 ) -> VarBlock
@@ -9430,14 +9430,14 @@ fn __action59<
     (_, names, _): (usize, Vec<Ident>, usize),
     (_, loc, _): (usize, Option<Box<DirectAddress>>, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, ty, _): (usize, TypeSpec, usize),
+    (_, ty, _): (usize, Box<TypeSpec>, usize),
     (_, edge, _): (usize, Option<Edge>, usize),
     (_, init, _): (usize, Option<Initializer>, usize),
     (_, hi, _): (usize, usize, usize),
     (_, _, _): (usize, Tok, usize),
-) -> Option<VarDecl>
+) -> Option<Box<VarDecl>>
 {
-    Some(VarDecl { names, location: loc.map(|a| *a), ty, edge, init, span: sp(lo, hi) })
+    Some(Box::new(VarDecl { names, location: loc.map(|a| *a), ty: *ty, edge, init, span: sp(lo, hi) }))
 }
 
 #[allow(unused_variables)]
@@ -9448,7 +9448,7 @@ fn __action60<
     ctx: &'c mut Ctx,
     (_, e, _): (usize, __lalrpop_util::ErrorRecovery<usize, Tok, LexError>, usize),
     (_, _, _): (usize, Tok, usize),
-) -> Option<VarDecl>
+) -> Option<Box<VarDecl>>
 {
     {
         ctx.errors.push(e);
@@ -9487,9 +9487,9 @@ fn __action63<
 >(
     ctx: &'c mut Ctx,
     (_, n, _): (usize, Ident, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
-    TypeSpec::Named(n)
+    Box::new(TypeSpec::Named(n))
 }
 
 #[allow(unused_variables)]
@@ -9501,12 +9501,12 @@ fn __action64<
     (_, lo, _): (usize, usize, usize),
     (_, base, _): (usize, Ident, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, range, _): (usize, Subrange, usize),
+    (_, range, _): (usize, Box<Subrange>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, hi, _): (usize, usize, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
-    TypeSpec::Subrange { base, range, span: sp(lo, hi) }
+    Box::new(TypeSpec::Subrange { base, range: *range, span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
@@ -9519,9 +9519,9 @@ fn __action65<
     (_, _, _): (usize, Tok, usize),
     (_, len, _): (usize, Option<ConstExpr>, usize),
     (_, hi, _): (usize, usize, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
-    TypeSpec::String { wide: false, len, span: sp(lo, hi) }
+    Box::new(TypeSpec::String { wide: false, len, span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
@@ -9534,9 +9534,9 @@ fn __action66<
     (_, _, _): (usize, Tok, usize),
     (_, len, _): (usize, Option<ConstExpr>, usize),
     (_, hi, _): (usize, usize, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
-    TypeSpec::String { wide: true, len, span: sp(lo, hi) }
+    Box::new(TypeSpec::String { wide: true, len, span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
@@ -9548,14 +9548,14 @@ fn __action67<
     (_, lo, _): (usize, usize, usize),
     (_, _, _): (usize, Tok, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, dims, _): (usize, Vec<Subrange>, usize),
+    (_, dims, _): (usize, Vec<Box<Subrange>>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, elem, _): (usize, TypeSpec, usize),
+    (_, elem, _): (usize, Box<TypeSpec>, usize),
     (_, hi, _): (usize, usize, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
-    TypeSpec::Array { dims, elem: Box::new(elem), span: sp(lo, hi) }
+    Box::new(TypeSpec::Array { dims: build::unbox(dims), elem, span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
@@ -9569,9 +9569,9 @@ fn __action68<
     (_, values, _): (usize, Vec<EnumValue>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, hi, _): (usize, usize, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
-    TypeSpec::Enum { values, span: sp(lo, hi) }
+    Box::new(TypeSpec::Enum { values, span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
@@ -9582,12 +9582,12 @@ fn __action69<
     ctx: &'c mut Ctx,
     (_, lo, _): (usize, usize, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, fields, _): (usize, Vec<Option<VarDecl>>, usize),
+    (_, fields, _): (usize, Vec<Option<Box<VarDecl>>>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, hi, _): (usize, usize, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
-    TypeSpec::Struct { fields: fields.into_iter().flatten().collect(), span: sp(lo, hi) }
+    Box::new(TypeSpec::Struct { fields: fields.into_iter().flatten().map(|d| *d).collect(), span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
@@ -9629,9 +9629,9 @@ fn __action72<
     (_, _, _): (usize, Tok, usize),
     (_, b, _): (usize, ConstExpr, usize),
     (_, hi, _): (usize, usize, usize),
-) -> Subrange
+) -> Box<Subrange>
 {
-    Subrange { lo: a, hi: b, span: sp(lo, hi) }
+    Box::new(Subrange { lo: a, hi: b, span: sp(lo, hi) })
 }
 
 #[allow(unused_variables)]
@@ -9691,12 +9691,12 @@ fn __action77<
     ctx: &'c mut Ctx,
     (_, lo, _): (usize, usize, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, elems, _): (usize, Vec<(Option<Literal>, Initializer)>, usize),
+    (_, elems, _): (usize, Vec<Box<(Option<Literal>, Initializer)>>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, hi, _): (usize, usize, usize),
 ) -> Initializer
 {
-    Initializer::Array { elems, span: sp(lo, hi) }
+    Initializer::Array { elems: build::unbox(elems), span: sp(lo, hi) }
 }
 
 #[allow(unused_variables)]
@@ -9722,9 +9722,9 @@ fn __action79<
 >(
     ctx: &'c mut Ctx,
     (_, i, _): (usize, Initializer, usize),
-) -> (Option<Literal>, Initializer)
+) -> Box<(Option<Literal>, Initializer)>
 {
-    (None, i)
+    Box::new((None, i))
 }
 
 #[allow(unused_variables)]
@@ -9737,9 +9737,9 @@ fn __action80<
     (_, _, _): (usize, Tok, usize),
     (_, i, _): (usize, Initializer, usize),
     (_, _, _): (usize, Tok, usize),
-) -> (Option<Literal>, Initializer)
+) -> Box<(Option<Literal>, Initializer)>
 {
-    build::repeat(ctx, *n, i)
+    Box::new(build::repeat(ctx, *n, i))
 }
 
 #[allow(unused_variables)]
@@ -9763,11 +9763,11 @@ fn __action82<
 >(
     ctx: &'c mut Ctx,
     (_, _, _): (usize, Tok, usize),
-    (_, decls, _): (usize, Vec<Option<TypeDecl>>, usize),
+    (_, decls, _): (usize, Vec<Option<Box<TypeDecl>>>, usize),
     (_, _, _): (usize, Tok, usize),
 ) -> Vec<TypeDecl>
 {
-    decls.into_iter().flatten().collect()
+    decls.into_iter().flatten().map(|d| *d).collect()
 }
 
 #[allow(unused_variables)]
@@ -9779,13 +9779,13 @@ fn __action83<
     (_, lo, _): (usize, usize, usize),
     (_, name, _): (usize, Ident, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, spec, _): (usize, TypeSpec, usize),
+    (_, spec, _): (usize, Box<TypeSpec>, usize),
     (_, init, _): (usize, Option<Initializer>, usize),
     (_, hi, _): (usize, usize, usize),
     (_, _, _): (usize, Tok, usize),
-) -> Option<TypeDecl>
+) -> Option<Box<TypeDecl>>
 {
-    Some(TypeDecl { name, spec, init, span: sp(lo, hi) })
+    Some(Box::new(TypeDecl { name, spec: *spec, init, span: sp(lo, hi) }))
 }
 
 #[allow(unused_variables)]
@@ -9796,7 +9796,7 @@ fn __action84<
     ctx: &'c mut Ctx,
     (_, e, _): (usize, __lalrpop_util::ErrorRecovery<usize, Tok, LexError>, usize),
     (_, _, _): (usize, Tok, usize),
-) -> Option<TypeDecl>
+) -> Option<Box<TypeDecl>>
 {
     {
         ctx.errors.push(e);
@@ -9841,12 +9841,12 @@ fn __action87<
     ctx: &'c mut Ctx,
     (_, lo, _): (usize, usize, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, decls, _): (usize, Vec<Option<ConfigVar>>, usize),
+    (_, decls, _): (usize, Vec<Option<Box<ConfigVar>>>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, hi, _): (usize, usize, usize),
 ) -> CfgElem
 {
-    CfgElem::VarConfig(decls.into_iter().flatten().collect(), sp(lo, hi))
+    CfgElem::VarConfig(decls.into_iter().flatten().map(|d| *d).collect(), sp(lo, hi))
 }
 
 #[allow(unused_variables)]
@@ -9857,12 +9857,12 @@ fn __action88<
     ctx: &'c mut Ctx,
     (_, lo, _): (usize, usize, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, decls, _): (usize, Vec<Option<AccessVar>>, usize),
+    (_, decls, _): (usize, Vec<Option<Box<AccessVar>>>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, hi, _): (usize, usize, usize),
 ) -> CfgElem
 {
-    CfgElem::VarAccess(decls.into_iter().flatten().collect(), sp(lo, hi))
+    CfgElem::VarAccess(decls.into_iter().flatten().map(|d| *d).collect(), sp(lo, hi))
 }
 
 #[allow(unused_variables)]
@@ -9889,7 +9889,7 @@ fn __action90<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, t, _): (usize, Task, usize),
+    (_, t, _): (usize, Box<Task>, usize),
 ) -> CfgElem
 {
     CfgElem::Task(t)
@@ -9945,13 +9945,13 @@ fn __action94<
     (_, path, _): (usize, VarRef, usize),
     (_, location, _): (usize, Option<Box<DirectAddress>>, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, ty, _): (usize, TypeSpec, usize),
+    (_, ty, _): (usize, Box<TypeSpec>, usize),
     (_, init, _): (usize, Option<Initializer>, usize),
     (_, hi, _): (usize, usize, usize),
     (_, _, _): (usize, Tok, usize),
-) -> Option<ConfigVar>
+) -> Option<Box<ConfigVar>>
 {
-    Some(ConfigVar { path, location: location.map(|a| *a), ty, init, span: sp(lo, hi) })
+    Some(Box::new(ConfigVar { path, location: location.map(|a| *a), ty: *ty, init, span: sp(lo, hi) }))
 }
 
 #[allow(unused_variables)]
@@ -9962,7 +9962,7 @@ fn __action95<
     ctx: &'c mut Ctx,
     (_, e, _): (usize, __lalrpop_util::ErrorRecovery<usize, Tok, LexError>, usize),
     (_, _, _): (usize, Tok, usize),
-) -> Option<ConfigVar>
+) -> Option<Box<ConfigVar>>
 {
     {
         ctx.errors.push(e);
@@ -9981,13 +9981,13 @@ fn __action96<
     (_, _, _): (usize, Tok, usize),
     (_, path, _): (usize, VarRef, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, ty, _): (usize, TypeSpec, usize),
+    (_, ty, _): (usize, Box<TypeSpec>, usize),
     (_, dir, _): (usize, Option<bool>, usize),
     (_, hi, _): (usize, usize, usize),
     (_, _, _): (usize, Tok, usize),
-) -> Option<AccessVar>
+) -> Option<Box<AccessVar>>
 {
-    Some(AccessVar { name, path, ty, writable: dir.unwrap_or(false), span: sp(lo, hi) })
+    Some(Box::new(AccessVar { name, path, ty: *ty, writable: dir.unwrap_or(false), span: sp(lo, hi) }))
 }
 
 #[allow(unused_variables)]
@@ -9998,7 +9998,7 @@ fn __action97<
     ctx: &'c mut Ctx,
     (_, e, _): (usize, __lalrpop_util::ErrorRecovery<usize, Tok, LexError>, usize),
     (_, _, _): (usize, Tok, usize),
-) -> Option<AccessVar>
+) -> Option<Box<AccessVar>>
 {
     {
         ctx.errors.push(e);
@@ -10044,9 +10044,9 @@ fn __action100<
     (_, _, _): (usize, Tok, usize),
     (_, hi, _): (usize, usize, usize),
     (_, _, _): (usize, Tok, usize),
-) -> Task
+) -> Box<Task>
 {
-    build::task(ctx, name, params, sp(lo, hi))
+    Box::new(build::task(ctx, name, params, sp(lo, hi)))
 }
 
 #[allow(unused_variables)]
@@ -10077,12 +10077,12 @@ fn __action102<
     (_, task, _): (usize, Option<Ident>, usize),
     (_, _, _): (usize, Tok, usize),
     (_, program, _): (usize, Ident, usize),
-    (_, args, _): (usize, Option<Vec<ParamAssign>>, usize),
+    (_, args, _): (usize, Option<Vec<Box<ParamAssign>>>, usize),
     (_, hi, _): (usize, usize, usize),
     (_, _, _): (usize, Tok, usize),
 ) -> ProgramInstance
 {
-    build::program_instance(ctx, k, sp(lo, klo), r, name, task, program, args, sp(lo, hi))
+    build::program_instance(ctx, k, sp(lo, klo), r, name, task, program, args.map(build::unbox), sp(lo, hi))
 }
 
 #[allow(unused_variables)]
@@ -10115,8 +10115,8 @@ fn __action105<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, __0, _): (usize, Vec<ParamAssign>, usize),
-) -> Option<Vec<ParamAssign>>
+    (_, __0, _): (usize, Vec<Box<ParamAssign>>, usize),
+) -> Option<Vec<Box<ParamAssign>>>
 {
     Some(__0)
 }
@@ -10129,7 +10129,7 @@ fn __action106<
     ctx: &'c mut Ctx,
     __lookbehind: &usize,
     __lookahead: &usize,
-) -> Option<Vec<ParamAssign>>
+) -> Option<Vec<Box<ParamAssign>>>
 {
     None
 }
@@ -10141,9 +10141,9 @@ fn __action107<
 >(
     ctx: &'c mut Ctx,
     (_, _, _): (usize, Tok, usize),
-    (_, __0, _): (usize, Vec<ParamAssign>, usize),
+    (_, __0, _): (usize, Vec<Box<ParamAssign>>, usize),
     (_, _, _): (usize, Tok, usize),
-) -> Vec<ParamAssign>
+) -> Vec<Box<ParamAssign>>
 {
     __0
 }
@@ -10311,7 +10311,7 @@ fn __action120<
     ctx: &'c mut Ctx,
     __lookbehind: &usize,
     __lookahead: &usize,
-) -> Vec<Option<AccessVar>>
+) -> Vec<Option<Box<AccessVar>>>
 {
     Vec::new()
 }
@@ -10322,9 +10322,9 @@ fn __action121<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, mut v, _): (usize, Vec<Option<AccessVar>>, usize),
-    (_, e, _): (usize, Option<AccessVar>, usize),
-) -> Vec<Option<AccessVar>>
+    (_, mut v, _): (usize, Vec<Option<Box<AccessVar>>>, usize),
+    (_, e, _): (usize, Option<Box<AccessVar>>, usize),
+) -> Vec<Option<Box<AccessVar>>>
 {
     {
         v.push(e);
@@ -10340,7 +10340,7 @@ fn __action122<
     ctx: &'c mut Ctx,
     __lookbehind: &usize,
     __lookahead: &usize,
-) -> Vec<Option<ConfigVar>>
+) -> Vec<Option<Box<ConfigVar>>>
 {
     Vec::new()
 }
@@ -10351,9 +10351,9 @@ fn __action123<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, mut v, _): (usize, Vec<Option<ConfigVar>>, usize),
-    (_, e, _): (usize, Option<ConfigVar>, usize),
-) -> Vec<Option<ConfigVar>>
+    (_, mut v, _): (usize, Vec<Option<Box<ConfigVar>>>, usize),
+    (_, e, _): (usize, Option<Box<ConfigVar>>, usize),
+) -> Vec<Option<Box<ConfigVar>>>
 {
     {
         v.push(e);
@@ -10398,7 +10398,7 @@ fn __action126<
     ctx: &'c mut Ctx,
     __lookbehind: &usize,
     __lookahead: &usize,
-) -> Vec<Option<TypeDecl>>
+) -> Vec<Option<Box<TypeDecl>>>
 {
     Vec::new()
 }
@@ -10409,9 +10409,9 @@ fn __action127<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, mut v, _): (usize, Vec<Option<TypeDecl>>, usize),
-    (_, e, _): (usize, Option<TypeDecl>, usize),
-) -> Vec<Option<TypeDecl>>
+    (_, mut v, _): (usize, Vec<Option<Box<TypeDecl>>>, usize),
+    (_, e, _): (usize, Option<Box<TypeDecl>>, usize),
+) -> Vec<Option<Box<TypeDecl>>>
 {
     {
         v.push(e);
@@ -10454,8 +10454,8 @@ fn __action130<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, e, _): (usize, (Option<Literal>, Initializer), usize),
-) -> Vec<(Option<Literal>, Initializer)>
+    (_, e, _): (usize, Box<(Option<Literal>, Initializer)>, usize),
+) -> Vec<Box<(Option<Literal>, Initializer)>>
 {
     vec![e]
 }
@@ -10466,10 +10466,10 @@ fn __action131<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, mut v, _): (usize, Vec<(Option<Literal>, Initializer)>, usize),
+    (_, mut v, _): (usize, Vec<Box<(Option<Literal>, Initializer)>>, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, e, _): (usize, (Option<Literal>, Initializer), usize),
-) -> Vec<(Option<Literal>, Initializer)>
+    (_, e, _): (usize, Box<(Option<Literal>, Initializer)>, usize),
+) -> Vec<Box<(Option<Literal>, Initializer)>>
 {
     {
         v.push(e);
@@ -10550,8 +10550,8 @@ fn __action137<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, e, _): (usize, Subrange, usize),
-) -> Vec<Subrange>
+    (_, e, _): (usize, Box<Subrange>, usize),
+) -> Vec<Box<Subrange>>
 {
     vec![e]
 }
@@ -10562,10 +10562,10 @@ fn __action138<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, mut v, _): (usize, Vec<Subrange>, usize),
+    (_, mut v, _): (usize, Vec<Box<Subrange>>, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, e, _): (usize, Subrange, usize),
-) -> Vec<Subrange>
+    (_, e, _): (usize, Box<Subrange>, usize),
+) -> Vec<Box<Subrange>>
 {
     {
         v.push(e);
@@ -10736,7 +10736,7 @@ fn __action151<
     ctx: &'c mut Ctx,
     __lookbehind: &usize,
     __lookahead: &usize,
-) -> Vec<Option<VarDecl>>
+) -> Vec<Option<Box<VarDecl>>>
 {
     Vec::new()
 }
@@ -10747,9 +10747,9 @@ fn __action152<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, mut v, _): (usize, Vec<Option<VarDecl>>, usize),
-    (_, e, _): (usize, Option<VarDecl>, usize),
-) -> Vec<Option<VarDecl>>
+    (_, mut v, _): (usize, Vec<Option<Box<VarDecl>>>, usize),
+    (_, e, _): (usize, Option<Box<VarDecl>>, usize),
+) -> Vec<Option<Box<VarDecl>>>
 {
     {
         v.push(e);
@@ -10846,8 +10846,8 @@ fn __action159<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, e, _): (usize, ParamAssign, usize),
-) -> Vec<ParamAssign>
+    (_, e, _): (usize, Box<ParamAssign>, usize),
+) -> Vec<Box<ParamAssign>>
 {
     vec![e]
 }
@@ -10858,10 +10858,10 @@ fn __action160<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, mut v, _): (usize, Vec<ParamAssign>, usize),
+    (_, mut v, _): (usize, Vec<Box<ParamAssign>>, usize),
     (_, _, _): (usize, Tok, usize),
-    (_, e, _): (usize, ParamAssign, usize),
-) -> Vec<ParamAssign>
+    (_, e, _): (usize, Box<ParamAssign>, usize),
+) -> Vec<Box<ParamAssign>>
 {
     {
         v.push(e);
@@ -11083,8 +11083,8 @@ fn __action177<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, __0, _): (usize, TypeSpec, usize),
-) -> Option<TypeSpec>
+    (_, __0, _): (usize, Box<TypeSpec>, usize),
+) -> Option<Box<TypeSpec>>
 {
     Some(__0)
 }
@@ -11097,7 +11097,7 @@ fn __action178<
     ctx: &'c mut Ctx,
     __lookbehind: &usize,
     __lookahead: &usize,
-) -> Option<TypeSpec>
+) -> Option<Box<TypeSpec>>
 {
     None
 }
@@ -11109,8 +11109,8 @@ fn __action179<
 >(
     ctx: &'c mut Ctx,
     (_, _, _): (usize, Tok, usize),
-    (_, __0, _): (usize, TypeSpec, usize),
-) -> TypeSpec
+    (_, __0, _): (usize, Box<TypeSpec>, usize),
+) -> Box<TypeSpec>
 {
     __0
 }
@@ -11178,7 +11178,7 @@ fn __action184<
     ctx: &'c mut Ctx,
     __lookbehind: &usize,
     __lookahead: &usize,
-) -> Vec<Option<Item>>
+) -> Vec<Option<Box<Item>>>
 {
     Vec::new()
 }
@@ -11189,9 +11189,9 @@ fn __action185<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, mut v, _): (usize, Vec<Option<Item>>, usize),
-    (_, e, _): (usize, Option<Item>, usize),
-) -> Vec<Option<Item>>
+    (_, mut v, _): (usize, Vec<Option<Box<Item>>>, usize),
+    (_, e, _): (usize, Option<Box<Item>>, usize),
+) -> Vec<Option<Box<Item>>>
 {
     {
         v.push(e);
@@ -11257,9 +11257,9 @@ fn __action190<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, Vec<ParamAssign>, usize),
+    __1: (usize, Vec<Box<ParamAssign>>, usize),
     __2: (usize, Tok, usize),
-) -> Option<Vec<ParamAssign>>
+) -> Option<Vec<Box<ParamAssign>>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __2.2.clone();
@@ -11292,7 +11292,7 @@ fn __action191<
     __6: (usize, Tok, usize),
     __7: (usize, Ident, usize),
     __8: (usize, Tok, usize),
-    __9: (usize, Vec<ParamAssign>, usize),
+    __9: (usize, Vec<Box<ParamAssign>>, usize),
     __10: (usize, Tok, usize),
     __11: (usize, usize, usize),
     __12: (usize, Tok, usize),
@@ -11374,8 +11374,8 @@ fn __action193<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, TypeSpec, usize),
-) -> Option<TypeSpec>
+    __1: (usize, Box<TypeSpec>, usize),
+) -> Option<Box<TypeSpec>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __1.2.clone();
@@ -11403,11 +11403,11 @@ fn __action194<
     __2: (usize, usize, usize),
     __3: (usize, Ident, usize),
     __4: (usize, Tok, usize),
-    __5: (usize, TypeSpec, usize),
+    __5: (usize, Box<TypeSpec>, usize),
     __6: (usize, alloc::vec::Vec<Elem>, usize),
     __7: (usize, Option<(PouKind, Span)>, usize),
     __8: (usize, usize, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __4.0.clone();
     let __end0 = __5.2.clone();
@@ -11444,7 +11444,7 @@ fn __action195<
     __4: (usize, alloc::vec::Vec<Elem>, usize),
     __5: (usize, Option<(PouKind, Span)>, usize),
     __6: (usize, usize, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __3.2.clone();
     let __end0 = __4.0.clone();
@@ -11503,12 +11503,12 @@ fn __action197<
     __1: (usize, VarRef, usize),
     __2: (usize, Option<Box<DirectAddress>>, usize),
     __3: (usize, Tok, usize),
-    __4: (usize, TypeSpec, usize),
+    __4: (usize, Box<TypeSpec>, usize),
     __5: (usize, Tok, usize),
     __6: (usize, Initializer, usize),
     __7: (usize, usize, usize),
     __8: (usize, Tok, usize),
-) -> Option<ConfigVar>
+) -> Option<Box<ConfigVar>>
 {
     let __start0 = __5.0.clone();
     let __end0 = __6.2.clone();
@@ -11542,10 +11542,10 @@ fn __action198<
     __1: (usize, VarRef, usize),
     __2: (usize, Option<Box<DirectAddress>>, usize),
     __3: (usize, Tok, usize),
-    __4: (usize, TypeSpec, usize),
+    __4: (usize, Box<TypeSpec>, usize),
     __5: (usize, usize, usize),
     __6: (usize, Tok, usize),
-) -> Option<ConfigVar>
+) -> Option<Box<ConfigVar>>
 {
     let __start0 = __4.2.clone();
     let __end0 = __5.0.clone();
@@ -11578,12 +11578,12 @@ fn __action199<
     __0: (usize, usize, usize),
     __1: (usize, Ident, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Tok, usize),
     __5: (usize, Initializer, usize),
     __6: (usize, usize, usize),
     __7: (usize, Tok, usize),
-) -> Option<TypeDecl>
+) -> Option<Box<TypeDecl>>
 {
     let __start0 = __4.0.clone();
     let __end0 = __5.2.clone();
@@ -11615,10 +11615,10 @@ fn __action200<
     __0: (usize, usize, usize),
     __1: (usize, Ident, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, usize, usize),
     __5: (usize, Tok, usize),
-) -> Option<TypeDecl>
+) -> Option<Box<TypeDecl>>
 {
     let __start0 = __3.2.clone();
     let __end0 = __4.0.clone();
@@ -11651,13 +11651,13 @@ fn __action201<
     __1: (usize, Vec<Ident>, usize),
     __2: (usize, Option<Box<DirectAddress>>, usize),
     __3: (usize, Tok, usize),
-    __4: (usize, TypeSpec, usize),
+    __4: (usize, Box<TypeSpec>, usize),
     __5: (usize, Option<Edge>, usize),
     __6: (usize, Tok, usize),
     __7: (usize, Initializer, usize),
     __8: (usize, usize, usize),
     __9: (usize, Tok, usize),
-) -> Option<VarDecl>
+) -> Option<Box<VarDecl>>
 {
     let __start0 = __6.0.clone();
     let __end0 = __7.2.clone();
@@ -11692,11 +11692,11 @@ fn __action202<
     __1: (usize, Vec<Ident>, usize),
     __2: (usize, Option<Box<DirectAddress>>, usize),
     __3: (usize, Tok, usize),
-    __4: (usize, TypeSpec, usize),
+    __4: (usize, Box<TypeSpec>, usize),
     __5: (usize, Option<Edge>, usize),
     __6: (usize, usize, usize),
     __7: (usize, Tok, usize),
-) -> Option<VarDecl>
+) -> Option<Box<VarDecl>>
 {
     let __start0 = __5.2.clone();
     let __end0 = __6.0.clone();
@@ -11831,11 +11831,11 @@ fn __action207<
     __1: (usize, Tok, usize),
     __2: (usize, VarRef, usize),
     __3: (usize, Tok, usize),
-    __4: (usize, TypeSpec, usize),
+    __4: (usize, Box<TypeSpec>, usize),
     __5: (usize, Option<bool>, usize),
     __6: (usize, usize, usize),
     __7: (usize, Tok, usize),
-) -> Option<AccessVar>
+) -> Option<Box<AccessVar>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -11927,7 +11927,7 @@ fn __action210<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, Vec<Option<ConfigVar>>, usize),
+    __1: (usize, Vec<Option<Box<ConfigVar>>>, usize),
     __2: (usize, Tok, usize),
     __3: (usize, usize, usize),
 ) -> CfgElem
@@ -11958,7 +11958,7 @@ fn __action211<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, Vec<Option<AccessVar>>, usize),
+    __1: (usize, Vec<Option<Box<AccessVar>>>, usize),
     __2: (usize, Tok, usize),
     __3: (usize, usize, usize),
 ) -> CfgElem
@@ -12059,12 +12059,12 @@ fn __action214<
     __0: (usize, VarRef, usize),
     __1: (usize, Option<Box<DirectAddress>>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Tok, usize),
     __5: (usize, Initializer, usize),
     __6: (usize, usize, usize),
     __7: (usize, Tok, usize),
-) -> Option<ConfigVar>
+) -> Option<Box<ConfigVar>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -12098,10 +12098,10 @@ fn __action215<
     __0: (usize, VarRef, usize),
     __1: (usize, Option<Box<DirectAddress>>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, usize, usize),
     __5: (usize, Tok, usize),
-) -> Option<ConfigVar>
+) -> Option<Box<ConfigVar>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -12212,7 +12212,7 @@ fn __action219<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, Vec<(Option<Literal>, Initializer)>, usize),
+    __1: (usize, Vec<Box<(Option<Literal>, Initializer)>>, usize),
     __2: (usize, Tok, usize),
     __3: (usize, usize, usize),
 ) -> Initializer
@@ -12726,7 +12726,7 @@ fn __action235<
     __1: (usize, Vec<Elem>, usize),
     __2: (usize, Tok, usize),
     __3: (usize, usize, usize),
-) -> Option<Item>
+) -> Option<Box<Item>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -12811,7 +12811,7 @@ fn __action238<
     __1: (usize, Tok, usize),
     __2: (usize, Operand, usize),
     __3: (usize, usize, usize),
-) -> ParamAssign
+) -> Box<ParamAssign>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -12842,7 +12842,7 @@ fn __action239<
     __1: (usize, Tok, usize),
     __2: (usize, Operand, usize),
     __3: (usize, usize, usize),
-) -> ParamAssign
+) -> Box<ParamAssign>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -12874,7 +12874,7 @@ fn __action240<
     __2: (usize, Tok, usize),
     __3: (usize, Operand, usize),
     __4: (usize, usize, usize),
-) -> ParamAssign
+) -> Box<ParamAssign>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -12906,11 +12906,11 @@ fn __action241<
     __1: (usize, usize, usize),
     __2: (usize, Ident, usize),
     __3: (usize, Tok, usize),
-    __4: (usize, TypeSpec, usize),
+    __4: (usize, Box<TypeSpec>, usize),
     __5: (usize, alloc::vec::Vec<Elem>, usize),
     __6: (usize, Option<(PouKind, Span)>, usize),
     __7: (usize, usize, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -12947,7 +12947,7 @@ fn __action242<
     __3: (usize, alloc::vec::Vec<Elem>, usize),
     __4: (usize, Option<(PouKind, Span)>, usize),
     __5: (usize, usize, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -12984,7 +12984,7 @@ fn __action243<
     __5: (usize, Tok, usize),
     __6: (usize, Ident, usize),
     __7: (usize, Tok, usize),
-    __8: (usize, Vec<ParamAssign>, usize),
+    __8: (usize, Vec<Box<ParamAssign>>, usize),
     __9: (usize, Tok, usize),
     __10: (usize, usize, usize),
     __11: (usize, Tok, usize),
@@ -13099,7 +13099,7 @@ fn __action246<
     __1: (usize, Tok, usize),
     __2: (usize, ConstExpr, usize),
     __3: (usize, usize, usize),
-) -> Subrange
+) -> Box<Subrange>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -13195,7 +13195,7 @@ fn __action249<
     __4: (usize, Tok, usize),
     __5: (usize, usize, usize),
     __6: (usize, Tok, usize),
-) -> Task
+) -> Box<Task>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -13227,12 +13227,12 @@ fn __action250<
     ctx: &'c mut Ctx,
     __0: (usize, Ident, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, TypeSpec, usize),
+    __2: (usize, Box<TypeSpec>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, Initializer, usize),
     __5: (usize, usize, usize),
     __6: (usize, Tok, usize),
-) -> Option<TypeDecl>
+) -> Option<Box<TypeDecl>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -13264,10 +13264,10 @@ fn __action251<
     ctx: &'c mut Ctx,
     __0: (usize, Ident, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, TypeSpec, usize),
+    __2: (usize, Box<TypeSpec>, usize),
     __3: (usize, usize, usize),
     __4: (usize, Tok, usize),
-) -> Option<TypeDecl>
+) -> Option<Box<TypeDecl>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -13297,10 +13297,10 @@ fn __action252<
     ctx: &'c mut Ctx,
     __0: (usize, Ident, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, Subrange, usize),
+    __2: (usize, Box<Subrange>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, usize, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -13331,7 +13331,7 @@ fn __action253<
     __0: (usize, Tok, usize),
     __1: (usize, Option<ConstExpr>, usize),
     __2: (usize, usize, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -13360,7 +13360,7 @@ fn __action254<
     __0: (usize, Tok, usize),
     __1: (usize, Option<ConstExpr>, usize),
     __2: (usize, usize, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -13388,12 +13388,12 @@ fn __action255<
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, Vec<Subrange>, usize),
+    __2: (usize, Vec<Box<Subrange>>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, Tok, usize),
-    __5: (usize, TypeSpec, usize),
+    __5: (usize, Box<TypeSpec>, usize),
     __6: (usize, usize, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -13427,7 +13427,7 @@ fn __action256<
     __1: (usize, Vec<EnumValue>, usize),
     __2: (usize, Tok, usize),
     __3: (usize, usize, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -13455,10 +13455,10 @@ fn __action257<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, Vec<Option<VarDecl>>, usize),
+    __1: (usize, Vec<Option<Box<VarDecl>>>, usize),
     __2: (usize, Tok, usize),
     __3: (usize, usize, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -13487,7 +13487,7 @@ fn __action258<
     ctx: &'c mut Ctx,
     __0: (usize, VarKind, usize),
     __1: (usize, Vec<(Tok, Span)>, usize),
-    __2: (usize, Vec<Option<VarDecl>>, usize),
+    __2: (usize, Vec<Option<Box<VarDecl>>>, usize),
     __3: (usize, bool, usize),
     __4: (usize, usize, usize),
 ) -> VarBlock
@@ -13521,13 +13521,13 @@ fn __action259<
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Option<Box<DirectAddress>>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Option<Edge>, usize),
     __5: (usize, Tok, usize),
     __6: (usize, Initializer, usize),
     __7: (usize, usize, usize),
     __8: (usize, Tok, usize),
-) -> Option<VarDecl>
+) -> Option<Box<VarDecl>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -13562,11 +13562,11 @@ fn __action260<
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Option<Box<DirectAddress>>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Option<Edge>, usize),
     __5: (usize, usize, usize),
     __6: (usize, Tok, usize),
-) -> Option<VarDecl>
+) -> Option<Box<VarDecl>>
 {
     let __start0 = __0.0.clone();
     let __end0 = __0.0.clone();
@@ -13710,10 +13710,10 @@ fn __action265<
     __1: (usize, Tok, usize),
     __2: (usize, VarRef, usize),
     __3: (usize, Tok, usize),
-    __4: (usize, TypeSpec, usize),
+    __4: (usize, Box<TypeSpec>, usize),
     __5: (usize, Option<bool>, usize),
     __6: (usize, Tok, usize),
-) -> Option<AccessVar>
+) -> Option<Box<AccessVar>>
 {
     let __start0 = __5.2.clone();
     let __end0 = __6.0.clone();
@@ -13800,7 +13800,7 @@ fn __action268<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, Vec<Option<ConfigVar>>, usize),
+    __1: (usize, Vec<Option<Box<ConfigVar>>>, usize),
     __2: (usize, Tok, usize),
 ) -> CfgElem
 {
@@ -13829,7 +13829,7 @@ fn __action269<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, Vec<Option<AccessVar>>, usize),
+    __1: (usize, Vec<Option<Box<AccessVar>>>, usize),
     __2: (usize, Tok, usize),
 ) -> CfgElem
 {
@@ -13924,11 +13924,11 @@ fn __action272<
     __0: (usize, VarRef, usize),
     __1: (usize, Option<Box<DirectAddress>>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Tok, usize),
     __5: (usize, Initializer, usize),
     __6: (usize, Tok, usize),
-) -> Option<ConfigVar>
+) -> Option<Box<ConfigVar>>
 {
     let __start0 = __5.2.clone();
     let __end0 = __6.0.clone();
@@ -13961,9 +13961,9 @@ fn __action273<
     __0: (usize, VarRef, usize),
     __1: (usize, Option<Box<DirectAddress>>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Tok, usize),
-) -> Option<ConfigVar>
+) -> Option<Box<ConfigVar>>
 {
     let __start0 = __3.2.clone();
     let __end0 = __4.0.clone();
@@ -14067,7 +14067,7 @@ fn __action277<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, Vec<(Option<Literal>, Initializer)>, usize),
+    __1: (usize, Vec<Box<(Option<Literal>, Initializer)>>, usize),
     __2: (usize, Tok, usize),
 ) -> Initializer
 {
@@ -14623,7 +14623,7 @@ fn __action293<
     __0: (usize, Tok, usize),
     __1: (usize, Vec<Elem>, usize),
     __2: (usize, Tok, usize),
-) -> Option<Item>
+) -> Option<Box<Item>>
 {
     let __start0 = __2.2.clone();
     let __end0 = __2.2.clone();
@@ -14702,7 +14702,7 @@ fn __action296<
     __0: (usize, Ident, usize),
     __1: (usize, Tok, usize),
     __2: (usize, Operand, usize),
-) -> ParamAssign
+) -> Box<ParamAssign>
 {
     let __start0 = __2.2.clone();
     let __end0 = __2.2.clone();
@@ -14731,7 +14731,7 @@ fn __action297<
     __0: (usize, Ident, usize),
     __1: (usize, Tok, usize),
     __2: (usize, Operand, usize),
-) -> ParamAssign
+) -> Box<ParamAssign>
 {
     let __start0 = __2.2.clone();
     let __end0 = __2.2.clone();
@@ -14761,7 +14761,7 @@ fn __action298<
     __1: (usize, Ident, usize),
     __2: (usize, Tok, usize),
     __3: (usize, Operand, usize),
-) -> ParamAssign
+) -> Box<ParamAssign>
 {
     let __start0 = __3.2.clone();
     let __end0 = __3.2.clone();
@@ -14791,10 +14791,10 @@ fn __action299<
     __0: (usize, PouKind, usize),
     __1: (usize, Ident, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, alloc::vec::Vec<Elem>, usize),
     __5: (usize, Option<(PouKind, Span)>, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __0.2.clone();
     let __end0 = __1.0.clone();
@@ -14836,7 +14836,7 @@ fn __action300<
     __1: (usize, Ident, usize),
     __2: (usize, alloc::vec::Vec<Elem>, usize),
     __3: (usize, Option<(PouKind, Span)>, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __0.2.clone();
     let __end0 = __1.0.clone();
@@ -14879,7 +14879,7 @@ fn __action301<
     __4: (usize, Tok, usize),
     __5: (usize, Ident, usize),
     __6: (usize, Tok, usize),
-    __7: (usize, Vec<ParamAssign>, usize),
+    __7: (usize, Vec<Box<ParamAssign>>, usize),
     __8: (usize, Tok, usize),
     __9: (usize, Tok, usize),
 ) -> ProgramInstance
@@ -15002,7 +15002,7 @@ fn __action304<
     __0: (usize, ConstExpr, usize),
     __1: (usize, Tok, usize),
     __2: (usize, ConstExpr, usize),
-) -> Subrange
+) -> Box<Subrange>
 {
     let __start0 = __2.2.clone();
     let __end0 = __2.2.clone();
@@ -15092,7 +15092,7 @@ fn __action307<
     __3: (usize, Vec<(Ident, Operand)>, usize),
     __4: (usize, Tok, usize),
     __5: (usize, Tok, usize),
-) -> Task
+) -> Box<Task>
 {
     let __start0 = __4.2.clone();
     let __end0 = __5.0.clone();
@@ -15123,11 +15123,11 @@ fn __action308<
     ctx: &'c mut Ctx,
     __0: (usize, Ident, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, TypeSpec, usize),
+    __2: (usize, Box<TypeSpec>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, Initializer, usize),
     __5: (usize, Tok, usize),
-) -> Option<TypeDecl>
+) -> Option<Box<TypeDecl>>
 {
     let __start0 = __4.2.clone();
     let __end0 = __5.0.clone();
@@ -15158,9 +15158,9 @@ fn __action309<
     ctx: &'c mut Ctx,
     __0: (usize, Ident, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, TypeSpec, usize),
+    __2: (usize, Box<TypeSpec>, usize),
     __3: (usize, Tok, usize),
-) -> Option<TypeDecl>
+) -> Option<Box<TypeDecl>>
 {
     let __start0 = __2.2.clone();
     let __end0 = __3.0.clone();
@@ -15189,9 +15189,9 @@ fn __action310<
     ctx: &'c mut Ctx,
     __0: (usize, Ident, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, Subrange, usize),
+    __2: (usize, Box<Subrange>, usize),
     __3: (usize, Tok, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __3.2.clone();
     let __end0 = __3.2.clone();
@@ -15220,7 +15220,7 @@ fn __action311<
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
     __1: (usize, Option<ConstExpr>, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __1.2.clone();
     let __end0 = __1.2.clone();
@@ -15247,7 +15247,7 @@ fn __action312<
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
     __1: (usize, Option<ConstExpr>, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __1.2.clone();
     let __end0 = __1.2.clone();
@@ -15274,11 +15274,11 @@ fn __action313<
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
     __1: (usize, Tok, usize),
-    __2: (usize, Vec<Subrange>, usize),
+    __2: (usize, Vec<Box<Subrange>>, usize),
     __3: (usize, Tok, usize),
     __4: (usize, Tok, usize),
-    __5: (usize, TypeSpec, usize),
-) -> TypeSpec
+    __5: (usize, Box<TypeSpec>, usize),
+) -> Box<TypeSpec>
 {
     let __start0 = __5.2.clone();
     let __end0 = __5.2.clone();
@@ -15310,7 +15310,7 @@ fn __action314<
     __0: (usize, Tok, usize),
     __1: (usize, Vec<EnumValue>, usize),
     __2: (usize, Tok, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __2.2.clone();
     let __end0 = __2.2.clone();
@@ -15337,9 +15337,9 @@ fn __action315<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-    __1: (usize, Vec<Option<VarDecl>>, usize),
+    __1: (usize, Vec<Option<Box<VarDecl>>>, usize),
     __2: (usize, Tok, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __2.2.clone();
     let __end0 = __2.2.clone();
@@ -15367,7 +15367,7 @@ fn __action316<
     ctx: &'c mut Ctx,
     __0: (usize, VarKind, usize),
     __1: (usize, Vec<(Tok, Span)>, usize),
-    __2: (usize, Vec<Option<VarDecl>>, usize),
+    __2: (usize, Vec<Option<Box<VarDecl>>>, usize),
     __3: (usize, bool, usize),
 ) -> VarBlock
 {
@@ -15399,12 +15399,12 @@ fn __action317<
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Option<Box<DirectAddress>>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Option<Edge>, usize),
     __5: (usize, Tok, usize),
     __6: (usize, Initializer, usize),
     __7: (usize, Tok, usize),
-) -> Option<VarDecl>
+) -> Option<Box<VarDecl>>
 {
     let __start0 = __6.2.clone();
     let __end0 = __7.0.clone();
@@ -15438,10 +15438,10 @@ fn __action318<
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Option<Box<DirectAddress>>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Option<Edge>, usize),
     __5: (usize, Tok, usize),
-) -> Option<VarDecl>
+) -> Option<Box<VarDecl>>
 {
     let __start0 = __4.2.clone();
     let __end0 = __5.0.clone();
@@ -15576,10 +15576,10 @@ fn __action323<
     __1: (usize, Tok, usize),
     __2: (usize, VarRef, usize),
     __3: (usize, Tok, usize),
-    __4: (usize, TypeSpec, usize),
+    __4: (usize, Box<TypeSpec>, usize),
     __5: (usize, bool, usize),
     __6: (usize, Tok, usize),
-) -> Option<AccessVar>
+) -> Option<Box<AccessVar>>
 {
     let __start0 = __5.0.clone();
     let __end0 = __5.2.clone();
@@ -15611,9 +15611,9 @@ fn __action324<
     __1: (usize, Tok, usize),
     __2: (usize, VarRef, usize),
     __3: (usize, Tok, usize),
-    __4: (usize, TypeSpec, usize),
+    __4: (usize, Box<TypeSpec>, usize),
     __5: (usize, Tok, usize),
-) -> Option<AccessVar>
+) -> Option<Box<AccessVar>>
 {
     let __start0 = __4.2.clone();
     let __end0 = __5.0.clone();
@@ -15745,12 +15745,12 @@ fn __action329<
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Option<Box<DirectAddress>>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Edge, usize),
     __5: (usize, Tok, usize),
     __6: (usize, Initializer, usize),
     __7: (usize, Tok, usize),
-) -> Option<VarDecl>
+) -> Option<Box<VarDecl>>
 {
     let __start0 = __4.0.clone();
     let __end0 = __4.2.clone();
@@ -15782,11 +15782,11 @@ fn __action330<
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Option<Box<DirectAddress>>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Tok, usize),
     __5: (usize, Initializer, usize),
     __6: (usize, Tok, usize),
-) -> Option<VarDecl>
+) -> Option<Box<VarDecl>>
 {
     let __start0 = __3.2.clone();
     let __end0 = __4.0.clone();
@@ -15819,10 +15819,10 @@ fn __action331<
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Option<Box<DirectAddress>>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Edge, usize),
     __5: (usize, Tok, usize),
-) -> Option<VarDecl>
+) -> Option<Box<VarDecl>>
 {
     let __start0 = __4.0.clone();
     let __end0 = __4.2.clone();
@@ -15852,9 +15852,9 @@ fn __action332<
     __0: (usize, Vec<Ident>, usize),
     __1: (usize, Option<Box<DirectAddress>>, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Tok, usize),
-) -> Option<VarDecl>
+) -> Option<Box<VarDecl>>
 {
     let __start0 = __3.2.clone();
     let __end0 = __4.0.clone();
@@ -15885,9 +15885,9 @@ fn __action333<
     __0: (usize, PouKind, usize),
     __1: (usize, Ident, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, Option<(PouKind, Span)>, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __3.2.clone();
     let __end0 = __4.0.clone();
@@ -15918,10 +15918,10 @@ fn __action334<
     __0: (usize, PouKind, usize),
     __1: (usize, Ident, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, alloc::vec::Vec<Elem>, usize),
     __5: (usize, Option<(PouKind, Span)>, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __4.0.clone();
     let __end0 = __4.2.clone();
@@ -15951,7 +15951,7 @@ fn __action335<
     __0: (usize, PouKind, usize),
     __1: (usize, Ident, usize),
     __2: (usize, Option<(PouKind, Span)>, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __1.2.clone();
     let __end0 = __2.0.clone();
@@ -15981,7 +15981,7 @@ fn __action336<
     __1: (usize, Ident, usize),
     __2: (usize, alloc::vec::Vec<Elem>, usize),
     __3: (usize, Option<(PouKind, Span)>, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __2.0.clone();
     let __end0 = __2.2.clone();
@@ -16009,9 +16009,9 @@ fn __action337<
     __0: (usize, PouKind, usize),
     __1: (usize, Ident, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, (PouKind, Span), usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __4.0.clone();
     let __end0 = __4.2.clone();
@@ -16040,8 +16040,8 @@ fn __action338<
     __0: (usize, PouKind, usize),
     __1: (usize, Ident, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
-) -> Pou
+    __3: (usize, Box<TypeSpec>, usize),
+) -> Box<Pou>
 {
     let __start0 = __3.2.clone();
     let __end0 = __3.2.clone();
@@ -16071,10 +16071,10 @@ fn __action339<
     __0: (usize, PouKind, usize),
     __1: (usize, Ident, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, alloc::vec::Vec<Elem>, usize),
     __5: (usize, (PouKind, Span), usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __5.0.clone();
     let __end0 = __5.2.clone();
@@ -16104,9 +16104,9 @@ fn __action340<
     __0: (usize, PouKind, usize),
     __1: (usize, Ident, usize),
     __2: (usize, Tok, usize),
-    __3: (usize, TypeSpec, usize),
+    __3: (usize, Box<TypeSpec>, usize),
     __4: (usize, alloc::vec::Vec<Elem>, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __4.2.clone();
     let __end0 = __4.2.clone();
@@ -16137,7 +16137,7 @@ fn __action341<
     __0: (usize, PouKind, usize),
     __1: (usize, Ident, usize),
     __2: (usize, (PouKind, Span), usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __2.0.clone();
     let __end0 = __2.2.clone();
@@ -16163,7 +16163,7 @@ fn __action342<
     ctx: &'c mut Ctx,
     __0: (usize, PouKind, usize),
     __1: (usize, Ident, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __1.2.clone();
     let __end0 = __1.2.clone();
@@ -16192,7 +16192,7 @@ fn __action343<
     __1: (usize, Ident, usize),
     __2: (usize, alloc::vec::Vec<Elem>, usize),
     __3: (usize, (PouKind, Span), usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __3.0.clone();
     let __end0 = __3.2.clone();
@@ -16220,7 +16220,7 @@ fn __action344<
     __0: (usize, PouKind, usize),
     __1: (usize, Ident, usize),
     __2: (usize, alloc::vec::Vec<Elem>, usize),
-) -> Pou
+) -> Box<Pou>
 {
     let __start0 = __2.2.clone();
     let __end0 = __2.2.clone();
@@ -16302,7 +16302,7 @@ fn __action347<
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
     __1: (usize, ConstExpr, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __1.0.clone();
     let __end0 = __1.2.clone();
@@ -16326,7 +16326,7 @@ fn __action348<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __0.2.clone();
     let __end0 = __0.2.clone();
@@ -16352,7 +16352,7 @@ fn __action349<
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
     __1: (usize, ConstExpr, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __1.0.clone();
     let __end0 = __1.2.clone();
@@ -16376,7 +16376,7 @@ fn __action350<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Tok, usize),
-) -> TypeSpec
+) -> Box<TypeSpec>
 {
     let __start0 = __0.2.clone();
     let __end0 = __0.2.clone();
