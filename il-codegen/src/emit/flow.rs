@@ -383,7 +383,7 @@ impl PouEmitter<'_> {
             }
             // The line's comment next: a rung's fence is part of its first line.
             if self.opts.line_markers && s.line != last_line && s.line != 0 {
-                o.code(&format!("__il_line!({});", s.line));
+                o.marker(s.line);
                 last_line = s.line;
             }
             if fenced.binary_search(&k).is_ok() {

@@ -73,11 +73,49 @@ impl Out {
             self.space = false;
         }
         self.brk = 0;
-        if self.space && !self.fresh && !glue && !self.buf.ends_with(['(', '[']) {
+        if self.space && !self.fresh && !glue && !matches!(self.last(), b'(' | b'[') {
             self.buf.push(' ');
         }
         self.space = false;
         self.fresh = false;
+    }
+
+    /// The last byte written (0 if none): the brackets asked about are ASCII,
+    /// which no byte of a multi-byte character equals.
+    fn last(&self) -> u8 {
+        self.buf.as_bytes().last().copied().unwrap_or(0)
+    }
+
+    /// `__il_line!(N);`, as [`Out::code`] lays it out, without formatting
+    /// the text first (one per IL line).
+    pub(crate) fn marker(&mut self, line: u32) {
+        self.lead(false);
+        self.buf.push_str("__il_line!(");
+        let mut digits = [0u8; 10];
+        let mut at = digits.len();
+        let mut n = line;
+        loop {
+            at -= 1;
+            digits[at] = b'0' + (n % 10) as u8;
+            n /= 10;
+            if n == 0 {
+                break;
+            }
+        }
+        for &d in &digits[at..] {
+            self.buf.push(d as char);
+        }
+        self.buf.push_str(");");
+        self.after_separator();
+    }
+
+    /// After a `;` or `,`: a space inside an inline bracket, else a break.
+    fn after_separator(&mut self) {
+        if self.inline() {
+            self.space = true;
+        } else {
+            self.brk = 1;
+        }
     }
 
     /// Whether the `#` just written began its line (an attribute follows).
@@ -161,7 +199,7 @@ impl Out {
                     let (open, inline) = self.stack.pop().unwrap_or((c, true));
                     if !inline {
                         self.depth = self.depth.saturating_sub(1);
-                        if self.brk == 1 && self.buf.ends_with(['{', '[']) {
+                        if self.brk == 1 && matches!(self.last(), b'{' | b'[') {
                             // Empty: `{}`.
                             self.brk = 0;
                         } else {
@@ -172,7 +210,7 @@ impl Out {
                         self.buf.push(c as char);
                         self.brk = 1;
                     } else if open == b'{' {
-                        if self.buf.ends_with('{') {
+                        if self.last() == b'{' {
                             self.space = false;
                         }
                         self.lead(false);
@@ -193,11 +231,7 @@ impl Out {
                     self.space = false;
                     self.lead(true);
                     self.buf.push(c as char);
-                    if self.inline() {
-                        self.space = true;
-                    } else {
-                        self.brk = 1;
-                    }
+                    self.after_separator();
                     i += 1;
                 }
                 b'.' if b.get(i + 1) != Some(&b'.') => {
@@ -209,22 +243,27 @@ impl Out {
                 }
                 _ => {
                     // A run of identifier characters, or of punctuation.
-                    let word = |d: u8| d.is_ascii_alphanumeric() || d == b'_' || d >= 0x80;
-                    let w = word(c);
                     let mut end = i + 1;
-                    while end < b.len() {
-                        let d = b[end];
-                        if word(d) != w
-                            || b" \t\n\r\"'{}()[];,".contains(&d)
-                            || (d == b'.' && b.get(end + 1) != Some(&b'.'))
-                            || (d == b'/' && b.get(end + 1) == Some(&b'/'))
-                        {
-                            break;
+                    if CLASS[c as usize] == WORD {
+                        while end < b.len() && CLASS[b[end] as usize] == WORD {
+                            end += 1;
                         }
-                        end += 1;
+                    } else {
+                        // Punctuation stops at a word, a delimiter, a `.`
+                        // that is not `..` and a `//`.
+                        while end < b.len() {
+                            let d = b[end];
+                            if CLASS[d as usize] != PUNCT
+                                || (d == b'.' && b.get(end + 1) != Some(&b'.'))
+                                || (d == b'/' && b.get(end + 1) == Some(&b'/'))
+                            {
+                                break;
+                            }
+                            end += 1;
+                        }
                     }
                     let t = &s[i..end];
-                    if t == "else" && self.brk == 1 && self.buf.ends_with('}') {
+                    if t == "else" && self.brk == 1 && self.last() == b'}' {
                         self.brk = 0;
                         self.space = true;
                     }
@@ -236,6 +275,32 @@ impl Out {
         }
     }
 }
+
+/// The classes of the bytes in [`Out::code`]'s runs of identifier
+/// characters (`[A-Za-z0-9_]` and any byte of a non-ASCII character) and of
+/// punctuation; the delimiters (whitespace, quotes, brackets, `;` and `,`)
+/// end both.
+const PUNCT: u8 = 0;
+const WORD: u8 = 1;
+const DELIM: u8 = 2;
+const CLASS: [u8; 256] = {
+    let mut t = [PUNCT; 256];
+    let mut b = 0;
+    while b < 256 {
+        let c = b as u8;
+        if c.is_ascii_alphanumeric() || c == b'_' || c >= 0x80 {
+            t[b] = WORD;
+        }
+        b += 1;
+    }
+    let delims = b" \t\n\r\"'{}()[];,";
+    let mut k = 0;
+    while k < delims.len() {
+        t[delims[k] as usize] = DELIM;
+        k += 1;
+    }
+    t
+};
 
 /// The end of a string literal whose body starts at `i` (after the `"`).
 fn string_end(b: &[u8], mut i: usize) -> usize {

@@ -19,39 +19,87 @@ pub(crate) fn format_file_with<'a>(
     out.push_str(&sanitize_comment(name));
     out.push_str(". Do not edit: edit the IL source and rebuild.\n\n");
     // The emitter's text is already laid out (emit/text.rs).
-    for line in text.lines() {
-        crate::work::add(1);
-        // The emitter indents with spaces: a byte scan, not `trim_start`'s
-        // Unicode one (a tenth of `ilc emit` went to this loop).
-        let t = line.trim_start_matches([' ', '\t']);
-        if let Some(rest) = t.strip_prefix("__il_line!(") {
-            let n: usize = rest
-                .strip_suffix(");")
-                .unwrap_or(rest)
-                .trim()
-                .parse()
-                .unwrap_or(0);
-            let indent = &line[..line.len() - t.len()];
-            let (shown, src) = il_line(n);
-            out.push_str(indent);
-            out.push_str("// ");
-            out.push_str(itoa(shown, &mut [0; 20]));
-            out.push_str(": ");
-            out.push_str(&sanitize_comment(src.trim()));
-            out.push('\n');
-        } else if let Some(kind) = lines_of
-            && t.starts_with("///")
-            && let Some((head, rest)) = line.split_once("(IL line ")
-        {
-            let (num, tail) = rest.split_once(')').unwrap_or((rest, ""));
-            let shown = num.trim().parse().map_or(0, |n| il_line(n).0);
-            out.push_str(&format!("{head}({kind} line {shown}){tail}\n"));
-        } else {
-            out.push_str(line);
-            out.push('\n');
+    if let Some(kind) = lines_of {
+        for line in text.lines() {
+            crate::work::add(1);
+            write_line(&mut out, line, Some(kind), &il_line);
         }
+        return out;
+    }
+    // Without doc comments to renumber, only the marker lines change: the
+    // text between them is copied in one piece (a line at a time, this
+    // writer was a tenth of `ilc emit`).
+    let mut copied = 0;
+    let mut from = 0;
+    while let Some(k) = text[from..].find(MARKER) {
+        let at = from + k;
+        let start = text[..at].rfind('\n').map_or(0, |n| n + 1);
+        let end = text[at..].find('\n').map_or(text.len(), |n| at + n);
+        if text[start..at].bytes().all(|b| b == b' ' || b == b'\t') {
+            let before = &text[copied..start];
+            crate::work::add(lines_in(before) + 1);
+            out.push_str(before);
+            write_line(&mut out, &text[start..end], None, &il_line);
+            copied = (end + 1).min(text.len());
+        }
+        from = end;
+    }
+    let rest = &text[copied..];
+    crate::work::add(lines_in(rest));
+    out.push_str(rest);
+    if !rest.is_empty() && !rest.ends_with('\n') {
+        out.push('\n');
     }
     out
+}
+
+/// What the emitter writes before each IL line's code (`__il_line!(N);`).
+const MARKER: &str = "__il_line!(";
+
+/// The number of newlines in `s` (the steps of the scaling tests: lines
+/// written).
+fn lines_in(s: &str) -> u64 {
+    s.bytes().filter(|&b| b == b'\n').count() as u64
+}
+
+/// One line of the emitted text as it goes into the file, with its newline:
+/// a marker becomes the IL line's comment; with `lines_of`, a doc
+/// comment's `(IL line N)` is renumbered.
+fn write_line<'a>(
+    out: &mut String,
+    line: &str,
+    lines_of: Option<&str>,
+    il_line: &impl Fn(usize) -> (usize, &'a str),
+) {
+    // The emitter indents with spaces: a byte scan, not `trim_start`'s
+    // Unicode one.
+    let t = line.trim_start_matches([' ', '\t']);
+    if let Some(rest) = t.strip_prefix(MARKER) {
+        let n: usize = rest
+            .strip_suffix(");")
+            .unwrap_or(rest)
+            .trim()
+            .parse()
+            .unwrap_or(0);
+        let indent = &line[..line.len() - t.len()];
+        let (shown, src) = il_line(n);
+        out.push_str(indent);
+        out.push_str("// ");
+        out.push_str(itoa(shown, &mut [0; 20]));
+        out.push_str(": ");
+        out.push_str(&sanitize_comment(src.trim()));
+        out.push('\n');
+    } else if let Some(kind) = lines_of
+        && t.starts_with("///")
+        && let Some((head, rest)) = line.split_once("(IL line ")
+    {
+        let (num, tail) = rest.split_once(')').unwrap_or((rest, ""));
+        let shown = num.trim().parse().map_or(0, |n| il_line(n).0);
+        out.push_str(&format!("{head}({kind} line {shown}){tail}\n"));
+    } else {
+        out.push_str(line);
+        out.push('\n');
+    }
 }
 
 /// `n` in decimal, written into `buf` (a marker per IL line: no `format!`).
