@@ -415,11 +415,17 @@ impl PouEmitter<'_> {
             Op::SetCr { ty, expr } => {
                 let id = super::values::cr_ident(ty);
                 let e = self.expr(expr, line);
-                format!("{id} = {e};")
+                [id.as_ref(), " = ", e.as_str(), ";"].concat()
             }
             Op::Save { slot, value } => {
                 let v = self.value(value, line);
-                format!("__save_{slot} = {v};")
+                [
+                    super::values::saved_ident(*slot).as_str(),
+                    " = ",
+                    v.as_str(),
+                    ";",
+                ]
+                .concat()
             }
             Op::Store {
                 place,

@@ -30,19 +30,20 @@ pub(crate) fn format_file_with<'a>(
     // text between them is copied in one piece (a line at a time, this
     // writer was a tenth of `ilc emit`).
     let mut copied = 0;
-    let mut from = 0;
-    while let Some(k) = text[from..].find(MARKER) {
-        let at = from + k;
+    // One searcher for the whole text (`find` would build one per marker).
+    for (at, _) in text.match_indices(MARKER) {
+        if at < copied {
+            continue;
+        }
         let start = text[..at].rfind('\n').map_or(0, |n| n + 1);
-        let end = text[at..].find('\n').map_or(text.len(), |n| at + n);
         if text[start..at].bytes().all(|b| b == b' ' || b == b'\t') {
+            let end = text[at..].find('\n').map_or(text.len(), |n| at + n);
             let before = &text[copied..start];
             crate::work::add(lines_in(before) + 1);
             out.push_str(before);
             write_line(&mut out, &text[start..end], None, &il_line);
             copied = (end + 1).min(text.len());
         }
-        from = end;
     }
     let rest = &text[copied..];
     crate::work::add(lines_in(rest));
@@ -119,7 +120,9 @@ fn itoa(mut n: usize, buf: &mut [u8; 20]) -> &str {
 /// The text of a `//` comment (see `emit::text::comment_text`): most IL
 /// lines are printable ASCII without `*/`, which stay as they are.
 fn sanitize_comment(s: &str) -> std::borrow::Cow<'_, str> {
-    if s.bytes().all(|b| (b' '..=b'~').contains(&b)) && !s.contains("*/") {
+    // A byte scan: `contains("*/")` would build a substring searcher per line.
+    let b = s.as_bytes();
+    if b.iter().all(|b| (b' '..=b'~').contains(b)) && !b.windows(2).any(|w| w == b"*/") {
         std::borrow::Cow::Borrowed(s)
     } else {
         std::borrow::Cow::Owned(crate::emit::text::comment_text(s))
