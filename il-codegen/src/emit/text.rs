@@ -66,8 +66,12 @@ impl Out {
             if !self.buf.is_empty() {
                 self.buf.push('\n');
             }
-            for _ in 0..self.depth {
-                self.buf.push_str("    ");
+            // The indentation in one piece (a line per statement).
+            let mut n = self.depth * 4;
+            while n > 0 {
+                let k = n.min(SPACES.len());
+                self.buf.push_str(&SPACES[..k]);
+                n -= k;
             }
             self.fresh = true;
             self.space = false;
@@ -275,6 +279,9 @@ impl Out {
         }
     }
 }
+
+/// Spaces to indent by (deeper levels take several pieces).
+const SPACES: &str = "                                                                ";
 
 /// The classes of the bytes in [`Out::code`]'s runs of identifier
 /// characters (`[A-Za-z0-9_]` and any byte of a non-ASCII character) and of
