@@ -34,6 +34,9 @@ pub(crate) struct Out {
     attr: Option<usize>,
     /// Nothing written on the current line yet.
     fresh: bool,
+    /// Where each `__il_line!(` written by [`Out::marker`] starts (the file
+    /// writer then need not search 10 MB of text for them).
+    markers: Vec<usize>,
 }
 
 impl Out {
@@ -45,11 +48,18 @@ impl Out {
     }
 
     /// The text written so far, ending with a newline.
-    pub(crate) fn finish(mut self) -> String {
+    #[cfg(test)]
+    pub(crate) fn finish(self) -> String {
+        self.finish_marked().0
+    }
+
+    /// The text written so far, ending with a newline, and the offsets of
+    /// its line markers.
+    pub(crate) fn finish_marked(mut self) -> (String, Vec<usize>) {
         if !self.buf.is_empty() && !self.buf.ends_with('\n') {
             self.buf.push('\n');
         }
-        self.buf
+        (self.buf, self.markers)
     }
 
     /// Whether the innermost bracket keeps its contents on one line.
@@ -94,6 +104,7 @@ impl Out {
     /// the text first (one per IL line).
     pub(crate) fn marker(&mut self, line: u32) {
         self.lead(false);
+        self.markers.push(self.buf.len());
         self.buf.push_str("__il_line!(");
         let mut digits = [0u8; 10];
         let mut at = digits.len();

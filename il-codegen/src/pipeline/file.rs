@@ -9,6 +9,7 @@
 pub(crate) fn format_file_with<'a>(
     name: &str,
     text: &str,
+    markers: Option<&[usize]>,
     lines_of: Option<&str>,
     il_line: impl Fn(usize) -> (usize, &'a str),
 ) -> String {
@@ -23,6 +24,25 @@ pub(crate) fn format_file_with<'a>(
         for line in text.lines() {
             crate::work::add(1);
             write_line(&mut out, line, Some(kind), &il_line);
+        }
+        return out;
+    }
+    // The emitter told where its markers are: copy the text between them.
+    if let Some(at) = markers
+        && let Some(starts) = marker_lines(text, at)
+    {
+        let mut copied = 0;
+        for (start, &at) in starts.into_iter().zip(at) {
+            crate::work::add(1);
+            let end = text[at..].find('\n').map_or(text.len(), |n| at + n);
+            out.push_str(&text[copied..start]);
+            write_line(&mut out, &text[start..end], None, &il_line);
+            copied = (end + 1).min(text.len());
+        }
+        let rest = &text[copied..];
+        out.push_str(rest);
+        if !rest.is_empty() && !rest.ends_with('\n') {
+            out.push('\n');
         }
         return out;
     }
@@ -49,6 +69,29 @@ pub(crate) fn format_file_with<'a>(
         out.push('\n');
     }
     out
+}
+
+/// The start of the line of each marker at `at`, if every offset (in
+/// increasing order) holds a marker after nothing but indentation.
+fn marker_lines(text: &str, at: &[usize]) -> Option<Vec<usize>> {
+    let mut starts = Vec::with_capacity(at.len());
+    let mut last = 0;
+    for &a in at {
+        if a < last || !text.get(a..)?.starts_with(MARKER) {
+            return None;
+        }
+        let b = text.as_bytes();
+        let mut start = a;
+        while start > 0 && matches!(b[start - 1], b' ' | b'\t') {
+            start -= 1;
+        }
+        if start > 0 && b[start - 1] != b'\n' {
+            return None;
+        }
+        starts.push(start);
+        last = a + MARKER.len();
+    }
+    Some(starts)
 }
 
 /// The length of the line's indentation (the emitter indents with spaces: a
@@ -123,5 +166,35 @@ fn sanitize_comment(s: &str) -> std::borrow::Cow<'_, str> {
         std::borrow::Cow::Borrowed(s)
     } else {
         std::borrow::Cow::Owned(crate::emit::text::comment_text(s))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::format_file_with;
+
+    #[test]
+    fn marker_offsets_give_the_file_the_search_gives_and_stale_ones_are_ignored() {
+        let text = "fn f() {\n    __il_line!(2);\n    x = 1;\n    y(\"__il_line!(9);\");\n}\n__il_line!(3);\n";
+        let il = |n: usize| (n, ["", "LD 1", "ST x", "RET */"][n.min(3)]);
+        let searched = format_file_with("a.il", text, None, None, il);
+        assert!(searched.contains("    // 2: ST x\n    x = 1;\n"));
+        assert!(searched.contains("}\n// 3: RET * /\n"));
+        assert!(searched.contains("y(\"__il_line!(9);\")"));
+        let at = [13, 66];
+        assert_eq!(&text[at[0]..at[0] + 4], "__il");
+        assert_eq!(&text[at[1]..at[1] + 4], "__il");
+        let before = crate::work::steps();
+        let marked = format_file_with("a.il", text, Some(&at), None, il);
+        // A step per marker, not per line: the offsets were used.
+        assert_eq!(crate::work::steps() - before, 2);
+        assert_eq!(marked, searched);
+        // Offsets that do not hold a marker at a line's start: searched.
+        for stale in [&[13, 46][..], &[66, 13], &[14], &[500]] {
+            assert_eq!(
+                format_file_with("a.il", text, Some(stale), None, il),
+                searched
+            );
+        }
     }
 }
