@@ -47,6 +47,11 @@ impl Out {
         }
     }
 
+    /// Room for `n` line markers.
+    pub(crate) fn reserve_markers(&mut self, n: usize) {
+        self.markers.reserve_exact(n);
+    }
+
     /// The text written so far, ending with a newline.
     #[cfg(test)]
     pub(crate) fn finish(self) -> String {

@@ -29,11 +29,12 @@ pub(crate) fn format_file_with<'a>(
     }
     // The emitter told where its markers are: copy the text between them.
     if let Some(at) = markers
-        && let Some(starts) = marker_lines(text, at)
+        && marks_lines(text, at)
     {
         let mut copied = 0;
-        for (start, &at) in starts.into_iter().zip(at) {
+        for &at in at {
             crate::work::add(1);
+            let start = at - indent_before(text, at);
             let end = text[at..].find('\n').map_or(text.len(), |n| at + n);
             out.push_str(&text[copied..start]);
             write_line(&mut out, &text[start..end], None, &il_line);
@@ -71,27 +72,27 @@ pub(crate) fn format_file_with<'a>(
     out
 }
 
-/// The start of the line of each marker at `at`, if every offset (in
-/// increasing order) holds a marker after nothing but indentation.
-fn marker_lines(text: &str, at: &[usize]) -> Option<Vec<usize>> {
-    let mut starts = Vec::with_capacity(at.len());
+/// Whether every offset of `at` (in increasing order) holds a marker after
+/// nothing but indentation.
+fn marks_lines(text: &str, at: &[usize]) -> bool {
     let mut last = 0;
-    for &a in at {
-        if a < last || !text.get(a..)?.starts_with(MARKER) {
-            return None;
-        }
-        let b = text.as_bytes();
-        let mut start = a;
-        while start > 0 && matches!(b[start - 1], b' ' | b'\t') {
-            start -= 1;
-        }
-        if start > 0 && b[start - 1] != b'\n' {
-            return None;
-        }
-        starts.push(start);
+    at.iter().all(|&a| {
+        let ok = a >= last
+            && text.get(a..).is_some_and(|t| t.starts_with(MARKER))
+            && (a == indent_before(text, a)
+                || text.as_bytes()[a - indent_before(text, a) - 1] == b'\n');
         last = a + MARKER.len();
-    }
-    Some(starts)
+        ok
+    })
+}
+
+/// The number of spaces and tabs right before byte `a`.
+fn indent_before(text: &str, a: usize) -> usize {
+    text.as_bytes()[..a]
+        .iter()
+        .rev()
+        .take_while(|&&b| b == b' ' || b == b'\t')
+        .count()
 }
 
 /// The length of the line's indentation (the emitter indents with spaces: a
