@@ -256,6 +256,8 @@ pub struct Emitted<'c> {
     /// The length of `text` as emitted and where its line markers start: the
     /// file writer uses them when `text` still has that length and each
     /// offset still holds a marker (`text` is public), else it searches.
+    /// Without the `build` feature there is no file writer (`il!` only).
+    #[cfg_attr(not(feature = "build"), allow(dead_code))]
     markers: (usize, Vec<usize>),
 }
 
