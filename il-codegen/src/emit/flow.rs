@@ -383,7 +383,7 @@ impl PouEmitter<'_> {
             }
             // The line's comment next: a rung's fence is part of its first line.
             if self.opts.line_markers && s.line != last_line && s.line != 0 {
-                o.code(&format!("__il_line!({});", s.line));
+                o.marker(s.line);
                 last_line = s.line;
             }
             if fenced.binary_search(&k).is_ok() {
@@ -415,11 +415,17 @@ impl PouEmitter<'_> {
             Op::SetCr { ty, expr } => {
                 let id = super::values::cr_ident(ty);
                 let e = self.expr(expr, line);
-                format!("{id} = {e};")
+                [id.as_ref(), " = ", e.as_str(), ";"].concat()
             }
             Op::Save { slot, value } => {
                 let v = self.value(value, line);
-                format!("__save_{slot} = {v};")
+                [
+                    super::values::saved_ident(*slot).as_str(),
+                    " = ",
+                    v.as_str(),
+                    ";",
+                ]
+                .concat()
             }
             Op::Store {
                 place,

@@ -101,7 +101,7 @@ pub fn cache_ident(name: &str) -> String {
     if !is_ident(name) {
         return rust_ident(name);
     }
-    format!("__s_{name}")
+    ["__s_", name].concat()
 }
 
 /// `[A-Za-z_][A-Za-z0-9_]*`, not `_` alone.

@@ -34,6 +34,9 @@ pub(crate) struct Out {
     attr: Option<usize>,
     /// Nothing written on the current line yet.
     fresh: bool,
+    /// Where each `__il_line!(` written by [`Out::marker`] starts (the file
+    /// writer then need not search 10 MB of text for them).
+    markers: Vec<usize>,
 }
 
 impl Out {
@@ -44,12 +47,24 @@ impl Out {
         }
     }
 
+    /// Room for `n` line markers.
+    pub(crate) fn reserve_markers(&mut self, n: usize) {
+        self.markers.reserve_exact(n);
+    }
+
     /// The text written so far, ending with a newline.
-    pub(crate) fn finish(mut self) -> String {
+    #[cfg(test)]
+    pub(crate) fn finish(self) -> String {
+        self.finish_marked().0
+    }
+
+    /// The text written so far, ending with a newline, and the offsets of
+    /// its line markers.
+    pub(crate) fn finish_marked(mut self) -> (String, Vec<usize>) {
         if !self.buf.is_empty() && !self.buf.ends_with('\n') {
             self.buf.push('\n');
         }
-        self.buf
+        (self.buf, self.markers)
     }
 
     /// Whether the innermost bracket keeps its contents on one line.
@@ -66,18 +81,61 @@ impl Out {
             if !self.buf.is_empty() {
                 self.buf.push('\n');
             }
-            for _ in 0..self.depth {
-                self.buf.push_str("    ");
+            // The indentation in one piece (a line per statement).
+            let mut n = self.depth * 4;
+            while n > 0 {
+                let k = n.min(SPACES.len());
+                self.buf.push_str(&SPACES[..k]);
+                n -= k;
             }
             self.fresh = true;
             self.space = false;
         }
         self.brk = 0;
-        if self.space && !self.fresh && !glue && !self.buf.ends_with(['(', '[']) {
+        if self.space && !self.fresh && !glue && !matches!(self.last(), b'(' | b'[') {
             self.buf.push(' ');
         }
         self.space = false;
         self.fresh = false;
+    }
+
+    /// The last byte written (0 if none): the brackets asked about are ASCII,
+    /// which no byte of a multi-byte character equals.
+    fn last(&self) -> u8 {
+        self.buf.as_bytes().last().copied().unwrap_or(0)
+    }
+
+    /// `__il_line!(N);`, as [`Out::code`] lays it out, without formatting
+    /// the text first (one per IL line).
+    pub(crate) fn marker(&mut self, line: u32) {
+        self.lead(false);
+        self.markers.push(self.buf.len());
+        self.buf.push_str("__il_line!(");
+        let mut digits = [0u8; 10];
+        let mut at = digits.len();
+        let mut n = line;
+        loop {
+            at -= 1;
+            digits[at] = b'0' + (n % 10) as u8;
+            n /= 10;
+            if n == 0 {
+                break;
+            }
+        }
+        for &d in &digits[at..] {
+            self.buf.push(d as char);
+        }
+        self.buf.push_str(");");
+        self.after_separator();
+    }
+
+    /// After a `;` or `,`: a space inside an inline bracket, else a break.
+    fn after_separator(&mut self) {
+        if self.inline() {
+            self.space = true;
+        } else {
+            self.brk = 1;
+        }
     }
 
     /// Whether the `#` just written began its line (an attribute follows).
@@ -161,7 +219,7 @@ impl Out {
                     let (open, inline) = self.stack.pop().unwrap_or((c, true));
                     if !inline {
                         self.depth = self.depth.saturating_sub(1);
-                        if self.brk == 1 && self.buf.ends_with(['{', '[']) {
+                        if self.brk == 1 && matches!(self.last(), b'{' | b'[') {
                             // Empty: `{}`.
                             self.brk = 0;
                         } else {
@@ -172,7 +230,7 @@ impl Out {
                         self.buf.push(c as char);
                         self.brk = 1;
                     } else if open == b'{' {
-                        if self.buf.ends_with('{') {
+                        if self.last() == b'{' {
                             self.space = false;
                         }
                         self.lead(false);
@@ -193,11 +251,7 @@ impl Out {
                     self.space = false;
                     self.lead(true);
                     self.buf.push(c as char);
-                    if self.inline() {
-                        self.space = true;
-                    } else {
-                        self.brk = 1;
-                    }
+                    self.after_separator();
                     i += 1;
                 }
                 b'.' if b.get(i + 1) != Some(&b'.') => {
@@ -209,22 +263,27 @@ impl Out {
                 }
                 _ => {
                     // A run of identifier characters, or of punctuation.
-                    let word = |d: u8| d.is_ascii_alphanumeric() || d == b'_' || d >= 0x80;
-                    let w = word(c);
                     let mut end = i + 1;
-                    while end < b.len() {
-                        let d = b[end];
-                        if word(d) != w
-                            || b" \t\n\r\"'{}()[];,".contains(&d)
-                            || (d == b'.' && b.get(end + 1) != Some(&b'.'))
-                            || (d == b'/' && b.get(end + 1) == Some(&b'/'))
-                        {
-                            break;
+                    if CLASS[c as usize] == WORD {
+                        while end < b.len() && CLASS[b[end] as usize] == WORD {
+                            end += 1;
                         }
-                        end += 1;
+                    } else {
+                        // Punctuation stops at a word, a delimiter, a `.`
+                        // that is not `..` and a `//`.
+                        while end < b.len() {
+                            let d = b[end];
+                            if CLASS[d as usize] != PUNCT
+                                || (d == b'.' && b.get(end + 1) != Some(&b'.'))
+                                || (d == b'/' && b.get(end + 1) == Some(&b'/'))
+                            {
+                                break;
+                            }
+                            end += 1;
+                        }
                     }
                     let t = &s[i..end];
-                    if t == "else" && self.brk == 1 && self.buf.ends_with('}') {
+                    if t == "else" && self.brk == 1 && self.last() == b'}' {
                         self.brk = 0;
                         self.space = true;
                     }
@@ -236,6 +295,35 @@ impl Out {
         }
     }
 }
+
+/// Spaces to indent by (deeper levels take several pieces).
+const SPACES: &str = "                                                                ";
+
+/// The classes of the bytes in [`Out::code`]'s runs of identifier
+/// characters (`[A-Za-z0-9_]` and any byte of a non-ASCII character) and of
+/// punctuation; the delimiters (whitespace, quotes, brackets, `;` and `,`)
+/// end both.
+const PUNCT: u8 = 0;
+const WORD: u8 = 1;
+const DELIM: u8 = 2;
+const CLASS: [u8; 256] = {
+    let mut t = [PUNCT; 256];
+    let mut b = 0;
+    while b < 256 {
+        let c = b as u8;
+        if c.is_ascii_alphanumeric() || c == b'_' || c >= 0x80 {
+            t[b] = WORD;
+        }
+        b += 1;
+    }
+    let delims = b" \t\n\r\"'{}()[];,";
+    let mut k = 0;
+    while k < delims.len() {
+        t[delims[k] as usize] = DELIM;
+        k += 1;
+    }
+    t
+};
 
 /// The end of a string literal whose body starts at `i` (after the `"`).
 fn string_end(b: &[u8], mut i: usize) -> usize {

@@ -9,6 +9,7 @@
 pub(crate) fn format_file_with<'a>(
     name: &str,
     text: &str,
+    markers: Option<&[usize]>,
     lines_of: Option<&str>,
     il_line: impl Fn(usize) -> (usize, &'a str),
 ) -> String {
@@ -19,39 +20,128 @@ pub(crate) fn format_file_with<'a>(
     out.push_str(&sanitize_comment(name));
     out.push_str(". Do not edit: edit the IL source and rebuild.\n\n");
     // The emitter's text is already laid out (emit/text.rs).
-    for line in text.lines() {
-        crate::work::add(1);
-        // The emitter indents with spaces: a byte scan, not `trim_start`'s
-        // Unicode one (a tenth of `ilc emit` went to this loop).
-        let t = line.trim_start_matches([' ', '\t']);
-        if let Some(rest) = t.strip_prefix("__il_line!(") {
-            let n: usize = rest
-                .strip_suffix(");")
-                .unwrap_or(rest)
-                .trim()
-                .parse()
-                .unwrap_or(0);
-            let indent = &line[..line.len() - t.len()];
-            let (shown, src) = il_line(n);
-            out.push_str(indent);
-            out.push_str("// ");
-            out.push_str(itoa(shown, &mut [0; 20]));
-            out.push_str(": ");
-            out.push_str(&sanitize_comment(src.trim()));
-            out.push('\n');
-        } else if let Some(kind) = lines_of
-            && t.starts_with("///")
-            && let Some((head, rest)) = line.split_once("(IL line ")
-        {
-            let (num, tail) = rest.split_once(')').unwrap_or((rest, ""));
-            let shown = num.trim().parse().map_or(0, |n| il_line(n).0);
-            out.push_str(&format!("{head}({kind} line {shown}){tail}\n"));
-        } else {
-            out.push_str(line);
+    if let Some(kind) = lines_of {
+        for line in text.lines() {
+            crate::work::add(1);
+            write_line(&mut out, line, Some(kind), &il_line);
+        }
+        return out;
+    }
+    // The emitter told where its markers are: copy the text between them.
+    if let Some(at) = markers
+        && marks_lines(text, at)
+    {
+        let mut copied = 0;
+        for &at in at {
+            crate::work::add(1);
+            let start = at - indent_before(text, at);
+            let end = text[at..].find('\n').map_or(text.len(), |n| at + n);
+            out.push_str(&text[copied..start]);
+            write_line(&mut out, &text[start..end], None, &il_line);
+            copied = (end + 1).min(text.len());
+        }
+        let rest = &text[copied..];
+        out.push_str(rest);
+        if !rest.is_empty() && !rest.ends_with('\n') {
             out.push('\n');
         }
+        return out;
+    }
+    // Without doc comments to renumber, only the marker lines change: the
+    // lines between them are copied in one piece (pushed one at a time,
+    // this writer was a tenth of `ilc emit`). A newline is found by
+    // `memchr`; searching for the marker itself cost 3x more.
+    let mut copied = 0;
+    let mut start = 0;
+    while start < text.len() {
+        crate::work::add(1);
+        let end = text[start..].find('\n').map_or(text.len(), |n| start + n);
+        let line = &text[start..end];
+        if line[indent_len(line)..].starts_with(MARKER) {
+            out.push_str(&text[copied..start]);
+            write_line(&mut out, line, None, &il_line);
+            copied = (end + 1).min(text.len());
+        }
+        start = end + 1;
+    }
+    let rest = &text[copied..];
+    out.push_str(rest);
+    if !rest.is_empty() && !rest.ends_with('\n') {
+        out.push('\n');
     }
     out
+}
+
+/// Whether every offset of `at` (in increasing order) holds a marker after
+/// nothing but indentation.
+fn marks_lines(text: &str, at: &[usize]) -> bool {
+    let mut last = 0;
+    at.iter().all(|&a| {
+        let ok = a >= last
+            && text.get(a..).is_some_and(|t| t.starts_with(MARKER))
+            && (a == indent_before(text, a)
+                || text.as_bytes()[a - indent_before(text, a) - 1] == b'\n');
+        last = a + MARKER.len();
+        ok
+    })
+}
+
+/// The number of spaces and tabs right before byte `a`.
+fn indent_before(text: &str, a: usize) -> usize {
+    text.as_bytes()[..a]
+        .iter()
+        .rev()
+        .take_while(|&&b| b == b' ' || b == b'\t')
+        .count()
+}
+
+/// The length of the line's indentation (the emitter indents with spaces: a
+/// byte scan, not `trim_start`'s Unicode one).
+fn indent_len(line: &str) -> usize {
+    line.bytes()
+        .position(|b| b != b' ' && b != b'\t')
+        .unwrap_or(line.len())
+}
+
+/// What the emitter writes before each IL line's code (`__il_line!(N);`).
+const MARKER: &str = "__il_line!(";
+
+/// One line of the emitted text as it goes into the file, with its newline:
+/// a marker becomes the IL line's comment; with `lines_of`, a doc
+/// comment's `(IL line N)` is renumbered.
+fn write_line<'a>(
+    out: &mut String,
+    line: &str,
+    lines_of: Option<&str>,
+    il_line: &impl Fn(usize) -> (usize, &'a str),
+) {
+    let t = &line[indent_len(line)..];
+    if let Some(rest) = t.strip_prefix(MARKER) {
+        let n: usize = rest
+            .strip_suffix(");")
+            .unwrap_or(rest)
+            .trim()
+            .parse()
+            .unwrap_or(0);
+        let indent = &line[..line.len() - t.len()];
+        let (shown, src) = il_line(n);
+        out.push_str(indent);
+        out.push_str("// ");
+        out.push_str(itoa(shown, &mut [0; 20]));
+        out.push_str(": ");
+        out.push_str(&sanitize_comment(src.trim()));
+        out.push('\n');
+    } else if let Some(kind) = lines_of
+        && t.starts_with("///")
+        && let Some((head, rest)) = line.split_once("(IL line ")
+    {
+        let (num, tail) = rest.split_once(')').unwrap_or((rest, ""));
+        let shown = num.trim().parse().map_or(0, |n| il_line(n).0);
+        out.push_str(&format!("{head}({kind} line {shown}){tail}\n"));
+    } else {
+        out.push_str(line);
+        out.push('\n');
+    }
 }
 
 /// `n` in decimal, written into `buf` (a marker per IL line: no `format!`).
@@ -71,9 +161,41 @@ fn itoa(mut n: usize, buf: &mut [u8; 20]) -> &str {
 /// The text of a `//` comment (see `emit::text::comment_text`): most IL
 /// lines are printable ASCII without `*/`, which stay as they are.
 fn sanitize_comment(s: &str) -> std::borrow::Cow<'_, str> {
-    if s.bytes().all(|b| (b' '..=b'~').contains(&b)) && !s.contains("*/") {
+    // A byte scan: `contains("*/")` would build a substring searcher per line.
+    let b = s.as_bytes();
+    if b.iter().all(|b| (b' '..=b'~').contains(b)) && !b.windows(2).any(|w| w == b"*/") {
         std::borrow::Cow::Borrowed(s)
     } else {
         std::borrow::Cow::Owned(crate::emit::text::comment_text(s))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::format_file_with;
+
+    #[test]
+    fn marker_offsets_give_the_file_the_search_gives_and_stale_ones_are_ignored() {
+        let text = "fn f() {\n    __il_line!(2);\n    x = 1;\n    y(\"__il_line!(9);\");\n}\n__il_line!(3);\n";
+        let il = |n: usize| (n, ["", "LD 1", "ST x", "RET */"][n.min(3)]);
+        let searched = format_file_with("a.il", text, None, None, il);
+        assert!(searched.contains("    // 2: ST x\n    x = 1;\n"));
+        assert!(searched.contains("}\n// 3: RET * /\n"));
+        assert!(searched.contains("y(\"__il_line!(9);\")"));
+        let at = [13, 66];
+        assert_eq!(&text[at[0]..at[0] + 4], "__il");
+        assert_eq!(&text[at[1]..at[1] + 4], "__il");
+        let before = crate::work::steps();
+        let marked = format_file_with("a.il", text, Some(&at), None, il);
+        // A step per marker, not per line: the offsets were used.
+        assert_eq!(crate::work::steps() - before, 2);
+        assert_eq!(marked, searched);
+        // Offsets that do not hold a marker at a line's start: searched.
+        for stale in [&[13, 46][..], &[66, 13], &[14], &[500]] {
+            assert_eq!(
+                format_file_with("a.il", text, Some(stale), None, il),
+                searched
+            );
+        }
     }
 }

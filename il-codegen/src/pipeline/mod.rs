@@ -212,11 +212,15 @@ impl Checked {
                 .iter()
                 .zip(ir)
                 .zip(&self.diagnostics)
-                .map(|((input, p), d)| Emitted {
-                    input,
-                    text: emit::program(p, opts),
-                    warnings: d.clone(),
-                    pous: p.pous.iter().map(|p| p.name.clone()).collect(),
+                .map(|((input, p), d)| {
+                    let (text, markers) = emit::program_marked(p, opts);
+                    Emitted {
+                        input,
+                        markers: (text.len(), markers),
+                        text,
+                        warnings: d.clone(),
+                        pous: p.pous.iter().map(|p| p.name.clone()).collect(),
+                    }
                 })
                 .collect(),
         )
@@ -249,9 +253,21 @@ pub struct Emitted<'c> {
     pub warnings: Vec<Diagnostic>,
     /// The names of the POUs, as declared.
     pub pous: Vec<String>,
+    /// The length of `text` as emitted and where its line markers start: the
+    /// file writer uses them when `text` still has that length and each
+    /// offset still holds a marker (`text` is public), else it searches.
+    /// Without the `build` feature there is no file writer (`il!` only).
+    #[cfg_attr(not(feature = "build"), allow(dead_code))]
+    markers: (usize, Vec<usize>),
 }
 
 impl Emitted<'_> {
+    /// The markers' offsets, if `text` has the length it was emitted with.
+    #[cfg(feature = "build")]
+    fn markers(&self) -> Option<&[usize]> {
+        (self.text.len() == self.markers.0).then_some(&self.markers.1[..])
+    }
+
     /// The input this code was generated from.
     pub fn input(&self) -> &Input {
         self.input
@@ -267,14 +283,18 @@ impl Emitted<'_> {
     pub fn file_text(&self) -> String {
         match self.input {
             Input::Il(f) => {
-                file::format_file_with(&f.name, &self.text, None, |n| (n, f.line_text(n)))
+                file::format_file_with(&f.name, &self.text, self.markers(), None, |n| {
+                    (n, f.line_text(n))
+                })
             }
-            Input::Snippet(s) => file::format_file_with(&s.file.name, &self.text, None, |n| {
-                (s.line_of(n), s.il.line_text(n))
-            }),
+            Input::Snippet(s) => {
+                file::format_file_with(&s.file.name, &self.text, self.markers(), None, |n| {
+                    (s.line_of(n), s.il.line_text(n))
+                })
+            }
             Input::PlcOpen(i) => {
                 let lines = i.xml_lines();
-                file::format_file_with(&i.xml.name, &self.text, Some("XML"), |n| {
+                file::format_file_with(&i.xml.name, &self.text, None, Some("XML"), |n| {
                     let shown = lines.get(n.wrapping_sub(1)).copied().unwrap_or(0);
                     (shown, i.il.line_text(n))
                 })

@@ -202,16 +202,19 @@ impl PouEmitter<'_> {
         let e = ty.elem();
         let int = e.is_some_and(|e| e.is_int() || e.is_bitstring());
         let dur = e.filter(|e| e.is_duration()).map(Elem::rust);
+        // The common shapes are joined, not formatted (a few per IL line).
+        let infix = |sep: &str| [l.as_str(), sep, r.as_str()].concat();
+        let method = |f: &str| [l.as_str(), ".", f, "(", r.as_str(), ")"].concat();
         match op {
-            BinOp::And => format!("{l} & {r}"),
-            BinOp::Or => format!("{l} | {r}"),
-            BinOp::Xor => format!("{l} ^ {r}"),
-            BinOp::Gt => format!("{l} > {r}"),
-            BinOp::Ge => format!("{l} >= {r}"),
-            BinOp::Eq => format!("{l} == {r}"),
-            BinOp::Ne => format!("{l} != {r}"),
-            BinOp::Le => format!("{l} <= {r}"),
-            BinOp::Lt => format!("{l} < {r}"),
+            BinOp::And => infix(" & "),
+            BinOp::Or => infix(" | "),
+            BinOp::Xor => infix(" ^ "),
+            BinOp::Gt => infix(" > "),
+            BinOp::Ge => infix(" >= "),
+            BinOp::Eq => infix(" == "),
+            BinOp::Ne => infix(" != "),
+            BinOp::Le => infix(" <= "),
+            BinOp::Lt => infix(" < "),
             BinOp::Add | BinOp::Sub if dur.is_some() => {
                 let t = dur.unwrap_or_default();
                 if op == BinOp::Add {
@@ -220,11 +223,11 @@ impl PouEmitter<'_> {
                     format!("{t}({l}.0.wrapping_sub({r}.0))")
                 }
             }
-            BinOp::Add if int => format!("{l}.wrapping_add({r})"),
-            BinOp::Sub if int => format!("{l}.wrapping_sub({r})"),
-            BinOp::Mul if int => format!("{l}.wrapping_mul({r})"),
-            BinOp::Div if int && nonzero => format!("{l}.wrapping_div({r})"),
-            BinOp::Mod if int && nonzero => format!("{l}.wrapping_rem({r})"),
+            BinOp::Add if int => method("wrapping_add"),
+            BinOp::Sub if int => method("wrapping_sub"),
+            BinOp::Mul if int => method("wrapping_mul"),
+            BinOp::Div if int && nonzero => method("wrapping_div"),
+            BinOp::Mod if int && nonzero => method("wrapping_rem"),
             BinOp::Div | BinOp::Mod if int => {
                 let fault = self.fault("DivisionByZero", line);
                 let f = if op == BinOp::Div {
@@ -234,11 +237,11 @@ impl PouEmitter<'_> {
                 };
                 format!("{{ let __d = {r}; if __d == 0 {{ {fault}; 0 }} else {{ {l}.{f}(__d) }} }}")
             }
-            BinOp::Add => format!("{l} + {r}"),
-            BinOp::Sub => format!("{l} - {r}"),
-            BinOp::Mul => format!("{l} * {r}"),
-            BinOp::Div => format!("{l} / {r}"),
-            BinOp::Mod => format!("{l} % {r}"),
+            BinOp::Add => infix(" + "),
+            BinOp::Sub => infix(" - "),
+            BinOp::Mul => infix(" * "),
+            BinOp::Div => infix(" / "),
+            BinOp::Mod => infix(" % "),
         }
     }
 }

@@ -32,7 +32,7 @@ impl PouEmitter<'_> {
             Value::Cr(t) => cr_ident(t),
             Value::Const(c) => constant(c),
             Value::Read(p) => self.read(p, line),
-            Value::Saved(i, _) => format!("__save_{i}"),
+            Value::Saved(i, _) => super::saved_ident(*i),
             Value::Widen(inner, w) => widened(self.value(inner, line), &Some(*w)),
             Value::Arith { op, lhs, rhs } => {
                 let l = self.value(lhs, line);
@@ -272,7 +272,7 @@ impl PouEmitter<'_> {
         }
         if !Self::has_index(p) {
             let path = self.simple_path(p);
-            return format!("{path} = {value};");
+            return [path.as_str(), " = ", value.as_str(), ";"].concat();
         }
         let fault = self.fault("IndexOutOfRange", line);
         let access = |v: String| {
