@@ -111,20 +111,7 @@ impl Out {
         self.lead(false);
         self.markers.push(self.buf.len());
         self.buf.push_str("__il_line!(");
-        let mut digits = [0u8; 10];
-        let mut at = digits.len();
-        let mut n = line;
-        loop {
-            at -= 1;
-            digits[at] = b'0' + (n % 10) as u8;
-            n /= 10;
-            if n == 0 {
-                break;
-            }
-        }
-        for &d in &digits[at..] {
-            self.buf.push(d as char);
-        }
+        push_decimal(&mut self.buf, line.into());
         self.buf.push_str(");");
         self.after_separator();
     }
@@ -349,6 +336,25 @@ fn char_end(b: &[u8], mut i: usize) -> usize {
 /// A Rust string literal holding `s`: quotes, backslashes and every control
 /// or invisible format character escaped (rustc denies bidirectional
 /// controls even inside literals), so that nothing in `s` can end it.
+/// `n` in decimal, appended without the formatting machinery (the emitter
+/// writes one per IL line and per parenthesis).
+pub(crate) fn push_decimal(buf: &mut String, n: u64) {
+    let mut digits = [0u8; 20];
+    let mut at = digits.len();
+    let mut n = n;
+    loop {
+        at -= 1;
+        digits[at] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    for &d in &digits[at..] {
+        buf.push(d as char);
+    }
+}
+
 pub(crate) fn str_lit(s: &str) -> String {
     let mut out = String::with_capacity(s.len() + 2);
     out.push('"');

@@ -127,7 +127,7 @@ fn write_line<'a>(
         let (shown, src) = il_line(n);
         out.push_str(indent);
         out.push_str("// ");
-        out.push_str(itoa(shown, &mut [0; 20]));
+        crate::emit::text::push_decimal(out, shown as u64);
         out.push_str(": ");
         out.push_str(&sanitize_comment(src.trim()));
         out.push('\n');
@@ -142,20 +142,6 @@ fn write_line<'a>(
         out.push_str(line);
         out.push('\n');
     }
-}
-
-/// `n` in decimal, written into `buf` (a marker per IL line: no `format!`).
-fn itoa(mut n: usize, buf: &mut [u8; 20]) -> &str {
-    let mut at = buf.len();
-    loop {
-        at -= 1;
-        buf[at] = b'0' + (n % 10) as u8;
-        n /= 10;
-        if n == 0 {
-            break;
-        }
-    }
-    std::str::from_utf8(&buf[at..]).unwrap_or("0")
 }
 
 /// The text of a `//` comment (see `emit::text::comment_text`): most IL

@@ -32,21 +32,8 @@ pub(crate) fn widened(v: String, w: &Option<Widen>) -> String {
 /// The local `__save_N` that holds the CR across a parenthesis (one per
 /// `(`; written without `format!`, it is on many IL lines).
 pub(crate) fn saved_ident(slot: usize) -> String {
-    let mut digits = [0u8; 20];
-    let mut at = digits.len();
-    let mut n = slot;
-    loop {
-        at -= 1;
-        digits[at] = b'0' + (n % 10) as u8;
-        n /= 10;
-        if n == 0 {
-            break;
-        }
-    }
-    let mut s = String::with_capacity(7 + digits.len() - at);
+    let mut s = String::with_capacity(27);
     s.push_str("__save_");
-    for &d in &digits[at..] {
-        s.push(d as char);
-    }
+    super::text::push_decimal(&mut s, slot as u64);
     s
 }
