@@ -196,27 +196,16 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
     match pou.kind {
         PouKind::Function if pou.host => emit_host_check(o, pou),
         PouKind::Function => {
-            let ret_ty = pou
-                .ret
-                .as_ref()
-                .map(rust_ty)
-                .unwrap_or_else(|| "bool".to_string());
+            let ret_ty = fn_ret_ty(pou);
             let ret_default = pou
                 .ret
                 .as_ref()
                 .map(values::default_value)
                 .unwrap_or_else(|| "false".to_string());
-            let params = pou
-                .vars
-                .iter()
-                .filter(|v| v.kind == VarKind::Input)
-                .map(|v| format!("mut {}: {}", local_ident(&v.name), rust_ty(&v.ty)));
-            let outs = pou
-                .vars
-                .iter()
-                .filter(|v| v.kind == VarKind::Output)
-                .map(|v| format!("{}: &mut {}", local_ident(&v.name), rust_ty(&v.ty)));
-            let params = tail(params.chain(inout_params(pou)).chain(outs));
+            let params = tail(fn_params(pou).into_iter().map(|(v, ty)| {
+                let m = if v.kind == VarKind::Input { "mut " } else { "" };
+                format!("{m}{}: {ty}", local_ident(&v.name))
+            }));
             o.code(&format!(
                 "{pdoc}{ALLOW_BODY} pub fn {name}(__ctx: &mut ::il_std::Cycle{params}) -> {ret_ty} {{ let mut __ret: {ret_ty} = {ret_default};"
             ));
@@ -475,33 +464,45 @@ pub(crate) fn snapshot_item(
 /// missing or mistyped function is a rustc error that names it here.
 fn emit_host_check(o: &mut Out, pou: &CheckedPou) {
     let name = item_ident(&pou.name);
-    let ret_ty = pou
-        .ret
-        .as_ref()
-        .map(rust_ty)
-        .unwrap_or_else(|| "bool".to_string());
-    let of = |k: VarKind| pou.vars.iter().filter(move |v| v.kind == k);
-    let inputs = of(VarKind::Input).map(|v| rust_ty(&v.ty));
-    let refs = of(VarKind::InOut)
-        .chain(of(VarKind::Output))
-        .map(|v| format!("&mut {}", rust_ty(&v.ty)));
-    let params = tail(inputs.chain(refs));
+    let ret_ty = fn_ret_ty(pou);
+    let params = fn_params(pou);
+    let types = tail(params.iter().map(|(_, ty)| ty));
     let named = tail(
-        of(VarKind::Input)
-            .map(|v| format!("{}: {}", rust_ident(&v.name), rust_ty(&v.ty)))
-            .chain(
-                of(VarKind::InOut)
-                    .chain(of(VarKind::Output))
-                    .map(|v| format!("{}: &mut {}", rust_ident(&v.name), rust_ty(&v.ty))),
-            ),
+        params
+            .iter()
+            .map(|(v, ty)| format!("{}: {ty}", rust_ident(&v.name))),
     );
     let d = doc(&format!(
         " Host FUNCTION `{}` (`{{extern}}`): not generated. The crate provides `fn {name}(ctx: &mut ::il_std::Cycle{named}) -> {ret_ty}` beside this code; this constant checks that it exists with that signature.",
         pou.name
     ));
     o.code(&format!(
-        "{d} const _: fn(&mut ::il_std::Cycle{params}) -> {ret_ty} = {name};"
+        "{d} const _: fn(&mut ::il_std::Cycle{types}) -> {ret_ty} = {name};"
     ));
+}
+
+/// A FUNCTION's Rust result type (a FUNCTION without one is refused; `bool`
+/// keeps the stub of such a program compiling).
+fn fn_ret_ty(pou: &CheckedPou) -> String {
+    pou.ret
+        .as_ref()
+        .map(rust_ty)
+        .unwrap_or_else(|| "bool".to_string())
+}
+
+/// A FUNCTION's parameters after `__ctx`, each with its Rust type: the
+/// inputs by value, then the in-outs and the outputs as `&mut`, each in
+/// declaration order (generated FUNCTIONs and host functions alike).
+fn fn_params(pou: &CheckedPou) -> Vec<(&crate::sema::ir::Var, String)> {
+    let of = |k: VarKind| pou.vars.iter().filter(move |v| v.kind == k);
+    of(VarKind::Input)
+        .map(|v| (v, rust_ty(&v.ty)))
+        .chain(
+            of(VarKind::InOut)
+                .chain(of(VarKind::Output))
+                .map(|v| (v, format!("&mut {}", rust_ty(&v.ty)))),
+        )
+        .collect()
 }
 
 fn inout_params(pou: &CheckedPou) -> Vec<String> {
