@@ -43,6 +43,8 @@ impl Writer {
         if s.is_empty() {
             return;
         }
+        // One step per piece (a chunk of text), not per byte.
+        crate::work::add(1);
         let hi = at.end.max(at.start);
         self.pieces.push(Piece {
             il: u(self.text.len()),
@@ -58,6 +60,7 @@ impl Writer {
         if s.is_empty() {
             return;
         }
+        crate::work::add(1);
         self.pieces.push(Piece {
             il: u(self.text.len()),
             xml_lo: u(xml_start),
