@@ -96,25 +96,15 @@ fn structure(stmts: &[Stmt], label_pos: &[Option<usize>]) -> Option<Vec<Region>>
     // the top of the body instead nested every label's block around all
     // the code before it: 40 labels were 40 levels of indentation, 79% of
     // the bytes of the 10k-line benchmark's output.
-    let mut moved = true;
-    while moved {
-        moved = false;
-        for b in 0..regions.len() {
-            if regions[b].is_loop {
-                continue;
-            }
-            let r = regions[b];
-            if let Some(lo) = regions
-                .iter()
-                .filter(|s| s.lo < r.lo && r.lo < s.hi && s.hi <= r.hi)
-                .map(|s| s.lo)
-                .min()
-            {
-                regions[b].lo = lo;
-                moved = true;
-            }
-        }
+    if !widen_blocks(&mut regions, stmts.len() + 1) {
+        return None;
     }
+    nest(regions)
+}
+
+/// Sorts the regions outer first and checks that they nest; `None` if not
+/// or too deep.
+fn nest(mut regions: Vec<Region>) -> Option<Vec<Region>> {
     // Outer regions first; of two equal ranges, the block is outside.
     regions.sort_by_key(|r| (r.lo, std::cmp::Reverse(r.hi), r.is_loop));
     // Nesting: each region lies inside or after the ones opened before it.
@@ -132,6 +122,63 @@ fn structure(stmts: &[Stmt], label_pos: &[Option<usize>]) -> Option<Vec<Region>>
         }
     }
     Some(regions)
+}
+
+/// Moves each block's `lo` up as `structure` describes, in one sweep by
+/// `hi` (loops before blocks of the same `hi`): a block moves only to the
+/// `lo` of regions ending at or before it, which are then final. Of the
+/// final regions holding a point strictly inside, one query gives the
+/// least `lo`; were a second move possible, two final regions would cross
+/// and `nest` would refuse them anyway: `false` then. A tree over the
+/// positions `0..len` keeps, per node, the least `lo` of the regions
+/// covering it: O(R log len) instead of the fixpoint's O(R^2) per pass.
+fn widen_blocks(regions: &mut [Region], len: usize) -> bool {
+    let mut order: Vec<usize> = (0..regions.len()).collect();
+    order.sort_unstable_by_key(|&i| (regions[i].hi, !regions[i].is_loop, i));
+    let size = len.next_power_of_two();
+    let mut tree = vec![usize::MAX; 2 * size];
+    // The least `lo` of the regions inserted so far with lo < x < hi.
+    let query = |tree: &[usize], x: usize| {
+        let (mut k, mut best, mut steps) = (x + size, usize::MAX, 0);
+        while k > 0 {
+            best = best.min(tree[k]);
+            k /= 2;
+            steps += 1;
+        }
+        crate::work::add(steps);
+        best
+    };
+    for i in order {
+        let mut r = regions[i];
+        if !r.is_loop && r.lo < len {
+            let lo = query(&tree, r.lo);
+            if lo < r.lo {
+                r.lo = lo;
+                if query(&tree, r.lo) < r.lo {
+                    return false;
+                }
+                regions[i].lo = lo;
+            }
+        }
+        // Cover the positions r.lo+1 ..= r.hi-1 with r.lo.
+        let (mut a, mut b) = (r.lo + 1 + size, r.hi.min(len) + size);
+        let mut steps = 1;
+        while a < b {
+            if a & 1 == 1 {
+                tree[a] = tree[a].min(r.lo);
+                a += 1;
+            }
+            if b & 1 == 1 {
+                b -= 1;
+                tree[b] = tree[b].min(r.lo);
+            }
+            a /= 2;
+            b /= 2;
+            steps += 1;
+        }
+        crate::work::add(steps);
+    }
+    true
 }
 
 /// See [`PouEmitter::seq`].
@@ -590,3 +637,7 @@ impl PouEmitter<'_> {
         }
     }
 }
+
+#[cfg(test)]
+#[path = "flow_tests.rs"]
+mod tests;
