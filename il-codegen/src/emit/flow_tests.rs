@@ -51,8 +51,8 @@ fn layout(rng: &mut Rng) -> (Vec<Region>, usize) {
         }
     }
     let (mut loop_end, mut first) = (vec![None; n_labels], vec![None; n_labels]);
-    for j in 0..len {
-        if at[j].is_some() || rng.below(3) == 0 {
+    for (j, label_here) in at.iter().enumerate() {
+        if label_here.is_some() || rng.below(3) == 0 {
             continue;
         }
         let l = rng.below(n_labels);
