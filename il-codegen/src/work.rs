@@ -1,12 +1,13 @@
 //! A count of the front end's elementary steps on this thread: lexer steps,
 //! columns counted, instructions checked, edges joined at labels,
 //! suggestion distances, lines of an XML body mapped, lines of a generated
-//! file written, and in the PLCopen import: XML children visited, attributes
-//! checked, pieces of IL text written (copied or generated), program
-//! instances looked up; types resolved for the nesting check (once each). The scaling tests (`tests/all/scaling.rs`, the PLCopen
-//! limits) compare it at n and 8n: unlike a time ratio it is the same on a
-//! busy machine, and a stage whose work grows faster than its input shows up
-//! in it as it would in the time. Counting is one thread-local add per step
+//! file written, tree steps of the emitter's block structure; in the PLCopen
+//! import: XML children visited, attributes checked, pieces of IL text
+//! written (copied or generated); types resolved for the nesting check (once
+//! each). The scaling tests (`tests/all/scaling.rs`, the PLCopen limits)
+//! compare it at n and 8n: unlike a time ratio it is the same on a busy
+//! machine, and a stage whose work grows faster than its input shows up in
+//! it as it would in the time. Counting is one thread-local add per step
 //! (not per byte), below measurement on the front-end benchmarks.
 
 use std::cell::Cell;

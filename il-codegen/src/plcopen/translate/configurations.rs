@@ -17,8 +17,6 @@ impl Tr<'_, '_> {
             let instances = kids(*r, "pouInstance")
                 .chain(kids(*r, "task").flat_map(|t| kids(t, "pouInstance")));
             for i in instances {
-                // One step per lookup: a scan of the POUs would be one per POU.
-                crate::work::add(1);
                 let ty = i.attribute("typeName").unwrap_or("");
                 if let Some(p) = self
                     .left_out
