@@ -63,28 +63,16 @@ fn layout(rng: &mut Rng) -> (Vec<Region>, usize) {
             first[l] = Some(j);
         }
     }
-    let mut regions = Vec::new();
-    for l in 0..n_labels {
-        if let (Some(hi), Some(lo)) = (loop_end[l], label_pos[l]) {
-            regions.push(Region {
-                lo,
-                hi,
-                label: l,
-                is_loop: true,
-            });
-        }
-    }
-    for l in 0..n_labels {
-        if let (Some(lo), Some(hi)) = (first[l], label_pos[l]) {
-            regions.push(Region {
-                lo,
-                hi,
-                label: l,
-                is_loop: false,
-            });
-        }
-    }
-    (regions, len + 1)
+    let region = |label, lo, hi, is_loop| Region {
+        lo,
+        hi,
+        label,
+        is_loop,
+    };
+    // Loops first, then blocks, in label order: as `structure` pushes them.
+    let loops = (0..n_labels).filter_map(|l| Some(region(l, label_pos[l]?, loop_end[l]?, true)));
+    let blocks = (0..n_labels).filter_map(|l| Some(region(l, first[l]?, label_pos[l]?, false)));
+    (loops.chain(blocks).collect(), len + 1)
 }
 
 fn key(r: Option<Vec<Region>>) -> Option<Vec<(usize, usize, usize, bool)>> {
