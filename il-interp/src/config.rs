@@ -169,6 +169,16 @@ impl ConfigMachine {
         if !a.writable {
             return Err(format!("the access path `{}` is READ_ONLY", a.name));
         }
+        // As the generated setter: a value outside the subrange is refused.
+        if let (Some((lo, hi)), Value::Int(x, _)) = (a.range, &v)
+            && (*x < lo || *x > hi)
+        {
+            return Err(format!(
+                "{x} is outside the subrange {lo}..{hi} of the access path `{}` ({})",
+                a.name,
+                il_std::FaultKind::SubrangeViolation
+            ));
+        }
         match &a.target {
             AccessTarget::Global { global, steps } => self.set_global_at(*global, steps, v)?,
             AccessTarget::Instance(p) => self.set_field(p, v)?,

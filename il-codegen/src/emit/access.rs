@@ -2,6 +2,7 @@
 //! path and, for READ_WRITE, a setter.
 
 use super::text::doc;
+use super::values::constant;
 use super::{rust_ident, rust_ty};
 use crate::sema::ir::{AccessTarget, ConfigDef, Const, PathElem, Value};
 
@@ -50,12 +51,29 @@ pub(super) fn methods(c: &ConfigDef) -> String {
         out.push_str(&format!(
             "{d}pub fn {get}(&self) -> {ty} {{ ::core::clone::Clone::clone(&{path}) }}"
         ));
-        if a.writable {
-            let set = rust_ident(&format!("set_access_{}", a.name));
-            let d = doc(&format!(" Writes VAR_ACCESS `{}` (READ_WRITE).", a.name));
-            out.push_str(&format!(
-                "{d}pub fn {set}(&mut self, value: {ty}) {{ {path} = value; }}"
-            ));
+        if !a.writable {
+            continue;
+        }
+        let set = rust_ident(&format!("set_access_{}", a.name));
+        match (a.range, a.ty.elem()) {
+            // A subrange place keeps its value when the host's is outside
+            // it, as a store in a body skips it; the host is told.
+            (Some((lo, hi)), Some(e)) => {
+                let d = doc(&format!(
+                    " Writes VAR_ACCESS `{}` (READ_WRITE). A value outside the subrange {lo}..{hi} is not written: `Err(FaultKind::SubrangeViolation)`.",
+                    a.name
+                ));
+                let (lo, hi) = (constant(&Const::Int(lo, e)), constant(&Const::Int(hi, e)));
+                out.push_str(&format!(
+                    "{d}pub fn {set}(&mut self, value: {ty}) -> ::core::result::Result<(), ::il_std::FaultKind> {{ if !({lo}..={hi}).contains(&value) {{ return ::core::result::Result::Err(::il_std::FaultKind::SubrangeViolation); }} {path} = value; ::core::result::Result::Ok(()) }}"
+                ));
+            }
+            _ => {
+                let d = doc(&format!(" Writes VAR_ACCESS `{}` (READ_WRITE).", a.name));
+                out.push_str(&format!(
+                    "{d}pub fn {set}(&mut self, value: {ty}) {{ {path} = value; }}"
+                ));
+            }
         }
     }
     out

@@ -136,6 +136,7 @@ pub(crate) fn access(
             target,
             ty,
             writable: d.writable,
+            range: named.range,
         });
     }
     out

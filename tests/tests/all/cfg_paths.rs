@@ -73,12 +73,61 @@ macro_rules! paths_tests {
             fn access_paths_read_and_write_elements_and_members() {
                 assert_eq!(run(), expected());
             }
+
+            #[test]
+            fn a_write_outside_a_subrange_is_refused_and_the_place_kept() {
+                use il_std::FaultKind::SubrangeViolation;
+                let mut c = CfgPaths::default();
+                // Unwritten subrange places start at their lower limits.
+                assert_eq!(
+                    (c.access_Level(), c.access_Step2(), c.access_Gz()),
+                    (0, 1, -10)
+                );
+                assert_eq!(c.set_access_Level(100), Ok(()));
+                assert_eq!(c.set_access_Level(101), Err(SubrangeViolation));
+                assert_eq!(c.set_access_Level(-1), Err(SubrangeViolation));
+                assert_eq!(c.set_access_Step2(0), Err(SubrangeViolation));
+                assert_eq!(c.set_access_Step2(9), Ok(()));
+                assert_eq!(c.set_access_Step2(10), Err(SubrangeViolation));
+                assert_eq!(c.set_access_Gz(-11), Err(SubrangeViolation));
+                assert_eq!(c.set_access_Gz(-10), Ok(()));
+                assert_eq!(
+                    (c.access_Level(), c.access_Step2(), c.access_Gz()),
+                    (100, 9, -10)
+                );
+                assert_eq!((c.RES1.P1.level, c.RES1.P1.steps[1], c.g.z), (100, 9, -10));
+                // A place without a subrange takes any value of its type.
+                c.set_access_H3(i16::MIN);
+                assert_eq!(c.access_H3(), i16::MIN);
+            }
         }
     };
 }
 
 paths_tests!(via_build);
 paths_tests!(via_macro);
+
+#[test]
+fn the_interpreter_refuses_a_write_outside_a_subrange() {
+    use il_interp::ConfigMachine;
+    let src = std::fs::read_to_string("plc/cfg_paths.il").expect("read");
+    let file = il_codegen::diag::SourceFile::new("cfg_paths.il", src);
+    let prog = il_interp::load(&file).expect("checks");
+    let mut c = ConfigMachine::new(&prog, "CfgPaths").expect("configuration");
+    let int = |v: i128| il_interp::int(v, il_codegen::sema::types::Elem::INT);
+    let usint = |v: i128| il_interp::int(v, il_codegen::sema::types::Elem::USINT);
+    c.set_access("Level", int(100)).expect("inside");
+    let e = c.set_access("Level", int(101)).unwrap_err();
+    assert!(e.contains("outside the subrange 0..100"), "{e}");
+    assert!(c.set_access("Step2", usint(0)).is_err());
+    c.set_access("Step2", usint(9)).expect("inside");
+    assert!(c.set_access("Gz", int(11)).is_err());
+    let get = |c: &ConfigMachine, n: &str| c.access(n).expect("access path").as_i64();
+    assert_eq!(
+        (get(&c, "Level"), get(&c, "Step2"), get(&c, "Gz")),
+        (100, 9, -10)
+    );
+}
 
 #[test]
 fn the_interpreter_reads_and_writes_the_same_places() {

@@ -86,6 +86,9 @@ pub struct AccessDef {
     pub ty: Ty,
     /// READ_WRITE; READ_ONLY (the default) offers no setter.
     pub writable: bool,
+    /// The subrange of the named place: a write outside it is refused
+    /// (the place keeps its value), as a store in a body skips it.
+    pub range: Option<(i128, i128)>,
 }
 
 /// What an access path names.
