@@ -58,8 +58,8 @@ impl ConfigMachine {
         }
         let (root, parts) = split(text)?;
         if let Some(i) = (self.def.access.iter()).position(|a| a.name.eq_ignore_ascii_case(root)) {
-            let ty = self.def.access[i].ty.clone();
-            let (steps, ty, range) = self.m.resolve_parts(ty, None, &parts, text)?;
+            let (ty, range) = (self.def.access[i].ty.clone(), self.def.access[i].range);
+            let (steps, ty, range) = self.m.resolve_parts(ty, range, &parts, text)?;
             return Ok(place(ty, range, Target::Access(i, steps)));
         }
         // `Res.x...`: x is a global or a program instance of that resource.

@@ -225,7 +225,10 @@ fn members_and_elements_of_globals_access_paths_and_program_variables() {
 #[test]
 fn wrong_paths_into_a_configuration_say_what_was_meant() {
     for (watch, want) in [
-        ("g.z", "`g.z`: CpPoint has no member `z`; did you mean `x`?"),
+        (
+            "g.xx",
+            "`g.xx`: CpPoint has no member `xx`; did you mean `x`?",
+        ),
         ("h[5]", "`h[5]`: subscript 5 is outside the bounds 1..4"),
         (
             "gg",
@@ -256,4 +259,43 @@ fn wrong_paths_into_a_configuration_say_what_was_meant() {
         assert_eq!(o.status.code(), Some(1), "{watch}: {err}");
         assert!(err.contains(want), "{watch}: {err}");
     }
+}
+
+#[test]
+fn a_set_outside_a_subrange_is_refused_for_access_paths_and_places() {
+    for (set, want) in [
+        (
+            "Level=101",
+            "`101` is outside the subrange 0..100 of `Level`",
+        ),
+        ("Step2=0", "`0` is outside the subrange 1..9 of `Step2`"),
+        ("Gz=11", "`11` is outside the subrange -10..10 of `Gz`"),
+        (
+            "RES1.P1.level=-1",
+            "`-1` is outside the subrange 0..100 of `RES1.P1.level`",
+        ),
+    ] {
+        let o = ilc(&[
+            "run", CFG_PATHS, "--config", "CfgPaths", "--cycles", "1", "--set", set,
+        ]);
+        let err = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{set}: {err}");
+        assert!(err.contains(want), "{set}: {err}");
+    }
+    let o = ilc(&[
+        "run",
+        CFG_PATHS,
+        "--config",
+        "CfgPaths",
+        "--cycles",
+        "1",
+        "--set",
+        "Level=100",
+        "--watch",
+        "Level,RES1.P1.level",
+    ]);
+    let out = text(&o.stdout);
+    assert!(o.status.success(), "{out}{}", text(&o.stderr));
+    assert_eq!(column(&out, "Level"), ["100"]);
+    assert_eq!(column(&out, "RES1.P1.level"), ["100"]);
 }
