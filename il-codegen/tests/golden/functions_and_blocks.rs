@@ -11,7 +11,9 @@ pub fn Scale(__ctx: &mut ::il_std::Cycle, mut __v_raw: i16, mut __v_span: i16) -
     // 6: MUL( span
     __save_0 = __cr_int;
     __cr_int = __v_span;
+    // 7: ADD  1
     __cr_int = __cr_int.wrapping_add(1i16);
+    // 6: MUL( span
     __cr_int = __save_0.wrapping_mul(__cr_int);
     // 9: DIV  100
     __cr_int = __cr_int.wrapping_div(100i16);

@@ -36,7 +36,7 @@ macro_rules! fault_tests {
     ($m:ident) => {
         mod $m {
             use super::*;
-            use il_tests::$m::{RtDiv, RtDivForms, RtFaults, RtGrid};
+            use il_tests::$m::{RtDiv, RtDivForms, RtFaults, RtGrid, RtParens};
 
             fn faults(ctx: &Cycle) -> Vec<(FaultKind, &'static str, u32)> {
                 ctx.faults().map(|f| (f.kind, f.pou, f.line)).collect()
@@ -134,6 +134,15 @@ macro_rules! fault_tests {
             }
 
             #[test]
+            fn a_fault_inside_parentheses_names_its_own_line() {
+                let mut ctx = Cycle::new();
+                let mut p = RtParens::default();
+                p.call(&mut ctx);
+                assert_eq!((p.q, p.m), (5, 0));
+                assert_eq!(faults(&ctx), PARENS);
+            }
+
+            #[test]
             fn a_function_and_a_block_record_their_own_pou() {
                 let mut ctx = Cycle::new();
                 assert_eq!(RtDiv(&mut ctx, 7, 0), 0);
@@ -162,8 +171,28 @@ macro_rules! fault_tests {
     };
 }
 
+/// RtParens: the DIV inside `MUL(` ... `)` on its own line, the `MOD(`
+/// operator itself on its line.
+const PARENS: &[(FaultKind, &str, u32)] = &[
+    (FaultKind::DivisionByZero, "RtParens", 137),
+    (FaultKind::DivisionByZero, "RtParens", 142),
+];
+
 fault_tests!(via_build);
 fault_tests!(via_macro);
+
+/// The interpreter records the same lines (from the same checked IR).
+#[test]
+fn the_interpreter_names_the_line_inside_parentheses() {
+    let text = std::fs::read_to_string("plc/runtime_faults.il").expect("read");
+    let file = il_codegen::diag::SourceFile::new("runtime_faults.il", text);
+    let prog = il_interp::load(&file).expect("checks");
+    let mut m = il_interp::Machine::new(&prog, "RtParens").expect("instance");
+    let mut ctx = Cycle::new();
+    m.scan(&mut ctx).expect("scans");
+    let got: Vec<_> = ctx.faults().map(|f| (f.kind, f.pou, f.line)).collect();
+    assert_eq!(got, PARENS);
+}
 
 /// Resource limits: generated code must not abort either.
 macro_rules! limit_tests {

@@ -62,6 +62,10 @@ impl Walk<'_, '_> {
             Some(o) => self.load(false, o, span),
             None => Cr::Undef(Why::Start),
         };
+        // Each inner instruction's statements carry its own line (a fault
+        // there names it, its comment is above them); the operator's own
+        // statements, after the `)`, carry the operator's line again.
+        let (line, col) = (self.line, self.col);
         for s in body {
             match s {
                 ast::Stmt::Label(id) => {
@@ -71,9 +75,13 @@ impl Walk<'_, '_> {
                         "a label is not allowed inside parentheses",
                     );
                 }
-                ast::Stmt::Instr(ii) => inner = self.instr(ii, inner, true),
+                ast::Stmt::Instr(ii) => {
+                    self.at(ii.span);
+                    inner = self.instr(ii, inner, true);
+                }
             }
         }
+        (self.line, self.col) = (line, col);
         let Some(rhs) = self.use_cr(&inner, close_span) else {
             return Cr::Undef(Why::Error);
         };
