@@ -202,10 +202,39 @@ fn stubs(files: &[&SourceFile], opts: emit::Options, standard: crate::Standard) 
     };
     let mut configs = std::mem::take(&mut program.configs);
     for c in &mut configs {
-        for r in &mut c.resources {
+        // VAR_CONFIG and VAR_ACCESS name an instance by its position: the
+        // kept instances' new positions, `None` for one left out.
+        let kept: Vec<Vec<Option<usize>>> = (c.resources.iter())
+            .map(|r| {
+                let mut n = 0;
+                (r.programs.iter())
+                    .map(|pi| {
+                        let bound = externals(&pi.program) == Some(pi.externals.len());
+                        bound.then(|| {
+                            n += 1;
+                            n - 1
+                        })
+                    })
+                    .collect()
+            })
+            .collect();
+        for (r, k) in c.resources.iter_mut().zip(&kept) {
+            let mut at = k.iter();
             r.programs
-                .retain(|pi| externals(&pi.program) == Some(pi.externals.len()));
+                .retain(|_| at.next().is_some_and(|x| x.is_some()));
         }
+        let moved = |p: &mut sema::ir::InstancePath| match kept[p.resource][p.program] {
+            Some(k) => {
+                p.program = k;
+                true
+            }
+            None => false,
+        };
+        c.var_config.retain_mut(|v| moved(&mut v.target));
+        c.access.retain_mut(|a| match &mut a.target {
+            sema::ir::AccessTarget::Instance(p) => moved(p),
+            sema::ir::AccessTarget::Global { .. } => true,
+        });
     }
     program.configs = configs;
     emit::program(&program, opts)

@@ -170,3 +170,28 @@ fn std_option_selects_the_standard() {
         text(&bad)
     );
 }
+
+/// A program instance left out of the stubs (its global is missing) shifts
+/// the positions VAR_CONFIG and VAR_ACCESS name instances by: the paths into
+/// it go, the others follow their instance (a fuzzed input indexed past the
+/// end, in `emit::config_vars::place`).
+#[test]
+fn stubs_without_an_unbound_instance_keep_the_paths_into_the_others() {
+    let il = "PROGRAM Uses\nVAR_EXTERNAL g : INT; END_VAR\nVAR a : INT; END_VAR\n    LD g\n    ST a\nEND_PROGRAM\n\
+PROGRAM Plain\nVAR b : INT; END_VAR\n    LD b\n    ST b\nEND_PROGRAM\n\
+CONFIGURATION C\nRESOURCE R ON PLC\n    PROGRAM P1 : Uses;\n    PROGRAM P2 : Plain;\nEND_RESOURCE\n\
+VAR_CONFIG\n    R.P1.a : INT := 1;\n    R.P2.b : INT := 7;\nEND_VAR\n\
+VAR_ACCESS\n    A : R.P1.a : INT READ_WRITE;\n    B : R.P2.b : INT READ_WRITE;\nEND_VAR\nEND_CONFIGURATION\n";
+    let e = expand(&[s(il)]);
+    let t = text(&e);
+    assert!(t.contains("no global") || t.contains("`g`"), "{t}");
+    assert!(!t.contains("internal"), "{t}");
+    syn::parse_file(&e.code).unwrap_or_else(|err| panic!("{err}\n{t}"));
+    let code: String = e.code.split_whitespace().collect();
+    assert!(
+        code.contains("fnaccess_B(&self)->i16{::core::clone::Clone::clone(&self.R.P2.b)}"),
+        "{t}"
+    );
+    assert!(code.contains("__s.R.P2.b=7i16;"), "{t}");
+    assert!(!code.contains("access_A") && !code.contains("P1"), "{t}");
+}
