@@ -125,12 +125,15 @@ impl Walk<'_, '_> {
                         return None;
                     };
                     let fb = fb.clone();
-                    if let Some(field) = self
-                        .env
-                        .types
-                        .structs
-                        .get(&fb.to_ascii_uppercase())
-                        .and_then(|fs| fs.iter().find(|x| f.is(&x.name)))
+                    // Only a structure's fields have subranges (a type name
+                    // is not also an FB's).
+                    if let Ty::Struct(_) = &ty
+                        && let Some(field) = self
+                            .env
+                            .types
+                            .structs
+                            .get(&fb.to_ascii_uppercase())
+                            .and_then(|fs| fs.iter().find(|x| f.is(&x.name)))
                     {
                         range = field.range;
                     }
@@ -290,6 +293,51 @@ impl Walk<'_, '_> {
         name: &str,
         span: Span,
     ) -> Option<(String, Ty, bool)> {
+        // Most FB accesses name a member that exists: found directly; the
+        // list of all members is built only for the message.
+        if let Some(m) = self.find_member(fb, name) {
+            return Some(m);
+        }
+        let all = self.members(fb);
+        let hint = suggest(name, all.iter().map(|(n, _, _)| n.as_str()))
+            .map(|s| format!("did you mean `{s}`?"));
+        let list: Vec<&str> = all.iter().map(|(n, _, _)| n.as_str()).collect();
+        if let Some(d) = self.err(
+            UNKNOWN_MEMBER,
+            span,
+            format!("{fb} has no input or output `{name}`"),
+        ) {
+            d.notes.push(format!("{fb} has: {}", list.join(", ")));
+            d.help = hint;
+        }
+        None
+    }
+
+    /// The member `name` of FB type `fb`, as [`Walk::members`] lists them.
+    fn find_member(&self, fb: &str, name: &str) -> Option<(String, Ty, bool)> {
+        if let Some(s) = stdfb::lookup(fb) {
+            let find = |list: &[(&str, Elem)], input: bool| {
+                (list.iter().find(|(n, _)| n.eq_ignore_ascii_case(name)))
+                    .map(|(n, e)| (n.to_string(), Ty::Elem(*e), input))
+            };
+            return find(&s.inputs, true).or_else(|| find(&s.outputs, false));
+        }
+        if let Some(fields) = self.env.types.structs.get(&fb.to_ascii_uppercase()) {
+            let f = fields.iter().find(|f| f.name.eq_ignore_ascii_case(name))?;
+            return Some((f.name.clone(), f.ty.clone(), true));
+        }
+        let (_, v) = self.env.pou(fb)?.var(name)?;
+        match v.kind {
+            ast::VarKind::Input => Some((v.name.clone(), v.ty.clone(), true)),
+            ast::VarKind::Output => Some((v.name.clone(), v.ty.clone(), false)),
+            _ => None,
+        }
+    }
+
+    /// Every member of FB type `fb`: (declared name, type, is it an input),
+    /// inputs before outputs for a standard block, in declaration order
+    /// otherwise.
+    fn members(&self, fb: &str) -> Vec<(String, Ty, bool)> {
         let mut all: Vec<(String, Ty, bool)> = Vec::new();
         if let Some(s) = stdfb::lookup(fb) {
             all.extend(
@@ -314,20 +362,6 @@ impl Walk<'_, '_> {
                 }
             }
         }
-        if let Some(m) = all.iter().find(|(n, _, _)| n.eq_ignore_ascii_case(name)) {
-            return Some(m.clone());
-        }
-        let hint = suggest(name, all.iter().map(|(n, _, _)| n.as_str()))
-            .map(|s| format!("did you mean `{s}`?"));
-        let list: Vec<&str> = all.iter().map(|(n, _, _)| n.as_str()).collect();
-        if let Some(d) = self.err(
-            UNKNOWN_MEMBER,
-            span,
-            format!("{fb} has no input or output `{name}`"),
-        ) {
-            d.notes.push(format!("{fb} has: {}", list.join(", ")));
-            d.help = hint;
-        }
-        None
+        all
     }
 }
