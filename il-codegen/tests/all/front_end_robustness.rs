@@ -379,3 +379,34 @@ fn column_at_the_end_of_whole_blocks() {
         }
     }
 }
+
+/// Line and column at every character boundary, against counting from the
+/// start of the text: newlines on both sides of the 256-byte block borders,
+/// multi-byte characters across them, CRLF, an empty text, a text ending in
+/// a newline.
+#[test]
+fn line_col_agrees_with_counting_from_the_start() {
+    let mut texts = vec![String::new(), "\n".into(), "\n\n".into(), "a\r\nb".into()];
+    for at in [254usize, 255, 256, 257, 511, 512] {
+        let mut t = "x".repeat(at);
+        t.push('\n');
+        t.push_str("é€\n\nyz");
+        texts.push(t.clone());
+        t.push('\n');
+        texts.push(t);
+        let mut m = "é".repeat(at / 2);
+        m.push('\n');
+        m.push_str(&"x".repeat(300));
+        texts.push(m);
+    }
+    for text in texts {
+        let f = il_codegen::diag::SourceFile::new("t.il", text.clone());
+        for (off, _) in text.char_indices().chain([(text.len(), ' ')]) {
+            let before = &text[..off];
+            let line = before.matches('\n').count() + 1;
+            let col = before.rsplit('\n').next().unwrap().chars().count() + 1;
+            assert_eq!(f.line_col(off as u32), (line, col), "{off} in {text:?}");
+            assert_eq!(f.line_of(off as u32), line, "{off} in {text:?}");
+        }
+    }
+}
