@@ -86,10 +86,7 @@ impl Writer {
     /// [`SpanMap::offset_to_xml`], before the map is finished).
     pub(crate) fn xml_at(&self, off: usize) -> usize {
         let off = u(off);
-        let i = self
-            .pieces
-            .partition_point(|p| p.il <= off)
-            .saturating_sub(1);
+        let i = piece_before(&self.pieces, off);
         match self.pieces.get(i) {
             Some(p) if p.linear => (p.xml_lo + (off - p.il.min(off))).min(p.xml_hi) as usize,
             Some(p) => p.xml_lo as usize,
@@ -110,6 +107,20 @@ impl Writer {
     }
 }
 
+/// The last piece starting at or before IL byte `off` (0 when none does).
+/// One step per piece compared: a binary search compares about log2 of
+/// them, and a look-up that became a scan of the map (once per IL line in
+/// `Import::xml_lines`) would grow with the square of the body in the
+/// scaling tests.
+fn piece_before(pieces: &[Piece], off: u32) -> usize {
+    pieces
+        .partition_point(|p| {
+            crate::work::add(1);
+            p.il <= off
+        })
+        .saturating_sub(1)
+}
+
 /// Where each byte of a generated IL text came from in its XML file.
 #[derive(Clone, Debug, Default)]
 pub struct SpanMap {
@@ -127,8 +138,7 @@ impl SpanMap {
         if self.pieces.is_empty() {
             return None;
         }
-        let i = self.pieces.partition_point(|p| p.il <= off);
-        Some(i.saturating_sub(1))
+        Some(piece_before(&self.pieces, off))
     }
 
     fn lo(&self, off: u32) -> u32 {

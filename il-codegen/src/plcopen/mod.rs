@@ -113,9 +113,30 @@ pub struct Import {
     pub pous: Vec<PouInfo>,
     /// Where the bytes of `il` came from in `xml`.
     pub map: SpanMap,
-    /// The POUs left out, by lower-case name (index into `pous`): one look-up
-    /// per diagnostic, not a scan of every POU.
-    left_out: HashMap<String, usize>,
+    /// The POUs left out: one look-up per diagnostic, not a scan of every
+    /// POU.
+    left_out: LeftOut,
+}
+
+/// The POUs left out (not IL) by lower-case name, as an index into the
+/// project's POUs. A look-up counts one step per candidate it compares (a
+/// hash look-up compares about one): a look-up that became a scan of every
+/// POU would then grow with the square of the project in the scaling tests
+/// (`tests_limits.rs`), which do not time anything.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct LeftOut(HashMap<String, usize>);
+
+impl LeftOut {
+    /// Note POU `k` named `name` (the first of a name is kept).
+    pub(crate) fn note(&mut self, name: &str, k: usize) {
+        self.0.entry(name.to_ascii_lowercase()).or_insert(k);
+    }
+
+    /// The POU named `name` (in any case), when it was left out.
+    pub(crate) fn get(&self, name: &str) -> Option<usize> {
+        crate::work::add(1);
+        self.0.get(&name.to_ascii_lowercase()).copied()
+    }
 }
 
 /// A readable name for a TC6 body language.
@@ -155,9 +176,9 @@ impl Import {
     pub fn new(xml: SourceFile) -> Import {
         let t = Self::translate(&xml);
         let il = SourceFile::new(xml.name.clone(), t.text);
-        let mut left_out = HashMap::new();
+        let mut left_out = LeftOut::default();
         for (k, p) in t.pous.iter().enumerate().filter(|(_, p)| !p.translated) {
-            left_out.entry(p.name.to_ascii_lowercase()).or_insert(k);
+            left_out.note(&p.name, k);
         }
         Import {
             xml,
@@ -241,11 +262,10 @@ impl Import {
     /// secondary spans); a name of a POU that was left out gets a note.
     pub fn to_xml(&self, mut d: Diagnostic) -> Diagnostic {
         let word = self.il.snippet(d.span).trim();
-        if let Some(p) = self
-            .left_out
-            .get(&word.to_ascii_lowercase())
-            .filter(|_| word.len() <= MAX_NAME)
-            .map(|&k| &self.pous[k])
+        if let Some(p) = Some(word)
+            .filter(|w| w.len() <= MAX_NAME)
+            .and_then(|w| self.left_out.get(w))
+            .map(|k| &self.pous[k])
         {
             d.notes.push(format!(
                 "`{}` is a {} of this project whose body is {} ({}); it was not translated",

@@ -210,25 +210,30 @@ fn long_names() {
     );
 }
 
+/// MATIEC-style code: a label every few lines, jumps forward and back.
+fn labels(n: usize) -> Vec<SourceFile> {
+    let mut s = String::from("PROGRAM P\nVAR x : INT; b : BOOL; END_VAR\n");
+    for i in 0..n {
+        s.push_str(&format!(
+            "L{i}:\n    LD x\n    ADD 1\n    ST x\n    GT {i}\n    ST b\n    LD b\n    JMPC L{}\n",
+            (i + 1).min(n - 1)
+        ));
+    }
+    s.push_str("    LD b\n    JMPCN L0\n");
+    one("t.il", s + "END_PROGRAM\n")
+}
+
 #[test]
 fn many_labels() {
-    // MATIEC-style code: a label every few lines, jumps forward and back.
-    assert_linear(
-        "many labels",
-        true,
-        |n| {
-            let mut s = String::from("PROGRAM P\nVAR x : INT; b : BOOL; END_VAR\n");
-            for i in 0..n {
-                s.push_str(&format!(
-                    "L{i}:\n    LD x\n    ADD 1\n    ST x\n    GT {i}\n    ST b\n    LD b\n    JMPC L{}\n",
-                    (i + 1).min(n - 1)
-                ));
-            }
-            s.push_str("    LD b\n    JMPCN L0\n");
-            one("t.il", s + "END_PROGRAM\n")
-        },
-        40,
-    );
+    assert_linear("many labels", true, labels, 40);
+}
+
+/// The emitter's block structure (loops and blocks around the labels) at
+/// sizes where a quadratic part dominates the constant ones: 250 and 2000
+/// labels, 16k lines, checked and emitted.
+#[test]
+fn many_labels_large() {
+    assert_linear("many labels, large", true, labels, 250);
 }
 
 #[test]

@@ -18,11 +18,7 @@ impl Tr<'_, '_> {
                 .chain(kids(*r, "task").flat_map(|t| kids(t, "pouInstance")));
             for i in instances {
                 let ty = i.attribute("typeName").unwrap_or("");
-                if let Some(p) = self
-                    .left_out
-                    .get(&ty.to_ascii_lowercase())
-                    .map(|&k| &self.pous[k])
-                {
+                if let Some(p) = self.left_out.get(ty).map(|k| &self.pous[k]) {
                     let msg = format!(
                         "CONFIGURATION `{name}` is not translated: its instance `{}` runs POU `{}`, whose body is {} ({})",
                         shown(i.attribute("name").unwrap_or("")),

@@ -17,7 +17,7 @@ use super::codes::{
 use super::map::{SpanMap, Writer};
 use super::text::{attr_into, content_range, decode_content, start_tag};
 use super::validate::{self, Kind, shown};
-use super::{PouInfo, language_name};
+use super::{LeftOut, PouInfo, language_name};
 use crate::ast::Span;
 use crate::diag::Diagnostic;
 use crate::syntax::lexer::{self, Tok};
@@ -79,9 +79,9 @@ struct Tr<'a, 'i> {
     pous: Vec<PouInfo>,
     /// Globals by lower-case name, for `VAR_EXTERNAL CONSTANT`.
     globals: HashMap<String, Vec<Global<'a, 'i>>>,
-    /// POUs left out (not IL) by lower-case name: index into `pous`, so
-    /// that program instances find theirs without a scan per instance.
-    left_out: HashMap<String, usize>,
+    /// POUs left out (not IL), so that program instances find theirs
+    /// without a scan per instance.
+    left_out: LeftOut,
 }
 
 fn is(n: &Node, name: &str) -> bool {
@@ -118,7 +118,7 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
         diags: Vec::new(),
         pous: Vec::new(),
         globals: HashMap::new(),
-        left_out: HashMap::new(),
+        left_out: LeftOut::default(),
     };
     let root = doc.root_element();
     if root.tag_name().name() != "project" {

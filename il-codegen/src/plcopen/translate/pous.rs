@@ -62,9 +62,7 @@ impl Tr<'_, '_> {
                 .with_label(format!("{language} body"))
                 .with_secondary(self.tag(lang), format!("the {language} body")),
             );
-            self.left_out
-                .entry(name.to_ascii_lowercase())
-                .or_insert(self.pous.len());
+            self.left_out.note(&name, self.pous.len());
             self.pous.push(PouInfo {
                 name,
                 kind: keyword,
