@@ -119,10 +119,10 @@ pub struct Import {
 }
 
 /// The POUs left out (not IL) by lower-case name, as an index into the
-/// project's POUs. A look-up counts one step per candidate it compares (a
-/// hash look-up compares about one): a look-up that became a scan of every
-/// POU would then grow with the square of the project in the scaling tests
-/// (`tests_limits.rs`), which do not time anything.
+/// project's POUs. A look-up counts one step, for the one candidate a hash
+/// look-up compares; whatever replaces it must count one per candidate
+/// compared, so that a scan of every POU grows with the square of the
+/// project in the scaling tests (`tests_limits.rs`, which time nothing).
 #[derive(Clone, Debug, Default)]
 pub(crate) struct LeftOut(HashMap<String, usize>);
 
