@@ -83,14 +83,43 @@ impl SourceFile {
     /// The 1-based line of a byte offset (what `line_col` gives, without
     /// counting the column's characters).
     pub fn line_of(&self, offset: u32) -> usize {
+        self.line_of_near(offset, 0)
+    }
+
+    /// [`Self::line_of`], looking first at the 1-based line `near` (see
+    /// [`Self::line_col_near`]).
+    pub fn line_of_near(&self, offset: u32, near: usize) -> usize {
         let offset = (offset as usize).min(self.text.len());
-        self.line_starts.partition_point(|&s| s <= offset)
+        self.line_index(offset, near) + 1
+    }
+
+    /// The 0-based line holding `offset` (at most the text's length): line
+    /// `near - 1` or `near` when it is one of them, else a binary search.
+    fn line_index(&self, offset: usize, near: usize) -> usize {
+        let starts = &self.line_starts;
+        for l in [near.saturating_sub(1), near] {
+            let Some(&lo) = starts.get(l) else {
+                break;
+            };
+            if lo <= offset && starts.get(l + 1).is_none_or(|&hi| offset < hi) {
+                return l;
+            }
+        }
+        starts.partition_point(|&s| s <= offset) - 1
     }
 
     /// 1-based line and 1-based column (in characters) of a byte offset.
     pub fn line_col(&self, offset: u32) -> (usize, usize) {
+        self.line_col_near(offset, 0)
+    }
+
+    /// [`Self::line_col`], looking first at the 1-based line `near` and the
+    /// one after it: a walk over a body asks for each instruction's line
+    /// in order, and a search of the whole table each time was a tenth of
+    /// the check's own work.
+    pub fn line_col_near(&self, offset: u32, near: usize) -> (usize, usize) {
         let offset = (offset as usize).min(self.text.len());
-        let line = self.line_starts.partition_point(|&s| s <= offset) - 1;
+        let line = self.line_index(offset, near);
         let start = self.line_starts[line];
         // Most columns are a few bytes from the line start: count those
         // directly; far ones from the nearest block (long lines stay linear).

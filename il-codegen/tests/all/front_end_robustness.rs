@@ -407,6 +407,20 @@ fn line_col_agrees_with_counting_from_the_start() {
             let col = before.rsplit('\n').next().unwrap().chars().count() + 1;
             assert_eq!(f.line_col(off as u32), (line, col), "{off} in {text:?}");
             assert_eq!(f.line_of(off as u32), line, "{off} in {text:?}");
+            // Any guess of the nearby line gives the same answer.
+            for near in [
+                0,
+                1,
+                line.saturating_sub(1),
+                line,
+                line + 1,
+                line + 2,
+                usize::MAX,
+            ] {
+                let at = format!("{off} near {near} in {text:?}");
+                assert_eq!(f.line_col_near(off as u32, near), (line, col), "{at}");
+                assert_eq!(f.line_of_near(off as u32, near), line, "{at}");
+            }
         }
     }
 }

@@ -431,12 +431,14 @@ impl Walk<'_, '_> {
     /// The statements pushed next come from the source at `span`.
     fn at(&mut self, span: Span) {
         // Only the final pass builds statements, which need the column.
+        // Instructions come in order: the previous line is the best guess.
+        let near = self.line as usize;
         if self.final_pass {
-            let (line, col) = self.cx.file.line_col(span.lo);
+            let (line, col) = self.cx.file.line_col_near(span.lo, near);
             self.line = line as u32;
             self.col = col as u32;
         } else {
-            self.line = self.cx.file.line_of(span.lo) as u32;
+            self.line = self.cx.file.line_of_near(span.lo, near) as u32;
         }
     }
 
