@@ -292,7 +292,7 @@ fn compile(xml: &str) {
 }
 
 #[test]
-fn chains_of_structure_types_check_in_linear_time() {
+fn chains_of_structure_types_check_in_linear_steps() {
     let (small, large) = (struct_chain(250), struct_chain(2000));
     // Deeper than rustc compiles: one IL0133 at the type that goes over.
     let (_, d) = check(&large);
@@ -307,7 +307,7 @@ fn chains_of_structure_types_check_in_linear_time() {
 }
 
 #[test]
-fn a_big_body_imports_in_linear_time_and_space() {
+fn a_big_body_compiles_in_linear_steps_and_is_not_copied() {
     for escaped in [false, true] {
         let (small, large) = (big_body(64 << 10, escaped), big_body(512 << 10, escaped));
         let imp = import(&large);
@@ -348,7 +348,7 @@ fn many_instances(n: usize) -> String {
 }
 
 #[test]
-fn instances_find_their_pou_in_linear_time() {
+fn instances_find_their_pou_and_compile_in_linear_steps() {
     // Names of one length that differ late: a scan compares each in full.
     let (small, large) = (many_instances(500), many_instances(4000));
     let imp = import(&large);
