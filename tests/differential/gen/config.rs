@@ -131,10 +131,17 @@ pub fn configuration(rng: &mut Rng, s: &Shape) -> (String, Vec<&'static str>) {
         }
         resources.push_str(&format!("RESOURCE R{r} ON PLC\n{body}END_RESOURCE\n"));
     }
-    let globals: String = globals
+    let mut globals: String = globals
         .iter()
         .map(|(n, t)| format!("    {n} : {};\n", t.name()))
         .collect();
+    if rng.chance(50) {
+        // The host's INT values fall inside and outside: a write outside is
+        // refused by the generated setter and by the interpreter alike.
+        globals.push_str("    level : INT (0..100);\n");
+        access.push("w_level : level : INT READ_WRITE".to_string());
+        kinds.push("VAR_ACCESS onto a subrange");
+    }
     let access: String = access.iter().map(|a| format!("    {a};\n")).collect();
     kinds.sort();
     kinds.dedup();

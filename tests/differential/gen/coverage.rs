@@ -88,4 +88,5 @@ pub const CONSTRUCTS: &[&str] = &[
     "TASK SINGLE",
     "program instance without a task",
     "VAR_ACCESS through elements and members",
+    "VAR_ACCESS onto a subrange",
 ];
