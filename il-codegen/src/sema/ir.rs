@@ -87,7 +87,8 @@ pub struct CheckedPou {
     /// every label, in the order walked (an instruction inside parentheses
     /// comes before the group that holds it). Not used for code: it is what
     /// tools show (the language server's hover and inlay hints), decided here
-    /// once instead of being recomputed there.
+    /// once instead of being recomputed there. Empty unless asked for
+    /// ([`crate::Program::cr_steps`]).
     pub cr_steps: Vec<CrStep>,
     /// A host FUNCTION (`{extern}`): no body here; the crate around the
     /// generated code provides it, and the emitter only checks its signature.
