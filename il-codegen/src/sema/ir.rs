@@ -448,10 +448,12 @@ pub enum Value {
     Saved(usize, Ty),
     /// A value converted implicitly to a wider type (3rd edition).
     Widen(Box<Value>, Widen),
-    /// A STRING (WSTRING) value given the capacity of the string type `ty`
-    /// ([`Ty::resizes_to`]): cut at that length, and a `StringOverflow`
-    /// fault recorded when that cut something off.
-    Resized(Box<Value>, Ty),
+    /// A STRING (WSTRING) value given the capacity of the string type
+    /// (the second; [`Ty::resizes_to`]): cut at that length, and a
+    /// `StringOverflow` fault recorded when that cut something off. Boxed
+    /// with its type: rare, and inline the type beside the box made every
+    /// value larger by a third.
+    Resized(Box<(Value, Ty)>),
     /// A subscript expression (`i + 1`, `2 * i`): `lhs op rhs` with `op`
     /// `Add`, `Sub` or `Mul`, both sides (integers of any type) converted to
     /// LINT and computed with wrapping; the value is a LINT. Only in
@@ -471,7 +473,7 @@ impl Value {
     /// is a string of another capacity, else unchanged.
     pub fn fit_string(v: Value, from: &Ty, to: &Ty) -> Value {
         if from.resizes_to(to) {
-            Value::Resized(Box::new(v), to.clone())
+            Value::Resized(Box::new((v, to.clone())))
         } else {
             v
         }

@@ -14,10 +14,10 @@ use std::mem::size_of;
 #[test]
 fn ir_shapes_stay_small() {
     let sizes = [
-        ("Stmt", size_of::<Stmt>(), 240),
-        ("Op", size_of::<Op>(), 224),
-        ("Expr", size_of::<Expr>(), 176),
-        ("Value", size_of::<Value>(), 64),
+        ("Stmt", size_of::<Stmt>(), 208),
+        ("Op", size_of::<Op>(), 192),
+        ("Expr", size_of::<Expr>(), 144),
+        ("Value", size_of::<Value>(), 48),
         ("Place", size_of::<Place>(), 88),
         ("Root", size_of::<Root>(), 16),
         ("PathElem", size_of::<PathElem>(), 48),
