@@ -171,7 +171,8 @@ impl Machine {
                 };
                 Value::Int(n as i128, Elem::LINT)
             }
-            IrValue::Resized(v, to) => {
+            IrValue::Resized(r) => {
+                let (v, to) = &**r;
                 let v = self.value(f, v, ctx, line)?;
                 self.cut_string(f, v, to, ctx, line)
             }

@@ -137,9 +137,9 @@ impl Value {
     pub fn from_const(c: &Const) -> Value {
         match c {
             Const::Bool(b) => Value::Bool(*b),
-            Const::Enum { ty, value } => Value::Enum {
-                ty: ty.clone(),
-                value: value.clone(),
+            Const::Enum(e) => Value::Enum {
+                ty: e.ty.clone(),
+                value: e.value.clone(),
             },
             Const::Int(v, Elem::BOOL) => Value::Bool(*v != 0),
             Const::Int(v, e) => Value::Int(wrap(*v, *e), *e),

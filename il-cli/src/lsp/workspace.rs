@@ -266,7 +266,7 @@ impl Workspace {
         let mut indexes = Vec::new();
         let mut program_of = vec![0; self.docs.len()];
         for group in programs(&self.docs) {
-            let program = group.iter().fold(Program::new(), |p, &k| {
+            let program = group.iter().fold(Program::new().cr_steps(true), |p, &k| {
                 let d = &self.docs[k];
                 p.source(SourceFile::new(d.name.clone(), d.text.clone()))
             });

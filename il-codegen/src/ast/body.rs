@@ -414,7 +414,8 @@ pub struct Literal {
     /// The value.
     pub kind: LitKind,
     /// `INT#`, `UINT#`, `BOOL#` ... (not for T#/D#/TOD#/DT#, whose kind says it).
-    pub type_prefix: Option<Ident>,
+    /// Boxed: most literals have none, and inline it was a third of every literal.
+    pub type_prefix: Option<Box<Ident>>,
     /// The literal as written, prefix included.
     pub span: Span,
 }
@@ -454,13 +455,18 @@ pub enum LitKind {
         /// `"..."` (WSTRING) rather than `'...'` (STRING).
         wide: bool,
     },
-    /// `Color#Red`
-    Enum {
-        /// The enumeration type.
-        ty: Ident,
-        /// The value's name.
-        value: Ident,
-    },
+    /// `Color#Red`. Boxed: rare, and its two names inline made every
+    /// literal (and every operand) larger by half.
+    Enum(Box<EnumLit>),
+}
+
+/// An enumeration literal `Color#Red` ([`LitKind::Enum`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct EnumLit {
+    /// The enumeration type.
+    pub ty: Ident,
+    /// The value's name.
+    pub value: Ident,
 }
 
 impl Instr {

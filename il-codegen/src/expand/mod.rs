@@ -169,7 +169,7 @@ fn stubs(files: &[&SourceFile], opts: emit::Options, standard: crate::Standard) 
     if pairs.is_empty() {
         return String::new();
     }
-    let (programs, diags) = sema::check_all(&pairs, standard);
+    let (programs, diags) = sema::check_all(&pairs, standard, false);
     let mut program = sema::ir::Program::default();
     for p in programs {
         program.types.extend(p.types);

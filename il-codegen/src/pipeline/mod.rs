@@ -25,6 +25,7 @@ use crate::{emit, sema, syntax};
 pub struct Program {
     inputs: Vec<Input>,
     standard: crate::dialect::Standard,
+    cr_steps: bool,
 }
 
 impl Program {
@@ -77,6 +78,16 @@ impl Program {
         self
     }
 
+    /// Also record the CR the checker proved at every instruction and label
+    /// ([`CheckedPou::cr_steps`], for tools such as the language server's
+    /// hover); off by default: the compiler does not read them.
+    ///
+    /// [`CheckedPou::cr_steps`]: crate::sema::ir::CheckedPou::cr_steps
+    pub fn cr_steps(mut self, record: bool) -> Self {
+        self.cr_steps = record;
+        self
+    }
+
     /// Parse and check every input.
     pub fn check(self) -> Checked {
         let files: Vec<&SourceFile> = self.inputs.iter().map(Input::il_text).collect();
@@ -96,7 +107,7 @@ impl Program {
             })
             .collect();
         let pairs: Vec<_> = clean.iter().map(|&i| (files[i], &units[i])).collect();
-        let (programs, more) = sema::check_all(&pairs, self.standard);
+        let (programs, more) = sema::check_all(&pairs, self.standard, self.cr_steps);
         let mut ir: Vec<sema::ir::Program> = files.iter().map(|_| Default::default()).collect();
         for ((&i, p), m) in clean.iter().zip(programs).zip(more) {
             ir[i] = p;

@@ -30,6 +30,7 @@ pub fn parse_address(text: &str) -> Result<Loc, String> {
         file: &file,
         diags: Vec::new(),
         standard: Default::default(),
+        cr_steps: false,
     };
     match resolve_addr(&mut cx, &addr, None) {
         Some(l) if cx.diags.is_empty() => Ok(l),

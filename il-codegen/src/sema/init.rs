@@ -64,9 +64,9 @@ pub(crate) fn init_value(
         (Initializer::Simple(o), Ty::Enum(name)) => {
             let value = match o {
                 Operand::Lit(Literal {
-                    kind: LitKind::Enum { ty: t, value },
+                    kind: LitKind::Enum(e),
                     ..
-                }) if t.is(name) => value,
+                }) if e.ty.is(name) => &e.value,
                 Operand::Var(v) if v.path.is_empty() => &v.base,
                 _ => {
                     cx.err(
@@ -83,10 +83,7 @@ pub(crate) fn init_value(
                 .map(|(_, v)| v.clone())
                 .unwrap_or_default();
             match vals.iter().find(|v| value.is(v)) {
-                Some(v) => Some(Init::Const(Const::Enum {
-                    ty: name.clone(),
-                    value: v.clone(),
-                })),
+                Some(v) => Some(Init::Const(Const::enum_value(name.clone(), v.clone()))),
                 None => {
                     cx.err(
                         BAD_INIT,

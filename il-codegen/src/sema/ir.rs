@@ -87,7 +87,8 @@ pub struct CheckedPou {
     /// every label, in the order walked (an instruction inside parentheses
     /// comes before the group that holds it). Not used for code: it is what
     /// tools show (the language server's hover and inlay hints), decided here
-    /// once instead of being recomputed there.
+    /// once instead of being recomputed there. Empty unless asked for
+    /// ([`crate::Program::cr_steps`]).
     pub cr_steps: Vec<CrStep>,
     /// A host FUNCTION (`{extern}`): no body here; the crate around the
     /// generated code provides it, and the emitter only checks its signature.
@@ -288,13 +289,25 @@ pub enum Const {
         /// The declared maximum length in characters.
         len: u32,
     },
-    /// A value of a user enumeration.
-    Enum {
-        /// The enumeration type, as declared.
-        ty: String,
-        /// The value's name, as declared.
-        value: String,
-    },
+    /// A value of a user enumeration. Boxed: rare, and its two names
+    /// inline made every constant (and every value) half as large again.
+    Enum(Box<EnumConst>),
+}
+
+/// A value of a user enumeration ([`Const::Enum`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct EnumConst {
+    /// The enumeration type, as declared.
+    pub ty: String,
+    /// The value's name, as declared.
+    pub value: String,
+}
+
+impl Const {
+    /// The constant `value` of the enumeration `ty`.
+    pub fn enum_value(ty: String, value: String) -> Const {
+        Const::Enum(Box::new(EnumConst { ty, value }))
+    }
 }
 
 impl Const {
@@ -307,7 +320,7 @@ impl Const {
                 wide: *wide,
                 len: *len,
             },
-            Const::Enum { ty, .. } => Ty::Enum(ty.clone()),
+            Const::Enum(e) => Ty::Enum(e.ty.clone()),
         }
     }
 }
@@ -435,10 +448,12 @@ pub enum Value {
     Saved(usize, Ty),
     /// A value converted implicitly to a wider type (3rd edition).
     Widen(Box<Value>, Widen),
-    /// A STRING (WSTRING) value given the capacity of the string type `ty`
-    /// ([`Ty::resizes_to`]): cut at that length, and a `StringOverflow`
-    /// fault recorded when that cut something off.
-    Resized(Box<Value>, Ty),
+    /// A STRING (WSTRING) value given the capacity of the string type
+    /// (the second; [`Ty::resizes_to`]): cut at that length, and a
+    /// `StringOverflow` fault recorded when that cut something off. Boxed
+    /// with its type: rare, and inline the type beside the box made every
+    /// value larger by a third.
+    Resized(Box<(Value, Ty)>),
     /// A subscript expression (`i + 1`, `2 * i`): `lhs op rhs` with `op`
     /// `Add`, `Sub` or `Mul`, both sides (integers of any type) converted to
     /// LINT and computed with wrapping; the value is a LINT. Only in
@@ -458,7 +473,7 @@ impl Value {
     /// is a string of another capacity, else unchanged.
     pub fn fit_string(v: Value, from: &Ty, to: &Ty) -> Value {
         if from.resizes_to(to) {
-            Value::Resized(Box::new(v), to.clone())
+            Value::Resized(Box::new((v, to.clone())))
         } else {
             v
         }

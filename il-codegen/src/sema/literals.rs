@@ -49,7 +49,7 @@ pub(crate) fn lit_class(lit: &Literal) -> LitClass {
         LitKind::Tod(t) => LitClass::Typed(Const::Time(*t, Elem::TOD)),
         LitKind::Dt(t) => LitClass::Typed(Const::Time(*t, Elem::DT)),
         LitKind::String { value, wide } => LitClass::Str(value.clone(), *wide),
-        LitKind::Enum { .. } => LitClass::Unsupported("enumeration literals are not supported yet"),
+        LitKind::Enum(_) => LitClass::Unsupported("enumeration literals are not supported yet"),
     };
     let Some(prefix) = &lit.type_prefix else {
         return untyped;

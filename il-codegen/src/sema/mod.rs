@@ -37,7 +37,7 @@ pub use codes::CODES;
 /// checked) and the diagnostics; the program may be emitted only when no
 /// diagnostic is an error.
 pub fn check(file: &SourceFile, unit: &ast::CompilationUnit) -> (ir::Program, Vec<Diagnostic>) {
-    let (mut programs, mut diags) = check_all(&[(file, unit)], Default::default());
+    let (mut programs, mut diags) = check_all(&[(file, unit)], Default::default(), false);
     (
         programs.pop().unwrap_or_default(),
         diags.pop().unwrap_or_default(),
@@ -46,10 +46,12 @@ pub fn check(file: &SourceFile, unit: &ast::CompilationUnit) -> (ir::Program, Ve
 
 /// Check several files as one program (a FUNCTION_BLOCK of one file used in
 /// another) against a standard. Returns one program and one diagnostic
-/// list per file.
+/// list per file. `cr_steps`: record [`ir::CheckedPou::cr_steps`] (for
+/// tools; without it they are empty).
 pub fn check_all(
     units: &[(&SourceFile, &ast::CompilationUnit)],
     standard: crate::dialect::Standard,
+    cr_steps: bool,
 ) -> (Vec<ir::Program>, Vec<Vec<Diagnostic>>) {
     let mut cxs: Vec<Cx> = units
         .iter()
@@ -57,6 +59,7 @@ pub fn check_all(
             file,
             diags: Vec::new(),
             standard,
+            cr_steps,
         })
         .collect();
     let asts: Vec<&ast::CompilationUnit> = units.iter().map(|(_, u)| *u).collect();
@@ -110,6 +113,9 @@ pub(crate) struct Cx<'a> {
     pub diags: Vec<Diagnostic>,
     /// Under the 2nd edition each 3rd-edition form is an error ([`Cx::feature`]).
     pub standard: crate::dialect::Standard,
+    /// Record the CR at every step ([`ir::CrStep`]): only tools read them,
+    /// and for the compiler they were a seventh of the checked program.
+    pub cr_steps: bool,
 }
 
 impl Cx<'_> {

@@ -191,6 +191,7 @@ mod tests {
             file: &file,
             diags: Vec::new(),
             standard: Default::default(),
+            cr_steps: false,
         }];
         let env = super::super::decls::collect(&mut cxs, &[&unit]);
         check_nesting(&mut cxs, &env, &[&unit]);

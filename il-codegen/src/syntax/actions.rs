@@ -48,6 +48,15 @@ pub fn unbox<T>(v: Vec<Box<T>>) -> Vec<T> {
     v.into_iter().map(|b| *b).collect()
 }
 
+/// The lines of a parenthesised group as one exactly sized list: collecting
+/// the flattened lines grew from room for four statements (704 bytes for the
+/// one line of `AND( x` ... `)`, a tenth of the parse tree of MATIEC-style code).
+pub fn flat(lines: Vec<Vec<Stmt>>) -> Vec<Stmt> {
+    let mut v = Vec::with_capacity(lines.iter().map(Vec::len).sum());
+    lines.into_iter().for_each(|l| v.extend(l));
+    v
+}
+
 pub fn instr(kind: InstrKind, lo: usize, op_hi: usize, hi: usize) -> Instr {
     Instr {
         kind,

@@ -1,5 +1,5 @@
 // auto-generated: "lalrpop 0.23.2"
-// sha3: 31891cb3701a011fa4329c7081bbf0b434139b82a8323a73a95c8f7f3bead9b5
+// sha3: e74981f7a31d83cb41cab90382eb1b141c0e1cbacaad1186164869a059d24b4e
 // features: 
 use crate::ast::*;
 use super::lexer::{Tok, LexError, ExprTok};
@@ -8941,7 +8941,7 @@ fn __action25<
             op: e.op,
             negate: e.negate,
             first,
-            body: body.into_iter().flatten().collect(),
+            body: build::flat(body),
             close_span: sp(clo, hi),
         }, lo, m, hi)
 }

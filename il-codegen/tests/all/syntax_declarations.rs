@@ -82,7 +82,7 @@ fn lists_locations_edges_and_initial_values() {
     assert!(matches!(
         &v[10].init,
         Some(Initializer::Simple(Operand::Lit(Literal {
-            kind: LitKind::Enum { .. },
+            kind: LitKind::Enum(_),
             ..
         })))
     ));

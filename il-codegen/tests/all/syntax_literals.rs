@@ -8,7 +8,7 @@ fn kind(text: &str) -> LitKind {
 }
 
 fn prefix(text: &str) -> Option<String> {
-    ld_lit(text).type_prefix.map(|p| p.name)
+    ld_lit(text).type_prefix.map(|p| p.name.clone())
 }
 
 #[test]
@@ -175,8 +175,8 @@ fn strings() {
 #[test]
 fn enum_literals() {
     match kind("Color#Red") {
-        LitKind::Enum { ty, value } => {
-            assert!(ty.is("color") && value.is("RED"));
+        LitKind::Enum(e) => {
+            assert!(e.ty.is("color") && e.value.is("RED"));
         }
         other => panic!("{other:?}"),
     }

@@ -42,7 +42,7 @@ pub(crate) fn constant(c: &Const) -> String {
             }
         }
         Const::Time(v, e) => format!("{}({v}i64)", Elem::rust(*e)),
-        Const::Enum { ty, value } => format!("{}::{}", item_ident(ty), rust_ident(value)),
+        Const::Enum(e) => format!("{}::{}", item_ident(&e.ty), rust_ident(&e.value)),
         Const::Str {
             value,
             wide: false,

@@ -44,7 +44,8 @@ impl PouEmitter<'_> {
                 };
                 format!("({l} as i64).{f}({r} as i64)")
             }
-            Value::Resized(v, to) => {
+            Value::Resized(r) => {
+                let (v, to) = &**r;
                 let v = self.value(v, line);
                 self.resized(v, to, line)
             }
@@ -319,7 +320,7 @@ pub(super) fn value_elem(v: &Value) -> Option<Elem> {
         Value::Const(c) => c.ty().elem(),
         Value::Read(p) => p.ty.elem(),
         Value::Widen(_, w) => Some(w.to),
-        Value::Resized(_, t) => t.elem(),
+        Value::Resized(r) => r.1.elem(),
         Value::Arith { .. } => Some(Elem::LINT),
     }
 }

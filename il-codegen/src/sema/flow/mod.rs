@@ -148,7 +148,9 @@ pub(crate) fn check_pou(
     // body. A first round that settles is walked once more, as the final
     // pass (without labels, the first round is the final pass).
     let (stmts, steps) = output_size(&pou.body);
-    w.cr_steps = Vec::with_capacity(steps);
+    if w.cx.cr_steps {
+        w.cr_steps = Vec::with_capacity(steps);
+    }
     let mut settled = false;
     for round in 0..64 {
         w.final_pass = round > 0 || n == 0;
@@ -582,7 +584,7 @@ impl Walk<'_, '_> {
     /// at a label) for tools: [`ir::CrStep`].
     #[inline(never)]
     fn step(&mut self, span: Span, label: bool, before: &Cr, after: &Cr) {
-        if !self.final_pass {
+        if !self.final_pass || !self.cx.cr_steps {
             return;
         }
         let paths = match after {

@@ -7,10 +7,11 @@ impl Walk<'_, '_> {
         // Enumeration values: `Color#Red`, or a bare `Red` that names no variable.
         match o {
             Operand::Lit(ast::Literal {
-                kind: ast::LitKind::Enum { ty, value },
+                kind: ast::LitKind::Enum(e),
                 span,
                 ..
             }) => {
+                let (ty, value) = (&e.ty, &e.value);
                 let Some((name, vals)) = self.env.types.enums.get(&ty.key()).cloned() else {
                     self.err(
                         UNKNOWN_TYPE,
@@ -31,10 +32,7 @@ impl Walk<'_, '_> {
                     }
                     return None;
                 };
-                let c = Const::Enum {
-                    ty: name,
-                    value: v.clone(),
-                };
+                let c = Const::enum_value(name, v.clone());
                 return Some(Arg::Typed(Value::Const(c.clone()), c.ty()));
             }
             Operand::Var(v)
@@ -43,7 +41,7 @@ impl Walk<'_, '_> {
                     && !(self.sig.kind == PouKind::Function && v.base.is(&self.sig.name)) =>
             {
                 if let Some((ty, value)) = self.env.types.enum_of_value(&v.base.name) {
-                    let c = Const::Enum { ty, value };
+                    let c = Const::enum_value(ty, value);
                     return Some(Arg::Typed(Value::Const(c.clone()), c.ty()));
                 }
             }

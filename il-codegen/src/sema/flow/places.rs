@@ -111,7 +111,9 @@ impl Walk<'_, '_> {
             return None;
         }
         let mut range = var_range;
-        let mut path = Vec::new();
+        // One step per accessor: exactly sized (a push reserved four steps,
+        // 192 bytes, for the usual one of `fb.Q`).
+        let mut path = Vec::with_capacity(v.path.len());
         for acc in &v.path {
             match acc {
                 Accessor::Field(f) => {
@@ -178,7 +180,7 @@ impl Walk<'_, '_> {
                     // An element of an array of a subrange is range-checked.
                     range = elem_range.as_deref().copied();
                     let (dims, elem) = (dims.clone(), (**elem).clone());
-                    let mut vals = Vec::new();
+                    let mut vals = Vec::with_capacity(subs.len());
                     for (s, (lo, hi)) in subs.iter().zip(&dims) {
                         vals.push(self.subscript(s, *lo, *hi)?);
                     }

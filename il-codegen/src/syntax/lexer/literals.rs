@@ -123,7 +123,7 @@ impl<'a> Lexer<'a> {
         };
         let lit = Literal {
             kind,
-            type_prefix,
+            type_prefix: type_prefix.map(Box::new),
             span: span(lo, i),
         };
         self.push(lo, Tok::Lit(Box::new(lit)), i);
@@ -267,7 +267,7 @@ impl<'a> Lexer<'a> {
                     if let Some((kind, end)) = self.string(vstart) {
                         let lit = Literal {
                             kind,
-                            type_prefix: Some(prefix),
+                            type_prefix: Some(Box::new(prefix)),
                             span: span(s, end),
                         };
                         self.push(s, Tok::Lit(Box::new(lit)), end);
@@ -296,15 +296,15 @@ impl<'a> Lexer<'a> {
                         }
                         LitKind::Bool(vup == "TRUE")
                     } else {
-                        LitKind::Enum {
+                        LitKind::Enum(Box::new(EnumLit {
                             ty: prefix.clone(),
                             value: Ident::new(v, span(vs, ve)),
-                        }
+                        }))
                     };
-                    let type_prefix = if matches!(kind, LitKind::Enum { .. }) {
+                    let type_prefix = if matches!(kind, LitKind::Enum(_)) {
                         None
                     } else {
-                        Some(prefix)
+                        Some(Box::new(prefix))
                     };
                     let lit = Literal {
                         kind,
