@@ -127,19 +127,21 @@ impl Walk<'_, '_> {
                         return None;
                     };
                     let fb = fb.clone();
-                    // Only a structure's fields have subranges (a type name
-                    // is not also an FB's).
-                    if let Ty::Struct(_) = &ty
-                        && let Some(field) = self
-                            .env
-                            .types
-                            .structs
-                            .get(&fb.to_ascii_uppercase())
-                            .and_then(|fs| fs.iter().find(|x| f.is(&x.name)))
-                    {
-                        range = field.range;
-                    }
-                    let (name, mty, is_input) = self.member(&fb, &f.name, f.span)?;
+                    // A structure's field, with its subrange, in one look-up
+                    // (a type is never also an FB: IL0104); an FB's member,
+                    // or an unknown name and its message, from `member`.
+                    let env = self.env;
+                    let field = matches!(ty, Ty::Struct(_))
+                        .then(|| env.types.structs.get(&fb.to_ascii_uppercase()))
+                        .flatten()
+                        .and_then(|fs| fs.iter().find(|x| f.is(&x.name)));
+                    let (name, mty, is_input) = match field {
+                        Some(field) => {
+                            range = field.range;
+                            (field.name.clone(), field.ty.clone(), true)
+                        }
+                        None => self.member(&fb, &f.name, f.span)?,
+                    };
                     if write && !is_input {
                         self.err(
                             NOT_WRITABLE,
