@@ -202,26 +202,18 @@ fn stubs(files: &[&SourceFile], opts: emit::Options, standard: crate::Standard) 
     };
     let mut configs = std::mem::take(&mut program.configs);
     for c in &mut configs {
-        // VAR_CONFIG and VAR_ACCESS name an instance by its position: the
-        // kept instances' new positions, `None` for one left out.
-        let kept: Vec<Vec<Option<usize>>> = (c.resources.iter())
-            .map(|r| {
-                let mut n = 0;
-                (r.programs.iter())
-                    .map(|pi| {
-                        let bound = externals(&pi.program) == Some(pi.externals.len());
-                        bound.then(|| {
-                            n += 1;
-                            n - 1
-                        })
-                    })
-                    .collect()
-            })
-            .collect();
-        for (r, k) in c.resources.iter_mut().zip(&kept) {
-            let mut at = k.iter();
-            r.programs
-                .retain(|_| at.next().is_some_and(|x| x.is_some()));
+        // VAR_CONFIG and VAR_ACCESS name an instance by its position: each
+        // instance's new position, `None` for one left out.
+        let mut kept: Vec<Vec<Option<usize>>> = Vec::new();
+        for r in &mut c.resources {
+            let (mut at, mut n) = (Vec::new(), 0);
+            r.programs.retain(|pi| {
+                let bound = externals(&pi.program) == Some(pi.externals.len());
+                at.push(bound.then_some(n));
+                n += usize::from(bound);
+                bound
+            });
+            kept.push(at);
         }
         let moved = |p: &mut sema::ir::InstancePath| match kept[p.resource][p.program] {
             Some(k) => {
