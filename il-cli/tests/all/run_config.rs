@@ -252,13 +252,18 @@ fn wrong_paths_into_a_configuration_say_what_was_meant() {
             "`RES1.P1` names the program instance `RES1.P1`: add one of its variables",
         ),
     ] {
-        let o = ilc(&[
-            "run", CFG_PATHS, "--config", "CfgPaths", "--cycles", "1", "--watch", watch,
-        ]);
-        let err = text(&o.stderr);
-        assert_eq!(o.status.code(), Some(1), "{watch}: {err}");
-        assert!(err.contains(want), "{watch}: {err}");
+        refused_in_cfg_paths("--watch", watch, want);
     }
+}
+
+/// `ilc run` of CfgPaths with `flag value` exits 1 saying `want`.
+fn refused_in_cfg_paths(flag: &str, value: &str, want: &str) {
+    let o = ilc(&[
+        "run", CFG_PATHS, "--config", "CfgPaths", "--cycles", "1", flag, value,
+    ]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{flag} {value}: {err}");
+    assert!(err.contains(want), "{flag} {value}: {err}");
 }
 
 #[test]
@@ -275,12 +280,7 @@ fn a_set_outside_a_subrange_is_refused_for_access_paths_and_places() {
             "`-1` is outside the subrange 0..100 of `RES1.P1.level`",
         ),
     ] {
-        let o = ilc(&[
-            "run", CFG_PATHS, "--config", "CfgPaths", "--cycles", "1", "--set", set,
-        ]);
-        let err = text(&o.stderr);
-        assert_eq!(o.status.code(), Some(1), "{set}: {err}");
-        assert!(err.contains(want), "{set}: {err}");
+        refused_in_cfg_paths("--set", set, want);
     }
     let o = ilc(&[
         "run",
