@@ -107,12 +107,17 @@ macro_rules! paths_tests {
 paths_tests!(via_build);
 paths_tests!(via_macro);
 
+/// plc/cfg_paths.il, checked, for the interpreter.
+fn checked() -> il_codegen::sema::ir::Program {
+    let src = std::fs::read_to_string("plc/cfg_paths.il").expect("read");
+    let file = il_codegen::diag::SourceFile::new("cfg_paths.il", src);
+    il_interp::load(&file).expect("checks")
+}
+
 #[test]
 fn the_interpreter_refuses_a_write_outside_a_subrange() {
     use il_interp::ConfigMachine;
-    let src = std::fs::read_to_string("plc/cfg_paths.il").expect("read");
-    let file = il_codegen::diag::SourceFile::new("cfg_paths.il", src);
-    let prog = il_interp::load(&file).expect("checks");
+    let prog = checked();
     let mut c = ConfigMachine::new(&prog, "CfgPaths").expect("configuration");
     let int = |v: i128| il_interp::int(v, il_codegen::sema::types::Elem::INT);
     let usint = |v: i128| il_interp::int(v, il_codegen::sema::types::Elem::USINT);
@@ -132,9 +137,7 @@ fn the_interpreter_refuses_a_write_outside_a_subrange() {
 #[test]
 fn the_interpreter_reads_and_writes_the_same_places() {
     use il_interp::{ConfigMachine, Value};
-    let src = std::fs::read_to_string("plc/cfg_paths.il").expect("read");
-    let file = il_codegen::diag::SourceFile::new("cfg_paths.il", src);
-    let prog = il_interp::load(&file).expect("checks");
+    let prog = checked();
     let mut c = ConfigMachine::new(&prog, "CfgPaths").expect("configuration");
     let int = |v: i16| il_interp::int(v as i128, il_codegen::sema::types::Elem::INT);
     assert!(
