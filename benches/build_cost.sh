@@ -10,6 +10,14 @@
 #   with_buildrs   build.rs + include!
 # and the last two again with `[profile.dev.build-override] opt-level = 2`
 # (`*_opt2`), the README's advice for large IL files.
+# The project's crates are path dependencies here, and cargo compiles path
+# dependencies incrementally in dev builds, which it never does for a
+# dependency from crates.io (incremental compilation adds 25-35% to
+# il-codegen's cold compile). So that the crates cost what they cost a user
+# who takes them from crates.io, each crate gets `incremental = false` for
+# the project's crates and the baseline's macro crate (a derive crate comes
+# from crates.io too); the user's own crate stays incremental.
+# BUILD_COST_PATH_INCREMENTAL=1 leaves cargo's path-dependency default.
 # Prints one line per crate. Takes several minutes (cold builds compile syn
 # and the compiler). Usage: bash benches/build_cost.sh [WORKDIR]
 # BUILD_COST_CRATES="baseline with_macro" builds only those crates;
@@ -37,10 +45,18 @@ $2
 [build-dependencies]
 $3
 $4
+$registry
 EOT
   cp "$repo/Cargo.lock" "$d/Cargo.lock"
 }
 opt2=$'[profile.dev.build-override]\nopt-level = 2'
+# As a crates.io dependency: not incremental (see the top of this file).
+registry=""
+if [ -z "${BUILD_COST_PATH_INCREMENTAL:-}" ]; then
+  for p in il-std il-codegen il-macros trivial_macro; do
+    registry+=$'\n'"[profile.dev.package.$p]"$'\nincremental = false'
+  done
+fi
 
 mk plain "" "" ""
 cat > "$work/plain/src/lib.rs" <<'EOT'
