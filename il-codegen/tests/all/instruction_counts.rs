@@ -1,0 +1,94 @@
+//! Instructions executed, counted by valgrind (cachegrind), for the scaling
+//! tests: the front end's step counter sees only the loops it counts, so a
+//! quadratic loop made of library calls (a `str::matches` rescan per line,
+//! a `Vec::contains` per name) passes it; the instruction count sees every
+//! loop, and like the step counter it does not depend on the machine's load.
+//!
+//! Each input class of `scaling::assert_linear` is run again in a child
+//! process, this test binary under cachegrind with only that test selected
+//! and `IL_SCALE_PROBE=<class>|<size>` set, three times: the class at n, at
+//! 8n, and not at all (`none`: the process, the harness and the test's own
+//! set-up, subtracted from the other two). Without valgrind on the machine
+//! the comparison is skipped with a message.
+
+use std::process::Command;
+
+/// Names the class and size a child process runs.
+const PROBE: &str = "IL_SCALE_PROBE";
+
+/// What a child process asked to run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Probe {
+    /// Nothing: the baseline of the process.
+    None,
+    /// The class at n.
+    Small,
+    /// The class at 8n.
+    Large,
+}
+
+/// In a child process: `Some(Some(size))` for the class it runs,
+/// `Some(None)` for another class (which must do nothing); `None` in the
+/// test run itself.
+pub fn requested(what: &str) -> Option<Option<Probe>> {
+    let v = std::env::var(PROBE).ok()?;
+    let (class, size) = v.rsplit_once('|')?;
+    if class != what {
+        return Some(None);
+    }
+    Some(match size {
+        "small" => Some(Probe::Small),
+        "large" => Some(Probe::Large),
+        _ => Some(Probe::None),
+    })
+}
+
+/// Instructions the child executes for `what` at `size`, or why not.
+fn count(test: &str, what: &str, size: &str) -> Result<u64, String> {
+    let exe = std::env::current_exe().map_err(|e| e.to_string())?;
+    let out = Command::new("valgrind")
+        .args([
+            "--tool=cachegrind",
+            "--cache-sim=no",
+            "--cachegrind-out-file=/dev/null",
+        ])
+        .arg(&exe)
+        .args(["--exact", test, "--test-threads=1"])
+        .env(PROBE, format!("{what}|{size}"))
+        .output()
+        .map_err(|e| format!("valgrind did not start: {e}"))?;
+    let err = String::from_utf8_lossy(&out.stderr);
+    if !out.status.success() {
+        return Err(format!("the child run failed ({}):\n{err}", out.status));
+    }
+    // `==pid== I   refs:      496,814,537`
+    err.lines()
+        .find_map(|l| {
+            l.split_once("I   refs:")
+                .map(|(_, n)| n.trim().replace(',', ""))
+        })
+        .and_then(|n| n.parse().ok())
+        .ok_or_else(|| format!("no instruction count in valgrind's output:\n{err}"))
+}
+
+/// Fails when the instructions the class takes grow more than 12x from n
+/// to 8n (linear is 8x; quadratic 64x). The bound is the step counter's.
+pub fn assert_linear_instructions(what: &str) {
+    if Command::new("valgrind").arg("--version").output().is_err() {
+        println!("{what}: instruction counts skipped: valgrind is not installed");
+        return;
+    }
+    let test = std::thread::current()
+        .name()
+        .expect("libtest names each test's thread after the test")
+        .to_string();
+    let run = |size| count(&test, what, size).unwrap_or_else(|e| panic!("{what}: {e}"));
+    let (none, small, large) = (run("none"), run("small"), run("large"));
+    let (i1, i8) = (small.saturating_sub(none), large.saturating_sub(none));
+    let ratio = i8 as f64 / i1.max(1) as f64;
+    println!("{what}: 8x input → {ratio:.1}x instructions ({i1} → {i8}, the process alone {none})");
+    assert!(
+        ratio < 12.0,
+        "{what}: 8x the input took {ratio:.1}x the instructions ({i1} → {i8}; the process alone {none})"
+    );
+}
