@@ -1,6 +1,8 @@
 //! Helpers the workspace's tests share (a dev-dependency only): golden-file
-//! snapshots ([`golden`]) and a small JSON reader for checking the JSON that
-//! `ilc` and the diagnostics renderer write ([`json`]).
+//! snapshots ([`golden`]), a small JSON reader for checking the JSON that
+//! `ilc` and the diagnostics renderer write ([`json`]), and instruction
+//! counts at n and 8n for scaling tests ([`instructions`]).
 
 pub mod golden;
+pub mod instructions;
 pub mod json;

@@ -201,7 +201,10 @@ fn with_attributes(n: usize) -> String {
 #[test]
 fn thousands_of_attributes_are_refused_in_linear_time() {
     // Was 4.4 s (release) at 30,000: roxmltree's duplicate check is quadratic.
-    let xml = with_attributes(30_000);
+    let (xml, large) = (with_attributes(30_000), with_attributes(240_000));
+    if il_testkit::instructions::in_child() {
+        return assert_linear("attributes", &xml, &large, |x| drop(import(x)));
+    }
     let imp = import(&xml);
     assert_eq!(imp.diagnostics.len(), 1, "{:?}", imp.diagnostics);
     let d = &imp.diagnostics[0];
@@ -220,9 +223,10 @@ fn thousands_of_attributes_are_refused_in_linear_time() {
     // ratio here measured only the linear line table of the 3 MB input, and
     // was 37x in a debug build on a loaded machine: cache effects, not
     // growth.)
-    let imp = import(&with_attributes(240_000));
+    let imp = import(&large);
     assert_eq!(imp.diagnostics.len(), 1, "{:?}", imp.diagnostics);
     assert_eq!(imp.diagnostics[0].code, "IL0208");
+    assert_linear("attributes", &xml, &large, |x| drop(import(x)));
     // Up to the limit, the element is read as usual.
     let imp = import(&with_attributes(limits::MAX_ATTRIBUTES - 1));
     assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
@@ -270,8 +274,20 @@ fn steps(f: impl FnOnce()) -> u64 {
     crate::work::steps() - s0
 }
 
-/// Steps at n and 8n: linear is 8x, quadratic 64x.
+/// Steps at n and 8n: linear is 8x, quadratic 64x. Then the same in
+/// instructions under valgrind, which also see the loops of library calls
+/// the steps do not count (`il_testkit::instructions`).
 fn assert_linear(what: &str, small: &str, large: &str, f: impl Fn(&str)) {
+    use il_testkit::instructions::{self, Probe};
+    // A child process counting instructions runs one size of one class.
+    if let Some(probe) = instructions::requested(what) {
+        match probe {
+            Some(Probe::Small) => f(small),
+            Some(Probe::Large) => f(large),
+            Some(Probe::None) | None => {}
+        }
+        return;
+    }
     let (s1, s8) = (steps(|| f(small)), steps(|| f(large)));
     let ratio = s8 as f64 / s1.max(1) as f64;
     // Shown with --nocapture: the figures issue 17 tracks.
@@ -280,6 +296,7 @@ fn assert_linear(what: &str, small: &str, large: &str, f: impl Fn(&str)) {
         ratio < LINEAR,
         "{what}: 8x the input took {ratio:.1}x the steps ({s1} → {s8})"
     );
+    instructions::assert_linear(what);
 }
 
 /// Import, check and emit `xml` as one program, as build.rs does: the
@@ -294,12 +311,14 @@ fn compile(xml: &str) {
 #[test]
 fn chains_of_structure_types_check_in_linear_steps() {
     let (small, large) = (struct_chain(250), struct_chain(2000));
-    // Deeper than rustc compiles: one IL0133 at the type that goes over.
-    let (_, d) = check(&large);
-    assert_eq!(d.len(), 1, "{d:?}");
-    assert_eq!(d[0].code, "IL0133");
-    let (_, d) = check(&struct_chain(100));
-    assert!(d.is_empty(), "{d:?}");
+    if !il_testkit::instructions::in_child() {
+        // Deeper than rustc compiles: one IL0133 at the type that goes over.
+        let (_, d) = check(&large);
+        assert_eq!(d.len(), 1, "{d:?}");
+        assert_eq!(d[0].code, "IL0133");
+        let (_, d) = check(&struct_chain(100));
+        assert!(d.is_empty(), "{d:?}");
+    }
     assert_linear("structure chain", &small, &large, |x| drop(check(x)));
     // Within the limit, through the emitter too.
     let (small, large) = (struct_chain(14), struct_chain(112));
@@ -310,16 +329,19 @@ fn chains_of_structure_types_check_in_linear_steps() {
 fn a_big_body_compiles_in_linear_steps_and_is_not_copied() {
     for escaped in [false, true] {
         let (small, large) = (big_body(64 << 10, escaped), big_body(512 << 10, escaped));
-        let imp = import(&large);
-        assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
-        // The body is in the IL text once, not once per POU or per line.
-        assert!(
-            imp.il.text.len() < large.len(),
-            "{} > {}",
-            imp.il.text.len(),
-            large.len()
-        );
-        assert_linear("body", &small, &large, compile);
+        if !il_testkit::instructions::in_child() {
+            let imp = import(&large);
+            assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
+            // The body is in the IL text once, not once per POU or per line.
+            assert!(
+                imp.il.text.len() < large.len(),
+                "{} > {}",
+                imp.il.text.len(),
+                large.len()
+            );
+        }
+        let what = if escaped { "escaped body" } else { "body" };
+        assert_linear(what, &small, &large, compile);
     }
 }
 
@@ -351,8 +373,10 @@ fn many_instances(n: usize) -> String {
 fn instances_find_their_pou_and_compile_in_linear_steps() {
     // Names of one length that differ late: a scan compares each in full.
     let (small, large) = (many_instances(500), many_instances(4000));
-    let imp = import(&large);
-    assert_eq!(imp.il.text.matches(" : MainIL000;").count(), 4000);
+    if !il_testkit::instructions::in_child() {
+        let imp = import(&large);
+        assert_eq!(imp.il.text.matches(" : MainIL000;").count(), 4000);
+    }
     assert_linear("instances", &small, &large, compile);
 }
 
@@ -370,6 +394,17 @@ fn one_line_body(bytes: usize) -> String {
 fn xml_lines_of_a_body_on_one_line_take_linear_time() {
     // Both sizes past the caches (128 KiB against 1 MiB measured 65x on a
     // machine running five builds: the small one's tables stayed in cache).
+    use il_testkit::instructions::{self, Probe};
+    // Counted in instructions: the import and the line map of one size
+    // (smaller than below: caches do not move a count).
+    if let Some(probe) = instructions::requested("xml lines") {
+        let bytes = match probe {
+            Some(Probe::Small) => 64 << 10,
+            Some(Probe::Large) => 512 << 10,
+            Some(Probe::None) | None => return,
+        };
+        return drop(import(&one_line_body(bytes)).xml_lines());
+    }
     let (small, large) = (
         import(&one_line_body(256 << 10)),
         import(&one_line_body(2 << 20)),
@@ -392,4 +427,5 @@ fn xml_lines_of_a_body_on_one_line_take_linear_time() {
         ratio < LINEAR,
         "8x the body took {ratio:.1}x the steps ({s1} → {s8})"
     );
+    instructions::assert_linear("xml lines");
 }

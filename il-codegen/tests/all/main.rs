@@ -9,7 +9,6 @@ mod corpus_configurations;
 mod dialect;
 mod front_end_robustness;
 mod golden_emit;
-mod instruction_counts;
 mod ir_size;
 mod pipeline_snippet;
 #[cfg(feature = "plcopen")]

@@ -11,11 +11,11 @@
 //! that double, and a quadratic stage (64x) fails it. (A time ratio, the
 //! fastest of five runs bounded at 32x, was here before: it failed on a
 //! loaded machine, where cache effects alone reached 40x.) Each class is
-//! also counted in instructions under valgrind (`instruction_counts`), which
+//! also counted in instructions under valgrind (`il_testkit::instructions`), which
 //! sees the loops the step counter does not.
 
-use crate::instruction_counts::{self, Probe};
 use il_codegen::diag::SourceFile;
+use il_testkit::instructions::{self, Probe};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
@@ -113,7 +113,7 @@ fn front(files: &[SourceFile]) -> Work {
 /// emitter and formatter are part of the measure) or must be refused.
 fn assert_linear(what: &str, valid: bool, input: impl Fn(usize) -> Vec<SourceFile>, n: usize) {
     // A child process counting instructions runs one size of one class.
-    if let Some(probe) = instruction_counts::requested(what) {
+    if let Some(probe) = instructions::requested(what) {
         match probe {
             Some(Probe::Small) => drop(pipeline(&input(n))),
             Some(Probe::Large) => drop(pipeline(&input(8 * n))),
@@ -158,7 +158,7 @@ fn assert_linear(what: &str, valid: bool, input: impl Fn(usize) -> Vec<SourceFil
         steps < 12.0,
         "{what}: 8x the input took {steps:.1}x the steps ({w1:?} → {w8:?})"
     );
-    instruction_counts::assert_linear_instructions(what);
+    instructions::assert_linear(what);
 }
 
 fn one(name: &str, text: String) -> Vec<SourceFile> {

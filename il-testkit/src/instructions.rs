@@ -1,15 +1,17 @@
-//! Instructions executed, counted by valgrind (cachegrind), for the scaling
-//! tests: the front end's step counter sees only the loops it counts, so a
+//! Instructions executed, counted by valgrind (cachegrind), for scaling
+//! tests: il-codegen's step counter sees only the loops it counts, so a
 //! quadratic loop made of library calls (a `str::matches` rescan per line,
 //! a `Vec::contains` per name) passes it; the instruction count sees every
 //! loop, and like the step counter it does not depend on the machine's load.
 //!
-//! Each input class of `scaling::assert_linear` is run again in a child
-//! process, this test binary under cachegrind with only that test selected
-//! and `IL_SCALE_PROBE=<class>|<size>` set, three times: the class at n, at
-//! 8n, and not at all (`none`: the process, the harness and the test's own
-//! set-up, subtracted from the other two). Without valgrind on the machine
-//! the comparison is skipped with a message.
+//! A scaling test names each input class (`what`) and calls
+//! [`assert_linear`] after its own checks; that runs the test again in a
+//! child process, the same test binary under cachegrind with only that test
+//! selected and `IL_SCALE_PROBE=<class>|<size>` set, three times: the class
+//! at n, at 8n, and not at all (`none`: the process, the harness and the
+//! test's own set-up, subtracted from the other two). In the child, the test
+//! asks [`requested`] first and runs only that size of that class. Without
+//! valgrind on the machine the comparison is skipped with a message.
 
 use std::process::Command;
 
@@ -25,6 +27,12 @@ pub enum Probe {
     Small,
     /// The class at 8n.
     Large,
+}
+
+/// Whether this process is a child counting instructions: a test skips
+/// the set-up and checks that are not part of the work it measures.
+pub fn in_child() -> bool {
+    std::env::var_os(PROBE).is_some()
 }
 
 /// In a child process: `Some(Some(size))` for the class it runs,
@@ -73,7 +81,7 @@ fn count(test: &str, what: &str, size: &str) -> Result<u64, String> {
 
 /// Fails when the instructions the class takes grow more than 12x from n
 /// to 8n (linear is 8x; quadratic 64x). The bound is the step counter's.
-pub fn assert_linear_instructions(what: &str) {
+pub fn assert_linear(what: &str) {
     if Command::new("valgrind").arg("--version").output().is_err() {
         println!("{what}: instruction counts skipped: valgrind is not installed");
         return;
