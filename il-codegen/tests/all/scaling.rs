@@ -223,6 +223,41 @@ fn long_names() {
     );
 }
 
+#[test]
+fn long_unknown_operators() {
+    // Issue 17's first row: an unknown operator `LDOFOF...` of thousands of
+    // characters took 1.6 s at 8,000 (the "did you mean" distance had no
+    // bound); past the name limit it is one error, and the suggestions for
+    // names under the limit are bounded.
+    assert_linear(
+        "one unknown operator past the name limit",
+        false,
+        |n| {
+            one(
+                "t.il",
+                format!(
+                    "PROGRAM P\nVAR x : INT; END_VAR\n    {} x\n    ST x\nEND_PROGRAM\n",
+                    "LDOF".repeat(n)
+                ),
+            )
+        },
+        500,
+    );
+    assert_linear(
+        "many unknown operators at the name limit",
+        false,
+        |n| {
+            let mut s = String::from("PROGRAM P\nVAR x : INT; END_VAR\n");
+            for i in 0..n {
+                let name = format!("LD{i}{}", "OF".repeat(130));
+                s.push_str(&format!("    {} x\n", &name[..250]));
+            }
+            one("t.il", s + "END_PROGRAM\n")
+        },
+        40,
+    );
+}
+
 /// MATIEC-style code: a label every few lines, jumps forward and back.
 fn labels(n: usize) -> Vec<SourceFile> {
     let mut s = String::from("PROGRAM P\nVAR x : INT; b : BOOL; END_VAR\n");
