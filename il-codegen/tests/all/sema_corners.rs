@@ -201,3 +201,31 @@ fn a_block_holding_itself_is_reported_at_the_instance_declaration() {
     let e = errors(f);
     assert_eq!((e[0].0.as_str(), e[0].2), ("IL0117", 4), "{e:?}");
 }
+
+/// Deferred parentheses save the outer CR in a slot per depth and type: a
+/// saved value is read at its `)`, before the next group of that depth
+/// starts, so sequential groups share one `__save_N` (a 100k-line POU had
+/// one local per group, 11,000 of them).
+#[test]
+fn parentheses_share_a_save_slot_per_depth_and_type() {
+    let src = "PROGRAM P\nVAR a, b, c : INT; r : REAL; END_VAR\n\
+        LD a\nADD( b\nMUL( c\nSUB 1\n)\n)\nST a\n\
+        LD b\nADD( c\nMUL( a\n)\n)\nST b\n\
+        LD r\nMUL( r\nADD 1.0\n)\nST r\n\
+        LD c\nSUB( a\n)\nST c\nEND_PROGRAM\n";
+    let f = SourceFile::new("t.il", src);
+    let checked = il_codegen::Program::new().il(f).check();
+    assert!(!checked.has_errors(), "{:?}", checked.diagnostics());
+    let pou = &checked.ir().unwrap()[0].pous[0];
+    // INT at depth 0, INT at depth 1, REAL at depth 0: three slots for five groups.
+    assert_eq!(pou.save_types.len(), 3, "{:?}", pou.save_types);
+    let slots: Vec<usize> = pou
+        .body
+        .iter()
+        .filter_map(|s| match &s.op {
+            il_codegen::sema::ir::Op::Save { slot, .. } => Some(*slot),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(slots, [0, 1, 0, 1, 2, 0]);
+}

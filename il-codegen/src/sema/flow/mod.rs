@@ -128,6 +128,8 @@ pub(crate) fn check_pou(
         counted: 0,
         cr_types: Vec::new(),
         save_types: Vec::new(),
+        save_slots: Vec::new(),
+        save_depth: 0,
         jumped: vec![false; n],
         cr_steps: Vec::new(),
         line: 0,
@@ -407,6 +409,10 @@ struct Walk<'a, 'c> {
     counted: usize,
     cr_types: Vec<Ty>,
     save_types: Vec<Ty>,
+    /// The save slots of each depth of parentheses (indexes into
+    /// `save_types`), and the depth being walked.
+    save_slots: Vec<Vec<usize>>,
+    save_depth: usize,
     jumped: Vec<bool>,
     /// The CR at every instruction and label, recorded on the final pass.
     cr_steps: Vec<ir::CrStep>,
@@ -524,6 +530,8 @@ impl Walk<'_, '_> {
 
     fn walk(&mut self, body: &[ast::Stmt]) {
         self.save_types.clear();
+        self.save_slots.clear();
+        self.save_depth = 0;
         let mut cr = Cr::Undef(Why::Start);
         let mut warned_dead = false;
         for (i, stmt) in body.iter().enumerate() {
