@@ -5,7 +5,9 @@
 //! in `OUT_DIR`, which the crate includes. All files of one `Builder` are
 //! one program: a POU may use the TYPEs and FUNCTION_BLOCKs of every file.
 //!
-//! ```no_run
+// The example needs the `build` feature (`il-macros` turns it off).
+#![cfg_attr(feature = "build", doc = "```no_run")]
+#![cfg_attr(not(feature = "build"), doc = "```ignore")]
 //! // build.rs
 //! fn main() -> Result<(), il_codegen::Error> {
 //!     il_codegen::Builder::new()

@@ -368,7 +368,7 @@ pub fn render_short_in(file: &SourceFile, d: &Diagnostic, first_line: Option<usi
     out
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "build"))]
 mod tests {
     use super::*;
 
