@@ -10,7 +10,7 @@
 //! selected and `IL_SCALE_PROBE=<class>|<size>` set, three times: the class
 //! at n, at 8n, and not at all (`none`: the process, the harness and the
 //! test's own set-up, subtracted from the other two). In the child, the test
-//! asks [`requested`] first and runs only that size of that class. Without
+//! calls [`run_child`] first, which runs only that size of that class. Without
 //! valgrind on the machine the comparison is skipped with a message.
 
 use std::process::Command;
@@ -20,7 +20,7 @@ const PROBE: &str = "IL_SCALE_PROBE";
 
 /// What a child process asked to run.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Probe {
+enum Probe {
     /// Nothing: the baseline of the process.
     None,
     /// The class at n.
@@ -29,16 +29,10 @@ pub enum Probe {
     Large,
 }
 
-/// Whether this process is a child counting instructions: a test skips
-/// the set-up and checks that are not part of the work it measures.
-pub fn in_child() -> bool {
-    std::env::var_os(PROBE).is_some()
-}
-
 /// In a child process: `Some(Some(size))` for the class it runs,
 /// `Some(None)` for another class (which must do nothing); `None` in the
 /// test run itself.
-pub fn requested(what: &str) -> Option<Option<Probe>> {
+fn requested(what: &str) -> Option<Option<Probe>> {
     let v = std::env::var(PROBE).ok()?;
     let (class, size) = v.rsplit_once('|')?;
     if class != what {
@@ -49,6 +43,27 @@ pub fn requested(what: &str) -> Option<Option<Probe>> {
         "large" => Some(Probe::Large),
         _ => Some(Probe::None),
     })
+}
+
+/// Whether this process is a child counting instructions: a test skips
+/// the set-up and checks that are not part of the work it measures.
+pub fn in_child() -> bool {
+    std::env::var_os(PROBE).is_some()
+}
+
+/// In a child process counting instructions, runs what it asked for class
+/// `what` (`small`, `large`, or nothing for the baseline or another class)
+/// and returns true: the test returns then. In the test run itself, false.
+pub fn run_child(what: &str, small: impl FnOnce(), large: impl FnOnce()) -> bool {
+    let Some(probe) = requested(what) else {
+        return false;
+    };
+    match probe {
+        Some(Probe::Small) => small(),
+        Some(Probe::Large) => large(),
+        Some(Probe::None) | None => {}
+    }
+    true
 }
 
 /// Instructions the child executes for `what` at `size`, or why not.

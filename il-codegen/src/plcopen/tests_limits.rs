@@ -278,14 +278,9 @@ fn steps(f: impl FnOnce()) -> u64 {
 /// instructions under valgrind, which also see the loops of library calls
 /// the steps do not count (`il_testkit::instructions`).
 fn assert_linear(what: &str, small: &str, large: &str, f: impl Fn(&str)) {
-    use il_testkit::instructions::{self, Probe};
+    use il_testkit::instructions;
     // A child process counting instructions runs one size of one class.
-    if let Some(probe) = instructions::requested(what) {
-        match probe {
-            Some(Probe::Small) => f(small),
-            Some(Probe::Large) => f(large),
-            Some(Probe::None) | None => {}
-        }
+    if instructions::run_child(what, || f(small), || f(large)) {
         return;
     }
     let (s1, s8) = (steps(|| f(small)), steps(|| f(large)));
@@ -394,16 +389,12 @@ fn one_line_body(bytes: usize) -> String {
 fn xml_lines_of_a_body_on_one_line_take_linear_time() {
     // Both sizes past the caches (128 KiB against 1 MiB measured 65x on a
     // machine running five builds: the small one's tables stayed in cache).
-    use il_testkit::instructions::{self, Probe};
+    use il_testkit::instructions;
     // Counted in instructions: the import and the line map of one size
     // (smaller than below: caches do not move a count).
-    if let Some(probe) = instructions::requested("xml lines") {
-        let bytes = match probe {
-            Some(Probe::Small) => 64 << 10,
-            Some(Probe::Large) => 512 << 10,
-            Some(Probe::None) | None => return,
-        };
-        return drop(import(&one_line_body(bytes)).xml_lines());
+    let lines_of = |bytes| drop(import(&one_line_body(bytes)).xml_lines());
+    if instructions::run_child("xml lines", || lines_of(64 << 10), || lines_of(512 << 10)) {
+        return;
     }
     let (small, large) = (
         import(&one_line_body(256 << 10)),

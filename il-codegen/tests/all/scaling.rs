@@ -15,7 +15,7 @@
 //! sees the loops the step counter does not.
 
 use il_codegen::diag::SourceFile;
-use il_testkit::instructions::{self, Probe};
+use il_testkit::instructions;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
@@ -113,12 +113,15 @@ fn front(files: &[SourceFile]) -> Work {
 /// emitter and formatter are part of the measure) or must be refused.
 fn assert_linear(what: &str, valid: bool, input: impl Fn(usize) -> Vec<SourceFile>, n: usize) {
     // A child process counting instructions runs one size of one class.
-    if let Some(probe) = instructions::requested(what) {
-        match probe {
-            Some(Probe::Small) => drop(pipeline(&input(n))),
-            Some(Probe::Large) => drop(pipeline(&input(8 * n))),
-            Some(Probe::None) | None => {}
-        }
+    if instructions::run_child(
+        what,
+        || {
+            pipeline(&input(n));
+        },
+        || {
+            pipeline(&input(8 * n));
+        },
+    ) {
         return;
     }
     let (small, large) = (input(n), input(8 * n));
