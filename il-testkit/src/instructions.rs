@@ -18,33 +18,6 @@ use std::process::Command;
 /// Names the class and size a child process runs.
 const PROBE: &str = "IL_SCALE_PROBE";
 
-/// What a child process asked to run.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Probe {
-    /// Nothing: the baseline of the process.
-    None,
-    /// The class at n.
-    Small,
-    /// The class at 8n.
-    Large,
-}
-
-/// In a child process: `Some(Some(size))` for the class it runs,
-/// `Some(None)` for another class (which must do nothing); `None` in the
-/// test run itself.
-fn requested(what: &str) -> Option<Option<Probe>> {
-    let v = std::env::var(PROBE).ok()?;
-    let (class, size) = v.rsplit_once('|')?;
-    if class != what {
-        return Some(None);
-    }
-    Some(match size {
-        "small" => Some(Probe::Small),
-        "large" => Some(Probe::Large),
-        _ => Some(Probe::None),
-    })
-}
-
 /// Whether this process is a child counting instructions: a test skips
 /// the set-up and checks that are not part of the work it measures.
 pub fn in_child() -> bool {
@@ -52,16 +25,17 @@ pub fn in_child() -> bool {
 }
 
 /// In a child process counting instructions, runs what it asked for class
-/// `what` (`small`, `large`, or nothing for the baseline or another class)
-/// and returns true: the test returns then. In the test run itself, false.
+/// `what` (`small`, `large`, or nothing for the baseline `none` or another
+/// class) and returns true: the test returns then. In the test run itself,
+/// false.
 pub fn run_child(what: &str, small: impl FnOnce(), large: impl FnOnce()) -> bool {
-    let Some(probe) = requested(what) else {
+    let Ok(v) = std::env::var(PROBE) else {
         return false;
     };
-    match probe {
-        Some(Probe::Small) => small(),
-        Some(Probe::Large) => large(),
-        Some(Probe::None) | None => {}
+    match v.rsplit_once('|') {
+        Some((class, "small")) if class == what => small(),
+        Some((class, "large")) if class == what => large(),
+        _ => {}
     }
     true
 }
