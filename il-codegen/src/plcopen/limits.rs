@@ -46,7 +46,8 @@ pub(crate) fn check(xml: &str) -> Option<Exceeded> {
             }
             i = skip_to(">", 1)?;
         } else {
-            // A start tag: its name, then `name = "value"` pairs.
+            // A start tag: its name, then `name = "value"` pairs (each
+            // counted, for the scaling tests).
             let tag = i;
             let mut j = i + 1;
             while j < b.len() && !b[j].is_ascii_whitespace() && b[j] != b'>' && b[j] != b'/' {
@@ -92,6 +93,7 @@ pub(crate) fn check(xml: &str) -> Option<Exceeded> {
                 }
                 j += 1 + xml[j + 1..].find(char::from(q))? + 1;
                 attrs += 1;
+                crate::work::add(1);
                 if attrs > MAX_ATTRIBUTES {
                     return Some(Exceeded {
                         at: tag..name_end,
