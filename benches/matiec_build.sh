@@ -24,6 +24,7 @@ set -euo pipefail
 LINES=${LINES:-10000}
 ROUNDS=${ROUNDS:-5}
 root=$(cd "$(dirname "$0")/.." && pwd)
+. "$root/benches/matiec_common.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -35,9 +36,7 @@ cargo build --release -q -p il-cli --manifest-path "$root/Cargo.toml"
 mkdir -p "$work/c"
 {
     cat "$work/prog.il"
-    printf '\nCONFIGURATION config\n  RESOURCE resource1 ON PLC\n'
-    printf '    TASK task0(INTERVAL := T#10ms, PRIORITY := 0);\n'
-    printf '    PROGRAM inst0 WITH task0 : Big;\n  END_RESOURCE\nEND_CONFIGURATION\n'
+    matiec_config Big
 } >"$work/c/prog.st"
 s=$(date +%s.%N)
 "$IEC2C" -I "$MATIEC_LIB" -T "$work/c" "$work/c/prog.st" >/dev/null
@@ -66,7 +65,6 @@ timed() {
     /usr/bin/time -f '%e %U %S' -o "$work/t" "$@" >/dev/null 2>&1
     awk '{printf "%s %.2f\n", $1, $2 + $3}' "$work/t"
 }
-median() { sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
 
 printf '%s, load average %s\n' "$(date -u '+%F %H:%M UTC')" "$(cut -d' ' -f1-3 /proc/loadavg)"
 printf 'program: %s lines of IL; iec2c %.1f s -> %s KB of C; ilc emit -> %s KB of Rust\n' \

@@ -46,6 +46,7 @@ ROUNDS=${ROUNDS:-11}
 CG_SCANS=${CG_SCANS:-200}
 PROGRAMS=${PROGRAMS:-"interlock arith_loop array_proc blocks mixed"}
 root=$(cd "$(dirname "$0")/.." && pwd)
+. "$root/benches/matiec_common.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -78,7 +79,6 @@ ir_per_scan() {
     echo $(((b - a) / CG_SCANS))
 }
 
-median() { sort -g | awk '{v[NR] = $1} END {print v[int((NR + 1) / 2)]}'; }
 
 build_c() {
     local name=$1 il="$root/benches/plc/$1.il" dir="$work/$1" prog
@@ -86,9 +86,7 @@ build_c() {
     prog=$(awk '/^PROGRAM / {print $2}' "$il" | tail -1)
     {
         adapt <"$il"
-        printf '\nCONFIGURATION config\n  RESOURCE resource1 ON PLC\n'
-        printf '    TASK task0(INTERVAL := T#10ms, PRIORITY := 0);\n'
-        printf '    PROGRAM inst0 WITH task0 : %s;\n  END_RESOURCE\nEND_CONFIGURATION\n' "$prog"
+        matiec_config "$prog"
     } >"$dir/$name.st"
     "$IEC2C" -I "$MATIEC_LIB" -T "$dir" "$dir/$name.st" >/dev/null
     if grep -q '\.table\[() - ' "$dir/POUS.c"; then
