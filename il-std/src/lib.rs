@@ -15,7 +15,8 @@
 //!   helpers in [`literal`] shared with the compiler.
 //!
 //! The crate is `#![no_std]`, has no dependencies, never allocates and never panics on any
-//! input. The optional `std` feature adds `std::error::Error` for [`Fault`] and a wall-clock
+//! input. Everything above is the default `runtime` feature; without it (as the compiler
+//! builds the crate) only the types, [`literal`] and [`signature`] remain. The optional `std` feature adds `std::error::Error` for [`Fault`] and a wall-clock
 //! helper `RealClock`; the `alloc` feature (on with `std`) adds `heap`, the allocation of
 //! arrays over 64 KiB in generated FUNCTION_BLOCK and PROGRAM instances.
 //!
@@ -25,7 +26,9 @@
 //! `REAL` → integer conversions round half to even and saturate; `TIME_TO_*`/`*_TO_TIME`
 //! count milliseconds; strings never allocate and truncate to their capacity.
 //!
-//! ```
+// The example needs the runtime (the default).
+#![cfg_attr(feature = "runtime", doc = "```")]
+#![cfg_attr(not(feature = "runtime"), doc = "```ignore")]
 //! use il_std::{Cycle, TIME, TON, FunctionBlock};
 //! let mut ctx = Cycle::new();
 //! let mut t = TON::new();
@@ -47,36 +50,57 @@ extern crate alloc;
 #[cfg(any(test, feature = "std"))]
 extern crate std;
 
+// The parts a compiler needs (literal parsing, the signature tables and the
+// types they name) are always built; the rest is the `runtime` feature (on by
+// default), so that the compiler's own build of this crate (il-codegen turns
+// default features off) is a fraction of the whole and il-codegen starts
+// compiling sooner in a user's cold build.
+mod area_size;
+#[cfg(feature = "runtime")]
 pub mod conv;
+#[cfg(feature = "runtime")]
 mod cycle;
+mod fault;
+#[cfg(feature = "runtime")]
 pub mod fb;
 pub mod func;
 #[cfg(feature = "alloc")]
 pub mod heap;
+#[cfg(feature = "runtime")]
 mod image;
 pub mod literal;
 pub mod math;
+#[cfg(feature = "runtime")]
 pub mod num;
 #[cfg(feature = "serde")]
 pub mod serde_array;
 pub mod signature;
 mod string;
+#[cfg(feature = "runtime")]
 mod task;
 mod time;
+#[cfg(feature = "runtime")]
 pub mod trace;
 mod types;
 
+pub use area_size::{INPUT_BYTES, MEMORY_BYTES, OUTPUT_BYTES};
 #[cfg(feature = "std")]
 pub use cycle::RealClock;
-pub use cycle::{Cycle, FAULT_RING_LEN, Fault, FaultKind};
+#[cfg(feature = "runtime")]
+pub use cycle::{Cycle, FAULT_RING_LEN, Fault};
+pub use fault::FaultKind;
+#[cfg(feature = "runtime")]
 pub use fb::{
     CTD, CTD_DINT, CTD_LINT, CTD_UDINT, CTD_ULINT, CTU, CTU_DINT, CTU_LINT, CTU_UDINT, CTU_ULINT,
     CTUD, CTUD_DINT, CTUD_LINT, CTUD_UDINT, CTUD_ULINT, F_TRIG, FunctionBlock, R_TRIG, RS, RTC, SR,
     TOF, TON, TP,
 };
+#[cfg(feature = "runtime")]
 pub use image::address as addr;
-pub use image::{Area, INPUT_BYTES, Located, MEMORY_BYTES, OUTPUT_BYTES, ProcessImage};
+#[cfg(feature = "runtime")]
+pub use image::{Area, Located, ProcessImage};
 pub use string::{DEFAULT_STRING_LEN, STRING, WSTRING};
+#[cfg(feature = "runtime")]
 pub use task::{TaskInfo, TaskState};
 pub use time::{DATE, DATE_AND_TIME, DT, LTIME, TIME, TIME_OF_DAY, TOD};
 pub use types::*;

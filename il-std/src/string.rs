@@ -13,6 +13,7 @@ pub const DEFAULT_STRING_LEN: usize = 80;
 
 /// Operations shared by [`STRING`] and [`WSTRING`], used by the string functions of
 /// [`func`](crate::func).
+#[cfg(feature = "runtime")]
 pub trait AnyString: Copy + Default + PartialEq + PartialOrd {
     /// One character: `u8` for `STRING`, `u16` for `WSTRING`.
     type Unit: Copy + PartialEq + 'static;
@@ -106,6 +107,7 @@ macro_rules! iec_string {
             }
         }
 
+        #[cfg(feature = "runtime")]
         impl<const N: usize> AnyString for $name<N> {
             type Unit = $unit;
             const CAPACITY: usize = N;

@@ -11,19 +11,33 @@
 //! `*_checked` companion also returns the flag, so that generated code can record the fault in
 //! the [`Cycle`](crate::Cycle).
 
+#[cfg(feature = "runtime")]
 mod arith;
+#[cfg(feature = "runtime")]
 mod bits;
+#[cfg(feature = "runtime")]
 mod conv;
 pub(crate) mod conv_list;
+#[cfg(feature = "runtime")]
 mod numeric;
+#[cfg(feature = "runtime")]
 mod select;
+#[cfg(feature = "runtime")]
 mod string;
+#[cfg(feature = "runtime")]
 mod time;
 
+#[cfg(feature = "runtime")]
 pub use arith::*;
+#[cfg(feature = "runtime")]
 pub use bits::*;
+#[cfg(feature = "runtime")]
 pub use conv::*;
+#[cfg(feature = "runtime")]
 pub use numeric::*;
+#[cfg(feature = "runtime")]
 pub use select::*;
+#[cfg(feature = "runtime")]
 pub use string::*;
+#[cfg(feature = "runtime")]
 pub use time::*;

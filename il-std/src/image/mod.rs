@@ -16,12 +16,7 @@
 
 pub mod address;
 
-/// Size of the input area in bytes.
-pub const INPUT_BYTES: usize = 256;
-/// Size of the output area in bytes.
-pub const OUTPUT_BYTES: usize = 256;
-/// Size of the memory area in bytes.
-pub const MEMORY_BYTES: usize = 1024;
+pub use crate::area_size::{INPUT_BYTES, MEMORY_BYTES, OUTPUT_BYTES};
 
 /// One of the three areas.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -72,7 +72,7 @@ macro_rules! build_fb_table {
 
         /// Compile-time proof that every entry names a real block whose fields have the
         /// listed types.
-        #[cfg(test)]
+        #[cfg(all(test, feature = "runtime"))]
         #[allow(dead_code, non_snake_case)]
         mod fb_fields_exist {
             $( fn $name(b: &crate::$name) {

@@ -326,7 +326,7 @@ macro_rules! build_table {
         ];
 
         /// Compile-time proof that every entry names a real function of `func`.
-        #[cfg(test)]
+        #[cfg(all(test, feature = "runtime"))]
         #[allow(unused_imports)]
         mod exists {
             use crate::func::{ $( $name, )* $( $cname, )* };
