@@ -4,9 +4,9 @@
 #   plain          the motor written by hand (il-std only)
 #   baseline       a trivial proc macro with syn 2 (default features) + quote,
 #                  the cost of any crate that uses a derive
-#   with_macro     il!(file = "plc/motor.il")
-#   with_macro_il_only  the same, il-macros without its default `plcopen`
-#                  feature (no XML import: no roxmltree, memchr)
+#   with_macro     il!(file = "plc/motor.il"), il-macros' default features
+#   with_macro_plcopen  the same with il-macros' `plcopen` feature (XML
+#                  import: roxmltree, memchr and the translation)
 #   with_buildrs   build.rs + include!
 # and the last two again with `[profile.dev.build-override] opt-level = 2`
 # (`*_opt2`), the README's advice for large IL files.
@@ -103,8 +103,8 @@ cat > "$work/baseline/src/lib.rs" <<'EOT'
 pub struct Motor { pub run: bool }
 EOT
 
-mk with_macro_il_only "il-macros = { path = \"$repo/il-macros\", default-features = false }" "" ""
-echo 'il_macros::il!(file = "plc/motor.il");' > "$work/with_macro_il_only/src/lib.rs"
+mk with_macro_plcopen "il-macros = { path = \"$repo/il-macros\", features = [\"plcopen\"] }" "" ""
+echo 'il_macros::il!(file = "plc/motor.il");' > "$work/with_macro_plcopen/src/lib.rs"
 
 for v in "" _opt2; do
   prof=""; [ -n "$v" ] && prof="$opt2"
@@ -122,7 +122,7 @@ done
 
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 t() { local s=$(date +%s.%N); "$@" >/dev/null 2>&1; echo "$(date +%s.%N) - $s" | bc; }
-crates=${BUILD_COST_CRATES:-plain baseline with_macro with_macro_il_only with_buildrs with_macro_opt2 with_buildrs_opt2}
+crates=${BUILD_COST_CRATES:-plain baseline with_macro with_macro_plcopen with_buildrs with_macro_opt2 with_buildrs_opt2}
 for round in $(seq "${BUILD_COST_ROUNDS:-1}"); do
 for c in $crates; do
   cd "$work/$c"

@@ -25,9 +25,10 @@
 //!   `'text'` are not Rust tokens).
 //! - `il!(file = "plc/motor.il")`: a file relative to the crate root
 //!   (`CARGO_MANIFEST_DIR`); edits to it rebuild the crate. A `.xml` file is
-//!   a PLCopen TC6 XML project (the `plcopen` feature, on by default; a crate
-//!   that reads only IL can turn default features off and compiles no XML
-//!   parser).
+//!   a PLCopen TC6 XML project: that needs the `plcopen` feature, off by
+//!   default so that crates reading only IL compile no XML parser
+//!   (`il-macros = { version = "0.1", features = ["plcopen"] }`; without it
+//!   the call fails with IL0210, which says so).
 //! - `il!(files = ["plc/types.il", "plc/tank.il"])`: several files as one
 //!   program.
 //!

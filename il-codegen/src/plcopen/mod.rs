@@ -16,10 +16,10 @@
 //! whose program instances run a POU that was not translated is left out
 //! with a warning (IL0204).
 //!
-//! Reading XML is the `plcopen` feature (roxmltree and the translation):
-//! `il!` users who compile only IL can leave it out of their build
-//! (`il-macros` with `default-features = false`); without it, an XML source
-//! is one error (IL0210) saying how to turn it on.
+//! Reading XML is the `plcopen` feature (roxmltree and the translation): on
+//! by default in il-codegen, off by default in il-macros (an `il!` user who
+//! reads `.xml` names it); without it, an XML source is one error (IL0210)
+//! saying how to turn it on.
 
 #[cfg(feature = "plcopen")]
 mod limits;
@@ -60,7 +60,7 @@ pub mod codes {
     BODY_ESCAPES = "IL0209", "IL body reaches outside its POU",
         "The text of an `<IL>` body is copied into the POU as it is, so it must not end the POU (`END_PROGRAM`, `END_FUNCTION_BLOCK` ...), start another POU, a `TYPE` or a `CONFIGURATION`, or open a comment `(*` that it does not close (which would swallow what follows). The POU is left out.\n\n    <IL><xhtml:p>LD a\n    END_PROGRAM\n    PROGRAM Other ...</xhtml:p></IL>";
     NOT_BUILT = "IL0210", "PLCopen XML import not built in",
-        "A `.xml` source (a PLCopen project) reached a build of the compiler without its `plcopen` feature, which reads XML. `il-macros` and `il-codegen` have the feature by default; a crate that turned default features off to build faster gets it back by naming it:\n\n    il-macros = { version = \"0.1\", default-features = false, features = [\"plcopen\"] }";
+        "A `.xml` source (a PLCopen project) reached a build of the compiler without its `plcopen` feature, which reads XML. `il-codegen` (build.rs, `ilc`) has the feature by default; `il-macros` leaves it out by default, so that the many crates whose `il!` calls read only IL compile no XML parser. A crate that reads a `.xml` file in `il!` names the feature:\n\n    il-macros = { version = \"0.1\", features = [\"plcopen\"] }";
     }
 }
 pub use codes::CODES;
@@ -208,7 +208,7 @@ impl Import {
                 )
                 .with_label("PLCopen XML")
                 .with_note(
-                    "turn on the `plcopen` feature of il-macros (or il-codegen), which is on by default",
+                    "turn on the `plcopen` feature: `il-macros = { version = \"0.1\", features = [\"plcopen\"] }` (il-codegen has it by default)",
                 ),
             ],
             pous: Vec::new(),

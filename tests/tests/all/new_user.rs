@@ -206,4 +206,59 @@ include!(concat!(env!("OUT_DIR"), "/tank.rs"));
     );
     assert!(!stderr.contains("rendered:"), "a struct dump:\n{stderr}");
     assert!(!stderr.contains("\\n"), "escaped line breaks:\n{stderr}");
+
+    // 4. A PLCopen project in `il!`: il-macros leaves the XML import out by
+    //    default (its cold build is the issue-16 target), so the call fails
+    //    with IL0210 saying which feature to name; named, it builds and runs.
+    let xml_main = "mod plc {\n    il_macros::il!(file = \"plc/counter.xml\");\n}\n\nfn main() {\n    let mut ctx = il_std::Cycle::new();\n    let mut c = plc::Counter::default();\n    c.call(&mut ctx);\n    c.call(&mut ctx);\n    println!(\"count {}\", c.Count);\n}\n";
+    let files = [("src/main.rs", xml_main), ("plc/counter.xml", COUNTER_XML)];
+    let without = write_crate(&root, "xml-default", "{il-macros}", &files);
+    let out = cargo(&without, &target, &["build", "--quiet"]);
+    let stderr = text(&out.stderr);
+    assert!(!out.status.success(), "the build must fail:\n{stderr}");
+    assert!(stderr.contains("IL0210"), "{stderr}");
+    assert!(
+        stderr.contains(r#"features = [\"plcopen\"]"#)
+            || stderr.contains(r#"features = ["plcopen"]"#),
+        "the message must say what to write:\n{stderr}"
+    );
+    let named = format!(
+        "il-macros = {{ path = {:?}, features = [\"plcopen\"] }}\n",
+        ws.join("il-macros")
+    );
+    let with = write_crate(&root, "xml-feature", &named, &files);
+    let out = cargo(&with, &target, &["run", "--quiet"]);
+    let stderr = text(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(!stderr.contains("warning"), "warns:\n{stderr}");
+    assert_eq!(text(&out.stdout), "count 2\n");
 }
+
+/// A PLCopen TC6 project with one IL function block: counts its calls.
+const COUNTER_XML: &str = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+  <contentHeader name="t"/>
+  <types>
+    <dataTypes/>
+    <pous>
+      <pou name="Counter" pouType="functionBlock">
+        <interface>
+          <inputVars><variable name="Reset"><type><BOOL/></type></variable></inputVars>
+          <outputVars><variable name="Count"><type><INT/></type></variable></outputVars>
+        </interface>
+        <body><IL><xhtml:p><![CDATA[LD Reset
+JMPC clear
+LD Count
+ADD 1
+ST Count
+RET
+clear:
+LD 0
+ST Count]]></xhtml:p></IL></body>
+      </pou>
+    </pous>
+  </types>
+  <instances><configurations/></instances>
+</project>
+"#;
