@@ -200,10 +200,11 @@ fn offer(v: &mut dyn Visitor, name: &str, ty: &Ty, x: &Value, prog: &Program) {
             fields(v, ty, x, prog);
             v.leave();
         }
-        (Ty::Array { dims, elem, .. }, Value::Array(items)) => {
+        (Ty::Array(a), Value::Array(items)) => {
+            let (dims, elem) = (&a.dims, &a.elem);
             let mut ix: Vec<i64> = dims.iter().map(|(lo, _)| *lo).collect();
             for item in items {
-                match (&**elem, item) {
+                match (elem, item) {
                     (Ty::Struct(_), Value::Struct(_)) => {
                         v.enter_elem(name, &ix);
                         fields(v, elem, item, prog);

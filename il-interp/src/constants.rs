@@ -71,7 +71,8 @@ impl Machine {
                 }
             },
             Ty::Elem(_) | Ty::Str { .. } => Value::from_const(&il_codegen::sema::default_const(t)),
-            Ty::Array { dims, elem, .. } => {
+            Ty::Array(a) => {
+                let (dims, elem) = (&a.dims, &a.elem);
                 let n: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
                 // As the emitter: an array of a subrange starts at its lower limit.
                 let d = match il_codegen::sema::ir::element_start(t) {
@@ -102,7 +103,8 @@ impl Machine {
     pub(crate) fn init_of(&self, t: &Ty, init: Option<&Init>) -> Result<Value, String> {
         match (init, t) {
             (Some(Init::Const(c)), _) => Ok(Value::from_const(c)),
-            (Some(Init::Array(items)), Ty::Array { elem, .. }) => {
+            (Some(Init::Array(items)), Ty::Array(a)) => {
+                let elem = &a.elem;
                 let mut v = self.default_of(t)?;
                 if let Value::Array(slots) = &mut v {
                     // The slots already hold the default (`default_of`).

@@ -177,14 +177,10 @@ impl Machine {
                     range = frange;
                 }
                 Part::Index(subs) => {
-                    let Ty::Array {
-                        dims,
-                        elem,
-                        range: elem_range,
-                    } = &ty
-                    else {
+                    let Ty::Array(arr) = &ty else {
                         return Err(format!("`{text}`: {ty} is not an array"));
                     };
+                    let (dims, elem, elem_range) = (&arr.dims, &arr.elem, &arr.range);
                     if subs.len() != dims.len() {
                         return Err(format!(
                             "`{text}`: {} subscripts for an array of {} dimensions",
@@ -206,8 +202,8 @@ impl Machine {
                     }
                     steps.push(Step::Index(Some(flat)));
                     // An element of an array of a subrange keeps its bounds.
-                    range = elem_range.as_deref().copied();
-                    ty = (**elem).clone();
+                    range = *elem_range;
+                    ty = elem.clone();
                 }
             }
         }
@@ -375,7 +371,8 @@ impl Machine {
         Ok(match (v, t) {
             (Value::Enum { ty, .. }, Ty::Enum(n)) => ty.eq_ignore_ascii_case(n),
             (Value::Struct(s), Ty::Struct(n)) => s.ty.eq_ignore_ascii_case(n),
-            (Value::Array(items), Ty::Array { dims, elem, .. }) => {
+            (Value::Array(items), Ty::Array(a)) => {
+                let (dims, elem) = (&a.dims, &a.elem);
                 let n: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
                 items.len() as i64 == n && {
                     let mut all = true;
@@ -420,7 +417,7 @@ fn visible(v: &il_codegen::sema::ir::Var) -> bool {
 fn is_instance(t: &Ty) -> bool {
     match t {
         Ty::Fb(_) => true,
-        Ty::Array { elem, .. } => is_instance(elem),
+        Ty::Array(a) => is_instance(&a.elem),
         _ => false,
     }
 }

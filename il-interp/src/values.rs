@@ -141,17 +141,17 @@ impl Value {
                 ty: e.ty.clone(),
                 value: e.value.clone(),
             },
-            Const::Int(v, Elem::BOOL) => Value::Bool(*v != 0),
-            Const::Int(v, e) => Value::Int(wrap(*v, *e), *e),
+            Const::Int(v, Elem::BOOL) => Value::Bool(v.get() != 0),
+            Const::Int(v, e) => Value::Int(wrap(v.get(), *e), *e),
             Const::Real(v, Elem::REAL) => {
                 let f = *v as f32;
                 Value::Real(if f.is_finite() { f } else { 0.0 })
             }
             Const::Real(v, _) => Value::LReal(if v.is_finite() { *v } else { 0.0 }),
             Const::Time(v, e) => Value::Time(*v, *e),
-            Const::Str { value, wide, len } => Value::Str {
-                units: str_units(value, *wide, *len),
-                wide: *wide,
+            Const::Str(s) => Value::Str {
+                units: str_units(&s.value, s.wide, s.len),
+                wide: s.wide,
             },
         }
     }

@@ -63,7 +63,10 @@ pub(super) fn methods(c: &ConfigDef) -> String {
                     " Writes VAR_ACCESS `{}` (READ_WRITE). A value outside the subrange {lo}..{hi} is not written: `Err(FaultKind::SubrangeViolation)`.",
                     a.name
                 ));
-                let (lo, hi) = (constant(&Const::Int(lo, e)), constant(&Const::Int(hi, e)));
+                let (lo, hi) = (
+                    constant(&Const::Int(lo.into(), e)),
+                    constant(&Const::Int(hi.into(), e)),
+                );
                 out.push_str(&format!(
                     "{d}pub fn {set}(&mut self, value: {ty}) -> ::core::result::Result<(), ::il_std::FaultKind> {{ if !({lo}..={hi}).contains(&value) {{ return ::core::result::Result::Err(::il_std::FaultKind::SubrangeViolation); }} {path} = value; ::core::result::Result::Ok(()) }}"
                 ));
@@ -92,7 +95,7 @@ fn written(global: &str, steps: &[PathElem]) -> String {
                 let subs: Vec<String> = subs
                     .iter()
                     .map(|s| match s {
-                        Value::Const(Const::Int(n, _)) => n.to_string(),
+                        Value::Const(Const::Int(n, _)) => n.get().to_string(),
                         _ => "?".to_string(),
                     })
                     .collect();

@@ -60,8 +60,8 @@ pub(crate) fn complemented(pou: &CheckedPou, fenced: bool) -> Vec<bool> {
         }
     }
     for (i, v) in pou.vars.iter().enumerate() {
-        let one_bool_dim = matches!(&v.ty, Ty::Array { dims, elem, .. }
-            if dims.len() == 1 && **elem == Ty::Elem(Elem::BOOL));
+        let one_bool_dim = matches!(&v.ty, Ty::Array(a)
+            if a.dims.len() == 1 && a.elem == Ty::Elem(Elem::BOOL));
         out[i] = one_bool_dim
             && v.storage == Storage::Instance
             && !v.heap
@@ -92,12 +92,17 @@ fn literal_element(v: &Value) -> Option<(usize, usize)> {
     let ([(lo, hi)], [Value::Const(Const::Int(n, _))]) = (dims.as_slice(), subs.as_slice()) else {
         return None;
     };
-    (*lo as i128 <= *n && *n <= *hi as i128).then(|| (*i, (*n - *lo as i128) as usize))
+    let n = n.get();
+    (*lo as i128 <= n && n <= *hi as i128).then(|| (*i, (n - *lo as i128) as usize))
 }
 
 fn array_len(t: &Ty) -> usize {
     match t {
-        Ty::Array { dims, .. } => dims.iter().map(|(lo, hi)| (hi - lo + 1) as usize).product(),
+        Ty::Array(a) => a
+            .dims
+            .iter()
+            .map(|(lo, hi)| (hi - lo + 1) as usize)
+            .product(),
         _ => 0,
     }
 }

@@ -496,8 +496,14 @@ impl PouEmitter<'_> {
                     (Some((lo, hi)), Some(e)) => {
                         let ty = e.rust();
                         let (lo, hi) = (
-                            crate::emit::values::constant(&crate::sema::ir::Const::Int(*lo, e)),
-                            crate::emit::values::constant(&crate::sema::ir::Const::Int(*hi, e)),
+                            crate::emit::values::constant(&crate::sema::ir::Const::Int(
+                                (*lo).into(),
+                                e,
+                            )),
+                            crate::emit::values::constant(&crate::sema::ir::Const::Int(
+                                (*hi).into(),
+                                e,
+                            )),
                         );
                         let w = self.write(place, "__r".to_string(), line);
                         let fault = self.fault("SubrangeViolation", line);

@@ -52,9 +52,7 @@ pub(crate) fn serde_derive(opts: Options) -> &'static str {
 /// a longer (outermost) dimension goes through `il_std::serde_array`.
 pub(crate) fn serde_field(t: &Ty, opts: Options) -> String {
     match t {
-        Ty::Array { dims, .. }
-            if opts.serde && dims.first().is_some_and(|(lo, hi)| hi - lo + 1 > 32) =>
-        {
+        Ty::Array(a) if opts.serde && a.dims.first().is_some_and(|(lo, hi)| hi - lo + 1 > 32) => {
             "#[serde(with = \"::il_std::serde_array\")]".to_string()
         }
         _ => String::new(),
@@ -76,8 +74,8 @@ pub(crate) fn field_ty(v: &crate::sema::ir::Var) -> String {
 /// declared length.
 pub(crate) fn serde_var(v: &crate::sema::ir::Var, opts: Options) -> String {
     match &v.ty {
-        Ty::Array { dims, .. } if v.heap && opts.serde => {
-            let n = dims.first().map_or(0, |(lo, hi)| hi - lo + 1);
+        Ty::Array(a) if v.heap && opts.serde => {
+            let n = a.dims.first().map_or(0, |(lo, hi)| hi - lo + 1);
             let de = str_lit(&format!(
                 "::il_std::heap::serde_len::deserialize::<_, _, {n}>"
             ));
@@ -405,9 +403,9 @@ fn retain_items(o: &mut Out, pou: &CheckedPou, opts: Options) {
                 fields.push_str(&format!("{d}{sf} pub {id}: {ty},"));
                 let mut depth = 0;
                 let mut t = &v.ty;
-                while let Ty::Array { elem, dims, .. } = t {
-                    depth += dims.len();
-                    t = elem;
+                while let Ty::Array(a) = t {
+                    depth += a.dims.len();
+                    t = &a.elem;
                 }
                 let mut take = "__x.retain()".to_string();
                 let mut put = "__d.restore(__s);".to_string();

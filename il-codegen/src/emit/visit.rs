@@ -11,16 +11,13 @@ use crate::sema::types::Ty;
 fn offer(name: &str, ty: &Ty, expr: &str) -> String {
     let lit = str_lit(name);
     match ty {
-        Ty::Array { .. } => {
+        Ty::Array(_) => {
             // All dimensions, through arrays of arrays, and the element type.
             let mut dims = Vec::new();
             let mut elem = ty;
-            while let Ty::Array {
-                dims: d, elem: e, ..
-            } = elem
-            {
-                dims.extend(d.iter().copied());
-                elem = e;
+            while let Ty::Array(a) = elem {
+                dims.extend(a.dims.iter().copied());
+                elem = &a.elem;
             }
             let at = format!("__e{}", dims.len());
             let inner = match elem {
@@ -115,7 +112,7 @@ pub(crate) fn config(
     let program = |path: &str, inst: &str| {
         offer(
             inst,
-            &Ty::Fb(String::new()),
+            &Ty::Fb(Default::default()),
             &format!("{path}.{}", rust_ident(inst)),
         )
     };

@@ -264,7 +264,7 @@ fn instance(
         return None;
     }
     let inst = &def.resources[resource].programs[program];
-    let prog = (Ty::Fb(inst.program.clone()), inst.name.as_str());
+    let prog = (Ty::Fb(inst.program.clone().into()), inst.name.as_str());
     let start = Named {
         partly: None,
         range: None,
@@ -316,10 +316,11 @@ fn walk(
                     );
                     return None;
                 }
-                let Ty::Array { dims, elem, range } = &ty else {
+                let Ty::Array(arr) = &ty else {
                     cx.err(BAD_INDEX, *span, format!("`{prev}` is {ty}, not an array"));
                     return None;
                 };
+                let (dims, elem, range) = (&arr.dims, &arr.elem, &arr.range);
                 prev = format!("{prev}{}", cx.file.snippet(*span));
                 if subs.len() != dims.len() {
                     cx.err(
@@ -344,15 +345,15 @@ fn walk(
                         );
                         return None;
                     }
-                    vals.push(Value::Const(Const::Int(n, Elem::LINT)));
+                    vals.push(Value::Const(Const::Int(n.into(), Elem::LINT)));
                 }
                 steps.push(PathElem::Index {
                     dims: dims.clone(),
                     subs: vals,
                 });
-                named.range = range.as_deref().copied();
+                named.range = *range;
                 named.partly = None;
-                ty = (**elem).clone();
+                ty = elem.clone();
             }
             Seg::Part(span) => {
                 cx.err(

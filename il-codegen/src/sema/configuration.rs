@@ -411,8 +411,8 @@ pub(crate) fn retained(env: &Env, sig: &PouSig) -> Vec<(usize, Retained)> {
 
 /// The FB type of an instance variable (or of an array of instances).
 fn instance_of(mut t: &Ty) -> Option<&str> {
-    while let Ty::Array { elem, .. } = t {
-        t = elem;
+    while let Ty::Array(a) = t {
+        t = &a.elem;
     }
     match t {
         Ty::Fb(fb) => Some(fb),
@@ -461,8 +461,8 @@ pub(crate) fn check_fb_externals(cxs: &mut [Cx], pous: &[(usize, &ast::Pou)], en
         }
         for v in &sig.vars {
             let mut t = &v.ty;
-            while let Ty::Array { elem, .. } = t {
-                t = elem;
+            while let Ty::Array(a) = t {
+                t = &a.elem;
             }
             let Ty::Fb(fb) = t else { continue };
             let Some(fsig) = env.pou(fb) else { continue };

@@ -13,7 +13,7 @@ use crate::ast::{Initializer, LitKind, Literal, Operand};
 /// interpreter alike. `None` where that is the type's default (0) anyway.
 pub(crate) fn subrange_start(ty: &Ty, range: Option<(i128, i128)>) -> Option<Init> {
     match (ty, range) {
-        (Ty::Elem(e), Some((lo, _))) if lo != 0 => Some(Init::Const(Const::Int(lo, *e))),
+        (Ty::Elem(e), Some((lo, _))) if lo != 0 => Some(Init::Const(Const::Int(lo.into(), *e))),
         _ => None,
     }
 }
@@ -44,7 +44,9 @@ pub(crate) fn init_value(
                 _ => None,
             };
             match widened.map_or_else(|| coerce(&class, ty), Ok) {
-                Ok(Const::Int(v, e)) if range.is_some_and(|(lo, hi)| v < lo || v > hi) => {
+                Ok(Const::Int(v, e))
+                    if range.is_some_and(|(lo, hi)| v.get() < lo || v.get() > hi) =>
+                {
                     let (lo, hi) = range.unwrap_or_default();
                     cx.err(
                         BAD_INIT,
@@ -83,7 +85,7 @@ pub(crate) fn init_value(
                 .map(|(_, v)| v.clone())
                 .unwrap_or_default();
             match vals.iter().find(|v| value.is(v)) {
-                Some(v) => Some(Init::Const(Const::enum_value(name.clone(), v.clone()))),
+                Some(v) => Some(Init::Const(Const::enum_value(name.to_string(), v.clone()))),
                 None => {
                     cx.err(
                         BAD_INIT,
@@ -116,14 +118,8 @@ pub(crate) fn init_value(
             }
             Some(Init::Struct(out))
         }
-        (
-            Initializer::Array { elems, span },
-            Ty::Array {
-                dims,
-                elem,
-                range: elem_range,
-            },
-        ) => {
+        (Initializer::Array { elems, span }, Ty::Array(arr)) => {
+            let (dims, elem, elem_range) = (&arr.dims, &arr.elem, &arr.range);
             let total: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
             let mut out = Vec::new();
             // Each count is at most `total` (16 million): their sum over any
@@ -147,7 +143,7 @@ pub(crate) fn init_value(
                 };
                 // A literal (checked against the element subrange), or a
                 // structure initialiser for an array of structures.
-                let c = init_value(cx, types, e, elem, elem_range.as_deref().copied())?;
+                let c = init_value(cx, types, e, elem, *elem_range)?;
                 len += n;
                 if n > 0 {
                     out.push((n as usize, c));

@@ -238,12 +238,8 @@ impl Storage {
 /// both build array defaults with it.
 pub fn element_start(t: &Ty) -> Option<Const> {
     match t {
-        Ty::Array {
-            elem,
-            range: Some(r),
-            ..
-        } if r.0 != 0 => match **elem {
-            Ty::Elem(e) => Some(Const::Int(r.0, e)),
+        Ty::Array(a) => match (&a.elem, a.range) {
+            (Ty::Elem(e), Some((lo, _))) if lo != 0 => Some(Const::Int(lo.into(), *e)),
             _ => None,
         },
         _ => None,
@@ -275,23 +271,78 @@ pub enum Const {
     /// `TRUE` / `FALSE`.
     Bool(bool),
     /// Integer or bit string of the given type, value in range.
-    Int(i128, Elem),
+    Int(IntValue, Elem),
     /// REAL or LREAL (held as f64; the emitter narrows it to f32 for REAL).
     Real(f64, Elem),
     /// TIME/LTIME (ns), DATE (days), TOD (ns), DT (ns).
     Time(i64, Elem),
-    /// A STRING or WSTRING literal.
-    Str {
-        /// The characters.
-        value: String,
-        /// WSTRING rather than STRING.
-        wide: bool,
-        /// The declared maximum length in characters.
-        len: u32,
-    },
+    /// A STRING or WSTRING literal. Boxed: rare, and its text inline made
+    /// every constant (and every value) twice as large.
+    Str(Box<StrConst>),
     /// A value of a user enumeration. Boxed: rare, and its two names
     /// inline made every constant (and every value) half as large again.
     Enum(Box<EnumConst>),
+}
+
+/// The value of an integer constant ([`Const::Int`]). Every IEC integer
+/// fits in 64 bits and a sign (LINT in `i64`, ULINT in `u64`); held so
+/// rather than as an `i128`, whose 16-byte alignment made every constant,
+/// value and IR statement larger.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub struct IntValue {
+    bits: u64,
+    negative: bool,
+}
+
+impl IntValue {
+    /// `v`, which the checker proved in the range of an IEC integer type
+    /// (so within `i64::MIN..=u64::MAX`; a value outside, which no caller
+    /// makes, is held clamped rather than wrapped).
+    pub fn new(v: i128) -> IntValue {
+        let v = v.clamp(i128::from(i64::MIN), i128::from(u64::MAX));
+        IntValue {
+            bits: v as u64,
+            negative: v < 0,
+        }
+    }
+
+    /// The value.
+    pub fn get(self) -> i128 {
+        if self.negative {
+            i128::from(self.bits as i64)
+        } else {
+            i128::from(self.bits)
+        }
+    }
+}
+
+impl From<i128> for IntValue {
+    fn from(v: i128) -> IntValue {
+        IntValue::new(v)
+    }
+}
+
+impl std::fmt::Debug for IntValue {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.get())
+    }
+}
+
+impl std::fmt::Display for IntValue {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.get())
+    }
+}
+
+/// A STRING or WSTRING literal ([`Const::Str`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct StrConst {
+    /// The characters.
+    pub value: String,
+    /// WSTRING rather than STRING.
+    pub wide: bool,
+    /// The declared maximum length in characters.
+    pub len: u32,
 }
 
 /// A value of a user enumeration ([`Const::Enum`]).
@@ -316,11 +367,11 @@ impl Const {
         match self {
             Const::Bool(_) => Ty::BOOL,
             Const::Int(_, e) | Const::Real(_, e) | Const::Time(_, e) => Ty::Elem(*e),
-            Const::Str { wide, len, .. } => Ty::Str {
-                wide: *wide,
-                len: *len,
+            Const::Str(s) => Ty::Str {
+                wide: s.wide,
+                len: s.len,
             },
-            Const::Enum(e) => Ty::Enum(e.ty.clone()),
+            Const::Enum(e) => Ty::Enum(e.ty.clone().into()),
         }
     }
 }

@@ -76,10 +76,8 @@ pub(crate) fn coerce(lit: &LitClass, ty: &Ty) -> Result<Const, String> {
     };
     match (lit, ty) {
         (LitClass::Typed(c), _) if c.ty() == *ty => Ok(c.clone()),
-        (LitClass::Typed(Const::Str { value, wide, .. }), Ty::Str { wide: w, len })
-            if wide == w =>
-        {
-            str_const(value, *wide, *len, ty)
+        (LitClass::Typed(Const::Str(s)), Ty::Str { wide: w, len }) if s.wide == *w => {
+            str_const(&s.value, s.wide, *len, ty)
         }
         (LitClass::Int(v), Ty::Elem(Elem::BOOL)) => match v {
             0 | 1 => Ok(Const::Bool(*v == 1)),
@@ -88,7 +86,7 @@ pub(crate) fn coerce(lit: &LitClass, ty: &Ty) -> Result<Const, String> {
         (LitClass::Int(v), Ty::Elem(e)) if e.int_range().is_some() => {
             let (lo, hi) = e.int_range().expect("checked");
             if (lo..=hi).contains(v) {
-                Ok(Const::Int(*v, *e))
+                Ok(Const::Int((*v).into(), *e))
             } else {
                 Err(format!("{v} does not fit in {} ({lo}..{hi})", e.name()))
             }
@@ -149,11 +147,11 @@ pub(crate) fn str_const(s: &str, wide: bool, len: u32, ty: &Ty) -> Result<Const,
     if n > len as usize {
         return Err(format!("the string has {n} characters; {ty} holds {len}"));
     }
-    Ok(Const::Str {
+    Ok(Const::Str(Box::new(crate::sema::ir::StrConst {
         value: s.to_string(),
         wide,
         len,
-    })
+    })))
 }
 
 pub(crate) fn describe(lit: &LitClass) -> String {

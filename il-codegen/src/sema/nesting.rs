@@ -29,9 +29,9 @@ enum Node<'a> {
 /// depth of the rest (elementary values, standard FBs).
 fn parts<'a>(ty: &'a Ty, env: &Env, out: &mut Vec<(Node<'a>, u32)>) -> u32 {
     let (mut t, mut dims) = (ty, 0u32);
-    while let Ty::Array { elem, dims: d, .. } = t {
-        dims = dims.saturating_add(d.len() as u32);
-        t = elem;
+    while let Ty::Array(a) = t {
+        dims = dims.saturating_add(a.dims.len() as u32);
+        t = &a.elem;
     }
     let leaf = match t {
         Ty::Fb(n) if env.pou(n).is_some() => {
@@ -44,7 +44,7 @@ fn parts<'a>(ty: &'a Ty, env: &Env, out: &mut Vec<(Node<'a>, u32)>) -> u32 {
         }
         Ty::Fb(_) => 3,
         Ty::Str { .. } => 2,
-        Ty::Elem(_) | Ty::Enum(_) | Ty::Array { .. } => 1,
+        Ty::Elem(_) | Ty::Enum(_) | Ty::Array(_) => 1,
     };
     dims.saturating_add(leaf)
 }

@@ -27,8 +27,8 @@ pub(crate) fn cyclic_structs(t: &TypeTables) -> HashSet<String> {
                 .iter()
                 .filter_map(|f| {
                     let mut ty = &f.ty;
-                    while let Ty::Array { elem, .. } = ty {
-                        ty = elem;
+                    while let Ty::Array(a) = ty {
+                        ty = &a.elem;
                     }
                     match ty {
                         Ty::Struct(n) => index.get(n.to_ascii_uppercase().as_str()).copied(),
@@ -71,8 +71,8 @@ pub(crate) fn check_recursion(cxs: &mut [Cx], env: &Env, units: &[&ast::Compilat
                 for v in &sig.vars {
                     // An array of instances holds them too (`ARRAY OF Self`).
                     let mut ty = &v.ty;
-                    while let Ty::Array { elem, .. } = ty {
-                        ty = elem;
+                    while let Ty::Array(a) = ty {
+                        ty = &a.elem;
                     }
                     if let Ty::Fb(t) = ty
                         && env.pou(t).is_some()

@@ -4,7 +4,7 @@
 use super::codes::*;
 use super::env::*;
 use super::ir::Loc;
-use super::types::{DEFAULT_STRING_LEN, Elem, Ty};
+use super::types::{ArrayTy, DEFAULT_STRING_LEN, Elem, Ty};
 use super::{Cx, stdfb, suggest};
 use crate::ast::{self, ConstExpr, Initializer, LitKind, Literal, PouKind, Span, TypeSpec};
 
@@ -150,13 +150,15 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
                 _ => {}
             }
             if let Some(fb) = stdfb::lookup(&key) {
-                return Some(Ty::Fb(fb.name.to_string()));
+                return Some(Ty::Fb(fb.name.to_string().into()));
             }
             if let Some(t) = fb_names.user_type(cx, &key, id.span) {
                 return t;
             }
             match fb_names.pous.get(&key) {
-                Some((declared, PouKind::FunctionBlock)) => return Some(Ty::Fb(declared.clone())),
+                Some((declared, PouKind::FunctionBlock)) => {
+                    return Some(Ty::Fb(declared.clone().into()));
+                }
                 Some((declared, kind)) => {
                     let why = if *kind == PouKind::Program {
                         "programs are instances of a CONFIGURATION's resources, not variables of a POU"
@@ -206,7 +208,7 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
             // `ARRAY ... OF INT (0..9)` or of a named subrange: the bounds
             // go with the array type (elements start at the lower one, and
             // stores into them are checked).
-            let range = fb_names.range_of(elem).map(Box::new);
+            let range = fb_names.range_of(elem);
             let elem = resolve_type(cx, fb_names, elem)?;
             let mut out = Vec::new();
             let mut total: i128 = 1;
@@ -233,11 +235,11 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
                 );
                 return None;
             }
-            Some(Ty::Array {
+            Some(Ty::Array(Box::new(ArrayTy {
                 dims: out,
-                elem: Box::new(elem),
+                elem,
                 range,
-            })
+            })))
         }
         TypeSpec::Subrange { base, range, span } => {
             let e =
@@ -300,8 +302,8 @@ impl Names<'_> {
     pub(crate) fn user_type(&self, cx: &mut Cx, key: &str, span: Span) -> Option<Option<Ty>> {
         let decl = self.types.get(key)?;
         Some(match &decl.spec {
-            TypeSpec::Struct { .. } => Some(Ty::Struct(decl.name.name.clone())),
-            TypeSpec::Enum { .. } => Some(Ty::Enum(decl.name.name.clone())),
+            TypeSpec::Struct { .. } => Some(Ty::Struct(decl.name.name.clone().into())),
+            TypeSpec::Enum { .. } => Some(Ty::Enum(decl.name.name.clone().into())),
             spec => {
                 // An alias or a subrange: the type it names (aliases may chain).
                 if self.depth.get() > 32 {

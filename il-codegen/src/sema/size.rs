@@ -58,7 +58,8 @@ fn size(env: &Env, t: &Ty, memo: &mut Sizes, depth: u32) -> u64 {
         Ty::Elem(e) => elem_bytes(*e),
         Ty::Str { wide, len } => (*len as u64 + 1) * if *wide { 2 } else { 1 } + 8,
         Ty::Enum(_) => 8,
-        Ty::Array { dims, elem, .. } => {
+        Ty::Array(a) => {
+            let (dims, elem) = (&a.dims, &a.elem);
             let n = dims.iter().fold(1u64, |n, (lo, hi)| {
                 n.saturating_mul((hi - lo + 1).max(0) as u64)
             });
@@ -114,12 +115,13 @@ fn size(env: &Env, t: &Ty, memo: &mut Sizes, depth: u32) -> u64 {
 pub(crate) fn is_large(env: &Env, t: &Ty) -> bool {
     fn bytes(env: &Env, t: &Ty) -> u64 {
         match t {
-            Ty::Array { dims, elem, .. } => dims
+            Ty::Array(a) => a
+                .dims
                 .iter()
                 .fold(1u64, |n, (lo, hi)| {
                     n.saturating_mul((hi - lo + 1).max(0) as u64)
                 })
-                .saturating_mul(bytes(env, elem)),
+                .saturating_mul(bytes(env, &a.elem)),
             Ty::Fb(n) if env.pou(n).is_none() => 64,
             Ty::Fb(_) | Ty::Struct(_) => {
                 key(t).and_then(|k| env.sizes.get(&k).copied()).unwrap_or(0)
@@ -136,12 +138,12 @@ pub(crate) fn is_large(env: &Env, t: &Ty) -> bool {
 /// element type for one dimension).
 pub(crate) fn row(t: &Ty) -> Ty {
     match t {
-        Ty::Array { dims, elem, range } if dims.len() > 1 => Ty::Array {
-            dims: dims[1..].to_vec(),
-            elem: elem.clone(),
-            range: range.clone(),
-        },
-        Ty::Array { elem, .. } => (**elem).clone(),
+        Ty::Array(a) if a.dims.len() > 1 => Ty::Array(Box::new(super::types::ArrayTy {
+            dims: a.dims[1..].to_vec(),
+            elem: a.elem.clone(),
+            range: a.range,
+        })),
+        Ty::Array(a) => a.elem.clone(),
         _ => t.clone(),
     }
 }
@@ -152,8 +154,17 @@ pub(crate) fn row(t: &Ty) -> Ty {
 /// VAR_GLOBAL, STRUCT fields, and arrays whose rows are large.
 pub(crate) fn mark_heap(cxs: &mut [Cx], env: &mut Env, units: &[&ast::CompilationUnit]) {
     let mut memo = Sizes::new();
-    let mut named: Vec<Ty> = env.pous.values().map(|s| Ty::Fb(s.name.clone())).collect();
-    named.extend(env.types.structs.keys().map(|k| Ty::Struct(k.clone())));
+    let mut named: Vec<Ty> = env
+        .pous
+        .values()
+        .map(|s| Ty::Fb(s.name.clone().into()))
+        .collect();
+    named.extend(
+        env.types
+            .structs
+            .keys()
+            .map(|k| Ty::Struct(k.clone().into())),
+    );
     for t in &named {
         size(env, t, &mut memo, 0);
     }

@@ -79,8 +79,8 @@ fn takes_derived(name: &str, t: &Ty, c: Class) -> bool {
             c == Class::Any || (c == Class::AnyElementary && matches!(name, "EQ" | "NE"))
         }
         Ty::Struct(_) => c == Class::Any,
-        Ty::Array { elem, .. } => {
-            c == Class::Any && !matches!(**elem, Ty::Fb(_)) && takes_derived_elem(elem)
+        Ty::Array(a) => {
+            c == Class::Any && !matches!(a.elem, Ty::Fb(_)) && takes_derived_elem(&a.elem)
         }
         _ => false,
     }
@@ -90,7 +90,7 @@ fn takes_derived(name: &str, t: &Ty, c: Class) -> bool {
 fn takes_derived_elem(t: &Ty) -> bool {
     match t {
         Ty::Fb(_) => false,
-        Ty::Array { elem, .. } => takes_derived_elem(elem),
+        Ty::Array(a) => takes_derived_elem(&a.elem),
         _ => true,
     }
 }

@@ -202,24 +202,33 @@ pub enum Ty {
         /// Maximum length in characters.
         len: u32,
     },
-    /// ARRAY[lo..hi, ...] OF elem
-    Array {
-        /// `(lo, hi)` per dimension, inclusive.
-        dims: Vec<(i64, i64)>,
-        /// The element type.
-        elem: Box<Ty>,
-        /// The element type is a subrange of an integer type: its bounds.
-        /// The elements start at the lower one and every store into one is
-        /// range-checked (as for a subrange variable). Boxed: it would more
-        /// than double the size of every type (and of every IR value).
-        range: Option<Box<(i128, i128)>>,
-    },
+    /// ARRAY[lo..hi, ...] OF elem. Boxed: rarer than the others, and its
+    /// parts inline made every type (so every IR value and statement) much
+    /// larger.
+    Array(Box<ArrayTy>),
     /// An instance of a standard or user function block (name as declared).
-    Fb(String),
+    Fb(Name),
     /// A user STRUCT type (name as declared).
-    Struct(String),
+    Struct(Name),
     /// A user enumeration (name as declared).
-    Enum(String),
+    Enum(Name),
+}
+
+/// The name of a user type or function block in a [`Ty`]: shared, and one
+/// pointer wide, so that a type is two words (an IR value three).
+pub type Name = std::sync::Arc<String>;
+
+/// An array type ([`Ty::Array`]).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct ArrayTy {
+    /// `(lo, hi)` per dimension, inclusive.
+    pub dims: Vec<(i64, i64)>,
+    /// The element type.
+    pub elem: Ty,
+    /// The element type is a subrange of an integer type: its bounds.
+    /// The elements start at the lower one and every store into one is
+    /// range-checked (as for a subrange variable).
+    pub range: Option<(i128, i128)>,
 }
 
 // By hand, for an inlined fast path: the checker clones a type about ten
@@ -245,11 +254,7 @@ impl Ty {
                 wide: *wide,
                 len: *len,
             },
-            Ty::Array { dims, elem, range } => Ty::Array {
-                dims: dims.clone(),
-                elem: elem.clone(),
-                range: range.clone(),
-            },
+            Ty::Array(a) => Ty::Array(a.clone()),
             Ty::Fb(n) => Ty::Fb(n.clone()),
             Ty::Struct(n) => Ty::Struct(n.clone()),
             Ty::Enum(n) => Ty::Enum(n.clone()),
@@ -295,15 +300,15 @@ impl Ty {
             Ty::Elem(e) => e.rust().to_string(),
             Ty::Str { wide: false, len } => format!("::il_std::STRING<{len}>"),
             Ty::Str { wide: true, len } => format!("::il_std::WSTRING<{len}>"),
-            Ty::Array { dims, elem, .. } => {
-                let mut t = elem.rust(fb_path);
-                for (lo, hi) in dims.iter().rev() {
+            Ty::Array(a) => {
+                let mut t = a.elem.rust(fb_path);
+                for (lo, hi) in a.dims.iter().rev() {
                     let n = (hi - lo + 1) as usize;
                     t = format!("[{t}; {n}]");
                 }
                 t
             }
-            Ty::Fb(name) | Ty::Struct(name) | Ty::Enum(name) => fb_path(name),
+            Ty::Fb(name) | Ty::Struct(name) | Ty::Enum(name) => fb_path(name.as_str()),
         }
     }
 
@@ -312,15 +317,14 @@ impl Ty {
         match self {
             Ty::Elem(e) => e.mangle().to_string(),
             Ty::Str { wide, len } => format!("{}string{len}", if *wide { "w" } else { "" }),
-            Ty::Array { dims, elem, range } => {
+            Ty::Array(a) => {
                 let mut s = String::from("array");
-                for (lo, hi) in dims {
+                for (lo, hi) in &a.dims {
                     s.push_str(&format!("_{}_{}", lo, hi).replace('-', "m"));
                 }
                 s.push_str("_of_");
-                s.push_str(&elem.mangle());
-                if let Some(r) = range {
-                    let (lo, hi) = **r;
+                s.push_str(&a.elem.mangle());
+                if let Some((lo, hi)) = a.range {
                     s.push_str(&format!("_{lo}_{hi}").replace('-', "m"));
                 }
                 s
@@ -342,16 +346,16 @@ impl fmt::Display for Ty {
                     write!(f, "{kw}[{len}]")
                 }
             }
-            Ty::Array { dims, elem, range } => {
+            Ty::Array(a) => {
                 f.write_str("ARRAY[")?;
-                for (i, (lo, hi)) in dims.iter().enumerate() {
+                for (i, (lo, hi)) in a.dims.iter().enumerate() {
                     if i > 0 {
                         f.write_str(", ")?;
                     }
                     write!(f, "{lo}..{hi}")?;
                 }
-                write!(f, "] OF {elem}")?;
-                match range.as_deref() {
+                write!(f, "] OF {}", a.elem)?;
+                match a.range {
                     Some((lo, hi)) => write!(f, " ({lo}..{hi})"),
                     None => Ok(()),
                 }

@@ -92,8 +92,8 @@ pub fn widen_const(c: &Const, to: Elem) -> Option<Const> {
         return None;
     }
     Some(match c {
-        Const::Bool(b) => Const::Int(i128::from(*b), to),
-        Const::Int(v, _) if to.is_real() => Const::Real(*v as f64, to),
+        Const::Bool(b) => Const::Int(i128::from(*b).into(), to),
+        Const::Int(v, _) if to.is_real() => Const::Real(v.get() as f64, to),
         Const::Int(v, _) => Const::Int(*v, to),
         // REAL constants are held as f64 already rounded to f32.
         Const::Real(v, _) => Const::Real(*v, to),

@@ -270,7 +270,7 @@ impl Index {
 fn ty_key(t: &Ty) -> Option<String> {
     match t {
         Ty::Fb(n) | Ty::Struct(n) => Some(n.to_ascii_uppercase()),
-        Ty::Array { elem, .. } => ty_key(elem),
+        Ty::Array(a) => ty_key(&a.elem),
         _ => None,
     }
 }

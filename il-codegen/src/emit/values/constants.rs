@@ -18,7 +18,7 @@ pub(crate) fn constant(c: &Const) -> String {
         Const::Bool(true) => "true".to_string(),
         Const::Bool(false) => "false".to_string(),
         Const::Int(v, e) => {
-            let v = *v;
+            let v = v.get();
             match e {
                 Elem::SINT => format!("{}i8", v as i8),
                 Elem::INT => format!("{}i16", v as i16),
@@ -43,21 +43,11 @@ pub(crate) fn constant(c: &Const) -> String {
         }
         Const::Time(v, e) => format!("{}({v}i64)", Elem::rust(*e)),
         Const::Enum(e) => format!("{}::{}", item_ident(&e.ty), rust_ident(&e.value)),
-        Const::Str {
-            value,
-            wide: false,
-            len,
-        } => format!(
-            "::il_std::STRING::<{len}>::from_str_truncating({}).0",
-            str_lit(value)
-        ),
-        Const::Str {
-            value,
-            wide: true,
-            len,
-        } => format!(
-            "::il_std::WSTRING::<{len}>::from_str_truncating({}).0",
-            str_lit(value)
+        Const::Str(s) => format!(
+            "::il_std::{}::<{}>::from_str_truncating({}).0",
+            if s.wide { "WSTRING" } else { "STRING" },
+            s.len,
+            str_lit(&s.value)
         ),
     }
 }
@@ -65,13 +55,13 @@ pub(crate) fn constant(c: &Const) -> String {
 /// The default value of a type (IEC: 0, FALSE, T#0s, '').
 pub(crate) fn default_value(t: &Ty) -> String {
     match t {
-        Ty::Array { dims, elem, .. } => {
+        Ty::Array(a) => {
             // An array of a subrange starts at its lower limit.
             let mut v = match crate::sema::ir::element_start(t) {
                 Some(c) => constant(&c),
-                None => default_value(elem),
+                None => default_value(&a.elem),
             };
-            for _ in dims {
+            for _ in &a.dims {
                 v = format!("::core::array::from_fn(|_| {v})");
             }
             v
@@ -94,7 +84,8 @@ pub(crate) fn init_value(t: &Ty, init: Option<&Init>) -> String {
 pub(crate) fn heap_init_value(t: &Ty, init: Option<&Init>) -> String {
     match (init, t) {
         (Some(Init::Array(_)), Ty::Array { .. }) => array_init(t, init, true),
-        (_, Ty::Array { dims, .. }) => {
+        (_, Ty::Array(a)) => {
+            let dims = &a.dims;
             let n = dims.first().map_or(0, |(lo, hi)| (hi - lo + 1) as usize);
             // One dimension: the row is the element, which may start at a
             // subrange's lower limit.
@@ -113,7 +104,8 @@ pub(crate) fn heap_init_value(t: &Ty, init: Option<&Init>) -> String {
 pub(super) fn array_init(t: &Ty, init: Option<&Init>, heap: bool) -> String {
     match (init, t) {
         (Some(Init::Const(c)), _) => constant(c),
-        (Some(Init::Array(items)), Ty::Array { dims, elem, .. }) => {
+        (Some(Init::Array(items)), Ty::Array(a)) => {
+            let (dims, elem) = (&a.dims, &a.elem);
             // A `match` on the flat index, one arm per run of equal values
             // (neighbouring runs of one value merged), keeps `[1000(0)]` small.
             let mut arms = String::new();

@@ -23,7 +23,7 @@ impl PouEmitter<'_> {
                 };
                 // A literal divisor other than 0 needs no zero check.
                 let nonzero =
-                    !*negate_rhs && matches!(rhs, Value::Const(Const::Int(n, _)) if *n != 0);
+                    !*negate_rhs && matches!(rhs, Value::Const(Const::Int(n, _)) if n.get() != 0);
                 self.binary(*op, ty, l, r, nonzero, line)
             }
             Expr::TimeScale {

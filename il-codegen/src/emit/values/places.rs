@@ -21,7 +21,7 @@ impl PouEmitter<'_> {
     pub(crate) fn receiver(&self, v: &Value, line: u32) -> String {
         let t = self.value(v, line);
         match v {
-            Value::Const(Const::Int(n, _)) if *n < 0 => format!("({t})"),
+            Value::Const(Const::Int(n, _)) if n.get() < 0 => format!("({t})"),
             Value::Const(Const::Real(f, _)) if *f < 0.0 => format!("({t})"),
             _ => t,
         }
@@ -129,10 +129,11 @@ impl PouEmitter<'_> {
                 PathElem::Index { dims, subs } => {
                     for (s, &(lo, hi)) in subs.iter().zip(dims) {
                         if let Value::Const(Const::Int(n, _)) = s
-                            && *n >= lo as i128
-                            && *n <= hi as i128
+                            && let n = n.get()
+                            && n >= lo as i128
+                            && n <= hi as i128
                         {
-                            let k = (*n - lo as i128) as usize;
+                            let k = (n - lo as i128) as usize;
                             cur = format!("{cur}[{k}]");
                             at_binding = false;
                             continue;
@@ -185,7 +186,7 @@ impl PouEmitter<'_> {
         p.path.iter().any(|e| {
             match e {
             PathElem::Index { dims, subs } => subs.iter().zip(dims).any(|(s, &(lo, hi))| {
-                !matches!(s, Value::Const(Const::Int(n, _)) if *n >= lo as i128 && *n <= hi as i128)
+                !matches!(s, Value::Const(Const::Int(n, _)) if n.get() >= lo as i128 && n.get() <= hi as i128)
             }),
             PathElem::Field(_) | PathElem::Part { .. } => false,
         }

@@ -146,7 +146,8 @@ impl Walk<'_, '_> {
                 }
                 if let (Some(&(lo, hi)), Value::Const(Const::Int(v, _))) =
                     (place.range.as_deref(), &value)
-                    && (*v < lo || *v > hi)
+                    && let v = v.get()
+                    && (v < lo || v > hi)
                 {
                     self.err(
                         LITERAL_RANGE,

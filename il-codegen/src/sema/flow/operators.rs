@@ -58,9 +58,10 @@ impl Walk<'_, '_> {
         {
             let (rv, ne) = match r {
                 Arg::Typed(v, Ty::Elem(n)) if n.is_num() => (v.clone(), *n),
-                Arg::Lit(LitClass::Int(n), _) if i64::try_from(*n).is_ok() => {
-                    (Value::Const(Const::Int(*n, Elem::LINT)), Elem::LINT)
-                }
+                Arg::Lit(LitClass::Int(n), _) if i64::try_from(*n).is_ok() => (
+                    Value::Const(Const::Int((*n).into(), Elem::LINT)),
+                    Elem::LINT,
+                ),
                 Arg::Lit(LitClass::Real(f, _), _) => {
                     (Value::Const(Const::Real(*f, Elem::LREAL)), Elem::LREAL)
                 }
@@ -173,14 +174,14 @@ impl Walk<'_, '_> {
 pub fn default_const(t: &Ty) -> Const {
     match t {
         Ty::Elem(Elem::BOOL) => Const::Bool(false),
-        Ty::Elem(e) if e.int_range().is_some() => Const::Int(0, *e),
+        Ty::Elem(e) if e.int_range().is_some() => Const::Int(0.into(), *e),
         Ty::Elem(e) if e.is_real() => Const::Real(0.0, *e),
         Ty::Elem(e) => Const::Time(0, *e),
-        Ty::Str { wide, len } => Const::Str {
+        Ty::Str { wide, len } => Const::Str(Box::new(crate::sema::ir::StrConst {
             value: String::new(),
             wide: *wide,
             len: *len,
-        },
+        })),
         _ => Const::Bool(false),
     }
 }

@@ -154,12 +154,7 @@ impl Walk<'_, '_> {
                     ty = mty;
                 }
                 Accessor::Index(subs, span) => {
-                    let Ty::Array {
-                        dims,
-                        elem,
-                        range: elem_range,
-                    } = &ty
-                    else {
+                    let Ty::Array(arr) = &ty else {
                         self.err(
                             BAD_INDEX,
                             *span,
@@ -167,6 +162,7 @@ impl Walk<'_, '_> {
                         );
                         return None;
                     };
+                    let (dims, elem, elem_range) = (&arr.dims, &arr.elem, &arr.range);
                     if subs.len() != dims.len() {
                         self.err(
                             BAD_INDEX,
@@ -180,8 +176,8 @@ impl Walk<'_, '_> {
                         return None;
                     }
                     // An element of an array of a subrange is range-checked.
-                    range = elem_range.as_deref().copied();
-                    let (dims, elem) = (dims.clone(), (**elem).clone());
+                    range = *elem_range;
+                    let (dims, elem) = (dims.clone(), elem.clone());
                     let mut vals = Vec::with_capacity(subs.len());
                     for (s, (lo, hi)) in subs.iter().zip(&dims) {
                         vals.push(self.subscript(s, *lo, *hi)?);

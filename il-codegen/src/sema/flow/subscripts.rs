@@ -28,7 +28,7 @@ impl Walk<'_, '_> {
                     );
                     return None;
                 }
-                Some(Value::Const(Const::Int(n, Elem::LINT)))
+                Some(Value::Const(Const::Int(n.into(), Elem::LINT)))
             }
             Sub::Val(v) => Some(v),
         }
@@ -84,7 +84,7 @@ impl Walk<'_, '_> {
 /// A part of a subscript expression as a value (a literal as LINT, wrapped).
 fn lint(s: Sub) -> Value {
     match s {
-        Sub::Lit(n, _) => Value::Const(Const::Int(n as i64 as i128, Elem::LINT)),
+        Sub::Lit(n, _) => Value::Const(Const::Int((n as i64 as i128).into(), Elem::LINT)),
         Sub::Val(v) => v,
     }
 }

@@ -204,10 +204,11 @@ impl PathElem {
             let Value::Const(Const::Int(n, _)) = s else {
                 return None;
             };
-            if *n < lo as i128 || *n > hi as i128 {
+            let n = n.get();
+            if n < lo as i128 || n > hi as i128 {
                 return None;
             }
-            let k = usize::try_from(*n - lo as i128).ok()?;
+            let k = usize::try_from(n - lo as i128).ok()?;
             let size = usize::try_from(hi - lo + 1).ok()?;
             flat = flat.checked_mul(size)?.checked_add(k)?;
             offsets.push(k);
