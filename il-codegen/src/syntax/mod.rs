@@ -45,13 +45,17 @@ pub fn parse_std(
         .with_help("split the program into several files");
         return (CompilationUnit::default(), vec![d]);
     }
-    let (toks, mut diags, host_marks) = lexer::lex_marked(&file.text, standard);
+    let mut lx = lexer::Lexer::new(&file.text, standard);
     let mut ctx = actions::Ctx::default();
-    // The parser takes the tokens (their names move into the tree instead
-    // of being copied); the messages of syntax errors, which look at the
-    // tokens around the error, get them from lexing again (the lexer is
-    // deterministic): only files with syntax errors pay for it.
-    let result = grammar::UnitParser::new().parse(&mut ctx, toks);
+    // The parser pulls the tokens from the lexer one at a time (their names
+    // move into the tree instead of being copied); the messages of syntax
+    // errors, which look at the tokens around the error, get them from
+    // lexing again (the lexer is deterministic): only files with syntax
+    // errors pay for it. A parser that stops early leaves the rest of the
+    // file to lex, for the lexer's own diagnostics.
+    let result = grammar::UnitParser::new().parse(&mut ctx, lx.by_ref());
+    lx.by_ref().for_each(drop);
+    let (mut diags, host_marks) = lx.finish_marked();
     let failed = result.is_err() || !ctx.errors.is_empty();
     let toks = if failed {
         lexer::lex_std(&file.text, standard).0

@@ -15,6 +15,7 @@
 
 use crate::ast::*;
 use crate::diag::Diagnostic;
+use std::collections::VecDeque;
 
 /// The longest name, in characters (IL0034).
 pub(crate) const MAX_NAME: usize = 255;
@@ -227,7 +228,12 @@ pub struct Lexer<'a> {
     nest: usize,
     arrays: usize,
     nest_reported: bool,
-    out: Vec<Spanned>,
+    /// Tokens lexed and not yet taken; the last one pushed stays until the
+    /// end (the lexer looks back at it), so this holds one or two tokens
+    /// while the parser pulls them ([`Lexer::next`]).
+    out: VecDeque<Spanned>,
+    /// The end of the file was reached and the last tokens pushed.
+    done: bool,
     diags: Vec<Diagnostic>,
     /// Pragmas are errors under the 2nd edition.
     standard: crate::dialect::Standard,
@@ -264,34 +270,61 @@ pub fn lex_marked(
     src: &str,
     standard: crate::dialect::Standard,
 ) -> (Vec<Spanned>, Vec<Diagnostic>, Vec<Span>) {
-    let mut lx = Lexer {
-        src,
-        b: src.as_bytes(),
-        pos: 0,
-        mode: Mode::Top,
-        var_ret: Mode::Top,
-        orphan: false,
-        op_field: true,
-        dirty: false,
-        line_start: true,
-        header_toks: 0,
-        arg_depth: 0,
-        defer_stack: Vec::new(),
-        excess: 0,
-        in_resource: false,
-        nest: 0,
-        arrays: 0,
-        nest_reported: false,
-        out: Vec::new(),
-        diags: Vec::new(),
-        standard,
-        host_marks: Vec::new(),
-    };
-    if src.starts_with('\u{feff}') {
-        lx.pos = 3;
+    let mut lx = Lexer::new(src, standard);
+    let toks = lx.by_ref().collect();
+    (toks, lx.diags, lx.host_marks)
+}
+
+/// Tokens as the parser takes them, one at a time: the whole token list of
+/// a file (48 bytes a token, about as large as the syntax tree) is never
+/// held. Drain it (`by_ref`) before [`Lexer::finish_marked`].
+impl Iterator for Lexer<'_> {
+    type Item = Spanned;
+
+    fn next(&mut self) -> Option<Spanned> {
+        while self.out.len() < 2 && self.step() {}
+        self.out.pop_front()
     }
-    lx.run();
-    (lx.out, lx.diags, lx.host_marks)
+}
+
+impl<'a> Lexer<'a> {
+    /// A lexer at the start of `src`.
+    pub fn new(src: &'a str, standard: crate::dialect::Standard) -> Lexer<'a> {
+        let mut lx = Lexer {
+            src,
+            b: src.as_bytes(),
+            pos: 0,
+            mode: Mode::Top,
+            var_ret: Mode::Top,
+            orphan: false,
+            op_field: true,
+            dirty: false,
+            line_start: true,
+            header_toks: 0,
+            arg_depth: 0,
+            defer_stack: Vec::new(),
+            excess: 0,
+            in_resource: false,
+            nest: 0,
+            arrays: 0,
+            nest_reported: false,
+            out: VecDeque::new(),
+            done: false,
+            diags: Vec::new(),
+            standard,
+            host_marks: Vec::new(),
+        };
+        if src.starts_with('\u{feff}') {
+            lx.pos = 3;
+        }
+        lx
+    }
+
+    /// The lexer's diagnostics and the spans of the `{extern}` pragmas, once
+    /// every token was taken.
+    pub fn finish_marked(self) -> (Vec<Diagnostic>, Vec<Span>) {
+        (self.diags, self.host_marks)
+    }
 }
 
 impl<'a> Lexer<'a> {
@@ -300,9 +333,9 @@ impl<'a> Lexer<'a> {
     }
 
     fn push(&mut self, lo: usize, t: Tok, hi: usize) {
-        self.out.push((lo, t, hi));
+        self.out.push_back((lo, t, hi));
         self.line_start = false;
-        if self.mode == Mode::Body && !matches!(self.out.last(), Some((_, Tok::Nl, _))) {
+        if self.mode == Mode::Body && !matches!(self.out.back(), Some((_, Tok::Nl, _))) {
             self.dirty = true;
         }
     }
@@ -321,17 +354,23 @@ impl<'a> Lexer<'a> {
     }
 
     fn last_tok(&self) -> Option<&Tok> {
-        self.out.last().map(|(_, t, _)| t)
+        self.out.back().map(|(_, t, _)| t)
     }
 
-    fn run(&mut self) {
-        loop {
+    /// One step of lexing (a token, a mode change or skipped input); false
+    /// once the file is done.
+    fn step(&mut self) -> bool {
+        if self.done {
+            return false;
+        }
+        {
             if let Some(nl) = self.skip_trivia() {
                 self.on_newline(nl);
             }
             if self.pos >= self.b.len() {
                 self.finish();
-                return;
+                self.done = true;
+                return false;
             }
             let before = (self.pos, self.out.len(), self.mode);
             crate::work::add(1);
@@ -348,6 +387,7 @@ impl<'a> Lexer<'a> {
                 self.pos += c;
             }
         }
+        true
     }
 
     fn char_len(&self) -> usize {
@@ -465,7 +505,7 @@ impl<'a> Lexer<'a> {
                     self.nest = 0;
                     self.nest_reported = false;
                     if self.dirty {
-                        self.out.push((at, Tok::Nl, at + 1));
+                        self.out.push_back((at, Tok::Nl, at + 1));
                         self.dirty = false;
                     }
                     self.op_field = true;
@@ -517,11 +557,11 @@ impl<'a> Lexer<'a> {
                 self.mode = Mode::Body;
                 self.close_deferred(eof);
                 if self.dirty {
-                    self.out.push((eof, Tok::Nl, eof));
+                    self.out.push_back((eof, Tok::Nl, eof));
                     self.dirty = false;
                 }
                 if self.orphan {
-                    self.out.push((eof, Tok::EndOrphan, eof));
+                    self.out.push_back((eof, Tok::EndOrphan, eof));
                     self.orphan = false;
                 }
             }
@@ -533,11 +573,11 @@ impl<'a> Lexer<'a> {
                     "missing END_TYPE",
                     "the file ends here",
                 );
-                self.out.push((eof, Tok::EndType, eof));
+                self.out.push_back((eof, Tok::EndType, eof));
             }
             Mode::Config => {
                 if self.in_resource {
-                    self.out.push((eof, Tok::EndResource, eof));
+                    self.out.push_back((eof, Tok::EndResource, eof));
                 }
                 self.diag(
                     code::MISSING_END,
@@ -546,7 +586,7 @@ impl<'a> Lexer<'a> {
                     "missing END_CONFIGURATION",
                     "the file ends here",
                 );
-                self.out.push((eof, Tok::EndConfiguration, eof));
+                self.out.push_back((eof, Tok::EndConfiguration, eof));
             }
             _ => {}
         }
@@ -564,7 +604,7 @@ impl<'a> Lexer<'a> {
                 .with_label("the declarations should end before this")
                 .with_secondary(open, "this block is not closed"),
         );
-        self.out.push((at, Tok::MissingEndVar, at));
+        self.out.push_back((at, Tok::MissingEndVar, at));
     }
 
     /// Close deferred parentheses left open at the end of a body.
@@ -584,11 +624,11 @@ impl<'a> Lexer<'a> {
             )
             .help = Some("close a deferred operation with `)` on a line of its own".into());
             if self.dirty {
-                self.out.push((at, Tok::Nl, at));
+                self.out.push_back((at, Tok::Nl, at));
             }
             for _ in 0..n {
-                self.out.push((at, Tok::RParen, at));
-                self.out.push((at, Tok::Nl, at));
+                self.out.push_back((at, Tok::RParen, at));
+                self.out.push_back((at, Tok::Nl, at));
             }
             self.dirty = false;
             self.defer_stack.clear();
