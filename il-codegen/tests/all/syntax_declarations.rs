@@ -191,6 +191,23 @@ fn missing_end_var() {
     );
 }
 
+/// The note of a missing END_VAR points at the VAR keyword that opened the
+/// block, however many tokens back (the parser has taken them from the
+/// lexer long before).
+#[test]
+fn missing_end_var_names_the_open_block() {
+    let decls: String = (0..200).map(|i| format!("  v{i} : INT;\n")).collect();
+    let src =
+        format!("PROGRAM p\nVAR_INPUT\n  a : BOOL;\nEND_VAR\n  VAR\n{decls}LD a\nEND_PROGRAM");
+    let f = SourceFile::new("t.il", src.as_str());
+    let (_, d) = parse(&f);
+    let d = d.iter().find(|d| d.code == "IL0013").expect("IL0013");
+    let (span, label) = &d.secondary[0];
+    assert_eq!(label, "this block is not closed");
+    assert_eq!(f.line_col(span.lo), (5, 3));
+    assert_eq!(f.snippet(*span), "VAR");
+}
+
 #[test]
 fn declaration_errors_recover_at_semicolon() {
     let e = errs(

@@ -113,7 +113,7 @@ impl<'a> Lexer<'a> {
         if let Some(k) = end_pou_kind(&up) {
             self.close_deferred(start);
             if self.orphan {
-                self.out.push_back((start, Tok::EndOrphan, start));
+                self.put((start, Tok::EndOrphan, start));
                 self.orphan = false;
             }
             self.push(start, Tok::EndPou(k), end);
@@ -130,7 +130,7 @@ impl<'a> Lexer<'a> {
             // A new item while a body is open: its END_ keyword is missing.
             self.close_deferred(start);
             if self.orphan {
-                self.out.push_back((start, Tok::EndOrphan, start));
+                self.put((start, Tok::EndOrphan, start));
                 self.orphan = false;
             }
             self.pos = start;

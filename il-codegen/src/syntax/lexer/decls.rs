@@ -118,7 +118,7 @@ impl<'a> Lexer<'a> {
                     "missing END_TYPE before this",
                     "a new declaration starts here",
                 );
-                self.out.push_back((s, Tok::EndType, s));
+                self.put((s, Tok::EndType, s));
                 self.pos = s;
                 self.mode = Mode::Top;
                 return;
@@ -131,7 +131,7 @@ impl<'a> Lexer<'a> {
                     "missing END_RESOURCE before this",
                     "the resource should end before this",
                 );
-                self.out.push_back((s, Tok::EndResource, s));
+                self.put((s, Tok::EndResource, s));
                 self.in_resource = kw == Tok::Resource;
                 if kw == Tok::EndConfiguration {
                     self.mode = Mode::Top;
@@ -153,9 +153,9 @@ impl<'a> Lexer<'a> {
                     "a new declaration starts here",
                 );
                 if self.in_resource {
-                    self.out.push_back((s, Tok::EndResource, s));
+                    self.put((s, Tok::EndResource, s));
                 }
-                self.out.push_back((s, Tok::EndConfiguration, s));
+                self.put((s, Tok::EndConfiguration, s));
                 self.pos = s;
                 self.mode = Mode::Top;
                 return;
@@ -228,9 +228,9 @@ impl<'a> Lexer<'a> {
                     ),
                     "name missing",
                 );
-                self.out.push_back((at, Tok::Ident(String::new()), at));
+                self.put((at, Tok::Ident(String::new()), at));
             }
-            Some((_, Tok::Colon, _)) => self.out.push_back((at, Tok::Ident(String::new()), at)),
+            Some((_, Tok::Colon, _)) => self.put((at, Tok::Ident(String::new()), at)),
             _ => {}
         }
         self.header_toks += 1;
@@ -238,7 +238,7 @@ impl<'a> Lexer<'a> {
 
     pub(super) fn start_orphan(&mut self) {
         let p = self.pos;
-        self.out.push_back((p, Tok::Orphan, p));
+        self.put((p, Tok::Orphan, p));
         self.mode = Mode::Body;
         self.orphan = true;
         self.op_field = true;

@@ -234,6 +234,8 @@ pub struct Lexer<'a> {
     out: VecDeque<Spanned>,
     /// The end of the file was reached and the last tokens pushed.
     done: bool,
+    /// The last `VAR...` keyword (the block a missing END_VAR leaves open).
+    last_var: Option<Span>,
     diags: Vec<Diagnostic>,
     /// Pragmas are errors under the 2nd edition.
     standard: crate::dialect::Standard,
@@ -310,6 +312,7 @@ impl<'a> Lexer<'a> {
             nest_reported: false,
             out: VecDeque::new(),
             done: false,
+            last_var: None,
             diags: Vec::new(),
             standard,
             host_marks: Vec::new(),
@@ -332,8 +335,16 @@ impl<'a> Lexer<'a> {
         self.b.get(self.pos + off).copied().unwrap_or(0)
     }
 
+    /// Queue a token for the parser.
+    fn put(&mut self, tok: Spanned) {
+        if let (lo, Tok::Var(_), hi) = tok {
+            self.last_var = Some(span(lo, hi));
+        }
+        self.out.push_back(tok);
+    }
+
     fn push(&mut self, lo: usize, t: Tok, hi: usize) {
-        self.out.push_back((lo, t, hi));
+        self.put((lo, t, hi));
         self.line_start = false;
         if self.mode == Mode::Body && !matches!(self.out.back(), Some((_, Tok::Nl, _))) {
             self.dirty = true;
@@ -505,7 +516,7 @@ impl<'a> Lexer<'a> {
                     self.nest = 0;
                     self.nest_reported = false;
                     if self.dirty {
-                        self.out.push_back((at, Tok::Nl, at + 1));
+                        self.put((at, Tok::Nl, at + 1));
                         self.dirty = false;
                     }
                     self.op_field = true;
@@ -557,11 +568,11 @@ impl<'a> Lexer<'a> {
                 self.mode = Mode::Body;
                 self.close_deferred(eof);
                 if self.dirty {
-                    self.out.push_back((eof, Tok::Nl, eof));
+                    self.put((eof, Tok::Nl, eof));
                     self.dirty = false;
                 }
                 if self.orphan {
-                    self.out.push_back((eof, Tok::EndOrphan, eof));
+                    self.put((eof, Tok::EndOrphan, eof));
                     self.orphan = false;
                 }
             }
@@ -573,11 +584,11 @@ impl<'a> Lexer<'a> {
                     "missing END_TYPE",
                     "the file ends here",
                 );
-                self.out.push_back((eof, Tok::EndType, eof));
+                self.put((eof, Tok::EndType, eof));
             }
             Mode::Config => {
                 if self.in_resource {
-                    self.out.push_back((eof, Tok::EndResource, eof));
+                    self.put((eof, Tok::EndResource, eof));
                 }
                 self.diag(
                     code::MISSING_END,
@@ -586,25 +597,20 @@ impl<'a> Lexer<'a> {
                     "missing END_CONFIGURATION",
                     "the file ends here",
                 );
-                self.out.push_back((eof, Tok::EndConfiguration, eof));
+                self.put((eof, Tok::EndConfiguration, eof));
             }
             _ => {}
         }
     }
 
     fn missing_end_var(&mut self, at: usize) {
-        let open = self
-            .out
-            .iter()
-            .rev()
-            .find(|(_, t, _)| matches!(t, Tok::Var(_)))
-            .map_or(span(at, at), |(l, _, h)| span(*l, *h));
+        let open = self.last_var.unwrap_or(span(at, at));
         self.diags.push(
             Diagnostic::error(code::MISSING_END_VAR, span(at, at), "missing END_VAR")
                 .with_label("the declarations should end before this")
                 .with_secondary(open, "this block is not closed"),
         );
-        self.out.push_back((at, Tok::MissingEndVar, at));
+        self.put((at, Tok::MissingEndVar, at));
     }
 
     /// Close deferred parentheses left open at the end of a body.
@@ -624,11 +630,11 @@ impl<'a> Lexer<'a> {
             )
             .help = Some("close a deferred operation with `)` on a line of its own".into());
             if self.dirty {
-                self.out.push_back((at, Tok::Nl, at));
+                self.put((at, Tok::Nl, at));
             }
             for _ in 0..n {
-                self.out.push_back((at, Tok::RParen, at));
-                self.out.push_back((at, Tok::Nl, at));
+                self.put((at, Tok::RParen, at));
+                self.put((at, Tok::Nl, at));
             }
             self.dirty = false;
             self.defer_stack.clear();
