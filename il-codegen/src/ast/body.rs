@@ -192,8 +192,10 @@ pub enum InstrKind {
         op: ExprOp,
         /// The `N` modifier (`ANDN(`).
         negate: bool,
-        /// The operand after `(` on the same line, if any.
-        first: Option<Operand>,
+        /// The operand after `(` on the same line, if any. Boxed, as the
+        /// arguments of a `CAL`: inline they set the size of every
+        /// instruction.
+        first: Option<Box<Operand>>,
         /// The instructions inside the parentheses.
         body: Vec<Stmt>,
         /// The closing `)`.
@@ -213,8 +215,8 @@ pub enum InstrKind {
         cond: Cond,
         /// The FB instance (or function) called.
         target: Operand,
-        /// The argument list, if any.
-        args: Option<CallArgs>,
+        /// The argument list, if any (boxed, see `Deferred::first`).
+        args: Option<Box<CallArgs>>,
     },
     /// `RET`, `RETC`, `RETCN`
     Return {
@@ -424,7 +426,7 @@ pub struct Literal {
 #[derive(Clone, Debug, PartialEq)]
 pub enum LitKind {
     /// Integer value, sign included (`-1`, `16#FF`).
-    Int(i128),
+    Int(IntValue),
     /// The value and its source text (REAL is parsed from the text as f32 to
     /// avoid double rounding).
     Real {

@@ -6,10 +6,12 @@ use std::fmt;
 mod body;
 mod configuration;
 mod decls;
+mod int_value;
 
 pub use body::*;
 pub use configuration::*;
 pub use decls::*;
+pub use int_value::IntValue;
 
 /// Half-open byte range `lo..hi` into the source file.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]

@@ -482,7 +482,7 @@ fn member(
 fn constant_subscript(cx: &mut Cx, s: &Subscript) -> Option<(i128, Span)> {
     match s {
         Subscript::Operand(Operand::Lit(l)) => match &l.kind {
-            LitKind::Int(n) => Some((*n, l.span)),
+            LitKind::Int(n) => Some((n.get(), l.span)),
             _ => {
                 cx.err(BAD_INDEX, l.span, "a subscript must be an integer");
                 None

@@ -30,7 +30,7 @@ pub(crate) fn tasks(cx: &mut Cx, def: &ConfigDef, res: usize, r: &ast::Resource)
             Some(ast::Literal {
                 kind: LitKind::Int(n),
                 ..
-            }) if u32::try_from(*n).is_ok() => *n as u32,
+            }) if u32::try_from(n.get()).is_ok() => n.get() as u32,
             Some(l) => {
                 cx.err(
                     BAD_CONFIG,

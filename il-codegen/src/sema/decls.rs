@@ -112,7 +112,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
                     Some(Literal {
                         kind: LitKind::Int(n),
                         ..
-                    }) if i64::try_from(*n).is_ok() => Some(*n),
+                    }) if i64::try_from(n.get()).is_ok() => Some(n.get()),
                     Some(l) => {
                         cxs[*f].err(
                             BAD_INIT,

@@ -131,7 +131,7 @@ pub(crate) fn init_value(
                     Some(Literal {
                         kind: LitKind::Int(n),
                         ..
-                    }) if (0..=total as i128).contains(n) => *n as i64,
+                    }) if (0..=total as i128).contains(&n.get()) => n.get() as i64,
                     Some(l) => {
                         cx.err(
                             BAD_INIT,

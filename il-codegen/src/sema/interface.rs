@@ -218,7 +218,7 @@ pub(crate) fn mentions(body: &[ast::Stmt], name: &str) -> bool {
             | ast::InstrKind::Set { target }
             | ast::InstrKind::Reset { target } => op(target),
             ast::InstrKind::Deferred { first, body, .. } => {
-                first.as_ref().is_some_and(op) || mentions(body, name)
+                first.as_deref().is_some_and(op) || mentions(body, name)
             }
             ast::InstrKind::FnCall {
                 args: ast::CallArgs::NonFormal(l),

@@ -284,55 +284,7 @@ pub enum Const {
     Enum(Box<EnumConst>),
 }
 
-/// The value of an integer constant ([`Const::Int`]). Every IEC integer
-/// fits in 64 bits and a sign (LINT in `i64`, ULINT in `u64`); held so
-/// rather than as an `i128`, whose 16-byte alignment made every constant,
-/// value and IR statement larger.
-#[derive(Clone, Copy, PartialEq, Eq, Hash)]
-pub struct IntValue {
-    bits: u64,
-    negative: bool,
-}
-
-impl IntValue {
-    /// `v`, which the checker proved in the range of an IEC integer type
-    /// (so within `i64::MIN..=u64::MAX`; a value outside, which no caller
-    /// makes, is held clamped rather than wrapped).
-    pub fn new(v: i128) -> IntValue {
-        let v = v.clamp(i128::from(i64::MIN), i128::from(u64::MAX));
-        IntValue {
-            bits: v as u64,
-            negative: v < 0,
-        }
-    }
-
-    /// The value.
-    pub fn get(self) -> i128 {
-        if self.negative {
-            i128::from(self.bits as i64)
-        } else {
-            i128::from(self.bits)
-        }
-    }
-}
-
-impl From<i128> for IntValue {
-    fn from(v: i128) -> IntValue {
-        IntValue::new(v)
-    }
-}
-
-impl std::fmt::Debug for IntValue {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}", self.get())
-    }
-}
-
-impl std::fmt::Display for IntValue {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}", self.get())
-    }
-}
+pub use crate::ast::IntValue;
 
 /// A STRING or WSTRING literal ([`Const::Str`]).
 #[derive(Clone, Debug, PartialEq)]

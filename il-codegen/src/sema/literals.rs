@@ -38,7 +38,7 @@ pub(crate) enum PendArg {
 
 pub(crate) fn lit_class(lit: &Literal) -> LitClass {
     let untyped = match &lit.kind {
-        LitKind::Int(v) => LitClass::Int(*v),
+        LitKind::Int(v) => LitClass::Int(v.get()),
         LitKind::Real { value, text } => LitClass::Real(*value, text.clone()),
         LitKind::Bool(b) => LitClass::Typed(Const::Bool(*b)),
         LitKind::Time { nanos, long } => LitClass::Typed(Const::Time(

@@ -191,7 +191,7 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
                 Some(ConstExpr::Lit(Literal {
                     kind: LitKind::Int(n),
                     ..
-                })) if (1..=65535).contains(n) => *n as u32,
+                })) if (1..=65535).contains(&n.get()) => n.get() as u32,
                 Some(other) => {
                     cx.err(
                         BAD_INIT,
@@ -282,7 +282,7 @@ pub(crate) fn const_int(cx: &mut Cx, c: &ConstExpr) -> Option<i64> {
         ConstExpr::Lit(Literal {
             kind: LitKind::Int(n),
             ..
-        }) if i64::try_from(*n).is_ok() => Some(*n as i64),
+        }) if i64::try_from(n.get()).is_ok() => Some(n.get() as i64),
         other => {
             cx.err(
                 UNSUPPORTED,
@@ -339,7 +339,7 @@ impl Names<'_> {
                         kind: LitKind::Int(hi),
                         ..
                     }),
-                ) => Some((*lo, *hi)),
+                ) => Some((lo.get(), hi.get())),
                 _ => None,
             },
             TypeSpec::Named(id) if depth < 32 => self

@@ -67,11 +67,13 @@ pub fn instr(kind: InstrKind, lo: usize, op_hi: usize, hi: usize) -> Instr {
 
 pub fn bit_access(ctx: &mut Ctx, l: Literal) -> Accessor {
     match l.kind {
-        LitKind::Int(n) if (0..=63).contains(&n) && l.type_prefix.is_none() => Accessor::Part {
-            size: AddrSize::Default,
-            index: n as u32,
-            span: l.span,
-        },
+        LitKind::Int(n) if (0..=63).contains(&n.get()) && l.type_prefix.is_none() => {
+            Accessor::Part {
+                size: AddrSize::Default,
+                index: n.get() as u32,
+                span: l.span,
+            }
+        }
         _ => {
             ctx.diags.push(
                 Diagnostic::error(
@@ -91,7 +93,7 @@ pub fn bit_access(ctx: &mut Ctx, l: Literal) -> Accessor {
 }
 
 pub fn repeat(ctx: &mut Ctx, n: Literal, i: Initializer) -> (Option<Literal>, Initializer) {
-    if !matches!(n.kind, LitKind::Int(k) if k >= 0) || n.type_prefix.is_some() {
+    if !matches!(n.kind, LitKind::Int(k) if k.get() >= 0) || n.type_prefix.is_some() {
         ctx.diags.push(
             Diagnostic::error(
                 code::DECL_SYNTAX,

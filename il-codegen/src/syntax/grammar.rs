@@ -1,5 +1,5 @@
 // auto-generated: "lalrpop 0.23.2"
-// sha3: e74981f7a31d83cb41cab90382eb1b141c0e1cbacaad1186164869a059d24b4e
+// sha3: 79361b9ba673e81e8ab9a48554e5b3ca9f0e5f0af9f8072d39f35afb32dd7c17
 // features: 
 use crate::ast::*;
 use super::lexer::{Tok, LexError, ExprTok};
@@ -8940,7 +8940,7 @@ fn __action25<
     build::instr(InstrKind::Deferred {
             op: e.op,
             negate: e.negate,
-            first,
+            first: first.map(Box::new),
             body: build::flat(body),
             close_span: sp(clo, hi),
         }, lo, m, hi)
@@ -8976,7 +8976,7 @@ fn __action27<
     (_, hi, _): (usize, usize, usize),
 ) -> Instr
 {
-    build::instr(InstrKind::Call { cond: c, target: Operand::Var(t), args }, lo, m, hi)
+    build::instr(InstrKind::Call { cond: c, target: Operand::Var(t), args: args.map(Box::new) }, lo, m, hi)
 }
 
 #[allow(unused_variables)]

@@ -77,7 +77,7 @@ fn annex_f_cmd_monitor() {
                 op, first, body, ..
             },
             ..
-        }) => Some((*op, first.clone(), body.len())),
+        }) => Some((*op, first.as_deref().cloned(), body.len())),
         _ => None,
     });
     let (op, first, n) = deferred.expect("OR( ... )");
@@ -171,13 +171,13 @@ fn annex_f_stack_int() {
             Stmt::Instr(Instr {
                 kind: InstrKind::Load {
                     operand: Operand::Lit(Literal {
-                        kind: LitKind::Int(-1),
+                        kind: LitKind::Int(n),
                         ..
                     }),
                     ..
                 },
                 ..
-            })
+            }) if n.get() == -1
         )
     });
     assert!(neg, "LD -1");
@@ -186,11 +186,14 @@ fn annex_f_stack_int() {
             kind:
                 InstrKind::Call {
                     target,
-                    args: Some(CallArgs::Formal(a)),
+                    args: Some(a),
                     ..
                 },
             ..
-        }) => Some((target.clone(), a.len())),
+        }) => match &**a {
+            CallArgs::Formal(a) => Some((target.clone(), a.len())),
+            CallArgs::NonFormal(_) => None,
+        },
         _ => None,
     });
     let (target, n) = call.expect("CAL LIMIT(...)");

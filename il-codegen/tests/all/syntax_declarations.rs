@@ -49,15 +49,17 @@ fn lists_locations_edges_and_initial_values() {
     assert_eq!(v[1].location.as_ref().unwrap().size, AddrSize::W);
     assert!(v[2].location.as_ref().unwrap().partial);
     assert!(
-        matches!(&v[3].init, Some(Initializer::Simple(Operand::Lit(l))) if l.kind == LitKind::Int(-1))
+        matches!(&v[3].init, Some(Initializer::Simple(Operand::Lit(l))) if l.kind == LitKind::Int(IntValue::new(-1)))
     );
     match (&v[5].ty, &v[5].init) {
         (TypeSpec::Array { dims, elem, .. }, Some(Initializer::Array { elems, .. })) => {
             assert_eq!(dims.len(), 2);
-            assert!(matches!(&dims[1].lo, ConstExpr::Lit(l) if l.kind == LitKind::Int(-2)));
+            assert!(
+                matches!(&dims[1].lo, ConstExpr::Lit(l) if l.kind == LitKind::Int(IntValue::new(-2)))
+            );
             assert!(matches!(&**elem, TypeSpec::Named(n) if n.is("INT")));
             assert_eq!(elems.len(), 3);
-            assert!(matches!(&elems[2].0, Some(l) if l.kind == LitKind::Int(3)));
+            assert!(matches!(&elems[2].0, Some(l) if l.kind == LitKind::Int(IntValue::new(3))));
         }
         other => panic!("{other:?}"),
     }
@@ -129,7 +131,7 @@ fn configuration_resource_task_program() {
     assert!(
         matches!(&r.tasks[0].interval, Some(Operand::Lit(l)) if l.kind == LitKind::Time { nanos: 10_000_000, long: false })
     );
-    assert!(matches!(&r.tasks[0].priority, Some(l) if l.kind == LitKind::Int(1)));
+    assert!(matches!(&r.tasks[0].priority, Some(l) if l.kind == LitKind::Int(IntValue::new(1))));
     assert!(r.tasks[1].single.is_some());
     let p = &r.programs[0];
     assert_eq!(p.retain, Retain::Retain);

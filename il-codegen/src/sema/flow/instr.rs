@@ -23,7 +23,7 @@ impl Walk<'_, '_> {
                 first,
                 body,
                 close_span,
-            } => self.deferred(i, cr, (*op, *negate), first.as_ref(), body, *close_span),
+            } => self.deferred(i, cr, (*op, *negate), first.as_deref(), body, *close_span),
             _ => self.simple_instr(i, cr, in_parens),
         };
         if let Some(before) = before {
@@ -337,6 +337,7 @@ impl Walk<'_, '_> {
                 }
             }
             InstrKind::Call { cond, target, args } => {
+                let args = args.as_deref();
                 if in_parens {
                     self.err(IN_PARENS, span, "CAL is not allowed inside parentheses");
                     return cr;
@@ -355,7 +356,7 @@ impl Walk<'_, '_> {
                         );
                         return cr;
                     }
-                    let args = args.clone().unwrap_or(CallArgs::Formal(Vec::new()));
+                    let args = args.cloned().unwrap_or(CallArgs::Formal(Vec::new()));
                     return self.fn_call(&v.base, &args, cr, span, true);
                 }
                 let Some(inst) = self.place_of(target, false) else {

@@ -69,7 +69,7 @@ impl<'a> Lexer<'a> {
             if duration {
                 d.help = Some(format!("a duration is written `T#{text}`"));
             }
-            LitKind::Int(0)
+            LitKind::Int(IntValue::new(0))
         } else if real {
             if no_dot_exp {
                 let (mant, exp) = text.split_at(text.find(['e', 'E']).unwrap_or(text.len()));
@@ -90,23 +90,23 @@ impl<'a> Lexer<'a> {
                 Err(e) => {
                     let m = literal_message(e, text);
                     self.diag(code::BAD_NUMBER, start, i, m, "malformed number");
-                    LitKind::Int(0)
+                    LitKind::Int(IntValue::new(0))
                 }
             }
         } else {
             match literal::parse_int(text) {
-                Ok(v) => LitKind::Int(v),
+                Ok(v) => LitKind::Int(v.into()),
                 Err(e) => {
                     let m = literal_message(e, text);
                     self.diag(code::BAD_NUMBER, start, i, m, "malformed number");
-                    LitKind::Int(0)
+                    LitKind::Int(IntValue::new(0))
                 }
             }
         };
         let (kind, type_prefix) = match prefix {
             Some((p, _)) if p.is("BOOL") => match kind {
-                LitKind::Int(0) => (LitKind::Bool(false), Some(p)),
-                LitKind::Int(1) => (LitKind::Bool(true), Some(p)),
+                LitKind::Int(n) if n.get() == 0 => (LitKind::Bool(false), Some(p)),
+                LitKind::Int(n) if n.get() == 1 => (LitKind::Bool(true), Some(p)),
                 k => {
                     self.diag(
                         code::BAD_NUMBER,
@@ -209,7 +209,7 @@ impl<'a> Lexer<'a> {
                     Ok(k) => k,
                     Err(m) => {
                         this.diag(code_, s, hi, m, what);
-                        LitKind::Int(0)
+                        LitKind::Int(IntValue::new(0))
                     }
                 };
                 let lit = Literal {
