@@ -138,7 +138,7 @@ impl Value {
         match c {
             Const::Bool(b) => Value::Bool(*b),
             Const::Enum(e) => Value::Enum {
-                ty: e.ty.clone(),
+                ty: e.ty.to_string(),
                 value: e.value.clone(),
             },
             Const::Int(v, Elem::BOOL) => Value::Bool(v.get() != 0),

@@ -133,7 +133,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
             env.types.enums.insert(
                 d.name.key(),
                 (
-                    d.name.name.clone(),
+                    d.name.name.clone().into(),
                     vals.iter().map(|(n, _)| n.clone()).collect(),
                 ),
             );

@@ -2,7 +2,7 @@
 //! resolved user types, and the names of FBs and types while they resolve.
 
 use super::ir::{Field, TypeDef, Var};
-use super::types::Ty;
+use super::types::{Name, Ty};
 use crate::ast::{self, PouKind, Span};
 use std::collections::{HashMap, HashSet};
 
@@ -30,15 +30,16 @@ pub(crate) struct Env {
 pub(crate) struct TypeTables {
     /// STRUCT key → its fields.
     pub structs: HashMap<String, Vec<Field>>,
-    /// Enumeration key → (name as declared, values).
-    pub enums: HashMap<String, (String, Vec<String>)>,
+    /// Enumeration key → (name as declared, shared with every constant and
+    /// type of it, values).
+    pub enums: HashMap<String, (Name, Vec<String>)>,
     /// Items to emit, with the index of the declaring file.
     pub defs: Vec<(usize, TypeDef)>,
 }
 
 impl TypeTables {
     /// The enumeration that has a value `name`, if exactly one has.
-    pub fn enum_of_value(&self, name: &str) -> Option<(String, String)> {
+    pub fn enum_of_value(&self, name: &str) -> Option<(Name, String)> {
         let mut found = self.enums.values().filter_map(|(ty, vals)| {
             vals.iter()
                 .find(|v| v.eq_ignore_ascii_case(name))

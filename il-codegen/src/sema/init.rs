@@ -82,10 +82,9 @@ pub(crate) fn init_value(
             let vals = types
                 .enums
                 .get(&name.to_ascii_uppercase())
-                .map(|(_, v)| v.clone())
-                .unwrap_or_default();
+                .map_or(&[][..], |(_, v)| v);
             match vals.iter().find(|v| value.is(v)) {
-                Some(v) => Some(Init::Const(Const::enum_value(name.to_string(), v.clone()))),
+                Some(v) => Some(Init::Const(Const::enum_value(name.clone(), v.clone()))),
                 None => {
                     cx.err(
                         BAD_INIT,

@@ -2,7 +2,7 @@
 //! turns this into Rust without further checks, so anything it accepts here
 //! must compile.
 
-use super::types::{Elem, Ty};
+use super::types::{Elem, Name, Ty};
 /// The IR's binary operators are the IL expression operators themselves.
 pub use crate::ast::ExprOp as BinOp;
 use crate::ast::{PouKind, VarKind};
@@ -300,15 +300,15 @@ pub struct StrConst {
 /// A value of a user enumeration ([`Const::Enum`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct EnumConst {
-    /// The enumeration type, as declared.
-    pub ty: String,
+    /// The enumeration type, as declared (shared with its [`Ty::Enum`]).
+    pub ty: Name,
     /// The value's name, as declared.
     pub value: String,
 }
 
 impl Const {
     /// The constant `value` of the enumeration `ty`.
-    pub fn enum_value(ty: String, value: String) -> Const {
+    pub fn enum_value(ty: Name, value: String) -> Const {
         Const::Enum(Box::new(EnumConst { ty, value }))
     }
 }
@@ -323,7 +323,7 @@ impl Const {
                 wide: s.wide,
                 len: s.len,
             },
-            Const::Enum(e) => Ty::Enum(e.ty.clone().into()),
+            Const::Enum(e) => Ty::Enum(e.ty.clone()),
         }
     }
 }

@@ -12,7 +12,8 @@ impl Walk<'_, '_> {
                 ..
             }) => {
                 let (ty, value) = (&e.ty, &e.value);
-                let Some((name, vals)) = self.env.types.enums.get(&ty.key()).cloned() else {
+                let env = self.env;
+                let Some((name, vals)) = env.types.enums.get(&ty.key()) else {
                     self.err(
                         UNKNOWN_TYPE,
                         ty.span,
@@ -32,7 +33,7 @@ impl Walk<'_, '_> {
                     }
                     return None;
                 };
-                let c = Const::enum_value(name, v.clone());
+                let c = Const::enum_value(name.clone(), v.clone());
                 return Some(Arg::Typed(Value::Const(c.clone()), c.ty()));
             }
             Operand::Var(v)
