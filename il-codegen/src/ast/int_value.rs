@@ -37,7 +37,7 @@ impl From<i128> for IntValue {
 
 impl std::fmt::Debug for IntValue {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}", self.get())
+        std::fmt::Display::fmt(self, f)
     }
 }
 

@@ -352,10 +352,10 @@ fn cal_three_forms_of_table_53() {
         InstrKind::Call {
             cond: Cond::Always,
             target,
-            args: Some(a),
-        } if matches!(*a, CallArgs::Formal(_)) => {
-            let CallArgs::Formal(a) = *a else {
-                unreachable!()
+            args: Some(args),
+        } => {
+            let CallArgs::Formal(a) = *args else {
+                panic!("a formal list: {args:?}")
             };
             assert_eq!(name_of(&target), "C10");
             assert_eq!(a.len(), 4);

@@ -16,7 +16,7 @@
 
 pub mod address;
 
-pub use crate::area_size::{INPUT_BYTES, MEMORY_BYTES, OUTPUT_BYTES};
+use crate::area_size::{INPUT_BYTES, MEMORY_BYTES, OUTPUT_BYTES};
 
 /// One of the three areas.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -218,8 +218,7 @@ include!(concat!(env!("OUT_DIR"), "/tank.rs"));
     assert!(!out.status.success(), "the build must fail:\n{stderr}");
     assert!(stderr.contains("IL0210"), "{stderr}");
     assert!(
-        stderr.contains(r#"features = [\"plcopen\"]"#)
-            || stderr.contains(r#"features = ["plcopen"]"#),
+        stderr.contains(r#"`il-macros = { version = "0.1", features = ["plcopen"] }`"#),
         "the message must say what to write:\n{stderr}"
     );
     let named = format!(

@@ -105,20 +105,9 @@ pub fn lex(src: &str) -> (Vec<Spanned>, Vec<Diagnostic>) {
 
 /// [`lex`] against a standard (pragmas are errors under the 2nd edition).
 pub fn lex_std(src: &str, standard: crate::dialect::Standard) -> (Vec<Spanned>, Vec<Diagnostic>) {
-    let (toks, diags, _) = lex_marked(src, standard);
-    (toks, diags)
-}
-
-/// [`lex_std`], also returning the spans of the `{extern}` pragmas (the only
-/// pragma with a meaning: the FUNCTION after it is the host's, see
-/// `syntax::host`).
-pub fn lex_marked(
-    src: &str,
-    standard: crate::dialect::Standard,
-) -> (Vec<Spanned>, Vec<Diagnostic>, Vec<Span>) {
     let mut lx = Lexer::new(src, standard);
     let toks = lx.by_ref().collect();
-    (toks, lx.diags, lx.host_marks)
+    (toks, lx.diags)
 }
 
 /// Tokens as the parser takes them, one at a time: the whole token list of
@@ -167,8 +156,9 @@ impl<'a> Lexer<'a> {
         lx
     }
 
-    /// The lexer's diagnostics and the spans of the `{extern}` pragmas, once
-    /// every token was taken.
+    /// The lexer's diagnostics and the spans of the `{extern}` pragmas (the
+    /// only pragma with a meaning: the FUNCTION after it is the host's, see
+    /// `syntax::host`), once every token was taken.
     pub fn finish_marked(self) -> (Vec<Diagnostic>, Vec<Span>) {
         (self.diags, self.host_marks)
     }
