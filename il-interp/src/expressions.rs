@@ -3,7 +3,7 @@
 use crate::values::Value;
 use crate::{Frame, Machine, stdfn};
 use il_codegen::sema::ir::{BinOp, Condition, Expr};
-use il_codegen::sema::types::{Elem, Ty};
+use il_codegen::sema::types::Elem;
 use il_std::{Cycle, FaultKind};
 
 fn cond_holds(c: &Option<bool>, want: bool) -> bool {
@@ -11,12 +11,15 @@ fn cond_holds(c: &Option<bool>, want: bool) -> bool {
 }
 
 impl Machine {
-    pub(crate) fn cr_slot(&self, f: &Frame, t: &Ty) -> Result<usize, String> {
-        self.prog.pous[f.pou]
-            .cr_types
-            .iter()
-            .position(|c| c == t)
-            .ok_or_else(|| format!("internal: no CR of type {t}"))
+    /// The frame's slot of CR local `i` (the frame holds them in the
+    /// order of [`il_codegen::sema::ir::CheckedPou::cr_types`]).
+    pub(crate) fn cr_slot(f: &Frame, i: u32) -> Result<usize, String> {
+        let i = i as usize;
+        if i < f.cr.len() {
+            Ok(i)
+        } else {
+            Err(format!("internal: no CR local {i}"))
+        }
     }
     pub(crate) fn expr(
         &mut self,

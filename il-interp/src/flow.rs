@@ -56,17 +56,18 @@ impl Machine {
     ) -> Result<Option<usize>, String> {
         let line = s.line;
         match &s.op {
-            Op::SetCr { ty, expr } => {
+            Op::SetCr { cr, expr } => {
                 let v = self.expr(f, expr, ctx, line)?;
-                let slot = self.cr_slot(f, ty)?;
+                let slot = Self::cr_slot(f, *cr)?;
                 f.cr[slot] = v;
             }
             Op::Save { slot, value } => {
                 let v = self.value(f, value, ctx, line)?;
-                if f.saves.len() <= *slot {
-                    f.saves.resize(*slot + 1, Value::Bool(false));
+                let slot = *slot as usize;
+                if f.saves.len() <= slot {
+                    f.saves.resize(slot + 1, Value::Bool(false));
                 }
-                f.saves[*slot] = v;
+                f.saves[slot] = v;
             }
             Op::Store {
                 place,
@@ -76,7 +77,8 @@ impl Machine {
                 // As the emitter: STN complements in the CR's type, before a
                 // widening.
                 let v = match (negate, value) {
-                    (true, IrValue::Widen(inner, w)) => {
+                    (true, IrValue::Widen(b)) => {
+                        let (inner, w) = &**b;
                         let x = stdfn::not(&self.value(f, inner, ctx, line)?);
                         stdfn::convert(w.from, w.to, &x)
                             .ok_or("internal: a widening the interpreter cannot convert")?
@@ -84,6 +86,9 @@ impl Machine {
                     (true, v) => stdfn::not(&self.value(f, v, ctx, line)?),
                     (false, v) => self.value(f, v, ctx, line)?,
                 };
+                // The place table is the program's, which `self` holds.
+                let prog = std::sync::Arc::clone(&self.prog);
+                let place = prog.pous[f.pou].place(*place);
                 // As the emitter: a store outside a subrange (an inline
                 // `INT (0..100)`) is skipped and recorded.
                 if let (Some(&(lo, hi)), Value::Int(x, _)) = (place.range.as_deref(), &v)
@@ -96,6 +101,7 @@ impl Machine {
             }
             Op::SetIf { place, value, cond } => {
                 if self.value(f, cond, ctx, line)?.as_bool() {
+                    let place = self.prog.pous[f.pou].place(*place);
                     self.write(f, place, Value::Bool(*value), ctx, line)?;
                 }
             }

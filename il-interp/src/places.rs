@@ -144,27 +144,28 @@ impl Machine {
         line: u32,
     ) -> Result<Value, String> {
         Ok(match v {
-            IrValue::Cr(t) => f.cr[self.cr_slot(f, t)?].clone(),
+            IrValue::Cr(i) => f.cr[Self::cr_slot(f, *i)?].clone(),
             IrValue::Const(c) => Value::from_const(c),
-            IrValue::Read(p) => self.read(f, p, ctx, line)?,
-            IrValue::Saved(i, _) => f
+            IrValue::Read(p) => self.read(f, self.prog.pous[f.pou].place(*p), ctx, line)?,
+            IrValue::Saved(i) => f
                 .saves
-                .get(*i)
+                .get(*i as usize)
                 .cloned()
                 .ok_or("internal: no such save slot")?,
             // The checker's implicit widening, converted as `FROM_TO_TO` does.
-            IrValue::Widen(inner, w) => {
+            IrValue::Widen(b) => {
+                let (inner, w) = &**b;
                 let x = self.value(f, inner, ctx, line)?;
                 crate::stdfn::convert(w.from, w.to, &x)
                     .ok_or("internal: a widening the interpreter cannot convert")?
             }
             // As the emitter: both sides as LINT, wrapping.
-            IrValue::Arith { op, lhs, rhs } => {
+            IrValue::Arith(a) => {
                 let (l, r) = (
-                    self.value(f, lhs, ctx, line)?.as_i64(),
-                    self.value(f, rhs, ctx, line)?.as_i64(),
+                    self.value(f, &a.lhs, ctx, line)?.as_i64(),
+                    self.value(f, &a.rhs, ctx, line)?.as_i64(),
                 );
-                let n = match op {
+                let n = match a.op {
                     BinOp::Add => l.wrapping_add(r),
                     BinOp::Sub => l.wrapping_sub(r),
                     _ => l.wrapping_mul(r),

@@ -5,10 +5,13 @@
 /// integer, and the too-negative values the checker then refuses for their
 /// type). Held so rather than as an `i128`, whose 16-byte alignment made
 /// every literal, operand, instruction, constant, IR value and statement
-/// larger.
+/// larger. The magnitude is two 32-bit halves: aligned to 4, the value is
+/// 12 bytes, so a constant with its type and tag fits in 16 (and an IR
+/// value with it).
 #[derive(Clone, Copy, PartialEq, Eq, Hash)]
 pub struct IntValue {
-    magnitude: u64,
+    low: u32,
+    high: u32,
     negative: bool,
 }
 
@@ -16,15 +19,17 @@ impl IntValue {
     /// `v`; a magnitude over `u64::MAX` (which no caller makes: the
     /// literal parser refuses it) is held as `u64::MAX`.
     pub fn new(v: i128) -> IntValue {
+        let magnitude = u64::try_from(v.unsigned_abs()).unwrap_or(u64::MAX);
         IntValue {
-            magnitude: u64::try_from(v.unsigned_abs()).unwrap_or(u64::MAX),
+            low: magnitude as u32,
+            high: (magnitude >> 32) as u32,
             negative: v < 0,
         }
     }
 
     /// The value.
     pub fn get(self) -> i128 {
-        let m = i128::from(self.magnitude);
+        let m = i128::from(u64::from(self.high) << 32 | u64::from(self.low));
         if self.negative { -m } else { m }
     }
 }

@@ -35,7 +35,7 @@ pub(crate) fn complemented(pou: &CheckedPou, fenced: bool) -> Vec<bool> {
     let mut negated = vec![0usize; n];
     let mut stored = vec![false; n];
     for s in &pou.body {
-        super::writeback::stores(s, &mut |i| {
+        super::writeback::stores(pou, s, &mut |i| {
             if let Some(w) = stored.get_mut(i) {
                 *w = true
             }
@@ -55,7 +55,7 @@ pub(crate) fn complemented(pou: &CheckedPou, fenced: bool) -> Vec<bool> {
             } => v,
             _ => continue,
         };
-        if let Some((i, _)) = literal_element(v) {
+        if let Some((i, _)) = literal_element(pou, v) {
             negated[i] += 1;
         }
     }
@@ -76,13 +76,14 @@ pub(crate) fn complemented(pou: &CheckedPou, fenced: bool) -> Vec<bool> {
 
 /// `v` as an element of a one-dimensional array variable with a literal
 /// subscript inside its bounds: the variable and the element's offset.
-fn literal_element(v: &Value) -> Option<(usize, usize)> {
+fn literal_element(pou: &CheckedPou, v: &Value) -> Option<(usize, usize)> {
     let Value::Read(p) = v else { return None };
+    let p = pou.place(*p);
     let Place {
         root: Root::Var(i),
         path,
         ..
-    } = &**p
+    } = p
     else {
         return None;
     };
@@ -128,7 +129,7 @@ impl PouEmitter<'_> {
 
     /// `!v`, read from a complement where there is one.
     pub(crate) fn negated(&self, v: &Value, line: u32) -> String {
-        if let Some((i, k)) = literal_element(v)
+        if let Some((i, k)) = literal_element(self.pou, v)
             && self.complemented.get(i).copied().unwrap_or(false)
         {
             return format!("{}[{k}]", complement_ident(&self.pou.vars[i].name));

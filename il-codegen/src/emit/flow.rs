@@ -195,7 +195,11 @@ const RUNGS_PER_FENCE: usize = 4;
 /// variable that `cached` says lives in a local), in runs of at least
 /// [`FENCED_RUNGS`] such starts with no FB call between them; of those,
 /// every [`RUNGS_PER_FENCE`]th.
-fn fenced_rungs(stmts: &[Stmt], cached: impl Fn(usize) -> bool) -> Vec<usize> {
+fn fenced_rungs(
+    pou: &crate::sema::ir::CheckedPou,
+    stmts: &[Stmt],
+    cached: impl Fn(usize) -> bool,
+) -> Vec<usize> {
     let (mut out, mut run) = (Vec::new(), Vec::new());
     let mut stored = false;
     for (k, s) in stmts.iter().enumerate() {
@@ -203,7 +207,7 @@ fn fenced_rungs(stmts: &[Stmt], cached: impl Fn(usize) -> bool) -> Vec<usize> {
             Op::Nop => continue,
             Op::SetCr { expr, .. } if stored => {
                 let local = matches!(expr, Expr::Value(Value::Read(p)) | Expr::Not(Value::Read(p))
-                    if p.path.is_empty() && matches!(p.root, Root::Var(i) if cached(i)));
+                    if pou.place(*p).path.is_empty() && matches!(pou.place(*p).root, Root::Var(i) if cached(i)));
                 if !local {
                     run.push(k);
                 }
@@ -243,7 +247,7 @@ fn loop_lifetime(l: usize) -> String {
 impl PouEmitter<'_> {
     /// Whether the body has a network of rungs that `seq` fences.
     pub(crate) fn has_fenced_rungs(&self) -> bool {
-        !fenced_rungs(&self.pou.body, |i| self.cached(i)).is_empty()
+        !fenced_rungs(self.pou, &self.pou.body, |i| self.cached(i)).is_empty()
     }
 
     /// The body; returns the cached variables to write back at its end (see
@@ -418,7 +422,7 @@ impl PouEmitter<'_> {
         wb: Option<&WriteBacks>,
     ) {
         let fenced = if fences {
-            fenced_rungs(stmts, |i| self.cached(i))
+            fenced_rungs(self.pou, stmts, |i| self.cached(i))
         } else {
             Vec::new()
         };
@@ -459,8 +463,8 @@ impl PouEmitter<'_> {
     fn stmt(&self, s: &Stmt, pos: usize, mode: &Mode) -> String {
         let line = s.line;
         match &s.op {
-            Op::SetCr { ty, expr } => {
-                let id = super::values::cr_ident(ty);
+            Op::SetCr { cr, expr } => {
+                let id = super::values::cr_ident(self.pou.cr_ty(*cr));
                 let e = self.expr(expr, line);
                 [id.as_ref(), " = ", e.as_str(), ";"].concat()
             }
@@ -481,9 +485,9 @@ impl PouEmitter<'_> {
             } => {
                 // STN complements in the CR's type, before a widening.
                 let v = match (negate, value) {
-                    (true, Value::Widen(inner, w)) => {
-                        let v = self.value(inner, line);
-                        super::values::widened(format!("!{v}"), &Some(*w))
+                    (true, Value::Widen(b)) => {
+                        let v = self.value(&b.0, line);
+                        super::values::widened(format!("!{v}"), &Some(b.1))
                     }
                     (true, v) => {
                         let v = self.value(v, line);
@@ -491,6 +495,7 @@ impl PouEmitter<'_> {
                     }
                     (false, v) => self.value(v, line),
                 };
+                let place = self.pou.place(*place);
                 match (place.range.as_deref(), place.ty.elem()) {
                     // A subrange store outside the bounds is skipped and recorded.
                     (Some((lo, hi)), Some(e)) => {
@@ -515,6 +520,7 @@ impl PouEmitter<'_> {
                 }
             }
             Op::SetIf { place, value, cond } => {
+                let place = self.pou.place(*place);
                 let c = self.value(cond, line);
                 let w = self.write(place, value.to_string(), line);
                 format!("if {c} {{ {w} }}")
@@ -554,7 +560,7 @@ impl PouEmitter<'_> {
                     .any(|e| matches!(e, PathElem::Index { .. }))
                     && !inputs
                         .iter()
-                        .any(|(_, v)| matches!(v, Value::Read(q) if q.root == inst.root))
+                        .any(|(_, v)| matches!(v, Value::Read(q) if self.pou.place(*q).root == inst.root))
                 {
                     let path = self.simple_path(inst);
                     let sets = inputs.iter().map(|(n, v)| {

@@ -30,14 +30,14 @@ impl WriteBacks {
 
 /// The variables `s` stores to (in any way: a store, S/R, an FB output, an
 /// in-out binding, a function's `=>` output): `written(i)` is called for each.
-pub(crate) fn stores(s: &Stmt, written: &mut impl FnMut(usize)) {
+pub(crate) fn stores(pou: &crate::sema::ir::CheckedPou, s: &Stmt, written: &mut impl FnMut(usize)) {
     let mut place = |p: &Place| {
         if let Root::Var(i) = p.root {
             written(i)
         }
     };
     match &s.op {
-        Op::Store { place: p, .. } | Op::SetIf { place: p, .. } => place(p),
+        Op::Store { place: p, .. } | Op::SetIf { place: p, .. } => place(pou.place(*p)),
         Op::CallFb(c) => {
             place(&c.inst);
             c.outputs.iter().for_each(|(_, p, _, _)| place(p));
@@ -68,7 +68,7 @@ impl PouEmitter<'_> {
         let vars = self.pou.vars.len();
         let mut last_store: Vec<Option<usize>> = vec![None; vars];
         for (k, s) in stmts.iter().enumerate() {
-            stores(s, &mut |i| {
+            stores(self.pou, s, &mut |i| {
                 if i < vars {
                     last_store[i] = Some(k)
                 }

@@ -186,6 +186,7 @@ fn stubs(files: &[&SourceFile], opts: emit::Options, standard: crate::Standard) 
     }
     for p in &mut program.pous {
         p.body.clear();
+        p.places.clear();
         p.cr_types.clear();
         p.save_types.clear();
         p.label_count = 0;

@@ -73,13 +73,21 @@ pub struct CheckedPou {
     pub ret: Option<Ty>,
     /// The instructions, lowered to operations on typed CR locals.
     pub body: Vec<Stmt>,
+    /// The places the body reads and writes ([`Value::Read`],
+    /// [`Op::Store`], [`Op::SetIf`] name them by index): one entry per
+    /// distinct place without subscripts (`LD a` and `ST a` share it),
+    /// one per use of a place with subscripts. A place is 64 bytes and a
+    /// box of one per read or store was a quarter of the checked IR.
+    pub places: Vec<Place>,
     /// Number of labels: [`Op::Label`] and [`Op::Jump`] use indices below it.
     pub label_count: usize,
     /// Direct addresses used in the body (for `ADDRESSES`).
     pub addresses: Vec<Loc>,
-    /// The CR locals the body uses (one per type).
+    /// The CR locals the body uses (one per type): [`Value::Cr`] and
+    /// [`Op::SetCr`] name them by index.
     pub cr_types: Vec<Ty>,
-    /// Types of the slots that hold the outer CR of deferred parentheses.
+    /// Types of the slots that hold the outer CR of deferred parentheses
+    /// ([`Value::Saved`] and [`Op::Save`] name them by index).
     pub save_types: Vec<Ty>,
     /// What the RETAIN snapshot of an FB/PROGRAM holds (empty: no snapshot).
     pub retained: Vec<(usize, Retained)>,
@@ -93,6 +101,36 @@ pub struct CheckedPou {
     /// A host FUNCTION (`{extern}`): no body here; the crate around the
     /// generated code provides it, and the emitter only checks its signature.
     pub host: bool,
+}
+
+impl CheckedPou {
+    /// The type of CR local `i` ([`Value::Cr`], [`Op::SetCr`]).
+    pub fn cr_ty(&self, i: u32) -> &Ty {
+        &self.cr_types[i as usize]
+    }
+
+    /// The type of save slot `i` ([`Value::Saved`], [`Op::Save`]).
+    pub fn saved_ty(&self, i: u32) -> &Ty {
+        &self.save_types[i as usize]
+    }
+
+    /// Place `i` of the body ([`Value::Read`], [`Op::Store`], [`Op::SetIf`]).
+    pub fn place(&self, i: u32) -> &Place {
+        &self.places[i as usize]
+    }
+
+    /// The type of `v`.
+    pub fn value_ty(&self, v: &Value) -> Ty {
+        match v {
+            Value::Cr(i) => self.cr_ty(*i).clone(),
+            Value::Saved(i) => self.saved_ty(*i).clone(),
+            Value::Const(c) => c.ty(),
+            Value::Read(i) => self.place(*i).ty.clone(),
+            Value::Widen(b) => Ty::Elem(b.1.to),
+            Value::Resized(r) => r.1.clone(),
+            Value::Arith(_) => Ty::Elem(Elem::LINT),
+        }
+    }
 }
 
 /// The CR at one instruction or label, as the checker proved it.
@@ -436,39 +474,50 @@ impl Place {
     }
 }
 
-/// Something to read.
+/// Something to read. Two words: the values that need more (a place, a
+/// widening, an index expression) are boxed, and the CR and saved slots are
+/// named by index, their types kept once per POU ([`CheckedPou::cr_types`],
+/// [`CheckedPou::save_types`]): an instruction holds up to three values, and
+/// with a type inline every value (so every statement) was half as large
+/// again.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Value {
-    /// The CR local of that type.
-    Cr(Ty),
+    /// The CR local: index into [`CheckedPou::cr_types`] (its type).
+    Cr(u32),
     /// A typed constant.
     Const(Const),
-    /// The current value of a variable or part of one. Boxed: a place is
-    /// almost twice the other values, and inline it would set the size of
-    /// every value (two in every binary expression).
-    Read(Box<Place>),
-    /// A saved outer CR of a deferred parenthesis.
-    Saved(usize, Ty),
-    /// A value converted implicitly to a wider type (3rd edition).
-    Widen(Box<Value>, Widen),
+    /// The current value of a variable or part of one: index into
+    /// [`CheckedPou::places`] (a place is four times the other values, and
+    /// a body reads few distinct ones, many times).
+    Read(u32),
+    /// A saved outer CR of a deferred parenthesis: index into
+    /// [`CheckedPou::save_types`] (its type).
+    Saved(u32),
+    /// A value converted implicitly to a wider type (3rd edition). Boxed
+    /// with its conversion: rare, and the conversion beside the box made
+    /// every value a third larger.
+    Widen(Box<(Value, Widen)>),
     /// A STRING (WSTRING) value given the capacity of the string type
     /// (the second; [`Ty::resizes_to`]): cut at that length, and a
     /// `StringOverflow` fault recorded when that cut something off. Boxed
-    /// with its type: rare, and inline the type beside the box made every
-    /// value larger by a third.
+    /// with its type: rare.
     Resized(Box<(Value, Ty)>),
-    /// A subscript expression (`i + 1`, `2 * i`): `lhs op rhs` with `op`
-    /// `Add`, `Sub` or `Mul`, both sides (integers of any type) converted to
-    /// LINT and computed with wrapping; the value is a LINT. Only in
-    /// [`PathElem::Index`] subscripts.
-    Arith {
-        /// `Add`, `Sub` or `Mul`.
-        op: BinOp,
-        /// The left operand.
-        lhs: Box<Value>,
-        /// The right operand.
-        rhs: Box<Value>,
-    },
+    /// A subscript expression (`i + 1`, `2 * i`). Only in
+    /// [`PathElem::Index`] subscripts. Boxed: rare.
+    Arith(Box<Arith>),
+}
+
+/// A subscript expression ([`Value::Arith`]): `lhs op rhs` with `op`
+/// `Add`, `Sub` or `Mul`, both sides (integers of any type) converted to
+/// LINT and computed with wrapping; the value is a LINT.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Arith {
+    /// `Add`, `Sub` or `Mul`.
+    pub op: BinOp,
+    /// The left operand.
+    pub lhs: Value,
+    /// The right operand.
+    pub rhs: Value,
 }
 
 impl Value {
@@ -567,22 +616,24 @@ pub type Condition = Option<(Value, bool)>;
 pub enum Op {
     /// `__cr_<ty> = expr`
     SetCr {
-        /// The CR's type after the instruction (BOOL for comparisons).
-        ty: Ty,
+        /// The CR after the instruction: index into
+        /// [`CheckedPou::cr_types`] (its type; BOOL for comparisons).
+        cr: u32,
         /// The computation.
         expr: Expr,
     },
     /// `__save_n = value`
     Save {
         /// The save slot: index into [`CheckedPou::save_types`] (the `__save_n` local).
-        slot: usize,
+        slot: u32,
         /// The outer CR to keep.
         value: Value,
     },
     /// `place = value` (complemented for STN).
     Store {
-        /// The target.
-        place: Place,
+        /// The target: index into [`CheckedPou::places`], as in a
+        /// [`Value::Read`].
+        place: u32,
         /// The value stored (usually the CR).
         value: Value,
         /// `STN`: store the complement, taken in the CR's type: when
@@ -591,8 +642,8 @@ pub enum Op {
     },
     /// S / R on a BOOL: `if cond { place = value }`.
     SetIf {
-        /// The BOOL target.
-        place: Place,
+        /// The BOOL target: index into [`CheckedPou::places`].
+        place: u32,
         /// TRUE for `S`, FALSE for `R`.
         value: bool,
         /// The BOOL condition (the CR).

@@ -219,7 +219,7 @@ fn parentheses_share_a_save_slot_per_depth_and_type() {
     let pou = &checked.ir().unwrap()[0].pous[0];
     // INT at depth 0, INT at depth 1, REAL at depth 0: three slots for five groups.
     assert_eq!(pou.save_types.len(), 3, "{:?}", pou.save_types);
-    let slots: Vec<usize> = pou
+    let slots: Vec<u32> = pou
         .body
         .iter()
         .filter_map(|s| match &s.op {

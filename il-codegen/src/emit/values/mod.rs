@@ -31,9 +31,9 @@ pub(crate) fn widened(v: String, w: &Option<Widen>) -> String {
 
 /// The local `__save_N` that holds the CR across a parenthesis (one per
 /// `(`; written without `format!`, it is on many IL lines).
-pub(crate) fn saved_ident(slot: usize) -> String {
+pub(crate) fn saved_ident(slot: u32) -> String {
     let mut s = String::with_capacity(27);
     s.push_str("__save_");
-    super::text::push_decimal(&mut s, slot as u64);
+    super::text::push_decimal(&mut s, u64::from(slot));
     s
 }

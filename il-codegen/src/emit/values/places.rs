@@ -29,15 +29,15 @@ impl PouEmitter<'_> {
 
     pub(crate) fn value(&self, v: &Value, line: u32) -> String {
         match v {
-            Value::Cr(t) => cr_ident(t),
+            Value::Cr(i) => cr_ident(self.pou.cr_ty(*i)),
             Value::Const(c) => constant(c),
-            Value::Read(p) => self.read(p, line),
-            Value::Saved(i, _) => super::saved_ident(*i),
-            Value::Widen(inner, w) => widened(self.value(inner, line), &Some(*w)),
-            Value::Arith { op, lhs, rhs } => {
-                let l = self.value(lhs, line);
-                let r = self.value(rhs, line);
-                let f = match op {
+            Value::Read(p) => self.read(self.pou.place(*p), line),
+            Value::Saved(i) => super::saved_ident(*i),
+            Value::Widen(b) => widened(self.value(&b.0, line), &Some(b.1)),
+            Value::Arith(a) => {
+                let l = self.value(&a.lhs, line);
+                let r = self.value(&a.rhs, line);
+                let f = match a.op {
                     BinOp::Add => "wrapping_add",
                     BinOp::Sub => "wrapping_sub",
                     _ => "wrapping_mul",
@@ -139,11 +139,12 @@ impl PouEmitter<'_> {
                             continue;
                         }
                         let ix = if self.inline_subscript(s, p, matches.is_empty()) {
-                            index_usize(self.value(s, line), value_elem(s), lo)
+                            index_usize(self.value(s, line), self.pou.value_ty(s).elem(), lo)
                         } else {
                             let id = format!("__ix{n_lets}");
                             n_lets += 1;
-                            let v = index_usize(self.value(s, line), value_elem(s), lo);
+                            let v =
+                                index_usize(self.value(s, line), self.pou.value_ty(s).elem(), lo);
                             lets.push_str(&format!("let {id}: usize = {v};"));
                             id
                         };
@@ -199,12 +200,13 @@ impl PouEmitter<'_> {
     pub(super) fn inline_subscript(&self, s: &Value, p: &Place, first: bool) -> bool {
         match s {
             Value::Cr(_) | Value::Const(_) | Value::Saved(..) => true,
-            Value::Widen(v, _) => self.inline_subscript(v, p, first),
+            Value::Widen(b) => self.inline_subscript(&b.0, p, first),
             Value::Resized(..) => false,
-            Value::Arith { lhs, rhs, .. } => {
-                self.inline_subscript(lhs, p, first) && self.inline_subscript(rhs, p, first)
+            Value::Arith(a) => {
+                self.inline_subscript(&a.lhs, p, first) && self.inline_subscript(&a.rhs, p, first)
             }
             Value::Read(q) => {
+                let q = self.pou.place(*q);
                 !Self::has_index(q)
                     && (first || q.root != p.root)
                     && !matches!(q.root, Root::Addr(_))
@@ -311,18 +313,6 @@ impl PouEmitter<'_> {
             |place| format!("{{ let __fb = &mut {place}; {body} }}"),
             format!("{{ {fault}; }}"),
         )
-    }
-}
-
-/// The element type of a subscript value.
-pub(super) fn value_elem(v: &Value) -> Option<Elem> {
-    match v {
-        Value::Cr(t) | Value::Saved(_, t) => t.elem(),
-        Value::Const(c) => c.ty().elem(),
-        Value::Read(p) => p.ty.elem(),
-        Value::Widen(_, w) => Some(w.to),
-        Value::Resized(r) => r.1.elem(),
-        Value::Arith { .. } => Some(Elem::LINT),
     }
 }
 

@@ -275,21 +275,25 @@ impl Walk<'_, '_> {
                 .iter()
                 .filter(|o| o.kind == ast::VarKind::Output)
                 .position(|o| o.name == "ENO");
-            self.push(Op::SetCr {
-                ty: ret.clone(),
-                expr: Expr::CallUser(Box::new(crate::sema::ir::UserCall {
-                    name: fname,
-                    inouts,
-                    args,
-                    out_types,
-                    outputs,
-                    en: en.clone(),
-                    eno,
-                    ret: ret.clone(),
-                })),
-            });
+            {
+                let cr = self.cr_index(&ret);
+                self.push(Op::SetCr {
+                    cr,
+                    expr: Expr::CallUser(Box::new(crate::sema::ir::UserCall {
+                        name: fname,
+                        inouts,
+                        args,
+                        out_types,
+                        outputs,
+                        en: en.clone(),
+                        eno,
+                        ret: ret.clone(),
+                    })),
+                })
+            };
             for (place, negate) in eno_plain {
                 let value = en.clone().unwrap_or(Value::Const(Const::Bool(true)));
+                let place = self.place_id(place);
                 self.push(Op::Store {
                     place,
                     value,
@@ -452,17 +456,20 @@ impl Walk<'_, '_> {
         en: Option<Value>,
     ) -> Ty {
         let ret = res.ret.clone();
-        self.push(Op::SetCr {
-            ty: ret.clone(),
-            expr: Expr::CallStd(Box::new(crate::sema::ir::StdFnCall {
-                en,
-                call: res.call,
-                args: values,
-                arg_types: res.params,
-                ret: res.ret,
-                fault: res.fault,
-            })),
-        });
+        {
+            let cr = self.cr_index(&ret);
+            self.push(Op::SetCr {
+                cr,
+                expr: Expr::CallStd(Box::new(crate::sema::ir::StdFnCall {
+                    en,
+                    call: res.call,
+                    args: values,
+                    arg_types: res.params,
+                    ret: res.ret,
+                    fault: res.fault,
+                })),
+            })
+        };
         ret
     }
 
@@ -480,6 +487,7 @@ impl Walk<'_, '_> {
         let cr = self.std_call(key, argv, span, Some(en.clone()));
         if matches!(cr, Cr::Val(_)) {
             for (place, negate) in enos {
+                let place = self.place_id(place);
                 self.push(Op::Store {
                     place,
                     value: en.clone(),

@@ -53,7 +53,7 @@ impl Walk<'_, '_> {
             Arg::Typed(v, t) => {
                 let slot = self.save_slot(&t);
                 self.push(Op::Save { slot, value: v });
-                Arg::Typed(Value::Saved(slot, t.clone()), t)
+                Arg::Typed(Value::Saved(slot), t)
             }
             lit => lit,
         };
@@ -97,16 +97,20 @@ impl Walk<'_, '_> {
     /// groups of one depth and type share a slot: a POU has a `__save_N`
     /// per depth and type, not one per group (11,000 in the 100k-line
     /// benchmark POU before).
-    fn save_slot(&mut self, t: &Ty) -> usize {
+    fn save_slot(&mut self, t: &Ty) -> u32 {
         let d = self.save_depth;
         if self.save_slots.len() <= d {
             self.save_slots.resize_with(d + 1, Vec::new);
         }
         let types = &self.save_types;
-        if let Some(&s) = self.save_slots[d].iter().find(|&&s| types[s] == *t) {
+        if let Some(&s) = self.save_slots[d]
+            .iter()
+            .find(|&&s| types[s as usize] == *t)
+        {
             return s;
         }
-        let slot = self.save_types.len();
+        // Slots per depth and type: a handful.
+        let slot = self.save_types.len() as u32;
         self.save_types.push(t.clone());
         self.save_slots[d].push(slot);
         slot
@@ -159,6 +163,7 @@ impl Walk<'_, '_> {
                     );
                     return cr;
                 }
+                let place = self.place_id(place);
                 self.push(Op::Store {
                     place,
                     value,
@@ -215,6 +220,7 @@ impl Walk<'_, '_> {
                 let Some(cond) = self.cond_value(&cr, span) else {
                     return cr;
                 };
+                let place = self.place_id(place);
                 self.push(Op::SetIf {
                     place,
                     value: set,
@@ -228,10 +234,13 @@ impl Walk<'_, '_> {
                 };
                 match arg {
                     Arg::Typed(v, t) if t.is_logic() => {
-                        self.push(Op::SetCr {
-                            ty: t.clone(),
-                            expr: Expr::Not(v),
-                        });
+                        {
+                            let cr = self.cr_index(&t);
+                            self.push(Op::SetCr {
+                                cr,
+                                expr: Expr::Not(v),
+                            })
+                        };
                         Cr::Val(t)
                     }
                     Arg::Typed(_, t) => {
@@ -474,10 +483,10 @@ impl Walk<'_, '_> {
                     return Cr::Val(t);
                 }
                 let expr = if negate { Expr::Not(v) } else { Expr::Value(v) };
-                self.push(Op::SetCr {
-                    ty: t.clone(),
-                    expr,
-                });
+                {
+                    let cr = self.cr_index(&t);
+                    self.push(Op::SetCr { cr, expr })
+                };
                 Cr::Val(t)
             }
         }

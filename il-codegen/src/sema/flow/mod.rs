@@ -20,6 +20,7 @@ mod fn_calls;
 mod instr;
 mod operands;
 mod operators;
+mod place_table;
 mod places;
 mod subscripts;
 mod values;
@@ -135,6 +136,8 @@ pub(crate) fn check_pou(
         line: 0,
         col: 0,
         addresses: Vec::new(),
+        places: Vec::new(),
+        place_ids: Default::default(),
     };
     // Fixpoint: the lattice per label is short (dead → literal → type → mixed),
     // so a few rounds settle it; the cap only guards against oscillation bugs.
@@ -211,6 +214,7 @@ pub(crate) fn check_pou(
         body: w.out,
         label_count: n,
         addresses: w.addresses,
+        places: w.places,
         cr_types: w.cr_types,
         save_types: w.save_types,
         retained: super::configuration::retained(env, sig),
@@ -258,6 +262,7 @@ fn host_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou, sig: &PouSig) -> CheckedPou 
         vars: sig.vars.clone(),
         ret: sig.ret.clone(),
         body: Vec::new(),
+        places: Vec::new(),
         label_count: 0,
         addresses: Vec::new(),
         cr_types: Vec::new(),
@@ -411,7 +416,7 @@ struct Walk<'a, 'c> {
     save_types: Vec<Ty>,
     /// The save slots of each depth of parentheses (indexes into
     /// `save_types`), and the depth being walked.
-    save_slots: Vec<Vec<usize>>,
+    save_slots: Vec<Vec<u32>>,
     save_depth: usize,
     jumped: Vec<bool>,
     /// The CR at every instruction and label, recorded on the final pass.
@@ -420,6 +425,10 @@ struct Walk<'a, 'c> {
     /// Column (1-based) of the instruction being walked.
     col: u32,
     addresses: Vec<ir::Loc>,
+    /// The body's place table, and the index of each place without
+    /// subscripts in it ([`place_table`]).
+    places: Vec<Place>,
+    place_ids: super::hash::FxMap<place_table::PlaceKey, u32>,
 }
 
 impl Walk<'_, '_> {
@@ -470,7 +479,7 @@ impl Walk<'_, '_> {
         );
         Some(match value {
             Value::Const(c) => Value::Const(super::widen::widen_const(&c, w.to)?),
-            v => Value::Widen(Box::new(v), w),
+            v => Value::Widen(Box::new((v, w))),
         })
     }
 
@@ -481,16 +490,26 @@ impl Walk<'_, '_> {
             self.counted += 1;
             return;
         }
-        if let Op::SetCr { ty, .. } = &op
-            && !self.cr_types.contains(ty)
-        {
-            self.cr_types.push(ty.clone());
-        }
         self.out.push(ir::Stmt {
             op,
             line: self.line,
             col: self.col,
         });
+    }
+
+    /// The index of the CR local of type `ty` ([`Value::Cr`],
+    /// [`Op::SetCr`]), added on its first use. A round before the final
+    /// pass adds too; the final pass starts from an empty list.
+    pub(super) fn cr_index(&mut self, ty: &Ty) -> u32 {
+        let i = match self.cr_types.iter().position(|t| t == ty) {
+            Some(i) => i,
+            None => {
+                self.cr_types.push(ty.clone());
+                self.cr_types.len() - 1
+            }
+        };
+        // A POU has a CR local per type it uses: a handful.
+        i as u32
     }
 
     /// Keep the line of the instruction whose statements start at `at`: the
@@ -526,6 +545,8 @@ impl Walk<'_, '_> {
         self.cr_steps.clear();
         self.cr_types.clear();
         self.addresses.clear();
+        self.places.clear();
+        self.place_ids.clear();
     }
 
     fn walk(&mut self, body: &[ast::Stmt]) {
@@ -639,10 +660,13 @@ impl Walk<'_, '_> {
             && !matches!(lit, LitClass::Pending(_))
         {
             match coerce(lit, t) {
-                Ok(c) => self.push(Op::SetCr {
-                    ty: t.clone(),
-                    expr: Expr::Value(Value::Const(c)),
-                }),
+                Ok(c) => {
+                    let cr = self.cr_index(t);
+                    self.push(Op::SetCr {
+                        cr,
+                        expr: Expr::Value(Value::Const(c)),
+                    })
+                }
                 Err(m) => {
                     let lspan = *lspan;
                     self.err(LITERAL_RANGE, lspan, m);

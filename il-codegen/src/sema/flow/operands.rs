@@ -64,12 +64,12 @@ impl Walk<'_, '_> {
             Operand::Var(v) => {
                 let p = self.place(v, false)?;
                 let ty = p.ty.clone();
-                Some(Arg::Typed(Value::Read(Box::new(p)), ty))
+                Some(Arg::Typed(Value::Read(self.place_id(p)), ty))
             }
             Operand::Addr(a) => {
                 let p = self.addr_place(a, false)?;
                 let ty = p.ty.clone();
-                Some(Arg::Typed(Value::Read(Box::new(p)), ty))
+                Some(Arg::Typed(Value::Read(self.place_id(p)), ty))
             }
         }
     }

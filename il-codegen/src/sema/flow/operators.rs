@@ -31,10 +31,13 @@ impl Walk<'_, '_> {
             return match fold(bop, negate, a, b) {
                 Ok(Folded::Lit(l)) => Cr::Lit(l, sa.to(span)),
                 Ok(Folded::Bool(v)) => {
-                    self.push(Op::SetCr {
-                        ty: Ty::BOOL,
-                        expr: Expr::Value(Value::Const(Const::Bool(v))),
-                    });
+                    {
+                        let cr = self.cr_index(&Ty::BOOL);
+                        self.push(Op::SetCr {
+                            cr,
+                            expr: Expr::Value(Value::Const(Const::Bool(v))),
+                        })
+                    };
                     Cr::Val(Ty::BOOL)
                 }
                 Err(m) => {
@@ -74,16 +77,19 @@ impl Walk<'_, '_> {
                     return bad;
                 }
             };
-            self.push(Op::SetCr {
-                ty: Ty::Elem(*te),
-                expr: Expr::TimeScale {
-                    div: bop == BinOp::Div,
-                    time: *te,
-                    lhs: lv.clone(),
-                    num: ne,
-                    rhs: rv,
-                },
-            });
+            {
+                let cr = self.cr_index(&Ty::Elem(*te));
+                self.push(Op::SetCr {
+                    cr,
+                    expr: Expr::TimeScale {
+                        div: bop == BinOp::Div,
+                        time: *te,
+                        lhs: lv.clone(),
+                        num: ne,
+                        rhs: rv,
+                    },
+                })
+            };
             return Cr::Val(Ty::Elem(*te));
         }
         // A typed literal of another type meets the CR like a typed value
@@ -142,16 +148,19 @@ impl Walk<'_, '_> {
         } else {
             ty.clone()
         };
-        self.push(Op::SetCr {
-            ty: res.clone(),
-            expr: Expr::Bin {
-                op: bop,
-                ty,
-                lhs: lv,
-                rhs: rv,
-                negate_rhs: negate,
-            },
-        });
+        {
+            let cr = self.cr_index(&res);
+            self.push(Op::SetCr {
+                cr,
+                expr: Expr::Bin {
+                    op: bop,
+                    ty,
+                    lhs: lv,
+                    rhs: rv,
+                    negate_rhs: negate,
+                },
+            })
+        };
         Cr::Val(res)
     }
 }

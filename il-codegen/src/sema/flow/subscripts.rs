@@ -70,11 +70,11 @@ impl Walk<'_, '_> {
                         };
                         Sub::Lit(n as i128, *span)
                     }
-                    (l, r) => Sub::Val(Value::Arith {
+                    (l, r) => Sub::Val(Value::Arith(Box::new(ir::Arith {
                         op: *op,
-                        lhs: Box::new(lint(l)),
-                        rhs: Box::new(lint(r)),
-                    }),
+                        lhs: lint(l),
+                        rhs: lint(r),
+                    }))),
                 })
             }
         }

@@ -55,7 +55,7 @@ impl Walk<'_, '_> {
                 None
             }
             Cr::Lit(l, s) => Some(Arg::Lit(l.clone(), *s)),
-            Cr::Val(t) => Some(Arg::Typed(Value::Cr(t.clone()), t.clone())),
+            Cr::Val(t) => Some(Arg::Typed(Value::Cr(self.cr_index(t)), t.clone())),
         }
     }
 
@@ -81,11 +81,12 @@ impl Walk<'_, '_> {
             Arg::Lit(l, s) => match coerce(&l, &Ty::BOOL) {
                 Ok(c) => {
                     // The CR is BOOL from here on, so it must live in its local.
+                    let cr = self.cr_index(&Ty::BOOL);
                     self.push(Op::SetCr {
-                        ty: Ty::BOOL,
+                        cr,
                         expr: Expr::Value(Value::Const(c)),
                     });
-                    Some(Value::Cr(Ty::BOOL))
+                    Some(Value::Cr(cr))
                 }
                 Err(m) => {
                     self.err(COND_NOT_BOOL, s, m);
@@ -245,7 +246,7 @@ impl Walk<'_, '_> {
             values.push(v);
         }
         let ret = self.push_std_call(res, values, p.en.clone());
-        Some((Value::Cr(ret.clone()), ret))
+        Some((Value::Cr(self.cr_index(&ret)), ret))
     }
 
     /// A literal (or pending call) as a value of type `ty`.
