@@ -36,9 +36,9 @@ impl Machine {
                 lhs,
                 rhs,
                 negate_rhs,
-                ty,
+                elem,
             } => {
-                let int = ty.elem().is_some_and(|e| e.is_int() || e.is_bitstring());
+                let int = elem.is_some_and(|e| e.is_int() || e.is_bitstring());
                 if int && matches!(op, BinOp::Div | BinOp::Mod) {
                     // `{ let d = rhs; if d == 0 { fault; 0 } else { lhs op d } }`
                     let mut r = self.value(f, rhs, ctx, line)?;
@@ -66,8 +66,7 @@ impl Machine {
                 if *negate_rhs {
                     r = stdfn::not(&r);
                 }
-                let name = op.name();
-                stdfn::plain(name, &[l, r], ty)
+                stdfn::operator(op.name(), &l, &r)
             }
             Expr::TimeScale {
                 div,

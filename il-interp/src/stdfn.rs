@@ -241,29 +241,37 @@ fn two<'a>(args: &'a [Value], name: &str) -> Result<(&'a Value, &'a Value), Stri
     }
 }
 
+/// The IL operator `name` (ADD, DIV, AND, GT ...) on `a` and `b`, as the
+/// standard function of that name: none of them needs the result type.
+pub fn operator(name: &str, a: &Value, b: &Value) -> Result<Value, String> {
+    let bad = || format!("{name}: unexpected argument types in the interpreter");
+    match name {
+        "ADD" | "SUB" | "MUL" => arith(name, a, b).ok_or_else(bad),
+        "DIV" | "MOD" => match (a, b) {
+            // A zero divisor gives 0 (il_std::func::DIV); `call` records
+            // the fault the checked call carries.
+            (Value::Int(x, e), Value::Int(y, _)) => Ok(Value::Int(
+                int_divmod(name == "DIV", *x, *y, *e).unwrap_or(0),
+                *e,
+            )),
+            _ => arith(name, a, b).ok_or_else(bad),
+        },
+        "AND" | "OR" | "XOR" => bitop(name, a, b).ok_or_else(bad),
+        "GT" | "GE" | "EQ" | "NE" | "LE" | "LT" => {
+            Ok(Value::Bool(cmp_op(name, a, b).ok_or_else(bad)?))
+        }
+        _ => Err(format!("{name}: not an operator")),
+    }
+}
+
 /// One call of the two-argument (or fixed) form of the function `name`.
 pub fn plain(name: &str, args: &[Value], ret: &Ty) -> Result<Value, String> {
     let bad = || format!("{name}: unexpected argument types in the interpreter");
     match name {
-        "ADD" | "SUB" | "MUL" => {
+        "ADD" | "SUB" | "MUL" | "DIV" | "MOD" | "AND" | "OR" | "XOR" | "GT" | "GE" | "EQ"
+        | "NE" | "LE" | "LT" => {
             let (a, b) = two(args, name)?;
-            arith(name, a, b).ok_or_else(bad)
-        }
-        "DIV" | "MOD" => {
-            let (a, b) = two(args, name)?;
-            match (a, b) {
-                // A zero divisor gives 0 (il_std::func::DIV); `call` records
-                // the fault the checked call carries.
-                (Value::Int(x, e), Value::Int(y, _)) => Ok(Value::Int(
-                    int_divmod(name == "DIV", *x, *y, *e).unwrap_or(0),
-                    *e,
-                )),
-                _ => arith(name, a, b).ok_or_else(bad),
-            }
-        }
-        "AND" | "OR" | "XOR" => {
-            let (a, b) = two(args, name)?;
-            bitop(name, a, b).ok_or_else(bad)
+            operator(name, a, b)
         }
         "NOT" => Ok(not(args.first().ok_or_else(bad)?)),
         "MOVE" => args.first().cloned().ok_or_else(bad),
@@ -310,10 +318,6 @@ pub fn plain(name: &str, args: &[Value], ret: &Ty) -> Result<Value, String> {
             )),
             _ => Err(bad()),
         },
-        "GT" | "GE" | "EQ" | "NE" | "LE" | "LT" => {
-            let (a, b) = two(args, name)?;
-            Ok(Value::Bool(cmp_op(name, a, b).ok_or_else(bad)?))
-        }
         "ADD_TIME" | "SUB_TIME" => {
             let (a, b) = two(args, name)?;
             arith(&name[..3], a, b).ok_or_else(bad)

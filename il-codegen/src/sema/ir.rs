@@ -550,13 +550,16 @@ pub enum Expr {
     Value(Value),
     /// Logical/bitwise complement.
     Not(Value),
-    /// `lhs op rhs`; `ty` is the operands' type (rhs is already complemented
-    /// for ANDN etc. via `negate_rhs`). Comparisons yield BOOL.
+    /// `lhs op rhs` (rhs is already complemented for ANDN etc. via
+    /// `negate_rhs`). Comparisons yield BOOL.
     Bin {
         /// The operator.
         op: BinOp,
-        /// The operands' type (the checker made both sides have it).
-        ty: Ty,
+        /// The operands' elementary type (the checker made both sides have
+        /// it); `None` for strings and enumerations, which only compare.
+        /// Not the whole type: the operator needs no more, and a type
+        /// inline made every statement a quarter larger.
+        elem: Option<Elem>,
         /// The left operand (usually the CR).
         lhs: Value,
         /// The right operand.

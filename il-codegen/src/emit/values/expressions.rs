@@ -10,7 +10,7 @@ impl PouEmitter<'_> {
             Expr::Not(v) => self.negated(v, line),
             Expr::Bin {
                 op,
-                ty,
+                elem,
                 lhs,
                 rhs,
                 negate_rhs,
@@ -24,7 +24,7 @@ impl PouEmitter<'_> {
                 // A literal divisor other than 0 needs no zero check.
                 let nonzero =
                     !*negate_rhs && matches!(rhs, Value::Const(Const::Int(n, _)) if n.get() != 0);
-                self.binary(*op, ty, l, r, nonzero, line)
+                self.binary(*op, *elem, l, r, nonzero, line)
             }
             Expr::TimeScale {
                 div,
@@ -193,13 +193,12 @@ impl PouEmitter<'_> {
     pub(super) fn binary(
         &self,
         op: BinOp,
-        ty: &Ty,
+        e: Option<Elem>,
         l: String,
         r: String,
         nonzero: bool,
         line: u32,
     ) -> String {
-        let e = ty.elem();
         let int = e.is_some_and(|e| e.is_int() || e.is_bitstring());
         let dur = e.filter(|e| e.is_duration()).map(Elem::rust);
         // The common shapes are joined, not formatted (a few per IL line).

@@ -154,7 +154,7 @@ impl Walk<'_, '_> {
                 cr,
                 expr: Expr::Bin {
                     op: bop,
-                    ty,
+                    elem: ty.elem(),
                     lhs: lv,
                     rhs: rv,
                     negate_rhs: negate,
