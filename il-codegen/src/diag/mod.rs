@@ -24,7 +24,10 @@ pub struct SourceFile {
     pub name: String,
     /// The whole text.
     pub text: String,
-    line_starts: Vec<usize>,
+    /// Byte offset of each line's start. `u32`, as spans: 4 bytes a line,
+    /// exactly sized (a `usize` table grown from a guess was up to 1.3
+    /// bytes per byte of a program of short lines).
+    line_starts: Vec<u32>,
     /// Characters before each `CHAR_BLOCK`-byte block of the text: a column
     /// is then counted from the nearest block, not from the line start, so
     /// many diagnostics on one long line stay linear in total.
@@ -46,7 +49,8 @@ impl SourceFile {
         // One pass over the bytes for both tables: a byte loop finds the
         // line ends of short lines faster than a string searcher restarted
         // at each (about 180 instructions a line).
-        let mut line_starts = Vec::with_capacity(text.len() / 16 + 1);
+        let lines = text.bytes().filter(|&b| b == b'\n').count();
+        let mut line_starts = Vec::with_capacity(lines + 1);
         line_starts.push(0);
         let mut block_chars = Vec::with_capacity(text.len() / CHAR_BLOCK + 1);
         let mut n = 0u32;
@@ -56,7 +60,8 @@ impl SourceFile {
             let base = k * CHAR_BLOCK + 1;
             for (i, &b) in block.iter().enumerate() {
                 if b == b'\n' {
-                    line_starts.push(base + i);
+                    // Offsets past 4 GiB, as spans, saturate.
+                    line_starts.push(u32::try_from(base + i).unwrap_or(u32::MAX));
                 }
             }
         }
@@ -101,11 +106,11 @@ impl SourceFile {
             let Some(&lo) = starts.get(l) else {
                 break;
             };
-            if lo <= offset && starts.get(l + 1).is_none_or(|&hi| offset < hi) {
+            if lo as usize <= offset && starts.get(l + 1).is_none_or(|&hi| offset < hi as usize) {
                 return l;
             }
         }
-        starts.partition_point(|&s| s <= offset) - 1
+        starts.partition_point(|&s| s as usize <= offset) - 1
     }
 
     /// 1-based line and 1-based column (in characters) of a byte offset.
@@ -120,7 +125,7 @@ impl SourceFile {
     pub fn line_col_near(&self, offset: u32, near: usize) -> (usize, usize) {
         let offset = (offset as usize).min(self.text.len());
         let line = self.line_index(offset, near);
-        let start = self.line_starts[line];
+        let start = self.line_starts[line] as usize;
         // Most columns are a few bytes from the line start: count those
         // directly; far ones from the nearest block (long lines stay linear).
         crate::work::add(1 + (offset - start.min(offset)).min(CHAR_BLOCK) as u64);
@@ -138,15 +143,14 @@ impl SourceFile {
     pub fn line_start(&self, line: usize) -> usize {
         self.line_starts
             .get(line.wrapping_sub(1))
-            .copied()
-            .unwrap_or(self.text.len())
+            .map_or(self.text.len(), |&s| s as usize)
     }
 
     /// The byte offset where a 1-based line ends, before its `\n`.
     pub fn line_end(&self, line: usize) -> usize {
         self.line_starts
             .get(line)
-            .map_or(self.text.len(), |&next| next.saturating_sub(1))
+            .map_or(self.text.len(), |&next| (next as usize).saturating_sub(1))
     }
 
     /// The text of a 1-based line, without its line break.
