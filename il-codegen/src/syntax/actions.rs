@@ -13,6 +13,29 @@ use crate::diag::Diagnostic;
 pub struct Ctx {
     pub errors: Vec<ErrorRecovery<usize, Tok, LexError>>,
     pub diags: Vec<Diagnostic>,
+    /// The statements of the open POU and of its open parenthesised groups,
+    /// pushed by each line as it is reduced: a group takes the tail from its
+    /// start on at its `)`, the POU the rest at its end. One growing vector
+    /// instead of a vector per line, copied into the body at the end (the
+    /// lines, the list of them and the body were alive at once).
+    pub stmts: Vec<Stmt>,
+    /// What the elements of the open POU decided so far.
+    elems: Elems,
+}
+
+/// The checks of a POU's element order, made as each element is reduced
+/// (see [`elem`]).
+#[derive(Default)]
+struct Elems {
+    var_blocks: Vec<VarBlock>,
+    begin: Option<Span>,
+    end: Option<Span>,
+    reported_late_decl: bool,
+    /// The first element's span, for code outside any POU.
+    first: Option<Span>,
+    /// Held back until the POU ends, to keep the order the messages had
+    /// when the checks ran there.
+    diags: Vec<Diagnostic>,
 }
 
 pub fn sp(lo: usize, hi: usize) -> Span {
@@ -22,7 +45,8 @@ pub fn sp(lo: usize, hi: usize) -> Span {
 /// One element of a POU: declarations, instruction lines, KAS-IDE markers.
 pub enum Elem {
     Vars(VarBlock),
-    Stmts(Vec<Stmt>),
+    /// A line: how many statements it pushed onto [`Ctx::stmts`].
+    Stmts(usize),
     BeginIl(Span),
     EndIl(Span),
 }
@@ -48,13 +72,19 @@ pub fn unbox<T>(v: Vec<Box<T>>) -> Vec<T> {
     v.into_iter().map(|b| *b).collect()
 }
 
-/// The lines of a parenthesised group as one exactly sized list: collecting
-/// the flattened lines grew from room for four statements (704 bytes for the
-/// one line of `AND( x` ... `)`, a tenth of the parse tree of MATIEC-style code).
-pub fn flat(lines: Vec<Vec<Stmt>>) -> Vec<Stmt> {
-    let mut v = Vec::with_capacity(lines.iter().map(Vec::len).sum());
-    lines.into_iter().for_each(|l| v.extend(l));
-    v
+/// One line: its label and instruction go onto [`Ctx::stmts`]; returns
+/// how many.
+pub fn line(ctx: &mut Ctx, label: Option<Ident>, instr: Option<Instr>) -> usize {
+    let n = ctx.stmts.len();
+    ctx.stmts.extend(label.map(Stmt::Label));
+    ctx.stmts.extend(instr.map(Stmt::Instr));
+    ctx.stmts.len() - n
+}
+
+/// The statements of a parenthesised group, pushed since its first line
+/// (`start`), as one exactly sized list.
+pub fn group(ctx: &mut Ctx, start: usize) -> Vec<Stmt> {
+    ctx.stmts.split_off(start)
 }
 
 pub fn instr(kind: InstrKind, lo: usize, op_hi: usize, hi: usize) -> Instr {
@@ -185,97 +215,117 @@ fn check_parens(ctx: &mut Ctx, body: &[Stmt], inside: bool) {
     }
 }
 
+fn stmt_span(s: &Stmt) -> Span {
+    match s {
+        Stmt::Instr(i) => i.span,
+        Stmt::Label(l) => l.span,
+    }
+}
+
+/// The first element of a POU. It starts afresh, keeping only this line's
+/// statements: error recovery drops the symbols of what it abandons, not
+/// what their lines pushed onto [`Ctx::stmts`].
+pub fn first_elem(ctx: &mut Ctx, e: Elem) {
+    let keep = match e {
+        Elem::Stmts(n) => n,
+        _ => 0,
+    };
+    ctx.stmts.drain(..ctx.stmts.len() - keep);
+    ctx.elems = Elems::default();
+    elem(ctx, e);
+}
+
+/// Before the first element (of code outside any POU): nothing parsed yet.
+pub fn start_elems(ctx: &mut Ctx) {
+    ctx.elems = Elems::default();
+    ctx.stmts.clear();
+}
+
+/// One more element of the open POU, checked against the ones before it.
+pub fn elem(ctx: &mut Ctx, e: Elem) {
+    // Called as each element is reduced: the body so far is `ctx.stmts`
+    // (a line's statements are its tail).
+    let st = &mut ctx.elems;
+    match e {
+        Elem::Vars(v) => {
+            st.first.get_or_insert(v.span);
+            if let (false, Some(first)) = (st.reported_late_decl, ctx.stmts.first().map(stmt_span))
+            {
+                st.reported_late_decl = true;
+                let kw = v.kind.keyword();
+                st.diags.push(
+                    Diagnostic::error(
+                        code::DECL_AFTER_CODE,
+                        sp(v.span.lo as usize, v.span.lo as usize + kw.len()),
+                        "declarations must come before the instructions",
+                    )
+                    .with_label(format!("{kw} block after instructions"))
+                    .with_secondary(first, "the instructions start here")
+                    .with_help("move all VAR ... END_VAR blocks to the start of the POU"),
+                );
+            }
+            st.var_blocks.push(v);
+        }
+        Elem::Stmts(n) => {
+            let line_first = ctx.stmts.len() - n;
+            if let Some(sspan) = ctx.stmts.get(line_first).map(stmt_span) {
+                st.first.get_or_insert(sspan);
+                if let Some(e) = st.end {
+                    st.diags.push(
+                        Diagnostic::error(code::BEGIN_IL, sspan, "instructions after END_IL")
+                            .with_secondary(e, "the body ended here")
+                            .with_label("outside BEGIN_IL ... END_IL"),
+                    );
+                    st.end = None;
+                }
+            }
+        }
+        Elem::BeginIl(s) => {
+            st.first.get_or_insert(s);
+            if st.begin.is_some() {
+                st.diags.push(
+                    Diagnostic::error(code::BEGIN_IL, s, "a second BEGIN_IL")
+                        .with_label("repeated"),
+                );
+            } else if !ctx.stmts.is_empty() {
+                st.diags.push(
+                    Diagnostic::error(
+                        code::BEGIN_IL,
+                        s,
+                        "BEGIN_IL must come before the first instruction",
+                    )
+                    .with_label("too late"),
+                );
+            }
+            st.begin = Some(s);
+        }
+        Elem::EndIl(s) => {
+            st.first.get_or_insert(s);
+            if st.begin.is_none() {
+                st.diags.push(
+                    Diagnostic::error(code::BEGIN_IL, s, "END_IL without BEGIN_IL")
+                        .with_label("no BEGIN_IL before this"),
+                );
+            }
+            st.end = Some(s);
+        }
+    }
+}
+
 struct Split {
     var_blocks: Vec<VarBlock>,
     body: Vec<Stmt>,
     begin_il: bool,
 }
 
-fn split_elems(ctx: &mut Ctx, els: Vec<Elem>) -> Split {
-    let mut var_blocks = Vec::new();
-    // Sized once: the body is the largest part of the tree (growing it by
-    // doubling left up to half of it unused, a quarter on average).
-    let stmts = els
-        .iter()
-        .map(|e| match e {
-            Elem::Stmts(s) => s.len(),
-            _ => 0,
-        })
-        .sum();
-    let mut body: Vec<Stmt> = Vec::with_capacity(stmts);
-    let mut begin: Option<Span> = None;
-    let mut end: Option<Span> = None;
-    let mut reported_late_decl = false;
-    for e in els {
-        match e {
-            Elem::Vars(v) => {
-                if let (false, Some(first)) = (
-                    reported_late_decl,
-                    body.first().map(|s| match s {
-                        Stmt::Instr(i) => i.span,
-                        Stmt::Label(l) => l.span,
-                    }),
-                ) {
-                    reported_late_decl = true;
-                    let kw = v.kind.keyword();
-                    ctx.diags.push(
-                        Diagnostic::error(
-                            code::DECL_AFTER_CODE,
-                            sp(v.span.lo as usize, v.span.lo as usize + kw.len()),
-                            "declarations must come before the instructions",
-                        )
-                        .with_label(format!("{kw} block after instructions"))
-                        .with_secondary(first, "the instructions start here")
-                        .with_help("move all VAR ... END_VAR blocks to the start of the POU"),
-                    );
-                }
-                var_blocks.push(v);
-            }
-            Elem::Stmts(s) => {
-                if let (Some(e), Some(st)) = (end, s.first()) {
-                    let sspan = match st {
-                        Stmt::Instr(i) => i.span,
-                        Stmt::Label(l) => l.span,
-                    };
-                    ctx.diags.push(
-                        Diagnostic::error(code::BEGIN_IL, sspan, "instructions after END_IL")
-                            .with_secondary(e, "the body ended here")
-                            .with_label("outside BEGIN_IL ... END_IL"),
-                    );
-                    end = None;
-                }
-                body.extend(s)
-            }
-            Elem::BeginIl(s) => {
-                if begin.is_some() {
-                    ctx.diags.push(
-                        Diagnostic::error(code::BEGIN_IL, s, "a second BEGIN_IL")
-                            .with_label("repeated"),
-                    );
-                } else if !body.is_empty() {
-                    ctx.diags.push(
-                        Diagnostic::error(
-                            code::BEGIN_IL,
-                            s,
-                            "BEGIN_IL must come before the first instruction",
-                        )
-                        .with_label("too late"),
-                    );
-                }
-                begin = Some(s);
-            }
-            Elem::EndIl(s) => {
-                if begin.is_none() {
-                    ctx.diags.push(
-                        Diagnostic::error(code::BEGIN_IL, s, "END_IL without BEGIN_IL")
-                            .with_label("no BEGIN_IL before this"),
-                    );
-                }
-                end = Some(s);
-            }
-        }
-    }
-    if let (Some(b), None) = (begin, end)
+/// The end of a POU's elements: the checks of the whole, and its parts.
+fn finish_elems(ctx: &mut Ctx) -> Split {
+    let st = std::mem::take(&mut ctx.elems);
+    let mut body = std::mem::take(&mut ctx.stmts);
+    // Grown by doubling: up to half of it would stay unused in the tree.
+    body.shrink_to_fit();
+    ctx.diags.extend(st.diags);
+    if let (Some(b), None) = (st.begin, st.end)
         && !ctx.diags.iter().any(|d| d.code == code::BEGIN_IL)
     {
         {
@@ -287,9 +337,9 @@ fn split_elems(ctx: &mut Ctx, els: Vec<Elem>) -> Split {
     }
     check_parens(ctx, &body, false);
     Split {
-        var_blocks,
+        var_blocks: st.var_blocks,
         body,
-        begin_il: begin.is_some(),
+        begin_il: st.begin.is_some(),
     }
 }
 
@@ -300,18 +350,21 @@ pub fn pou(
     kw_span: Span,
     name: Option<Ident>,
     ret: Option<TypeSpec>,
-    els: Vec<Elem>,
+    has_elems: bool,
     end: Option<(PouKind, Span)>,
     span: Span,
 ) -> Pou {
     let name = name.unwrap_or_else(|| Ident::new("", kw_span));
     // A result type the lexer had to make up (`FUNCTION f :` and nothing).
     let ret = ret.filter(|t| !matches!(t, TypeSpec::Named(n) if n.name.is_empty()));
+    if !has_elems {
+        start_elems(ctx);
+    }
     let Split {
         var_blocks,
         body,
         begin_il,
-    } = split_elems(ctx, els);
+    } = finish_elems(ctx);
     if !name.name.is_empty() {
         match (kind, &ret) {
             (PouKind::Function, None) => ctx.diags.push(
@@ -385,16 +438,11 @@ pub fn pou(
 }
 
 /// Instructions outside any POU: reported, then dropped.
-pub fn orphan(ctx: &mut Ctx, span: Span, els: Vec<Elem>) {
-    let first = els.iter().find_map(|e| match e {
-        Elem::Stmts(s) => s.first().map(|s| match s {
-            Stmt::Instr(i) => i.span,
-            Stmt::Label(l) => l.span,
-        }),
-        Elem::Vars(v) => Some(v.span),
-        Elem::BeginIl(s) | Elem::EndIl(s) => Some(*s),
-    });
-    let at = first.unwrap_or(sp(span.lo as usize, span.lo as usize));
+pub fn orphan(ctx: &mut Ctx, span: Span) {
+    let at = ctx
+        .elems
+        .first
+        .unwrap_or(sp(span.lo as usize, span.lo as usize));
     ctx.diags.push(
         Diagnostic::error(
             code::ORPHAN,
@@ -404,7 +452,7 @@ pub fn orphan(ctx: &mut Ctx, span: Span, els: Vec<Elem>) {
         .with_label("outside any POU")
         .with_help("wrap them in `PROGRAM name` ... `END_PROGRAM`, with their VAR blocks first"),
     );
-    let _ = split_elems(ctx, els);
+    let _ = finish_elems(ctx);
 }
 
 pub fn configuration(name: Ident, els: Vec<CfgElem>, span: Span) -> Configuration {
