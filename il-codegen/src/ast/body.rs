@@ -290,7 +290,7 @@ impl Operand {
     pub fn span(&self) -> Span {
         match self {
             Operand::Lit(l) => l.span,
-            Operand::Var(v) => v.span,
+            Operand::Var(v) => v.span(),
             Operand::Addr(a) => a.span,
         }
     }
@@ -302,9 +302,33 @@ pub struct VarRef {
     /// The variable's name.
     pub base: Ident,
     /// Field, subscript and bit accesses after it, in order.
-    pub path: Vec<Accessor>,
-    /// The whole reference.
-    pub span: Span,
+    /// A boxed slice: most references have no steps (no allocation), and
+    /// none grows once parsed.
+    pub path: Box<[Accessor]>,
+}
+
+impl VarRef {
+    /// The whole reference: from the name to the end of its last step (each
+    /// step's span ends at its last token). Computed, not stored: a span
+    /// more made every operand of the syntax tree a word larger.
+    pub fn span(&self) -> Span {
+        let hi = self.path.last().map_or(self.base.span.hi, |a| a.span().hi);
+        Span {
+            lo: self.base.span.lo,
+            hi,
+        }
+    }
+}
+
+impl Accessor {
+    /// Where the step is written (`.name`: the name; `[i]`: the brackets
+    /// and what is between them).
+    pub fn span(&self) -> Span {
+        match self {
+            Accessor::Field(id) => id.span,
+            Accessor::Index(_, span) | Accessor::Part { span, .. } => *span,
+        }
+    }
 }
 
 /// One step after a variable name in a [`VarRef`].
@@ -433,7 +457,7 @@ pub enum LitKind {
         /// The value.
         value: f64,
         /// The number as written after any type prefix (sign, digits, `_`, exponent).
-        text: String,
+        text: Box<str>,
     },
     /// `TRUE` / `FALSE` (also `BOOL#1`, `BOOL#0`).
     Bool(bool),
@@ -453,7 +477,7 @@ pub enum LitKind {
     /// `'...'` (wide = false) or `"..."` (wide = true), escapes resolved.
     String {
         /// The characters.
-        value: String,
+        value: Box<str>,
         /// `"..."` (WSTRING) rather than `'...'` (STRING).
         wide: bool,
     },

@@ -48,8 +48,10 @@ impl Span {
 /// or [`Ident::is`], never with `==` on `name`.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Ident {
-    /// The name with its original spelling (case preserved).
-    pub name: String,
+    /// The name with its original spelling (case preserved). A boxed
+    /// `str`, not a `String`: a name never grows, and the spare word was a
+    /// sixth of every operand of the syntax tree.
+    pub name: Box<str>,
     /// Where the name is written.
     pub span: Span,
 }
@@ -58,7 +60,7 @@ impl Ident {
     /// A name with its spelling and position.
     pub fn new(name: impl Into<String>, span: Span) -> Self {
         Ident {
-            name: name.into(),
+            name: name.into().into_boxed_str(),
             span,
         }
     }

@@ -85,7 +85,7 @@ impl Snippet {
                     if let crate::ast::Operand::Var(v) = o
                         && !names.iter().any(|(n, _)| v.base.is(n))
                     {
-                        names.push((v.base.name.clone(), self.to_file(v.base.span)));
+                        names.push((v.base.name.to_string(), self.to_file(v.base.span)));
                     }
                 });
             }

@@ -74,7 +74,7 @@ pub(crate) fn program_args(
                 if !g.path.is_empty() {
                     cx.err(
                         BAD_IN_OUT,
-                        g.span,
+                        g.span(),
                         "a VAR_IN_OUT of a program is bound to a whole global (`io := g`)",
                     );
                     continue;
@@ -113,7 +113,7 @@ pub(crate) fn program_args(
                 };
                 match problem {
                     Some(m) => {
-                        cx.err(BAD_IN_OUT, g.span, m);
+                        cx.err(BAD_IN_OUT, g.span(), m);
                     }
                     None => inouts.push((v.name.clone(), gr)),
                 }
@@ -132,7 +132,7 @@ pub(crate) fn program_args(
                     Some((_, gv)) => {
                         cx.err(
                             BAD_CONFIG,
-                            g.span,
+                            g.span(),
                             format!("input `{}` is {}, the global is {}", v.name, v.ty, gv.ty),
                         );
                     }
@@ -146,7 +146,7 @@ pub(crate) fn program_args(
                 Some((_, gv)) if gv.constant => {
                     cx.err(
                         NOT_WRITABLE,
-                        g.span,
+                        g.span(),
                         format!("the global `{}` is CONSTANT", gv.name),
                     );
                 }
@@ -154,7 +154,7 @@ pub(crate) fn program_args(
                 Some((_, gv)) => {
                     cx.err(
                         BAD_CONFIG,
-                        g.span,
+                        g.span(),
                         format!("output `{}` is {}, the global is {}", v.name, v.ty, gv.ty),
                     );
                 }

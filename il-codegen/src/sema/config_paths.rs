@@ -68,11 +68,11 @@ pub(super) fn config_path(
     def: &ConfigDef,
     path: &VarRef,
 ) -> Option<(InstancePath, Named)> {
-    let text = cx.file.snippet(path.span).to_string();
+    let text = cx.file.snippet(path.span()).to_string();
     let segs = segments(path);
     let (resource, rest) = pick_resource(cx, def, &segs, path)?;
     let Some(Seg::Name(first)) = rest.first() else {
-        return bare_resource(cx, path.span, &text);
+        return bare_resource(cx, path.span(), &text);
     };
     let progs = &def.resources[resource].programs;
     let Some(program) = progs.iter().position(|p| first.is(&p.name)) else {
@@ -92,7 +92,7 @@ pub(super) fn config_path(
         (resource, program),
         &rest[1..],
         text,
-        path.span,
+        path.span(),
         Section::Config,
     )
 }
@@ -105,7 +105,7 @@ pub(super) fn access_path(
     def: &ConfigDef,
     path: &VarRef,
 ) -> Option<(AccessTarget, Ty, Named)> {
-    let text = cx.file.snippet(path.span).to_string();
+    let text = cx.file.snippet(path.span()).to_string();
     let segs = segments(path);
     let named_res = match &segs[0] {
         Seg::Name(n) => def
@@ -122,7 +122,7 @@ pub(super) fn access_path(
         None => ((0..def.resources.len().max(1)).collect(), &segs[..]),
     };
     let Some(Seg::Name(first)) = rest.first() else {
-        return bare_resource(cx, path.span, &text);
+        return bare_resource(cx, path.span(), &text);
     };
     let unnamed_or_given = resources
         .iter()
@@ -141,7 +141,7 @@ pub(super) fn access_path(
                 (r, p),
                 &rest[1..],
                 text,
-                path.span,
+                path.span(),
                 Section::Access,
             )?;
             let ty = ip.ty.clone();
@@ -197,7 +197,7 @@ pub(super) fn access_path(
         range: gv.range,
         constant: gv.constant,
     };
-    let from = (gv.ty.clone(), first.name.as_str());
+    let from = (gv.ty.clone(), first.name.as_ref());
     let (steps, ty, named) = walk(cx, env, from, start, &rest[1..], Section::Access)?;
     Some((AccessTarget::Global { global, steps }, ty, named))
 }
@@ -300,7 +300,7 @@ fn walk(
             Seg::Name(part) => {
                 let (name, t, range, constant, partly) =
                     member(cx, env, &ty, &prev, part, section)?;
-                prev = part.name.clone();
+                prev = part.name.to_string();
                 steps.push(PathElem::Field(name));
                 ty = t;
                 named.range = range;

@@ -42,7 +42,7 @@ pub(crate) fn tasks(cx: &mut Cx, def: &ConfigDef, res: usize, r: &ast::Resource)
         };
         let single = t.single.as_ref().and_then(|o| single(cx, def, res, o));
         out.push(TaskDef {
-            name: t.name.name.clone(),
+            name: t.name.name.to_string(),
             interval,
             priority,
             single,
@@ -65,7 +65,7 @@ fn interval(cx: &mut Cx, def: &ConfigDef, res: usize, o: &Operand) -> TaskSource
             Some((_, var)) => {
                 cx.err(
                     BAD_CONFIG,
-                    v.span,
+                    v.span(),
                     format!("INTERVAL needs a TIME global; `{}` is {}", v.base, var.ty),
                 );
                 TaskSource::Fixed(0)
@@ -106,7 +106,7 @@ fn single(cx: &mut Cx, def: &ConfigDef, res: usize, o: &Operand) -> Option<TaskS
             Some((_, var)) => {
                 cx.err(
                     BAD_CONFIG,
-                    v.span,
+                    v.span(),
                     format!("SINGLE needs a BOOL global; `{}` is {}", v.base, var.ty),
                 );
                 None

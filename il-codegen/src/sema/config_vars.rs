@@ -132,7 +132,7 @@ pub(crate) fn access(
             continue;
         }
         out.push(AccessDef {
-            name: d.name.name.clone(),
+            name: d.name.name.to_string(),
             target,
             ty,
             writable: d.writable,

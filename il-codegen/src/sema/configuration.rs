@@ -57,7 +57,7 @@ pub(crate) fn collect(
     for (f, c, globals, res_globals) in out {
         let cx = &mut cxs[f];
         let mut def = ConfigDef {
-            name: c.name.name.clone(),
+            name: c.name.name.to_string(),
             globals: globals.into_iter().map(|(v, _)| v).collect(),
             resources: Vec::new(),
             var_config: Vec::new(),
@@ -65,7 +65,7 @@ pub(crate) fn collect(
         };
         for (ri, (r, rg)) in c.resources.iter().zip(res_globals).enumerate() {
             let rdef = ResourceDef {
-                name: r.name.as_ref().map(|n| n.name.clone()),
+                name: r.name.as_ref().map(|n| n.name.to_string()),
                 globals: rg.into_iter().map(|(v, _)| v).collect(),
                 tasks: Vec::new(),
                 programs: Vec::new(),
@@ -374,7 +374,7 @@ fn programs(
         }
         let args = super::config_args::program_args(cx, env, def, res, sig, pi, &externals);
         out.push(ProgramInst {
-            name: pi.name.name.clone(),
+            name: pi.name.name.to_string(),
             program: sig.name.clone(),
             task,
             externals,

@@ -87,7 +87,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
     let fb_names = Names {
         pous: pous
             .iter()
-            .map(|(_, p)| (p.name.key(), (p.name.name.clone(), p.kind)))
+            .map(|(_, p)| (p.name.key(), (p.name.name.to_string(), p.kind)))
             .collect(),
         types,
         depth: std::cell::Cell::new(0),
@@ -122,7 +122,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
                         None
                     }
                 };
-                vals.push((v.name.name.clone(), disc));
+                vals.push((v.name.name.to_string(), disc));
             }
             let default = match &d.init {
                 Some(Initializer::Simple(Operand::Var(v))) => {
@@ -133,14 +133,14 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
             env.types.enums.insert(
                 d.name.key(),
                 (
-                    d.name.name.clone().into(),
+                    d.name.name.to_string().into(),
                     vals.iter().map(|(n, _)| n.clone()).collect(),
                 ),
             );
             env.types.defs.push((
                 *f,
                 TypeDef::Enum {
-                    name: d.name.name.clone(),
+                    name: d.name.name.to_string(),
                     values: vals,
                     default,
                 },
@@ -181,7 +181,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
                         continue;
                     }
                     out.push(Field {
-                        name: n.name.clone(),
+                        name: n.name.to_string(),
                         ty: ty.clone(),
                         init: init.clone(),
                         range,
@@ -192,7 +192,7 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
             env.types.defs.push((
                 *f,
                 TypeDef::Struct {
-                    name: d.name.name.clone(),
+                    name: d.name.name.to_string(),
                     fields: out,
                 },
             ));

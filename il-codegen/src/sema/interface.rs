@@ -15,7 +15,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
     check_ident(cx, &p.name);
     let mut sig = PouSig {
         kind: p.kind,
-        name: p.name.name.clone(),
+        name: p.name.name.to_string(),
         vars: Vec::new(),
         index: Default::default(),
         ret: None,
@@ -166,7 +166,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
                 spans.insert(key.clone(), name.span);
                 sig.index.insert(&key, sig.vars.len());
                 sig.vars.push(Var {
-                    name: name.name.clone(),
+                    name: name.name.to_string(),
                     location: location.clone(),
                     partly: partly.clone(),
                     edge: decl.edge,

@@ -39,7 +39,7 @@ pub(crate) enum PendArg {
 pub(crate) fn lit_class(lit: &Literal) -> LitClass {
     let untyped = match &lit.kind {
         LitKind::Int(v) => LitClass::Int(v.get()),
-        LitKind::Real { value, text } => LitClass::Real(*value, text.clone()),
+        LitKind::Real { value, text } => LitClass::Real(*value, text.to_string()),
         LitKind::Bool(b) => LitClass::Typed(Const::Bool(*b)),
         LitKind::Time { nanos, long } => LitClass::Typed(Const::Time(
             *nanos,
@@ -48,7 +48,7 @@ pub(crate) fn lit_class(lit: &Literal) -> LitClass {
         LitKind::Date(d) => LitClass::Typed(Const::Time(*d, Elem::DATE)),
         LitKind::Tod(t) => LitClass::Typed(Const::Time(*t, Elem::TOD)),
         LitKind::Dt(t) => LitClass::Typed(Const::Time(*t, Elem::DT)),
-        LitKind::String { value, wide } => LitClass::Str(value.clone(), *wide),
+        LitKind::String { value, wide } => LitClass::Str(value.to_string(), *wide),
         LitKind::Enum(_) => LitClass::Unsupported("enumeration literals are not supported yet"),
     };
     let Some(prefix) = &lit.type_prefix else {

@@ -122,12 +122,12 @@ pub(crate) fn check_nesting(cxs: &mut [Cx], env: &Env, units: &[&ast::Compilatio
                             .pou(&p.name.name)
                             .is_some_and(|s| s.file == f && s.span == p.name.span) =>
                 {
-                    found.push((f, Node::Pou(p.name.name.as_str()), p.name.span));
+                    found.push((f, Node::Pou(p.name.name.as_ref()), p.name.span));
                 }
                 ast::Item::Types(decls) => {
                     for d in decls {
                         if matches!(d.spec, ast::TypeSpec::Struct { .. }) {
-                            found.push((f, Node::Struct(d.name.name.as_str()), d.name.span));
+                            found.push((f, Node::Struct(d.name.name.as_ref()), d.name.span));
                         }
                     }
                 }

@@ -302,8 +302,8 @@ impl Names<'_> {
     pub(crate) fn user_type(&self, cx: &mut Cx, key: &str, span: Span) -> Option<Option<Ty>> {
         let decl = self.types.get(key)?;
         Some(match &decl.spec {
-            TypeSpec::Struct { .. } => Some(Ty::Struct(decl.name.name.clone().into())),
-            TypeSpec::Enum { .. } => Some(Ty::Enum(decl.name.name.clone().into())),
+            TypeSpec::Struct { .. } => Some(Ty::Struct(decl.name.name.to_string().into())),
+            TypeSpec::Enum { .. } => Some(Ty::Enum(decl.name.name.to_string().into())),
             spec => {
                 // An alias or a subrange: the type it names (aliases may chain).
                 if self.depth.get() > 32 {

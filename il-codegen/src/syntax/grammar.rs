@@ -1,5 +1,5 @@
 // auto-generated: "lalrpop 0.23.2"
-// sha3: 18ef13f20a4d5055c5ee525d546e2b5b393fe6a53b662fe8603c8afa2c1aad95
+// sha3: f6fcb30d80544d02a70415f2dc0846c0e062b263f80bb6c602c3241eaa64cd38
 // features: 
 use crate::ast::*;
 use super::lexer::{Tok, LexError, ExprTok};
@@ -5005,7 +5005,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // AccessVar = Name, ":", DottedPath, ":", TypeSpec, AccessDir, ";" => ActionFn(323);
+        // AccessVar = Name, ":", DottedPath, ":", TypeSpec, AccessDir, ";" => ActionFn(321);
         assert!(__symbols.len() >= 7);
         let __sym6 = __pop_Variant0(__symbols);
         let __sym5 = __pop_Variant5(__symbols);
@@ -5016,7 +5016,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant18(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym6.2.clone();
-        let __nt = super::__action323::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5, __sym6);
+        let __nt = super::__action321::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5, __sym6);
         __symbols.push((__start, __Symbol::Variant21(__nt), __end));
         (7, 14)
     }
@@ -5029,7 +5029,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // AccessVar = Name, ":", DottedPath, ":", TypeSpec, ";" => ActionFn(324);
+        // AccessVar = Name, ":", DottedPath, ":", TypeSpec, ";" => ActionFn(322);
         assert!(__symbols.len() >= 6);
         let __sym5 = __pop_Variant0(__symbols);
         let __sym4 = __pop_Variant14(__symbols);
@@ -5039,7 +5039,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant18(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym5.2.clone();
-        let __nt = super::__action324::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
+        let __nt = super::__action322::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
         __symbols.push((__start, __Symbol::Variant21(__nt), __end));
         (6, 14)
     }
@@ -5109,13 +5109,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Accessor = ".", PartTok => ActionFn(266);
+        // Accessor = ".", PartTok => ActionFn(265);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant4(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action266::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action265::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant22(__nt), __end));
         (2, 15)
     }
@@ -5128,14 +5128,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Accessor = "[", Comma1<Subscript>, "]" => ActionFn(267);
+        // Accessor = "[", Comma1<Subscript>, "]" => ActionFn(266);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant0(__symbols);
         let __sym1 = __pop_Variant33(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action267::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action266::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant22(__nt), __end));
         (3, 15)
     }
@@ -5272,14 +5272,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // CfgElem = "VAR_CONFIG", List<ConfigVar>, "END_VAR" => ActionFn(268);
+        // CfgElem = "VAR_CONFIG", List<ConfigVar>, "END_VAR" => ActionFn(267);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant0(__symbols);
         let __sym1 = __pop_Variant52(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action268::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action267::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant25(__nt), __end));
         (3, 19)
     }
@@ -5292,14 +5292,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // CfgElem = "VAR_ACCESS", List<AccessVar>, "END_VAR" => ActionFn(269);
+        // CfgElem = "VAR_ACCESS", List<AccessVar>, "END_VAR" => ActionFn(268);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant0(__symbols);
         let __sym1 = __pop_Variant50(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action269::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action268::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant25(__nt), __end));
         (3, 19)
     }
@@ -5312,7 +5312,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // CfgElem = "RESOURCE", Name, Opt<("ON" <Name>)>, List<CfgElem>, "END_RESOURCE" => ActionFn(270);
+        // CfgElem = "RESOURCE", Name, Opt<("ON" <Name>)>, List<CfgElem>, "END_RESOURCE" => ActionFn(269);
         assert!(__symbols.len() >= 5);
         let __sym4 = __pop_Variant0(__symbols);
         let __sym3 = __pop_Variant51(__symbols);
@@ -5321,7 +5321,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym4.2.clone();
-        let __nt = super::__action270::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4);
+        let __nt = super::__action269::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4);
         __symbols.push((__start, __Symbol::Variant25(__nt), __end));
         (5, 19)
     }
@@ -5753,7 +5753,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Config = "CONFIGURATION", Name, List<CfgElem>, "END_CONFIGURATION" => ActionFn(271);
+        // Config = "CONFIGURATION", Name, List<CfgElem>, "END_CONFIGURATION" => ActionFn(270);
         assert!(__symbols.len() >= 4);
         let __sym3 = __pop_Variant0(__symbols);
         let __sym2 = __pop_Variant51(__symbols);
@@ -5761,7 +5761,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym3.2.clone();
-        let __nt = super::__action271::<>(ctx, __sym0, __sym1, __sym2, __sym3);
+        let __nt = super::__action270::<>(ctx, __sym0, __sym1, __sym2, __sym3);
         __symbols.push((__start, __Symbol::Variant35(__nt), __end));
         (4, 30)
     }
@@ -5774,7 +5774,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // ConfigVar = DottedPath, Opt<("AT" <Addr>)>, ":", TypeSpec, ":=", Init, ";" => ActionFn(272);
+        // ConfigVar = DottedPath, Opt<("AT" <Addr>)>, ":", TypeSpec, ":=", Init, ";" => ActionFn(271);
         assert!(__symbols.len() >= 7);
         let __sym6 = __pop_Variant0(__symbols);
         let __sym5 = __pop_Variant16(__symbols);
@@ -5785,7 +5785,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant38(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym6.2.clone();
-        let __nt = super::__action272::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5, __sym6);
+        let __nt = super::__action271::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5, __sym6);
         __symbols.push((__start, __Symbol::Variant36(__nt), __end));
         (7, 31)
     }
@@ -5798,7 +5798,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // ConfigVar = DottedPath, Opt<("AT" <Addr>)>, ":", TypeSpec, ";" => ActionFn(273);
+        // ConfigVar = DottedPath, Opt<("AT" <Addr>)>, ":", TypeSpec, ";" => ActionFn(272);
         assert!(__symbols.len() >= 5);
         let __sym4 = __pop_Variant0(__symbols);
         let __sym3 = __pop_Variant14(__symbols);
@@ -5807,7 +5807,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant38(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym4.2.clone();
-        let __nt = super::__action273::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4);
+        let __nt = super::__action272::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4);
         __symbols.push((__start, __Symbol::Variant36(__nt), __end));
         (5, 31)
     }
@@ -5991,11 +5991,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Elem = "BEGIN_IL" => ActionFn(274);
+        // Elem = "BEGIN_IL" => ActionFn(273);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action274::<>(ctx, __sym0);
+        let __nt = super::__action273::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant41(__nt), __end));
         (1, 36)
     }
@@ -6008,11 +6008,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Elem = "END_IL" => ActionFn(275);
+        // Elem = "END_IL" => ActionFn(274);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action275::<>(ctx, __sym0);
+        let __nt = super::__action274::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant41(__nt), __end));
         (1, 36)
     }
@@ -6129,11 +6129,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // EndOfPou = EndPou => ActionFn(276);
+        // EndOfPou = EndPou => ActionFn(275);
         let __sym0 = __pop_Variant10(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action276::<>(ctx, __sym0);
+        let __nt = super::__action275::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant44(__nt), __end));
         (1, 40)
     }
@@ -6235,14 +6235,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Init = "[", Comma1<ArrayElem>, "]" => ActionFn(277);
+        // Init = "[", Comma1<ArrayElem>, "]" => ActionFn(276);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant0(__symbols);
         let __sym1 = __pop_Variant26(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action277::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action276::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant16(__nt), __end));
         (3, 44)
     }
@@ -6255,14 +6255,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Init = "(", Comma1<FieldInit>, ")" => ActionFn(278);
+        // Init = "(", Comma1<FieldInit>, ")" => ActionFn(277);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant0(__symbols);
         let __sym1 = __pop_Variant28(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action278::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action277::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant16(__nt), __end));
         (3, 44)
     }
@@ -6275,13 +6275,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = Ld, Operand => ActionFn(279);
+        // Instr = Ld, Operand => ActionFn(278);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant57(__symbols);
         let __sym0 = __pop_Variant5(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action279::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action278::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (2, 45)
     }
@@ -6294,13 +6294,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = St, Operand => ActionFn(280);
+        // Instr = St, Operand => ActionFn(279);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant57(__symbols);
         let __sym0 = __pop_Variant5(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action280::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action279::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (2, 45)
     }
@@ -6313,13 +6313,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = "S", Operand => ActionFn(281);
+        // Instr = "S", Operand => ActionFn(280);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant57(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action281::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action280::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (2, 45)
     }
@@ -6332,13 +6332,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = "R", Operand => ActionFn(282);
+        // Instr = "R", Operand => ActionFn(281);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant57(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action282::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action281::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (2, 45)
     }
@@ -6351,11 +6351,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = "NOT" => ActionFn(283);
+        // Instr = "NOT" => ActionFn(282);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action283::<>(ctx, __sym0);
+        let __nt = super::__action282::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (1, 45)
     }
@@ -6368,13 +6368,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = ExprOpTok, Operand => ActionFn(284);
+        // Instr = ExprOpTok, Operand => ActionFn(283);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant57(__symbols);
         let __sym0 = __pop_Variant6(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action284::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action283::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (2, 45)
     }
@@ -6387,7 +6387,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = ExprOpTok, Operand, ",", Comma1<Operand> => ActionFn(285);
+        // Instr = ExprOpTok, Operand, ",", Comma1<Operand> => ActionFn(284);
         assert!(__symbols.len() >= 4);
         let __sym3 = __pop_Variant30(__symbols);
         let __sym2 = __pop_Variant0(__symbols);
@@ -6395,7 +6395,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant6(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym3.2.clone();
-        let __nt = super::__action285::<>(ctx, __sym0, __sym1, __sym2, __sym3);
+        let __nt = super::__action284::<>(ctx, __sym0, __sym1, __sym2, __sym3);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (4, 45)
     }
@@ -6408,7 +6408,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = ExprOpTok, "(", Opt<Operand>, Nl, Lines, ")" => ActionFn(286);
+        // Instr = ExprOpTok, "(", Opt<Operand>, Nl, Lines, ")" => ActionFn(285);
         assert!(__symbols.len() >= 6);
         let __sym5 = __pop_Variant0(__symbols);
         let __sym4 = __pop_Variant19(__symbols);
@@ -6418,7 +6418,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant6(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym5.2.clone();
-        let __nt = super::__action286::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
+        let __nt = super::__action285::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (6, 45)
     }
@@ -6431,13 +6431,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = Jmp, Name => ActionFn(287);
+        // Instr = Jmp, Name => ActionFn(286);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant18(__symbols);
         let __sym0 = __pop_Variant7(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action287::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action286::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (2, 45)
     }
@@ -6450,14 +6450,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = Cal, VarRef, ParenArgs => ActionFn(345);
+        // Instr = Cal, VarRef, ParenArgs => ActionFn(343);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant64(__symbols);
         let __sym1 = __pop_Variant38(__symbols);
         let __sym0 = __pop_Variant7(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action345::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action343::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (3, 45)
     }
@@ -6470,13 +6470,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = Cal, VarRef => ActionFn(346);
+        // Instr = Cal, VarRef => ActionFn(344);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant38(__symbols);
         let __sym0 = __pop_Variant7(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action346::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action344::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (2, 45)
     }
@@ -6489,11 +6489,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = Ret => ActionFn(289);
+        // Instr = Ret => ActionFn(288);
         let __sym0 = __pop_Variant7(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action289::<>(ctx, __sym0);
+        let __nt = super::__action288::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (1, 45)
     }
@@ -6506,13 +6506,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = FbIn, Operand => ActionFn(290);
+        // Instr = FbIn, Operand => ActionFn(289);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant57(__symbols);
         let __sym0 = __pop_Variant8(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action290::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action289::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (2, 45)
     }
@@ -6525,13 +6525,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = Name, Comma1<Operand> => ActionFn(327);
+        // Instr = Name, Comma1<Operand> => ActionFn(325);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant30(__symbols);
         let __sym0 = __pop_Variant18(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action327::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action325::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (2, 45)
     }
@@ -6544,11 +6544,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = Name => ActionFn(328);
+        // Instr = Name => ActionFn(326);
         let __sym0 = __pop_Variant18(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action328::<>(ctx, __sym0);
+        let __nt = super::__action326::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (1, 45)
     }
@@ -6561,13 +6561,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Instr = Name, ParenArgs => ActionFn(292);
+        // Instr = Name, ParenArgs => ActionFn(291);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant64(__symbols);
         let __sym0 = __pop_Variant18(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action292::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action291::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant48(__nt), __end));
         (2, 45)
     }
@@ -6631,14 +6631,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Item = Orphan, ElemList, EndOrphan => ActionFn(293);
+        // Item = Orphan, ElemList, EndOrphan => ActionFn(292);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant0(__symbols);
         let __sym1 = __pop_Variant42(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action293::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action292::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant49(__nt), __end));
         (3, 46)
     }
@@ -6651,11 +6651,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Label = LabelTok => ActionFn(294);
+        // Label = LabelTok => ActionFn(293);
         let __sym0 = __pop_Variant1(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action294::<>(ctx, __sym0);
+        let __nt = super::__action293::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant18(__nt), __end));
         (1, 47)
     }
@@ -7023,11 +7023,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Name = IdentTok => ActionFn(295);
+        // Name = IdentTok => ActionFn(294);
         let __sym0 = __pop_Variant1(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action295::<>(ctx, __sym0);
+        let __nt = super::__action294::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant18(__nt), __end));
         (1, 57)
     }
@@ -7330,14 +7330,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // ParamAssign = Name, ":=", Operand => ActionFn(296);
+        // ParamAssign = Name, ":=", Operand => ActionFn(295);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant57(__symbols);
         let __sym1 = __pop_Variant0(__symbols);
         let __sym0 = __pop_Variant18(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action296::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action295::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant63(__nt), __end));
         (3, 66)
     }
@@ -7350,14 +7350,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // ParamAssign = Name, "=>", Operand => ActionFn(297);
+        // ParamAssign = Name, "=>", Operand => ActionFn(296);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant57(__symbols);
         let __sym1 = __pop_Variant0(__symbols);
         let __sym0 = __pop_Variant18(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action297::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action296::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant63(__nt), __end));
         (3, 66)
     }
@@ -7370,7 +7370,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // ParamAssign = "NOT", Name, "=>", Operand => ActionFn(298);
+        // ParamAssign = "NOT", Name, "=>", Operand => ActionFn(297);
         assert!(__symbols.len() >= 4);
         let __sym3 = __pop_Variant57(__symbols);
         let __sym2 = __pop_Variant0(__symbols);
@@ -7378,7 +7378,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym3.2.clone();
-        let __nt = super::__action298::<>(ctx, __sym0, __sym1, __sym2, __sym3);
+        let __nt = super::__action297::<>(ctx, __sym0, __sym1, __sym2, __sym3);
         __symbols.push((__start, __Symbol::Variant63(__nt), __end));
         (4, 66)
     }
@@ -7483,7 +7483,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Pou = PouKw, Name, ":", TypeSpec, Elems, EndOfPou => ActionFn(337);
+        // Pou = PouKw, Name, ":", TypeSpec, Elems, EndOfPou => ActionFn(335);
         assert!(__symbols.len() >= 6);
         let __sym5 = __pop_Variant44(__symbols);
         let __sym4 = __pop_Variant42(__symbols);
@@ -7493,7 +7493,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant10(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym5.2.clone();
-        let __nt = super::__action337::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
+        let __nt = super::__action335::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
         __symbols.push((__start, __Symbol::Variant66(__nt), __end));
         (6, 69)
     }
@@ -7506,7 +7506,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Pou = PouKw, Name, ":", TypeSpec, Elems => ActionFn(338);
+        // Pou = PouKw, Name, ":", TypeSpec, Elems => ActionFn(336);
         assert!(__symbols.len() >= 5);
         let __sym4 = __pop_Variant42(__symbols);
         let __sym3 = __pop_Variant14(__symbols);
@@ -7515,7 +7515,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant10(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym4.2.clone();
-        let __nt = super::__action338::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4);
+        let __nt = super::__action336::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4);
         __symbols.push((__start, __Symbol::Variant66(__nt), __end));
         (5, 69)
     }
@@ -7528,7 +7528,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Pou = PouKw, Name, ":", TypeSpec, EndOfPou => ActionFn(339);
+        // Pou = PouKw, Name, ":", TypeSpec, EndOfPou => ActionFn(337);
         assert!(__symbols.len() >= 5);
         let __sym4 = __pop_Variant44(__symbols);
         let __sym3 = __pop_Variant14(__symbols);
@@ -7537,7 +7537,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant10(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym4.2.clone();
-        let __nt = super::__action339::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4);
+        let __nt = super::__action337::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4);
         __symbols.push((__start, __Symbol::Variant66(__nt), __end));
         (5, 69)
     }
@@ -7550,7 +7550,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Pou = PouKw, Name, ":", TypeSpec => ActionFn(340);
+        // Pou = PouKw, Name, ":", TypeSpec => ActionFn(338);
         assert!(__symbols.len() >= 4);
         let __sym3 = __pop_Variant14(__symbols);
         let __sym2 = __pop_Variant0(__symbols);
@@ -7558,7 +7558,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant10(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym3.2.clone();
-        let __nt = super::__action340::<>(ctx, __sym0, __sym1, __sym2, __sym3);
+        let __nt = super::__action338::<>(ctx, __sym0, __sym1, __sym2, __sym3);
         __symbols.push((__start, __Symbol::Variant66(__nt), __end));
         (4, 69)
     }
@@ -7571,7 +7571,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Pou = PouKw, Name, Elems, EndOfPou => ActionFn(341);
+        // Pou = PouKw, Name, Elems, EndOfPou => ActionFn(339);
         assert!(__symbols.len() >= 4);
         let __sym3 = __pop_Variant44(__symbols);
         let __sym2 = __pop_Variant42(__symbols);
@@ -7579,7 +7579,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant10(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym3.2.clone();
-        let __nt = super::__action341::<>(ctx, __sym0, __sym1, __sym2, __sym3);
+        let __nt = super::__action339::<>(ctx, __sym0, __sym1, __sym2, __sym3);
         __symbols.push((__start, __Symbol::Variant66(__nt), __end));
         (4, 69)
     }
@@ -7592,14 +7592,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Pou = PouKw, Name, Elems => ActionFn(342);
+        // Pou = PouKw, Name, Elems => ActionFn(340);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant42(__symbols);
         let __sym1 = __pop_Variant18(__symbols);
         let __sym0 = __pop_Variant10(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action342::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action340::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant66(__nt), __end));
         (3, 69)
     }
@@ -7612,14 +7612,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Pou = PouKw, Name, EndOfPou => ActionFn(343);
+        // Pou = PouKw, Name, EndOfPou => ActionFn(341);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant44(__symbols);
         let __sym1 = __pop_Variant18(__symbols);
         let __sym0 = __pop_Variant10(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action343::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action341::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant66(__nt), __end));
         (3, 69)
     }
@@ -7632,13 +7632,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Pou = PouKw, Name => ActionFn(344);
+        // Pou = PouKw, Name => ActionFn(342);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant18(__symbols);
         let __sym0 = __pop_Variant10(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action344::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action342::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant66(__nt), __end));
         (2, 69)
     }
@@ -7651,7 +7651,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // ProgInst = PouKw, Opt<ProgRetain>, Name, Opt<("WITH" <Name>)>, ":", Name, "(", Comma1<ParamAssign>, ")", ";" => ActionFn(301);
+        // ProgInst = PouKw, Opt<ProgRetain>, Name, Opt<("WITH" <Name>)>, ":", Name, "(", Comma1<ParamAssign>, ")", ";" => ActionFn(300);
         assert!(__symbols.len() >= 10);
         let __sym9 = __pop_Variant0(__symbols);
         let __sym8 = __pop_Variant0(__symbols);
@@ -7665,7 +7665,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant10(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym9.2.clone();
-        let __nt = super::__action301::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5, __sym6, __sym7, __sym8, __sym9);
+        let __nt = super::__action300::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5, __sym6, __sym7, __sym8, __sym9);
         __symbols.push((__start, __Symbol::Variant67(__nt), __end));
         (10, 70)
     }
@@ -7678,7 +7678,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // ProgInst = PouKw, Opt<ProgRetain>, Name, Opt<("WITH" <Name>)>, ":", Name, ";" => ActionFn(302);
+        // ProgInst = PouKw, Opt<ProgRetain>, Name, Opt<("WITH" <Name>)>, ":", Name, ";" => ActionFn(301);
         assert!(__symbols.len() >= 7);
         let __sym6 = __pop_Variant0(__symbols);
         let __sym5 = __pop_Variant18(__symbols);
@@ -7689,7 +7689,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant10(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym6.2.clone();
-        let __nt = super::__action302::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5, __sym6);
+        let __nt = super::__action301::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5, __sym6);
         __symbols.push((__start, __Symbol::Variant67(__nt), __end));
         (7, 70)
     }
@@ -7846,14 +7846,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // SubTerm = SubTerm, "*", SubAtom => ActionFn(303);
+        // SubTerm = SubTerm, "*", SubAtom => ActionFn(302);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant70(__symbols);
         let __sym1 = __pop_Variant0(__symbols);
         let __sym0 = __pop_Variant70(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action303::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action302::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant70(__nt), __end));
         (3, 75)
     }
@@ -7883,14 +7883,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Subrange = ConstExpr, "..", ConstExpr => ActionFn(304);
+        // Subrange = ConstExpr, "..", ConstExpr => ActionFn(303);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant37(__symbols);
         let __sym1 = __pop_Variant0(__symbols);
         let __sym0 = __pop_Variant37(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action304::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action303::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant71(__nt), __end));
         (3, 76)
     }
@@ -7903,14 +7903,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Subscript = Subscript, "+", SubTerm => ActionFn(305);
+        // Subscript = Subscript, "+", SubTerm => ActionFn(304);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant70(__symbols);
         let __sym1 = __pop_Variant0(__symbols);
         let __sym0 = __pop_Variant70(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action305::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action304::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant70(__nt), __end));
         (3, 77)
     }
@@ -7923,14 +7923,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Subscript = Subscript, "-", SubTerm => ActionFn(306);
+        // Subscript = Subscript, "-", SubTerm => ActionFn(305);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant70(__symbols);
         let __sym1 = __pop_Variant0(__symbols);
         let __sym0 = __pop_Variant70(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action306::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action305::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant70(__nt), __end));
         (3, 77)
     }
@@ -7960,7 +7960,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // Task = "TASK", Name, "(", Comma1<TaskParam>, ")", ";" => ActionFn(307);
+        // Task = "TASK", Name, "(", Comma1<TaskParam>, ")", ";" => ActionFn(306);
         assert!(__symbols.len() >= 6);
         let __sym5 = __pop_Variant0(__symbols);
         let __sym4 = __pop_Variant0(__symbols);
@@ -7970,7 +7970,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym5.2.clone();
-        let __nt = super::__action307::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
+        let __nt = super::__action306::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
         __symbols.push((__start, __Symbol::Variant72(__nt), __end));
         (6, 78)
     }
@@ -8003,7 +8003,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // TypeDecl = Name, ":", TypeSpec, ":=", Init, ";" => ActionFn(308);
+        // TypeDecl = Name, ":", TypeSpec, ":=", Init, ";" => ActionFn(307);
         assert!(__symbols.len() >= 6);
         let __sym5 = __pop_Variant0(__symbols);
         let __sym4 = __pop_Variant16(__symbols);
@@ -8013,7 +8013,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant18(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym5.2.clone();
-        let __nt = super::__action308::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
+        let __nt = super::__action307::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
         __symbols.push((__start, __Symbol::Variant74(__nt), __end));
         (6, 80)
     }
@@ -8026,7 +8026,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // TypeDecl = Name, ":", TypeSpec, ";" => ActionFn(309);
+        // TypeDecl = Name, ":", TypeSpec, ";" => ActionFn(308);
         assert!(__symbols.len() >= 4);
         let __sym3 = __pop_Variant0(__symbols);
         let __sym2 = __pop_Variant14(__symbols);
@@ -8034,7 +8034,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant18(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym3.2.clone();
-        let __nt = super::__action309::<>(ctx, __sym0, __sym1, __sym2, __sym3);
+        let __nt = super::__action308::<>(ctx, __sym0, __sym1, __sym2, __sym3);
         __symbols.push((__start, __Symbol::Variant74(__nt), __end));
         (4, 80)
     }
@@ -8083,7 +8083,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // TypeSpec = Name, "(", Subrange, ")" => ActionFn(310);
+        // TypeSpec = Name, "(", Subrange, ")" => ActionFn(309);
         assert!(__symbols.len() >= 4);
         let __sym3 = __pop_Variant0(__symbols);
         let __sym2 = __pop_Variant71(__symbols);
@@ -8091,7 +8091,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant18(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym3.2.clone();
-        let __nt = super::__action310::<>(ctx, __sym0, __sym1, __sym2, __sym3);
+        let __nt = super::__action309::<>(ctx, __sym0, __sym1, __sym2, __sym3);
         __symbols.push((__start, __Symbol::Variant14(__nt), __end));
         (4, 81)
     }
@@ -8104,13 +8104,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // TypeSpec = "STRING", StrLen => ActionFn(347);
+        // TypeSpec = "STRING", StrLen => ActionFn(345);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant37(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action347::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action345::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant14(__nt), __end));
         (2, 81)
     }
@@ -8123,11 +8123,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // TypeSpec = "STRING" => ActionFn(348);
+        // TypeSpec = "STRING" => ActionFn(346);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action348::<>(ctx, __sym0);
+        let __nt = super::__action346::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant14(__nt), __end));
         (1, 81)
     }
@@ -8140,13 +8140,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // TypeSpec = "WSTRING", StrLen => ActionFn(349);
+        // TypeSpec = "WSTRING", StrLen => ActionFn(347);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant37(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action349::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action347::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant14(__nt), __end));
         (2, 81)
     }
@@ -8159,11 +8159,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // TypeSpec = "WSTRING" => ActionFn(350);
+        // TypeSpec = "WSTRING" => ActionFn(348);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action350::<>(ctx, __sym0);
+        let __nt = super::__action348::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant14(__nt), __end));
         (1, 81)
     }
@@ -8176,7 +8176,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // TypeSpec = "ARRAY", "[", Comma1<Subrange>, "]", "OF", TypeSpec => ActionFn(313);
+        // TypeSpec = "ARRAY", "[", Comma1<Subrange>, "]", "OF", TypeSpec => ActionFn(312);
         assert!(__symbols.len() >= 6);
         let __sym5 = __pop_Variant14(__symbols);
         let __sym4 = __pop_Variant0(__symbols);
@@ -8186,7 +8186,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym5.2.clone();
-        let __nt = super::__action313::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
+        let __nt = super::__action312::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
         __symbols.push((__start, __Symbol::Variant14(__nt), __end));
         (6, 81)
     }
@@ -8199,14 +8199,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // TypeSpec = "(", Comma1<EnumValue>, ")" => ActionFn(314);
+        // TypeSpec = "(", Comma1<EnumValue>, ")" => ActionFn(313);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant0(__symbols);
         let __sym1 = __pop_Variant27(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action314::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action313::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant14(__nt), __end));
         (3, 81)
     }
@@ -8219,14 +8219,14 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // TypeSpec = "STRUCT", List<VarDecl>, "END_STRUCT" => ActionFn(315);
+        // TypeSpec = "STRUCT", List<VarDecl>, "END_STRUCT" => ActionFn(314);
         assert!(__symbols.len() >= 3);
         let __sym2 = __pop_Variant0(__symbols);
         let __sym1 = __pop_Variant55(__symbols);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym2.2.clone();
-        let __nt = super::__action315::<>(ctx, __sym0, __sym1, __sym2);
+        let __nt = super::__action314::<>(ctx, __sym0, __sym1, __sym2);
         __symbols.push((__start, __Symbol::Variant14(__nt), __end));
         (3, 81)
     }
@@ -8276,7 +8276,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // VarBlock = VarKw, List<VarQual>, List<VarDecl>, VarEnd => ActionFn(316);
+        // VarBlock = VarKw, List<VarQual>, List<VarDecl>, VarEnd => ActionFn(315);
         assert!(__symbols.len() >= 4);
         let __sym3 = __pop_Variant5(__symbols);
         let __sym2 = __pop_Variant55(__symbols);
@@ -8284,7 +8284,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant9(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym3.2.clone();
-        let __nt = super::__action316::<>(ctx, __sym0, __sym1, __sym2, __sym3);
+        let __nt = super::__action315::<>(ctx, __sym0, __sym1, __sym2, __sym3);
         __symbols.push((__start, __Symbol::Variant77(__nt), __end));
         (4, 84)
     }
@@ -8297,7 +8297,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // VarDecl = Comma1<Name>, Opt<("AT" <Addr>)>, ":", TypeSpec, Edge, ":=", Init, ";" => ActionFn(329);
+        // VarDecl = Comma1<Name>, Opt<("AT" <Addr>)>, ":", TypeSpec, Edge, ":=", Init, ";" => ActionFn(327);
         assert!(__symbols.len() >= 8);
         let __sym7 = __pop_Variant0(__symbols);
         let __sym6 = __pop_Variant16(__symbols);
@@ -8309,7 +8309,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant29(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym7.2.clone();
-        let __nt = super::__action329::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5, __sym6, __sym7);
+        let __nt = super::__action327::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5, __sym6, __sym7);
         __symbols.push((__start, __Symbol::Variant78(__nt), __end));
         (8, 85)
     }
@@ -8322,7 +8322,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // VarDecl = Comma1<Name>, Opt<("AT" <Addr>)>, ":", TypeSpec, ":=", Init, ";" => ActionFn(330);
+        // VarDecl = Comma1<Name>, Opt<("AT" <Addr>)>, ":", TypeSpec, ":=", Init, ";" => ActionFn(328);
         assert!(__symbols.len() >= 7);
         let __sym6 = __pop_Variant0(__symbols);
         let __sym5 = __pop_Variant16(__symbols);
@@ -8333,7 +8333,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant29(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym6.2.clone();
-        let __nt = super::__action330::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5, __sym6);
+        let __nt = super::__action328::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5, __sym6);
         __symbols.push((__start, __Symbol::Variant78(__nt), __end));
         (7, 85)
     }
@@ -8346,7 +8346,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // VarDecl = Comma1<Name>, Opt<("AT" <Addr>)>, ":", TypeSpec, Edge, ";" => ActionFn(331);
+        // VarDecl = Comma1<Name>, Opt<("AT" <Addr>)>, ":", TypeSpec, Edge, ";" => ActionFn(329);
         assert!(__symbols.len() >= 6);
         let __sym5 = __pop_Variant0(__symbols);
         let __sym4 = __pop_Variant39(__symbols);
@@ -8356,7 +8356,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant29(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym5.2.clone();
-        let __nt = super::__action331::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
+        let __nt = super::__action329::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4, __sym5);
         __symbols.push((__start, __Symbol::Variant78(__nt), __end));
         (6, 85)
     }
@@ -8369,7 +8369,7 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // VarDecl = Comma1<Name>, Opt<("AT" <Addr>)>, ":", TypeSpec, ";" => ActionFn(332);
+        // VarDecl = Comma1<Name>, Opt<("AT" <Addr>)>, ":", TypeSpec, ";" => ActionFn(330);
         assert!(__symbols.len() >= 5);
         let __sym4 = __pop_Variant0(__symbols);
         let __sym3 = __pop_Variant14(__symbols);
@@ -8378,7 +8378,7 @@ mod __parse__Unit {
         let __sym0 = __pop_Variant29(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym4.2.clone();
-        let __nt = super::__action332::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4);
+        let __nt = super::__action330::<>(ctx, __sym0, __sym1, __sym2, __sym3, __sym4);
         __symbols.push((__start, __Symbol::Variant78(__nt), __end));
         (5, 85)
     }
@@ -8444,11 +8444,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // VarQual = "CONSTANT" => ActionFn(319);
+        // VarQual = "CONSTANT" => ActionFn(318);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action319::<>(ctx, __sym0);
+        let __nt = super::__action318::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant79(__nt), __end));
         (1, 87)
     }
@@ -8461,11 +8461,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // VarQual = "RETAIN" => ActionFn(320);
+        // VarQual = "RETAIN" => ActionFn(319);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action320::<>(ctx, __sym0);
+        let __nt = super::__action319::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant79(__nt), __end));
         (1, 87)
     }
@@ -8478,11 +8478,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // VarQual = "NON_RETAIN" => ActionFn(321);
+        // VarQual = "NON_RETAIN" => ActionFn(320);
         let __sym0 = __pop_Variant0(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action321::<>(ctx, __sym0);
+        let __nt = super::__action320::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant79(__nt), __end));
         (1, 87)
     }
@@ -8495,11 +8495,11 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // VarRef = Name => ActionFn(325);
+        // VarRef = Name => ActionFn(323);
         let __sym0 = __pop_Variant18(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym0.2.clone();
-        let __nt = super::__action325::<>(ctx, __sym0);
+        let __nt = super::__action323::<>(ctx, __sym0);
         __symbols.push((__start, __Symbol::Variant38(__nt), __end));
         (1, 88)
     }
@@ -8512,13 +8512,13 @@ mod __parse__Unit {
         _: core::marker::PhantomData<(&'c ())>,
     ) -> (usize, usize)
     {
-        // VarRef = Name, Accessor+ => ActionFn(326);
+        // VarRef = Name, Accessor+ => ActionFn(324);
         assert!(__symbols.len() >= 2);
         let __sym1 = __pop_Variant23(__symbols);
         let __sym0 = __pop_Variant18(__symbols);
         let __start = __sym0.0.clone();
         let __end = __sym1.2.clone();
-        let __nt = super::__action326::<>(ctx, __sym0, __sym1);
+        let __nt = super::__action324::<>(ctx, __sym0, __sym1);
         __symbols.push((__start, __Symbol::Variant38(__nt), __end));
         (2, 88)
     }
@@ -9221,13 +9221,11 @@ fn __action47<
     'c,
 >(
     ctx: &'c mut Ctx,
-    (_, lo, _): (usize, usize, usize),
     (_, base, _): (usize, Ident, usize),
     (_, path, _): (usize, alloc::vec::Vec<Accessor>, usize),
-    (_, hi, _): (usize, usize, usize),
 ) -> VarRef
 {
-    VarRef { base, path, span: sp(lo, hi) }
+    VarRef { base, path: path.into_boxed_slice() }
 }
 
 #[allow(unused_variables)]
@@ -13643,35 +13641,6 @@ fn __action264<
 >(
     ctx: &'c mut Ctx,
     __0: (usize, Ident, usize),
-    __1: (usize, alloc::vec::Vec<Accessor>, usize),
-    __2: (usize, usize, usize),
-) -> VarRef
-{
-    let __start0 = __0.0.clone();
-    let __end0 = __0.0.clone();
-    let __temp0 = __action185(
-        ctx,
-        &__start0,
-        &__end0,
-    );
-    let __temp0 = (__start0, __temp0, __end0);
-    __action47(
-        ctx,
-        __temp0,
-        __0,
-        __1,
-        __2,
-    )
-}
-
-#[allow(unused_variables)]
-#[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
-    clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action265<
-    'c,
->(
-    ctx: &'c mut Ctx,
-    __0: (usize, Ident, usize),
     __1: (usize, Tok, usize),
     __2: (usize, VarRef, usize),
     __3: (usize, Tok, usize),
@@ -13704,7 +13673,7 @@ fn __action265<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action266<
+fn __action265<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -13731,7 +13700,7 @@ fn __action266<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action267<
+fn __action266<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -13760,7 +13729,7 @@ fn __action267<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action268<
+fn __action267<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -13789,7 +13758,7 @@ fn __action268<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action269<
+fn __action268<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -13818,7 +13787,7 @@ fn __action269<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action270<
+fn __action269<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -13851,7 +13820,7 @@ fn __action270<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action271<
+fn __action270<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -13882,7 +13851,7 @@ fn __action271<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action272<
+fn __action271<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -13919,7 +13888,7 @@ fn __action272<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action273<
+fn __action272<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -13952,7 +13921,7 @@ fn __action273<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action274<
+fn __action273<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -13977,7 +13946,7 @@ fn __action274<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action275<
+fn __action274<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14002,7 +13971,7 @@ fn __action275<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action276<
+fn __action275<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14027,7 +13996,7 @@ fn __action276<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action277<
+fn __action276<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14056,7 +14025,7 @@ fn __action277<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action278<
+fn __action277<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14085,7 +14054,7 @@ fn __action278<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action279<
+fn __action278<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14121,7 +14090,7 @@ fn __action279<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action280<
+fn __action279<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14157,7 +14126,7 @@ fn __action280<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action281<
+fn __action280<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14193,7 +14162,7 @@ fn __action281<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action282<
+fn __action281<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14229,7 +14198,7 @@ fn __action282<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action283<
+fn __action282<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14254,7 +14223,7 @@ fn __action283<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action284<
+fn __action283<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14290,7 +14259,7 @@ fn __action284<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action285<
+fn __action284<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14330,7 +14299,7 @@ fn __action285<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action286<
+fn __action285<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14374,7 +14343,7 @@ fn __action286<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action287<
+fn __action286<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14410,7 +14379,7 @@ fn __action287<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action288<
+fn __action287<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14448,7 +14417,7 @@ fn __action288<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action289<
+fn __action288<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14473,7 +14442,7 @@ fn __action289<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action290<
+fn __action289<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14509,7 +14478,7 @@ fn __action290<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action291<
+fn __action290<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14545,7 +14514,7 @@ fn __action291<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action292<
+fn __action291<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14581,7 +14550,7 @@ fn __action292<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action293<
+fn __action292<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14610,7 +14579,7 @@ fn __action293<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action294<
+fn __action293<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14635,7 +14604,7 @@ fn __action294<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action295<
+fn __action294<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14660,7 +14629,7 @@ fn __action295<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action296<
+fn __action295<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14689,7 +14658,7 @@ fn __action296<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action297<
+fn __action296<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14718,7 +14687,7 @@ fn __action297<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action298<
+fn __action297<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14749,7 +14718,7 @@ fn __action298<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action299<
+fn __action298<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14793,7 +14762,7 @@ fn __action299<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action300<
+fn __action299<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14833,7 +14802,7 @@ fn __action300<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action301<
+fn __action300<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14885,7 +14854,7 @@ fn __action301<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action302<
+fn __action301<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14931,7 +14900,7 @@ fn __action302<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action303<
+fn __action302<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14960,7 +14929,7 @@ fn __action303<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action304<
+fn __action303<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -14989,7 +14958,7 @@ fn __action304<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action305<
+fn __action304<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15018,7 +14987,7 @@ fn __action305<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action306<
+fn __action305<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15047,7 +15016,7 @@ fn __action306<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action307<
+fn __action306<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15082,7 +15051,7 @@ fn __action307<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action308<
+fn __action307<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15117,7 +15086,7 @@ fn __action308<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action309<
+fn __action308<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15148,7 +15117,7 @@ fn __action309<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action310<
+fn __action309<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15179,7 +15148,7 @@ fn __action310<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action311<
+fn __action310<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15206,7 +15175,7 @@ fn __action311<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action312<
+fn __action311<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15233,7 +15202,7 @@ fn __action312<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action313<
+fn __action312<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15268,7 +15237,7 @@ fn __action313<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action314<
+fn __action313<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15297,7 +15266,7 @@ fn __action314<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action315<
+fn __action314<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15326,7 +15295,7 @@ fn __action315<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action316<
+fn __action315<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15357,7 +15326,7 @@ fn __action316<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action317<
+fn __action316<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15396,7 +15365,7 @@ fn __action317<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action318<
+fn __action317<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15431,7 +15400,7 @@ fn __action318<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action319<
+fn __action318<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15456,7 +15425,7 @@ fn __action319<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action320<
+fn __action319<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15481,7 +15450,7 @@ fn __action320<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action321<
+fn __action320<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15506,34 +15475,7 @@ fn __action321<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action322<
-    'c,
->(
-    ctx: &'c mut Ctx,
-    __0: (usize, Ident, usize),
-    __1: (usize, alloc::vec::Vec<Accessor>, usize),
-) -> VarRef
-{
-    let __start0 = __1.2.clone();
-    let __end0 = __1.2.clone();
-    let __temp0 = __action184(
-        ctx,
-        &__start0,
-        &__end0,
-    );
-    let __temp0 = (__start0, __temp0, __end0);
-    __action264(
-        ctx,
-        __0,
-        __1,
-        __temp0,
-    )
-}
-
-#[allow(unused_variables)]
-#[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
-    clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action323<
+fn __action321<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15553,7 +15495,7 @@ fn __action323<
         __5,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action265(
+    __action264(
         ctx,
         __0,
         __1,
@@ -15568,7 +15510,7 @@ fn __action323<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action324<
+fn __action322<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15588,7 +15530,7 @@ fn __action324<
         &__end0,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action265(
+    __action264(
         ctx,
         __0,
         __1,
@@ -15603,7 +15545,7 @@ fn __action324<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action325<
+fn __action323<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15618,7 +15560,7 @@ fn __action325<
         &__end0,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action322(
+    __action47(
         ctx,
         __0,
         __temp0,
@@ -15628,7 +15570,7 @@ fn __action325<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action326<
+fn __action324<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15643,7 +15585,7 @@ fn __action326<
         __1,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action322(
+    __action47(
         ctx,
         __0,
         __temp0,
@@ -15653,7 +15595,7 @@ fn __action326<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action327<
+fn __action325<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15668,7 +15610,7 @@ fn __action327<
         __1,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action291(
+    __action290(
         ctx,
         __0,
         __temp0,
@@ -15678,7 +15620,7 @@ fn __action327<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action328<
+fn __action326<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15693,7 +15635,7 @@ fn __action328<
         &__end0,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action291(
+    __action290(
         ctx,
         __0,
         __temp0,
@@ -15703,7 +15645,7 @@ fn __action328<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action329<
+fn __action327<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15724,7 +15666,7 @@ fn __action329<
         __4,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action317(
+    __action316(
         ctx,
         __0,
         __1,
@@ -15740,7 +15682,7 @@ fn __action329<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action330<
+fn __action328<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15761,7 +15703,7 @@ fn __action330<
         &__end0,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action317(
+    __action316(
         ctx,
         __0,
         __1,
@@ -15777,7 +15719,7 @@ fn __action330<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action331<
+fn __action329<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15796,7 +15738,7 @@ fn __action331<
         __4,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action318(
+    __action317(
         ctx,
         __0,
         __1,
@@ -15810,7 +15752,7 @@ fn __action331<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action332<
+fn __action330<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15829,7 +15771,73 @@ fn __action332<
         &__end0,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action318(
+    __action317(
+        ctx,
+        __0,
+        __1,
+        __2,
+        __3,
+        __temp0,
+        __4,
+    )
+}
+
+#[allow(unused_variables)]
+#[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
+    clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
+fn __action331<
+    'c,
+>(
+    ctx: &'c mut Ctx,
+    __0: (usize, PouKind, usize),
+    __1: (usize, Ident, usize),
+    __2: (usize, Tok, usize),
+    __3: (usize, Box<TypeSpec>, usize),
+    __4: (usize, (), usize),
+    __5: (usize, Option<(PouKind, Span)>, usize),
+) -> Box<Pou>
+{
+    let __start0 = __4.0.clone();
+    let __end0 = __4.2.clone();
+    let __temp0 = __action179(
+        ctx,
+        __4,
+    );
+    let __temp0 = (__start0, __temp0, __end0);
+    __action298(
+        ctx,
+        __0,
+        __1,
+        __2,
+        __3,
+        __temp0,
+        __5,
+    )
+}
+
+#[allow(unused_variables)]
+#[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
+    clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
+fn __action332<
+    'c,
+>(
+    ctx: &'c mut Ctx,
+    __0: (usize, PouKind, usize),
+    __1: (usize, Ident, usize),
+    __2: (usize, Tok, usize),
+    __3: (usize, Box<TypeSpec>, usize),
+    __4: (usize, Option<(PouKind, Span)>, usize),
+) -> Box<Pou>
+{
+    let __start0 = __3.2.clone();
+    let __end0 = __4.0.clone();
+    let __temp0 = __action180(
+        ctx,
+        &__start0,
+        &__end0,
+    );
+    let __temp0 = (__start0, __temp0, __end0);
+    __action298(
         ctx,
         __0,
         __1,
@@ -15849,72 +15857,6 @@ fn __action333<
     ctx: &'c mut Ctx,
     __0: (usize, PouKind, usize),
     __1: (usize, Ident, usize),
-    __2: (usize, Tok, usize),
-    __3: (usize, Box<TypeSpec>, usize),
-    __4: (usize, (), usize),
-    __5: (usize, Option<(PouKind, Span)>, usize),
-) -> Box<Pou>
-{
-    let __start0 = __4.0.clone();
-    let __end0 = __4.2.clone();
-    let __temp0 = __action179(
-        ctx,
-        __4,
-    );
-    let __temp0 = (__start0, __temp0, __end0);
-    __action299(
-        ctx,
-        __0,
-        __1,
-        __2,
-        __3,
-        __temp0,
-        __5,
-    )
-}
-
-#[allow(unused_variables)]
-#[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
-    clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action334<
-    'c,
->(
-    ctx: &'c mut Ctx,
-    __0: (usize, PouKind, usize),
-    __1: (usize, Ident, usize),
-    __2: (usize, Tok, usize),
-    __3: (usize, Box<TypeSpec>, usize),
-    __4: (usize, Option<(PouKind, Span)>, usize),
-) -> Box<Pou>
-{
-    let __start0 = __3.2.clone();
-    let __end0 = __4.0.clone();
-    let __temp0 = __action180(
-        ctx,
-        &__start0,
-        &__end0,
-    );
-    let __temp0 = (__start0, __temp0, __end0);
-    __action299(
-        ctx,
-        __0,
-        __1,
-        __2,
-        __3,
-        __temp0,
-        __4,
-    )
-}
-
-#[allow(unused_variables)]
-#[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
-    clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action335<
-    'c,
->(
-    ctx: &'c mut Ctx,
-    __0: (usize, PouKind, usize),
-    __1: (usize, Ident, usize),
     __2: (usize, (), usize),
     __3: (usize, Option<(PouKind, Span)>, usize),
 ) -> Box<Pou>
@@ -15926,7 +15868,7 @@ fn __action335<
         __2,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action300(
+    __action299(
         ctx,
         __0,
         __1,
@@ -15938,7 +15880,7 @@ fn __action335<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action336<
+fn __action334<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15955,7 +15897,7 @@ fn __action336<
         &__end0,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action300(
+    __action299(
         ctx,
         __0,
         __1,
@@ -15967,7 +15909,7 @@ fn __action336<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action337<
+fn __action335<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -15986,7 +15928,7 @@ fn __action337<
         __5,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action333(
+    __action331(
         ctx,
         __0,
         __1,
@@ -16000,7 +15942,7 @@ fn __action337<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action338<
+fn __action336<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -16019,7 +15961,7 @@ fn __action338<
         &__end0,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action333(
+    __action331(
         ctx,
         __0,
         __1,
@@ -16033,7 +15975,7 @@ fn __action338<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action339<
+fn __action337<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -16051,7 +15993,7 @@ fn __action339<
         __4,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action334(
+    __action332(
         ctx,
         __0,
         __1,
@@ -16064,7 +16006,7 @@ fn __action339<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action340<
+fn __action338<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -16082,7 +16024,7 @@ fn __action340<
         &__end0,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action334(
+    __action332(
         ctx,
         __0,
         __1,
@@ -16095,7 +16037,7 @@ fn __action340<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action341<
+fn __action339<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -16112,7 +16054,7 @@ fn __action341<
         __3,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action335(
+    __action333(
         ctx,
         __0,
         __1,
@@ -16124,7 +16066,7 @@ fn __action341<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action342<
+fn __action340<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -16141,7 +16083,7 @@ fn __action342<
         &__end0,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action335(
+    __action333(
         ctx,
         __0,
         __1,
@@ -16153,7 +16095,7 @@ fn __action342<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action343<
+fn __action341<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -16169,7 +16111,7 @@ fn __action343<
         __2,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action336(
+    __action334(
         ctx,
         __0,
         __1,
@@ -16180,7 +16122,7 @@ fn __action343<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action344<
+fn __action342<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -16196,7 +16138,7 @@ fn __action344<
         &__end0,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action336(
+    __action334(
         ctx,
         __0,
         __1,
@@ -16207,7 +16149,7 @@ fn __action344<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action345<
+fn __action343<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -16223,7 +16165,7 @@ fn __action345<
         __2,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action288(
+    __action287(
         ctx,
         __0,
         __1,
@@ -16234,7 +16176,7 @@ fn __action345<
 #[allow(unused_variables)]
 #[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
     clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action346<
+fn __action344<
     'c,
 >(
     ctx: &'c mut Ctx,
@@ -16250,10 +16192,60 @@ fn __action346<
         &__end0,
     );
     let __temp0 = (__start0, __temp0, __end0);
-    __action288(
+    __action287(
         ctx,
         __0,
         __1,
+        __temp0,
+    )
+}
+
+#[allow(unused_variables)]
+#[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
+    clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
+fn __action345<
+    'c,
+>(
+    ctx: &'c mut Ctx,
+    __0: (usize, Tok, usize),
+    __1: (usize, ConstExpr, usize),
+) -> Box<TypeSpec>
+{
+    let __start0 = __1.0.clone();
+    let __end0 = __1.2.clone();
+    let __temp0 = __action145(
+        ctx,
+        __1,
+    );
+    let __temp0 = (__start0, __temp0, __end0);
+    __action310(
+        ctx,
+        __0,
+        __temp0,
+    )
+}
+
+#[allow(unused_variables)]
+#[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
+    clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
+fn __action346<
+    'c,
+>(
+    ctx: &'c mut Ctx,
+    __0: (usize, Tok, usize),
+) -> Box<TypeSpec>
+{
+    let __start0 = __0.2.clone();
+    let __end0 = __0.2.clone();
+    let __temp0 = __action146(
+        ctx,
+        &__start0,
+        &__end0,
+    );
+    let __temp0 = (__start0, __temp0, __end0);
+    __action310(
+        ctx,
+        __0,
         __temp0,
     )
 }
@@ -16302,56 +16294,6 @@ fn __action348<
     );
     let __temp0 = (__start0, __temp0, __end0);
     __action311(
-        ctx,
-        __0,
-        __temp0,
-    )
-}
-
-#[allow(unused_variables)]
-#[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
-    clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action349<
-    'c,
->(
-    ctx: &'c mut Ctx,
-    __0: (usize, Tok, usize),
-    __1: (usize, ConstExpr, usize),
-) -> Box<TypeSpec>
-{
-    let __start0 = __1.0.clone();
-    let __end0 = __1.2.clone();
-    let __temp0 = __action145(
-        ctx,
-        __1,
-    );
-    let __temp0 = (__start0, __temp0, __end0);
-    __action312(
-        ctx,
-        __0,
-        __temp0,
-    )
-}
-
-#[allow(unused_variables)]
-#[allow(clippy::too_many_arguments, clippy::needless_lifetimes,
-    clippy::just_underscores_and_digits, clippy::clone_on_copy, clippy::unit_arg)]
-fn __action350<
-    'c,
->(
-    ctx: &'c mut Ctx,
-    __0: (usize, Tok, usize),
-) -> Box<TypeSpec>
-{
-    let __start0 = __0.2.clone();
-    let __end0 = __0.2.clone();
-    let __temp0 = __action146(
-        ctx,
-        &__start0,
-        &__end0,
-    );
-    let __temp0 = (__start0, __temp0, __end0);
-    __action312(
         ctx,
         __0,
         __temp0,

@@ -86,7 +86,7 @@ pub fn err1(src: &str, code: &str, line: usize, col: usize) -> String {
 /// The name of a plain variable operand.
 pub fn name_of(o: &Operand) -> String {
     match o {
-        Operand::Var(v) if v.path.is_empty() => v.base.name.clone(),
+        Operand::Var(v) if v.path.is_empty() => v.base.name.to_string(),
         other => panic!("not a plain variable: {other:?}"),
     }
 }

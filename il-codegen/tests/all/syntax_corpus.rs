@@ -155,7 +155,7 @@ fn annex_f_stack_int() {
         .iter()
         .filter_map(|s| {
             if let Stmt::Label(l) = s {
-                Some(l.name.as_str())
+                Some(&*l.name)
             } else {
                 None
             }
@@ -222,7 +222,7 @@ fn annex_f_weigh() {
                         args: CallArgs::NonFormal(a),
                     },
                 ..
-            }) if a.is_empty() => Some(name.name.clone()),
+            }) if a.is_empty() => Some(name.name.to_string()),
             _ => None,
         })
         .collect();

@@ -32,7 +32,7 @@ fn lists_locations_edges_and_initial_values() {
     );
     let d = &b[0].decls[0];
     assert_eq!(
-        d.names.iter().map(|n| n.name.as_str()).collect::<Vec<_>>(),
+        d.names.iter().map(|n| &*n.name).collect::<Vec<_>>(),
         ["a", "b", "c"]
     );
     assert_eq!(d.edge, Some(Edge::Rising));

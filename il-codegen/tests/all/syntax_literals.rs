@@ -8,7 +8,7 @@ fn kind(text: &str) -> LitKind {
 }
 
 fn prefix(text: &str) -> Option<String> {
-    ld_lit(text).type_prefix.map(|p| p.name.clone())
+    ld_lit(text).type_prefix.map(|p| p.name.to_string())
 }
 
 #[test]
@@ -26,7 +26,7 @@ fn integers() {
 #[test]
 fn reals() {
     assert!(
-        matches!(kind("1.5"), LitKind::Real { value, ref text } if value == 1.5 && text == "1.5")
+        matches!(kind("1.5"), LitKind::Real { value, ref text } if value == 1.5 && &**text == "1.5")
     );
     assert!(matches!(kind("1.0E-3"), LitKind::Real { value, .. } if value == 0.001));
     assert!(matches!(kind("-2.5e+2"), LitKind::Real { value, .. } if value == -250.0));
@@ -145,7 +145,7 @@ fn strings() {
     assert_eq!(
         kind("''"),
         LitKind::String {
-            value: String::new(),
+            value: "".into(),
             wide: false
         }
     );

@@ -49,7 +49,7 @@ impl Builder<'_> {
         let id = self.add(
             ix,
             Symbol {
-                name: p.name.name.clone(),
+                name: p.name.name.to_string(),
                 kind: Kind::Pou(p.kind),
                 file: self.f,
                 span: self.map(p.name.span),
@@ -85,7 +85,7 @@ impl Builder<'_> {
                 let lid = self.add(
                     ix,
                     Symbol {
-                        name: l.name.clone(),
+                        name: l.name.to_string(),
                         kind: Kind::Label,
                         file: self.f,
                         span: self.map(l.span),
@@ -99,7 +99,7 @@ impl Builder<'_> {
                 labels.push(lid);
                 let span = self.map(l.span);
                 children.push(Outline {
-                    name: l.name.clone(),
+                    name: l.name.to_string(),
                     detail: Some("label".into()),
                     kind: SymbolKind::KEY,
                     span,
@@ -110,7 +110,7 @@ impl Builder<'_> {
         }
         ix.pou_labels.insert(id, labels);
         ix.files[self.f].outline.push(Outline {
-            name: p.name.name.clone(),
+            name: p.name.name.to_string(),
             detail: Some(format!("{}{ret}", p.kind.keyword())),
             kind: pou_symbol_kind(p.kind),
             span: self.map(p.span),
@@ -169,7 +169,7 @@ impl Builder<'_> {
                 let id = self.add(
                     ix,
                     Symbol {
-                        name: name.name.clone(),
+                        name: name.name.to_string(),
                         kind: Kind::Var(block.kind),
                         file: self.f,
                         span: self.map(name.span),
@@ -189,7 +189,7 @@ impl Builder<'_> {
 
     /// `name AT %IX0.0 : BOOL := TRUE;` as written.
     fn decl_line(&self, name: &ast::Ident, d: &ast::VarDecl) -> String {
-        let mut s = name.name.clone();
+        let mut s = name.name.to_string();
         if let Some(loc) = &d.location {
             s.push_str(&format!(" AT {}", self.text(loc.span)));
         }
@@ -218,7 +218,7 @@ impl Builder<'_> {
                 .map(|v| {
                     let s = &ix.symbols[v];
                     Outline {
-                        name: s.name.clone(),
+                        name: s.name.to_string(),
                         detail: s.decl.lines().nth(1).map(|l| l.trim().to_string()),
                         kind: SymbolKind::VARIABLE,
                         span: s.span,
@@ -234,7 +234,7 @@ impl Builder<'_> {
         let id = self.add(
             ix,
             Symbol {
-                name: d.name.name.clone(),
+                name: d.name.name.to_string(),
                 kind: Kind::Type,
                 file: self.f,
                 span: self.map(d.name.span),
@@ -257,7 +257,7 @@ impl Builder<'_> {
                     let fid = self.add(
                         ix,
                         Symbol {
-                            name: name.name.clone(),
+                            name: name.name.to_string(),
                             kind: Kind::Field,
                             file: self.f,
                             span,
@@ -270,7 +270,7 @@ impl Builder<'_> {
                     ix.scope.insert(key, fid);
                     ix.members.entry(id).or_default().push(fid);
                     children.push(Outline {
-                        name: name.name.clone(),
+                        name: name.name.to_string(),
                         detail: Some(self.text(fd.ty.span()).to_string()),
                         kind: SymbolKind::FIELD,
                         span,
@@ -281,7 +281,7 @@ impl Builder<'_> {
             }
         }
         ix.files[self.f].outline.push(Outline {
-            name: d.name.name.clone(),
+            name: d.name.name.to_string(),
             detail: Some("TYPE".into()),
             kind: SymbolKind::STRUCT,
             span: self.map(d.span),
@@ -294,7 +294,7 @@ impl Builder<'_> {
         let id = self.add(
             ix,
             Symbol {
-                name: c.name.name.clone(),
+                name: c.name.name.to_string(),
                 kind: Kind::Config,
                 file: self.f,
                 span: self.map(c.name.span),
@@ -320,7 +320,7 @@ impl Builder<'_> {
                     let gid = self.add(
                         ix,
                         Symbol {
-                            name: name.name.clone(),
+                            name: name.name.to_string(),
                             kind: Kind::Var(block.kind),
                             file: self.f,
                             span,
@@ -332,7 +332,7 @@ impl Builder<'_> {
                     );
                     ix.scope.insert(key, gid);
                     children.push(Outline {
-                        name: name.name.clone(),
+                        name: name.name.to_string(),
                         detail: Some(self.text(d.ty.span()).to_string()),
                         kind: SymbolKind::VARIABLE,
                         span,
@@ -343,7 +343,7 @@ impl Builder<'_> {
             }
         }
         ix.files[self.f].outline.push(Outline {
-            name: c.name.name.clone(),
+            name: c.name.name.to_string(),
             detail: Some("CONFIGURATION".into()),
             kind: SymbolKind::PACKAGE,
             span: self.map(c.span),

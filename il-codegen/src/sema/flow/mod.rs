@@ -96,7 +96,7 @@ pub(crate) fn check_pou(
             } else {
                 labels.insert(id.key(), label_spans.len());
                 label_spans.push(id.span);
-                label_names.push(id.name.clone());
+                label_names.push(id.name.to_string());
             }
         }
     }

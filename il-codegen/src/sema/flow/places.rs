@@ -60,7 +60,7 @@ impl Walk<'_, '_> {
                 Some(l) if write && l.area == ast::Area::Input => {
                     self.err(
                         NOT_WRITABLE,
-                        v.span,
+                        v.span(),
                         format!(
                             "`{}` is located at the input `{}`: the host writes it",
                             v.base, l.text
@@ -77,7 +77,7 @@ impl Walk<'_, '_> {
                 None if write && var.edge.is_some() => {
                     self.err(
                         NOT_WRITABLE,
-                        v.span,
+                        v.span(),
                         format!(
                             "`{}` is an edge input (R_EDGE/F_EDGE): it is read-only in the body",
                             v.base
@@ -107,7 +107,11 @@ impl Walk<'_, '_> {
             return None;
         };
         if write && constant {
-            self.err(NOT_WRITABLE, v.span, format!("`{}` is a CONSTANT", v.base));
+            self.err(
+                NOT_WRITABLE,
+                v.span(),
+                format!("`{}` is a CONSTANT", v.base),
+            );
             return None;
         }
         let mut range = var_range;
@@ -209,7 +213,7 @@ impl Walk<'_, '_> {
         if write && matches!(ty, Ty::Fb(_)) {
             self.err(
                 NOT_WRITABLE,
-                v.span,
+                v.span(),
                 "cannot store to a function block instance",
             );
             return None;
@@ -220,7 +224,7 @@ impl Walk<'_, '_> {
                 "`{}` is an array of more than 64 KiB: it cannot be loaded, stored or passed as a whole",
                 v.base
             );
-            if let Some(d) = self.err(TOO_LARGE, v.span, msg) {
+            if let Some(d) = self.err(TOO_LARGE, v.span(), msg) {
                 d.help = Some("use its elements (`x[i]`), in a loop".into());
             }
             return None;
@@ -243,8 +247,11 @@ impl Walk<'_, '_> {
         index: u32,
         span: Span,
     ) -> Option<(Elem, Elem)> {
-        let text = self.cx.file.snippet(v.span).to_string();
-        self.feature(crate::dialect::Feature::PartialAccess(text.clone()), v.span);
+        let text = self.cx.file.snippet(v.span()).to_string();
+        self.feature(
+            crate::dialect::Feature::PartialAccess(text.clone()),
+            v.span(),
+        );
         let part = match size {
             ast::AddrSize::Default | ast::AddrSize::X => Elem::BOOL,
             ast::AddrSize::B => Elem::BYTE,

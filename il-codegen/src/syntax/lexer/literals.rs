@@ -85,7 +85,7 @@ impl<'a> Lexer<'a> {
             match literal::parse_real(text) {
                 Ok(value) => LitKind::Real {
                     value,
-                    text: text.to_string(),
+                    text: text.into(),
                 },
                 Err(e) => {
                     let m = literal_message(e, text);
@@ -173,13 +173,19 @@ impl<'a> Lexer<'a> {
             }
         });
         match r {
-            Ok(()) => Some((LitKind::String { value, wide }, end)),
+            Ok(()) => Some((
+                LitKind::String {
+                    value: value.into(),
+                    wide,
+                },
+                end,
+            )),
             Err(e) => {
                 let m = literal_message(e, body);
                 self.diag(code::BAD_STRING, start, end, m, "in this string");
                 Some((
                     LitKind::String {
-                        value: body.to_string(),
+                        value: body.into(),
                         wide,
                     },
                     end,
