@@ -86,9 +86,7 @@ impl Machine {
                     (true, v) => stdfn::not(&self.value(f, v, ctx, line)?),
                     (false, v) => self.value(f, v, ctx, line)?,
                 };
-                // The place table is the program's, which `self` holds.
-                let prog = std::sync::Arc::clone(&self.prog);
-                let place = prog.pous[f.pou].place(*place);
+                let place = self.prog.pous[f.pou].place(*place);
                 // As the emitter: a store outside a subrange (an inline
                 // `INT (0..100)`) is skipped and recorded.
                 if let (Some(&(lo, hi)), Value::Int(x, _)) = (place.range.as_deref(), &v)

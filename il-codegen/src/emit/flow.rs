@@ -460,6 +460,30 @@ impl PouEmitter<'_> {
         }
     }
 
+    /// Whether evaluating `v` reads a place under `root`: the place read,
+    /// or a subscript of it, or the value inside a widening, a resize or a
+    /// subscript expression. A CAL sets its inputs in place only when none
+    /// reads the instance: an input set first must not change what a later
+    /// one reads (`CAL b(x := 1, y := b.x)` passes the old `b.x`).
+    fn reads_root(&self, v: &Value, root: &Root) -> bool {
+        match v {
+            Value::Cr(_) | Value::Const(_) | Value::Saved(_) => false,
+            Value::Widen(b) => self.reads_root(&b.0, root),
+            Value::Resized(b) => self.reads_root(&b.0, root),
+            Value::Arith(a) => self.reads_root(&a.lhs, root) || self.reads_root(&a.rhs, root),
+            Value::Read(q) => {
+                let q = self.pou.place(*q);
+                q.root == *root
+                    || q.path.iter().any(|e| match e {
+                        PathElem::Index { subs, .. } => {
+                            subs.iter().any(|s| self.reads_root(s, root))
+                        }
+                        PathElem::Field(_) | PathElem::Part { .. } => false,
+                    })
+            }
+        }
+    }
+
     fn stmt(&self, s: &Stmt, pos: usize, mode: &Mode) -> String {
         let line = s.line;
         match &s.op {
@@ -558,9 +582,7 @@ impl PouEmitter<'_> {
                     .path
                     .iter()
                     .any(|e| matches!(e, PathElem::Index { .. }))
-                    && !inputs
-                        .iter()
-                        .any(|(_, v)| matches!(v, Value::Read(q) if self.pou.place(*q).root == inst.root))
+                    && !inputs.iter().any(|(_, v)| self.reads_root(v, &inst.root))
                 {
                     let path = self.simple_path(inst);
                     let sets = inputs.iter().map(|(n, v)| {

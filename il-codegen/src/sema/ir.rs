@@ -474,10 +474,11 @@ impl Place {
     }
 }
 
-/// Something to read. Two words: the values that need more (a place, a
-/// widening, an index expression) are boxed, and the CR and saved slots are
-/// named by index, their types kept once per POU ([`CheckedPou::cr_types`],
-/// [`CheckedPou::save_types`]): an instruction holds up to three values, and
+/// Something to read. Two words: the rare values that need more (a
+/// widening, a resized string, a subscript expression) are boxed, and the
+/// CR, the saved slots and the places read are named by index into tables
+/// of the POU ([`CheckedPou::cr_types`], [`CheckedPou::save_types`],
+/// [`CheckedPou::places`]): an instruction holds up to three values, and
 /// with a type inline every value (so every statement) was half as large
 /// again.
 #[derive(Clone, Debug, PartialEq)]
