@@ -119,16 +119,18 @@ impl CheckedPou {
         &self.places[i as usize]
     }
 
-    /// The type of `v`.
-    pub fn value_ty(&self, v: &Value) -> Ty {
+    /// The elementary type of `v` (`None` for strings, enumerations and
+    /// the other types): what an index or an operator needs, without
+    /// cloning a type.
+    pub fn value_elem(&self, v: &Value) -> Option<Elem> {
         match v {
-            Value::Cr(i) => self.cr_ty(*i).clone(),
-            Value::Saved(i) => self.saved_ty(*i).clone(),
-            Value::Const(c) => c.ty(),
-            Value::Read(i) => self.place(*i).ty.clone(),
-            Value::Widen(b) => Ty::Elem(b.1.to),
-            Value::Resized(r) => r.1.clone(),
-            Value::Arith(_) => Ty::Elem(Elem::LINT),
+            Value::Cr(i) => self.cr_ty(*i).elem(),
+            Value::Saved(i) => self.saved_ty(*i).elem(),
+            Value::Const(c) => c.elem(),
+            Value::Read(i) => self.place(*i).ty.elem(),
+            Value::Widen(b) => Some(b.1.to),
+            Value::Resized(r) => r.1.elem(),
+            Value::Arith(_) => Some(Elem::LINT),
         }
     }
 }
@@ -352,6 +354,15 @@ impl Const {
 }
 
 impl Const {
+    /// The constant's elementary type (`None` for strings and enumerations).
+    pub fn elem(&self) -> Option<Elem> {
+        match self {
+            Const::Bool(_) => Some(Elem::BOOL),
+            Const::Int(_, e) | Const::Real(_, e) | Const::Time(_, e) => Some(*e),
+            Const::Str(_) | Const::Enum(_) => None,
+        }
+    }
+
     /// The constant's type.
     pub fn ty(&self) -> Ty {
         match self {

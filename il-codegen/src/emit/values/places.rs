@@ -139,12 +139,11 @@ impl PouEmitter<'_> {
                             continue;
                         }
                         let ix = if self.inline_subscript(s, p, matches.is_empty()) {
-                            index_usize(self.value(s, line), self.pou.value_ty(s).elem(), lo)
+                            index_usize(self.value(s, line), self.pou.value_elem(s), lo)
                         } else {
                             let id = format!("__ix{n_lets}");
                             n_lets += 1;
-                            let v =
-                                index_usize(self.value(s, line), self.pou.value_ty(s).elem(), lo);
+                            let v = index_usize(self.value(s, line), self.pou.value_elem(s), lo);
                             lets.push_str(&format!("let {id}: usize = {v};"));
                             id
                         };

@@ -275,22 +275,20 @@ impl Walk<'_, '_> {
                 .iter()
                 .filter(|o| o.kind == ast::VarKind::Output)
                 .position(|o| o.name == "ENO");
-            {
-                let cr = self.cr_index(&ret);
-                self.push(Op::SetCr {
-                    cr,
-                    expr: Expr::CallUser(Box::new(crate::sema::ir::UserCall {
-                        name: fname,
-                        inouts,
-                        args,
-                        out_types,
-                        outputs,
-                        en: en.clone(),
-                        eno,
-                        ret: ret.clone(),
-                    })),
-                })
-            };
+            let cr = self.cr_index(&ret);
+            self.push(Op::SetCr {
+                cr,
+                expr: Expr::CallUser(Box::new(crate::sema::ir::UserCall {
+                    name: fname,
+                    inouts,
+                    args,
+                    out_types,
+                    outputs,
+                    en: en.clone(),
+                    eno,
+                    ret: ret.clone(),
+                })),
+            });
             for (place, negate) in eno_plain {
                 let value = en.clone().unwrap_or(Value::Const(Const::Bool(true)));
                 let place = self.place_id(place);
@@ -456,20 +454,18 @@ impl Walk<'_, '_> {
         en: Option<Value>,
     ) -> Ty {
         let ret = res.ret.clone();
-        {
-            let cr = self.cr_index(&ret);
-            self.push(Op::SetCr {
-                cr,
-                expr: Expr::CallStd(Box::new(crate::sema::ir::StdFnCall {
-                    en,
-                    call: res.call,
-                    args: values,
-                    arg_types: res.params,
-                    ret: res.ret,
-                    fault: res.fault,
-                })),
-            })
-        };
+        let cr = self.cr_index(&ret);
+        self.push(Op::SetCr {
+            cr,
+            expr: Expr::CallStd(Box::new(crate::sema::ir::StdFnCall {
+                en,
+                call: res.call,
+                args: values,
+                arg_types: res.params,
+                ret: res.ret,
+                fault: res.fault,
+            })),
+        });
         ret
     }
 

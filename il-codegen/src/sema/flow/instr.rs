@@ -234,13 +234,11 @@ impl Walk<'_, '_> {
                 };
                 match arg {
                     Arg::Typed(v, t) if t.is_logic() => {
-                        {
-                            let cr = self.cr_index(&t);
-                            self.push(Op::SetCr {
-                                cr,
-                                expr: Expr::Not(v),
-                            })
-                        };
+                        let cr = self.cr_index(&t);
+                        self.push(Op::SetCr {
+                            cr,
+                            expr: Expr::Not(v),
+                        });
                         Cr::Val(t)
                     }
                     Arg::Typed(_, t) => {
@@ -483,10 +481,8 @@ impl Walk<'_, '_> {
                     return Cr::Val(t);
                 }
                 let expr = if negate { Expr::Not(v) } else { Expr::Value(v) };
-                {
-                    let cr = self.cr_index(&t);
-                    self.push(Op::SetCr { cr, expr })
-                };
+                let cr = self.cr_index(&t);
+                self.push(Op::SetCr { cr, expr });
                 Cr::Val(t)
             }
         }

@@ -31,13 +31,11 @@ impl Walk<'_, '_> {
             return match fold(bop, negate, a, b) {
                 Ok(Folded::Lit(l)) => Cr::Lit(l, sa.to(span)),
                 Ok(Folded::Bool(v)) => {
-                    {
-                        let cr = self.cr_index(&Ty::BOOL);
-                        self.push(Op::SetCr {
-                            cr,
-                            expr: Expr::Value(Value::Const(Const::Bool(v))),
-                        })
-                    };
+                    let cr = self.cr_index(&Ty::BOOL);
+                    self.push(Op::SetCr {
+                        cr,
+                        expr: Expr::Value(Value::Const(Const::Bool(v))),
+                    });
                     Cr::Val(Ty::BOOL)
                 }
                 Err(m) => {
@@ -77,19 +75,17 @@ impl Walk<'_, '_> {
                     return bad;
                 }
             };
-            {
-                let cr = self.cr_index(&Ty::Elem(*te));
-                self.push(Op::SetCr {
-                    cr,
-                    expr: Expr::TimeScale {
-                        div: bop == BinOp::Div,
-                        time: *te,
-                        lhs: lv.clone(),
-                        num: ne,
-                        rhs: rv,
-                    },
-                })
-            };
+            let cr = self.cr_index(&Ty::Elem(*te));
+            self.push(Op::SetCr {
+                cr,
+                expr: Expr::TimeScale {
+                    div: bop == BinOp::Div,
+                    time: *te,
+                    lhs: lv.clone(),
+                    num: ne,
+                    rhs: rv,
+                },
+            });
             return Cr::Val(Ty::Elem(*te));
         }
         // A typed literal of another type meets the CR like a typed value
@@ -143,24 +139,19 @@ impl Walk<'_, '_> {
             self.err(BAD_OPERATOR_TYPE, span, m);
             return bad;
         }
-        let res = if op.is_compare() {
-            Ty::BOOL
-        } else {
-            ty.clone()
-        };
-        {
-            let cr = self.cr_index(&res);
-            self.push(Op::SetCr {
-                cr,
-                expr: Expr::Bin {
-                    op: bop,
-                    elem: ty.elem(),
-                    lhs: lv,
-                    rhs: rv,
-                    negate_rhs: negate,
-                },
-            })
-        };
+        let elem = ty.elem();
+        let res = if op.is_compare() { Ty::BOOL } else { ty };
+        let cr = self.cr_index(&res);
+        self.push(Op::SetCr {
+            cr,
+            expr: Expr::Bin {
+                op: bop,
+                elem,
+                lhs: lv,
+                rhs: rv,
+                negate_rhs: negate,
+            },
+        });
         Cr::Val(res)
     }
 }
