@@ -312,18 +312,29 @@ pub fn limit(diags: &mut Vec<Diagnostic>) {
         cut_errors += rest.iter().filter(|d| d.is_error()).count();
     }
     let Some(at) = at else { return };
-    let message =
-        format!("{cut} more diagnostics in this file are not shown ({cut_errors} of them errors)");
-    let mut d = if cut_errors > 0 {
-        Diagnostic::error(too_many, at, message)
-    } else {
-        Diagnostic::warning(too_many, at, message)
+    diags.push(Diagnostic::not_shown(at, cut, cut_errors));
+}
+
+impl Diagnostic {
+    /// `cut` diagnostics (`cut_errors` of them errors) from `at` on are
+    /// not shown: what [`limit`] leaves at the end of a cut list, and what
+    /// a stage that stops keeping diagnostics early reports instead of
+    /// them (it carries the counts, which [`limit`] adds up).
+    pub(crate) fn not_shown(at: Span, cut: usize, cut_errors: usize) -> Diagnostic {
+        let message = format!(
+            "{cut} more diagnostics in this file are not shown ({cut_errors} of them errors)"
+        );
+        let mut d = if cut_errors > 0 {
+            Diagnostic::error(codes::TOO_MANY, at, message)
+        } else {
+            Diagnostic::warning(codes::TOO_MANY, at, message)
+        }
+        .with_help(format!(
+            "only the first {MAX_PER_FILE} are listed; fix those first"
+        ));
+        d.cut = (cut, cut_errors);
+        d
     }
-    .with_help(format!(
-        "only the first {MAX_PER_FILE} are listed; fix those first"
-    ));
-    d.cut = (cut, cut_errors);
-    diags.push(d);
 }
 
 /// True when any diagnostic is an error.

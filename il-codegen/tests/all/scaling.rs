@@ -202,6 +202,31 @@ fn long_lines() {
     );
 }
 
+/// Peak memory of a line of 16,000 lexer errors: the lexer keeps only the
+/// diagnostics a file can show (316 bytes per input byte when it held them
+/// all, and once more when the file was lexed again for the parse errors'
+/// messages; 54 with the first 200 kept). What is left is the tokens: the
+/// parser's error recovery holds the line's, and the messages' second lex
+/// all of them.
+#[test]
+fn lexer_errors_hold_bounded_memory() {
+    const BOUND: f64 = 80.0;
+    let files = one(
+        "t.il",
+        format!(
+            "PROGRAM P\nVAR x : INT; END_VAR\n    LD x {}\nEND_PROGRAM\n",
+            "# ".repeat(16_000)
+        ),
+    );
+    let bytes: usize = files.iter().map(|f| f.text.len()).sum();
+    let per_byte = front(&files).peak as f64 / bytes as f64;
+    println!("a line of lexer errors: {per_byte:.1} peak bytes per input byte");
+    assert!(
+        per_byte < BOUND,
+        "{per_byte:.0} bytes per input byte (bound {BOUND})"
+    );
+}
+
 #[test]
 fn long_names() {
     // 300 variables whose names are n characters long (up to the limit of 255).

@@ -436,6 +436,24 @@ fn large_inputs_take_linear_time() {
 }
 
 #[test]
+fn lexer_errors_past_the_limit_are_counted_not_kept() {
+    // 20,000 stray characters on one line: the lexer keeps the first 200
+    // of its diagnostics and counts the rest, so the file shows the same
+    // list and the same count as when every one was held (16,000 of them
+    // on one line were 5.5 MB, twice).
+    let f = SourceFile::new("t.il", prog(&format!("LD x {}\n", "# ".repeat(20_000))));
+    let (_, d) = parse(&f);
+    assert_eq!(d.len(), 201);
+    assert!(d[..200].iter().all(|d| d.code != "IL0032"));
+    assert_eq!(d[200].code, "IL0032");
+    assert!(
+        d[200].message.starts_with("19800 more diagnostics") && d[200].is_error(),
+        "{}",
+        d[200].message
+    );
+}
+
+#[test]
 fn pathological_nesting_does_not_overflow() {
     // Deep deferred parentheses, argument lists and declarations.
     let cases = [

@@ -14,7 +14,7 @@
 //! parser must not accept it, a [`Tok::Error`] token. It runs in linear time.
 
 use crate::ast::*;
-use crate::diag::Diagnostic;
+use crate::diag::{Diagnostic, MAX_PER_FILE};
 use std::collections::VecDeque;
 
 /// The longest name, in characters (IL0034).
@@ -80,7 +80,16 @@ pub struct Lexer<'a> {
     done: bool,
     /// The last `VAR...` keyword (the block a missing END_VAR leaves open).
     last_var: Option<Span>,
+    /// At most [`MAX_PER_FILE`] diagnostics: the first ones by position
+    /// (the lexer reports in order), the only ones a file shows.
     diags: Vec<Diagnostic>,
+    /// The diagnostics past those: counted (all, errors) with the span of
+    /// the first, for the "not shown" note. A line of 16,000 stray
+    /// characters held 16,000 diagnostics, twice (see `syntax::parse_std`).
+    dropped: (usize, usize, Option<Span>),
+    /// Where a diagnostic that is not kept is built (its callers may add a
+    /// help or a label to what [`Lexer::diag`] returns).
+    scratch: Diagnostic,
     /// Pragmas are errors under the 2nd edition.
     standard: crate::dialect::Standard,
     /// `{extern}` pragmas, which mark the next FUNCTION as a host function.
@@ -107,7 +116,7 @@ pub fn lex(src: &str) -> (Vec<Spanned>, Vec<Diagnostic>) {
 pub fn lex_std(src: &str, standard: crate::dialect::Standard) -> (Vec<Spanned>, Vec<Diagnostic>) {
     let mut lx = Lexer::new(src, standard);
     let toks = lx.by_ref().collect();
-    (toks, lx.diags)
+    (toks, lx.take_diags())
 }
 
 /// Tokens as the parser takes them, one at a time: the whole token list of
@@ -147,6 +156,8 @@ impl<'a> Lexer<'a> {
             done: false,
             last_var: None,
             diags: Vec::new(),
+            dropped: (0, 0, None),
+            scratch: Diagnostic::error("", Span::default(), ""),
             standard,
             host_marks: Vec::new(),
         };
@@ -159,8 +170,31 @@ impl<'a> Lexer<'a> {
     /// The lexer's diagnostics and the spans of the `{extern}` pragmas (the
     /// only pragma with a meaning: the FUNCTION after it is the host's, see
     /// `syntax::host`), once every token was taken.
-    pub fn finish_marked(self) -> (Vec<Diagnostic>, Vec<Span>) {
-        (self.diags, self.host_marks)
+    pub fn finish_marked(mut self) -> (Vec<Diagnostic>, Vec<Span>) {
+        (self.take_diags(), std::mem::take(&mut self.host_marks))
+    }
+
+    /// The diagnostics kept, and a "not shown" note for those that were not.
+    fn take_diags(&mut self) -> Vec<Diagnostic> {
+        let mut diags = std::mem::take(&mut self.diags);
+        if let (cut, cut_errors, Some(at)) = self.dropped {
+            diags.push(Diagnostic::not_shown(at, cut, cut_errors));
+        }
+        diags
+    }
+
+    /// Keep `d` if it is among the first [`MAX_PER_FILE`], else count it;
+    /// either way the diagnostic to add to.
+    fn record(&mut self, d: Diagnostic) -> &mut Diagnostic {
+        if self.diags.len() < MAX_PER_FILE {
+            self.diags.push(d);
+            return self.diags.last_mut().expect("just pushed");
+        }
+        self.dropped.0 += 1;
+        self.dropped.1 += usize::from(d.is_error());
+        self.dropped.2.get_or_insert(d.span);
+        self.scratch = d;
+        &mut self.scratch
     }
 }
 
@@ -193,9 +227,7 @@ impl<'a> Lexer<'a> {
         msg: impl Into<String>,
         label: &str,
     ) -> &mut Diagnostic {
-        self.diags
-            .push(Diagnostic::error(code, span(lo, hi), msg).with_label(label));
-        self.diags.last_mut().expect("just pushed")
+        self.record(Diagnostic::error(code, span(lo, hi), msg).with_label(label))
     }
 
     fn last_tok(&self) -> Option<&Tok> {
@@ -306,7 +338,7 @@ impl<'a> Lexer<'a> {
                         .standard
                         .refuse(crate::dialect::Feature::Pragma, span(start, end))
                     {
-                        self.diags.push(d);
+                        self.record(d);
                     }
                     if let Some(i) = self.src[start..end].find('\n') {
                         nl.get_or_insert(start + i);
@@ -439,7 +471,7 @@ impl<'a> Lexer<'a> {
 
     fn missing_end_var(&mut self, at: usize) {
         let open = self.last_var.unwrap_or(span(at, at));
-        self.diags.push(
+        self.record(
             Diagnostic::error(code::MISSING_END_VAR, span(at, at), "missing END_VAR")
                 .with_label("the declarations should end before this")
                 .with_secondary(open, "this block is not closed"),
