@@ -104,6 +104,14 @@ pub fn check_all(
     }
     recursion::check_recursion(&mut cxs, &env, &asts);
     nesting::check_nesting(&mut cxs, &env, &asts);
+    // Nothing reads the signatures any more: each checked POU takes its
+    // variables from its own (a checked POU is pushed only for the
+    // signature its name finds).
+    for p in programs.iter_mut().flat_map(|p| &mut p.pous) {
+        if let Some(sig) = env.pous.get_mut(&p.name.to_ascii_uppercase()) {
+            p.vars = std::mem::take(&mut sig.vars);
+        }
+    }
     (programs, cxs.into_iter().map(|c| c.diags).collect())
 }
 

@@ -209,7 +209,9 @@ pub(crate) fn check_pou(
     Some(CheckedPou {
         kind: pou.kind,
         name: sig.name.clone(),
-        vars: sig.vars.clone(),
+        // Taken from the signature at the end of `check_all` (held
+        // twice, they were a fifth of a program of small POUs).
+        vars: Vec::new(),
         ret: sig.ret.clone(),
         body: w.out,
         label_count: n,
@@ -259,7 +261,9 @@ fn host_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou, sig: &PouSig) -> CheckedPou 
     CheckedPou {
         kind: pou.kind,
         name: sig.name.clone(),
-        vars: sig.vars.clone(),
+        // Taken from the signature at the end of `check_all` (held
+        // twice, they were a fifth of a program of small POUs).
+        vars: Vec::new(),
         ret: sig.ret.clone(),
         body: Vec::new(),
         places: Vec::new(),
