@@ -299,6 +299,17 @@ fn output_size(body: &[ast::Stmt]) -> (usize, usize) {
 }
 
 /// The CR after a label, from the CR on every edge into it.
+/// Add an edge into a label. Most labels have one or two (the fall-through
+/// and a jump): a first push of `Vec` reserved room for four, half the
+/// checker's memory per label beside the IR (edges are kept across rounds,
+/// cleared but not freed).
+fn push_edge(edges: &mut Vec<(Span, Class, u32)>, e: (Span, Class, u32)) {
+    if edges.capacity() == 0 {
+        edges.reserve_exact(2);
+    }
+    edges.push(e);
+}
+
 fn join(edges: &[(Span, Class, u32)]) -> Cr {
     let Some((_, first, _)) = edges.first() else {
         return Cr::Dead;
@@ -657,9 +668,9 @@ impl Walk<'_, '_> {
             Cr::Val(t) => Class::Val(t.clone()),
         };
         if self.pos > self.label_pos[l] {
-            self.back_now[l].push((span, class.clone(), self.line));
+            push_edge(&mut self.back_now[l], (span, class.clone(), self.line));
         }
-        self.edges[l].push((span, class, self.line));
+        push_edge(&mut self.edges[l], (span, class, self.line));
         if let (Cr::Lit(lit, lspan), Cr::Val(t)) = (cr, &self.label_in[l].clone())
             && !matches!(lit, LitClass::Pending(_))
         {
