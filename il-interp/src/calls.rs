@@ -167,11 +167,8 @@ impl Machine {
             _ => Vec::new(),
         };
         names.extend(externals.iter().map(|(e, _)| e.clone()));
-        let mut refs = Vec::with_capacity(places.len());
-        for (n, p) in names.iter().zip(&places) {
-            refs.push((n.clone(), self.read(f, p, ctx, line)?));
-        }
-        let back = self.call_fb_at(f, inst, ins, refs, ctx, line)?;
+        let refs: Vec<(String, &Place)> = names.into_iter().zip(&places).collect();
+        let back = self.call_fb_at(f, inst, ins, &refs, ctx, line)?;
         for (p, v) in places.iter().zip(back) {
             self.write(f, p, v, ctx, line)?;
         }
@@ -188,23 +185,25 @@ impl Machine {
         Ok(())
     }
 
-    /// `CAL inst(inputs)`: set the inputs, then call (a bad subscript faults and skips the call).
+    /// `CAL inst(inputs)`: set the inputs, bind the in-outs (`refs`: each
+    /// one's name and the caller's place), then call; the values to copy
+    /// back into those places (none when a bad subscript faults and skips
+    /// the call).
     pub(crate) fn call_fb_at(
         &mut self,
         f: &mut Frame,
         inst: &Place,
         ins: Vec<(String, Value)>,
-        refs: Vec<(String, Value)>,
+        refs: &[(String, &Place)],
         ctx: &mut Cycle,
         line: u32,
     ) -> Result<Vec<Value>, String> {
         let (steps, ok) = self.steps(f, inst, ctx, line)?;
-        // The values to copy back (unchanged if the call does not happen).
-        let mut back: Vec<Value> = refs.iter().map(|(_, v)| v.clone()).collect();
         if !ok {
             self.fault(ctx, f, FaultKind::IndexOutOfRange, line);
-            return Ok(back);
+            return Ok(Vec::new());
         }
+        let mut back = Vec::with_capacity(refs.len());
         let mut b = match self.read_at(self_root(f, &inst.root)?, &steps) {
             Some(v) => v,
             None => return Err("internal: FB instance not found".into()),
@@ -219,18 +218,31 @@ impl Machine {
                 fb.call(ctx);
             }
             Value::Fb(i) => {
-                let mut ref_idx = Vec::with_capacity(refs.len());
-                for (n, v) in ins.into_iter().chain(refs) {
+                for (n, v) in ins {
                     let k = find_var(&self.prog.pous[i.pou], &n)
                         .ok_or_else(|| format!("internal: no input {n}"))?;
                     i.vars[k] = v;
+                }
+                // The in-outs are read with the inputs set, as generated
+                // code binds them: one bound to a member of the instance
+                // itself (`CAL b(x := i, io := b.x)`) sees the input.
+                if !refs.is_empty() {
+                    let mut root = std::mem::replace(self_root(f, &inst.root)?, Value::Bool(false));
+                    let done = self.write_at(&mut root, &steps, Value::Fb(i.clone()));
+                    *self_root(f, &inst.root)? = root;
+                    if !done {
+                        return Err("internal: cannot store the instance".into());
+                    }
+                }
+                let mut ref_idx = Vec::with_capacity(refs.len());
+                for (n, p) in refs {
+                    let k = find_var(&self.prog.pous[i.pou], n)
+                        .ok_or_else(|| format!("internal: no in-out {n}"))?;
+                    i.vars[k] = self.read(f, p, ctx, line)?;
                     ref_idx.push(k);
                 }
                 self.call_instance(i, ctx)?;
-                let skip = ref_idx.len() - back.len();
-                for (slot, k) in back.iter_mut().zip(&ref_idx[skip..]) {
-                    *slot = i.vars[*k].clone();
-                }
+                back.extend(ref_idx.iter().map(|&k| i.vars[k].clone()));
             }
             _ => return Err("internal: CAL of a non-instance".into()),
         }
