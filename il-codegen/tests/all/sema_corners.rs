@@ -229,3 +229,23 @@ fn parentheses_share_a_save_slot_per_depth_and_type() {
         .collect();
     assert_eq!(slots, [0, 1, 0, 1, 2, 0]);
 }
+
+/// The place table keeps a place without subscripts once (`LD a`, `ST a`,
+/// `AND fb.Q` twice), and a place with subscripts once per use.
+#[test]
+fn place_table_shares_places_without_subscripts() {
+    let src = "PROGRAM P\nVAR a, b : BOOL; t : TON; arr : ARRAY[0..3] OF BOOL; i : INT; END_VAR\n\
+        LD a\nAND t.Q\nST a\nLD t.Q\nAND arr[i]\nOR arr[i]\nST b\nLD a\nST b\nEND_PROGRAM\n";
+    let checked = il_codegen::Program::new()
+        .il(SourceFile::new("t.il", src))
+        .check();
+    assert!(!checked.has_errors(), "{:?}", checked.diagnostics());
+    let pou = &checked.ir().unwrap()[0].pous[0];
+    // a, t.Q, b, and arr[i] twice (its subscript `i` is one more).
+    let names: Vec<String> = pou
+        .places
+        .iter()
+        .map(|p| format!("{:?}{}", p.root, p.path.len()))
+        .collect();
+    assert_eq!(pou.places.len(), 6, "{names:?}");
+}

@@ -441,9 +441,9 @@ struct Walk<'a, 'c> {
     col: u32,
     addresses: Vec<ir::Loc>,
     /// The body's place table, and the index of each place without
-    /// subscripts in it ([`place_table`]).
+    /// subscripts in it by a hash of its root and steps ([`place_table`]).
     places: Vec<Place>,
-    place_ids: super::hash::FxMap<place_table::PlaceKey, u32>,
+    place_ids: super::hash::FxMap<u64, u32>,
 }
 
 impl Walk<'_, '_> {

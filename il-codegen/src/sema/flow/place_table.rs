@@ -3,57 +3,38 @@
 //! however often the body uses it.
 
 use super::*;
-use crate::sema::ir::{PathElem, Root};
+use std::hash::{Hash, Hasher};
 
-/// What makes two places without subscripts the same place (the root and
-/// the steps decide the type and the range too).
-#[derive(PartialEq, Eq, Hash)]
-pub(super) struct PlaceKey {
-    root: RootKey,
-    path: Vec<StepKey>,
-}
-
-#[derive(PartialEq, Eq, Hash)]
-enum RootKey {
-    Var(usize),
-    Ret,
-}
-
-#[derive(PartialEq, Eq, Hash)]
-enum StepKey {
-    Field(String),
-    Part(Elem, u32),
-}
-
-impl PlaceKey {
-    /// The key of `p`; `None` for a place with subscripts (their values
-    /// may differ between uses) or of the process image (rare).
-    fn of(p: &Place) -> Option<PlaceKey> {
-        let root = match p.root {
-            Root::Var(i) => RootKey::Var(i),
-            Root::Ret => RootKey::Ret,
-            Root::Addr(_) => return None,
-        };
-        let path = p
-            .path
-            .iter()
-            .map(|e| match e {
-                PathElem::Field(f) => Some(StepKey::Field(f.clone())),
-                PathElem::Part { part, index, .. } => Some(StepKey::Part(*part, *index)),
-                PathElem::Index { .. } => None,
-            })
-            .collect::<Option<Vec<_>>>()?;
-        Some(PlaceKey { root, path })
+/// A hash of what makes a place without subscripts itself (its root and
+/// steps; they decide its type and range), computed without allocating:
+/// the lookup runs for every operand of every round. `None` for a place
+/// with subscripts (their values may differ between uses) or of the
+/// process image (rare): those are not shared.
+fn key(p: &Place) -> Option<u64> {
+    let mut h = super::super::hash::FxHasher::default();
+    match p.root {
+        Root::Var(i) => i.hash(&mut h),
+        Root::Ret => usize::MAX.hash(&mut h),
+        Root::Addr(_) => return None,
     }
+    for e in &p.path {
+        match e {
+            PathElem::Field(f) => f.hash(&mut h),
+            PathElem::Part { part, index, .. } => (part, index).hash(&mut h),
+            PathElem::Index { .. } => return None,
+        }
+    }
+    Some(h.finish())
 }
 
 impl Walk<'_, '_> {
     /// The index of `p` in the body's place table, added unless an equal
     /// place without subscripts is there already.
     pub(super) fn place_id(&mut self, p: Place) -> u32 {
-        let key = PlaceKey::of(&p);
-        if let Some(k) = &key
-            && let Some(&i) = self.place_ids.get(k)
+        let key = key(&p);
+        if let Some(k) = key
+            && let Some(&i) = self.place_ids.get(&k)
+            && self.places[i as usize] == p
         {
             return i;
         }
@@ -61,8 +42,10 @@ impl Walk<'_, '_> {
         // far below 4 GiB of instructions.
         let i = self.places.len() as u32;
         self.places.push(p);
+        // On a collision the first place keeps the entry; the other is
+        // only not shared.
         if let Some(k) = key {
-            self.place_ids.insert(k, i);
+            self.place_ids.entry(k).or_insert(i);
         }
         i
     }
