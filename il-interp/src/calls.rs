@@ -225,8 +225,10 @@ impl Machine {
                 }
                 // The in-outs are read with the inputs set, as generated
                 // code binds them: one bound to a member of the instance
-                // itself (`CAL b(x := i, io := b.x)`) sees the input.
-                if !refs.is_empty() {
+                // itself (`CAL b(x := i, io := b.x)`) sees the input, so
+                // the instance goes back to its place first (only then:
+                // it is a copy of the whole instance).
+                if refs.iter().any(|(_, p)| p.root == inst.root) {
                     let mut root = std::mem::replace(self_root(f, &inst.root)?, Value::Bool(false));
                     let done = self.write_at(&mut root, &steps, Value::Fb(i.clone()));
                     *self_root(f, &inst.root)? = root;
