@@ -11,6 +11,16 @@ pub enum Stmt {
     Instr(Instr),
 }
 
+impl Stmt {
+    /// Where the label or the instruction is written.
+    pub fn span(&self) -> Span {
+        match self {
+            Stmt::Label(l) => l.span,
+            Stmt::Instr(i) => i.span,
+        }
+    }
+}
+
 /// One IL instruction: an operator with its modifiers and operands.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Instr {

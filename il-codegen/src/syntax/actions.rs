@@ -220,13 +220,6 @@ fn check_parens(ctx: &mut Ctx, body: &[Stmt], inside: bool) {
     }
 }
 
-fn stmt_span(s: &Stmt) -> Span {
-    match s {
-        Stmt::Instr(i) => i.span,
-        Stmt::Label(l) => l.span,
-    }
-}
-
 /// The first element of a POU. It starts afresh, keeping only this line's
 /// statements: error recovery drops the symbols of what it abandons, not
 /// what their lines pushed onto [`Ctx::stmts`].
@@ -254,7 +247,7 @@ pub fn elem(ctx: &mut Ctx, e: Elem) {
     match e {
         Elem::Vars(v) => {
             st.first.get_or_insert(v.span);
-            if let (false, Some(first)) = (st.reported_late_decl, ctx.stmts.first().map(stmt_span))
+            if let (false, Some(first)) = (st.reported_late_decl, ctx.stmts.first().map(Stmt::span))
             {
                 st.reported_late_decl = true;
                 let kw = v.kind.keyword();
@@ -273,7 +266,7 @@ pub fn elem(ctx: &mut Ctx, e: Elem) {
         }
         Elem::Stmts(n) => {
             let line_first = ctx.stmts.len() - n;
-            if let Some(sspan) = ctx.stmts.get(line_first).map(stmt_span) {
+            if let Some(sspan) = ctx.stmts.get(line_first).map(Stmt::span) {
                 st.first.get_or_insert(sspan);
                 if let Some(e) = st.end {
                     st.diags.push(

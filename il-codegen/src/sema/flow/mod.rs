@@ -229,10 +229,7 @@ pub(crate) fn check_pou(
 /// would be silently dropped, so they are IL0140.
 fn host_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou, sig: &PouSig) -> CheckedPou {
     if let Some(first) = pou.body.first() {
-        let span = match first {
-            ast::Stmt::Label(id) => id.span,
-            ast::Stmt::Instr(i) => i.span,
-        };
+        let span = first.span();
         cx.err(
             HOST_BODY,
             span,
