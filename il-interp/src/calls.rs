@@ -175,6 +175,12 @@ impl Machine {
         for (n, target, neg, w) in outputs {
             let mut src = inst.clone();
             src.path.push(PathElem::Field(n.clone()));
+            // The output's type: what a bad subscript of the instance reads
+            // (its default, as generated code's `Default::default()`).
+            src.ty = match w {
+                Some(w) => Ty::Elem(w.from),
+                None => target.ty.clone(),
+            };
             let mut v = self.read(f, &src, ctx, line)?;
             if *neg {
                 v = stdfn::not(&v);

@@ -57,6 +57,7 @@ impl ConfigMachine {
             return Ok(place(Ty::Elem(l.elem), None, Target::Addr(l)));
         }
         let (root, parts) = split(text)?;
+        let root = root.as_str();
         if let Some(i) = (self.def.access.iter()).position(|a| a.name.eq_ignore_ascii_case(root)) {
             let (ty, range) = (self.def.access[i].ty.clone(), self.def.access[i].range);
             let (steps, ty, range) = self.m.resolve_parts(ty, range, &parts, text)?;
@@ -69,7 +70,7 @@ impl ConfigMachine {
                 .is_some_and(|n| n.eq_ignore_ascii_case(root))
         });
         let (scope, name, rest) = match (res, parts.split_first()) {
-            (Some(r), Some((Part::Field(n), rest))) => (Some(r), *n, rest),
+            (Some(r), Some((Part::Field(n), rest))) => (Some(r), n.as_str(), rest),
             (Some(r), _) => {
                 return Err(format!(
                     "`{text}` names the resource `{root}`: add one of its globals or program instances ({})",
@@ -112,6 +113,7 @@ impl ConfigMachine {
                 ));
             };
             let pou = &self.m.prog.pous[self.programs[r][p].pou];
+            let var = var.as_str();
             let Some(i) = find_var(pou, var) else {
                 let names = pou.vars.iter().filter(|v| held(v)).map(|v| v.name.as_str());
                 return Err(format!(

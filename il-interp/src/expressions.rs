@@ -2,7 +2,7 @@
 
 use crate::values::Value;
 use crate::{Frame, Machine, stdfn};
-use il_codegen::sema::ir::{BinOp, Condition, Expr};
+use il_codegen::sema::ir::{BinOp, Condition, Expr, Value as IrValue};
 use il_codegen::sema::types::Elem;
 use il_std::{Cycle, FaultKind};
 
@@ -21,6 +21,48 @@ impl Machine {
             Err(format!("internal: no CR local {i}"))
         }
     }
+    /// `lhs op rhs` (the operand complemented first with `negate`) in
+    /// `elem`: the operators of the body and the subscript expressions.
+    pub(crate) fn binary(
+        &self,
+        f: &mut Frame,
+        op: BinOp,
+        elem: Option<Elem>,
+        (lhs, rhs, negate): (&IrValue, &IrValue, bool),
+        ctx: &mut Cycle,
+        line: u32,
+    ) -> Result<Value, String> {
+        let int = elem.is_some_and(|e| e.is_int() || e.is_bitstring());
+        if int && matches!(op, BinOp::Div | BinOp::Mod) {
+            // `{ let d = rhs; if d == 0 { fault; 0 } else { lhs op d } }`
+            let mut r = self.value(f, rhs, ctx, line)?;
+            if negate {
+                r = stdfn::not(&r);
+            }
+            let Value::Int(d, e) = r else {
+                return Err("internal: DIV operand".into());
+            };
+            if d == 0 {
+                self.fault(ctx, f, FaultKind::DivisionByZero, line);
+                return Ok(Value::Int(0, e));
+            }
+            let l = self.value(f, lhs, ctx, line)?;
+            let Value::Int(x, _) = l else {
+                return Err("internal: DIV operand".into());
+            };
+            return Ok(Value::Int(
+                stdfn::int_divmod(op == BinOp::Div, x, d, e).unwrap_or(0),
+                e,
+            ));
+        }
+        let l = self.value(f, lhs, ctx, line)?;
+        let mut r = self.value(f, rhs, ctx, line)?;
+        if negate {
+            r = stdfn::not(&r);
+        }
+        stdfn::operator(op.name(), &l, &r)
+    }
+
     pub(crate) fn expr(
         &mut self,
         f: &mut Frame,
@@ -37,37 +79,7 @@ impl Machine {
                 rhs,
                 negate_rhs,
                 elem,
-            } => {
-                let int = elem.is_some_and(|e| e.is_int() || e.is_bitstring());
-                if int && matches!(op, BinOp::Div | BinOp::Mod) {
-                    // `{ let d = rhs; if d == 0 { fault; 0 } else { lhs op d } }`
-                    let mut r = self.value(f, rhs, ctx, line)?;
-                    if *negate_rhs {
-                        r = stdfn::not(&r);
-                    }
-                    let (Value::Int(d, e), true) = (&r, true) else {
-                        return Err("internal: DIV operand".into());
-                    };
-                    if *d == 0 {
-                        self.fault(ctx, f, FaultKind::DivisionByZero, line);
-                        return Ok(Value::Int(0, *e));
-                    }
-                    let l = self.value(f, lhs, ctx, line)?;
-                    let Value::Int(x, _) = l else {
-                        return Err("internal: DIV operand".into());
-                    };
-                    return Ok(Value::Int(
-                        stdfn::int_divmod(*op == BinOp::Div, x, *d, *e).unwrap_or(0),
-                        *e,
-                    ));
-                }
-                let l = self.value(f, lhs, ctx, line)?;
-                let mut r = self.value(f, rhs, ctx, line)?;
-                if *negate_rhs {
-                    r = stdfn::not(&r);
-                }
-                stdfn::operator(op.name(), &l, &r)
-            }
+            } => self.binary(f, *op, *elem, (lhs, rhs, *negate_rhs), ctx, line),
             Expr::TimeScale {
                 div,
                 time,

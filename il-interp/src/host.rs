@@ -50,42 +50,25 @@ type Member = (String, Ty, Option<(i128, i128)>);
 /// of the place they end at.
 pub(crate) type Resolved = (Vec<Step>, Ty, Option<(i128, i128)>);
 
-/// One part of a path: `.name` or `[i, j]`.
-pub(crate) enum Part<'a> {
-    Field(&'a str),
-    Index(Vec<&'a str>),
+/// One part of a path: `.name` or `[i, j]` (the subscripts' values).
+pub(crate) enum Part {
+    Field(String),
+    Index(Vec<i64>),
 }
 
-fn is_ident(c: char) -> bool {
-    c.is_ascii_alphanumeric() || c == '_'
-}
-
-/// Split `a.b[1, 2].c` into its root and parts.
-pub(crate) fn split(text: &str) -> Result<(&str, Vec<Part<'_>>), String> {
-    let bad = || format!("`{text}` is not a variable path like `tank.level` or `valves[2].open`");
-    let end = text.find(|c: char| !is_ident(c)).unwrap_or(text.len());
-    let (root, mut rest) = text.split_at(end);
-    if root.is_empty() || root.starts_with(|c: char| c.is_ascii_digit()) {
-        return Err(bad());
-    }
-    let mut parts = Vec::new();
-    while !rest.is_empty() {
-        if let Some(r) = rest.strip_prefix('.') {
-            let end = r.find(|c: char| !is_ident(c)).unwrap_or(r.len());
-            if end == 0 {
-                return Err(bad());
-            }
-            parts.push(Part::Field(&r[..end]));
-            rest = &r[end..];
-        } else if let Some(r) = rest.strip_prefix('[') {
-            let close = r.find(']').ok_or_else(bad)?;
-            parts.push(Part::Index(r[..close].split(',').map(str::trim).collect()));
-            rest = &r[close + 1..];
-        } else {
-            return Err(bad());
-        }
-    }
-    Ok((root, parts))
+/// Split `a.b[1, 2].c` into its root and parts (il-codegen's host paths:
+/// constant subscript expressions are folded there).
+pub(crate) fn split(text: &str) -> Result<(String, Vec<Part>), String> {
+    let p = il_codegen::path::parse(text)?;
+    let parts = p
+        .parts
+        .into_iter()
+        .map(|s| match s {
+            il_codegen::path::PathPart::Field(f) => Part::Field(f),
+            il_codegen::path::PathPart::Index(i) => Part::Index(i),
+        })
+        .collect();
+    Ok((p.root, parts))
 }
 
 /// ", did you mean `x`?" when a candidate is close.
@@ -111,6 +94,7 @@ impl Machine {
             });
         }
         let (root, parts) = split(text)?;
+        let root = root.as_str();
         let Some(i) = find_var(pou, root) else {
             let names = pou
                 .vars
@@ -164,7 +148,7 @@ impl Machine {
         &self,
         mut ty: Ty,
         mut range: Option<(i128, i128)>,
-        parts: &[Part<'_>],
+        parts: &[Part],
         text: &str,
     ) -> Result<Resolved, String> {
         let mut steps = Vec::new();
@@ -189,10 +173,7 @@ impl Machine {
                         ));
                     }
                     let mut flat = 0usize;
-                    for (s, (lo, hi)) in subs.iter().zip(dims) {
-                        let k: i64 = s.parse().map_err(|_| {
-                            format!("`{text}`: the subscript `{s}` is not an integer")
-                        })?;
+                    for (&k, (lo, hi)) in subs.iter().zip(dims) {
                         if k < *lo || k > *hi {
                             return Err(format!(
                                 "`{text}`: subscript {k} is outside the bounds {lo}..{hi}"

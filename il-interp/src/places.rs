@@ -3,7 +3,7 @@
 
 use crate::values::Value;
 use crate::{Frame, Machine, find_var};
-use il_codegen::sema::ir::{BinOp, Loc, PathElem, Place, Root, Value as IrValue};
+use il_codegen::sema::ir::{Loc, PathElem, Place, Root, Value as IrValue};
 use il_codegen::sema::types::{Elem, Ty};
 use il_std::{Cycle, FaultKind};
 
@@ -159,18 +159,8 @@ impl Machine {
                 crate::stdfn::convert(w.from, w.to, &x)
                     .ok_or("internal: a widening the interpreter cannot convert")?
             }
-            // As the emitter: both sides as LINT, wrapping.
             IrValue::Arith(a) => {
-                let (l, r) = (
-                    self.value(f, &a.lhs, ctx, line)?.as_i64(),
-                    self.value(f, &a.rhs, ctx, line)?.as_i64(),
-                );
-                let n = match a.op {
-                    BinOp::Add => l.wrapping_add(r),
-                    BinOp::Sub => l.wrapping_sub(r),
-                    _ => l.wrapping_mul(r),
-                };
-                Value::Int(n as i128, Elem::LINT)
+                return self.binary(f, a.op, Some(a.elem), (&a.lhs, &a.rhs, false), ctx, line);
             }
             IrValue::Resized(r) => {
                 let (v, to) = &**r;

@@ -346,8 +346,8 @@ impl Accessor {
 pub enum Accessor {
     /// `.name`: a field of a STRUCT or FB instance.
     Field(Ident),
-    /// Subscripts, one per dimension: expressions over literals, variables
-    /// and direct addresses with `+ - *` (Ed.2 B.1.4.2).
+    /// Subscripts, one per dimension: integer expressions over literals,
+    /// variables and direct addresses (Ed.2 B.1.4.2).
     Index(Vec<Subscript>, Span),
     /// Partial access (3rd edition): `.3` (size `Default`), `.%X3`, `.%B1`,
     /// `.%W0`, `.%D1`: the `index`-th bit, byte, word or double word.
@@ -361,12 +361,20 @@ pub enum Accessor {
     },
 }
 
-/// One subscript of an array access: `i`, `2 * i - 1`, `(i + 1) * 2`.
+/// One subscript of an array access: `i`, `2 * i - 1`, `(i + 1) * 2`,
+/// `-i`, `n MOD 4`, `k / 2`.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Subscript {
     /// A literal, variable or direct address.
     Operand(Operand),
-    /// `lhs op rhs` with `op` one of `Add`, `Sub`, `Mul`.
+    /// `-operand`.
+    Neg {
+        /// What is negated.
+        operand: Box<Subscript>,
+        /// The whole expression.
+        span: Span,
+    },
+    /// `lhs op rhs` with `op` one of `Add`, `Sub`, `Mul`, `Div`, `Mod`.
     Bin {
         /// The operator.
         op: ExprOp,
@@ -384,7 +392,7 @@ impl Subscript {
     pub fn span(&self) -> Span {
         match self {
             Subscript::Operand(o) => o.span(),
-            Subscript::Bin { span, .. } => *span,
+            Subscript::Neg { span, .. } | Subscript::Bin { span, .. } => *span,
         }
     }
 
@@ -392,6 +400,7 @@ impl Subscript {
     pub fn operands(&self) -> Vec<&Operand> {
         match self {
             Subscript::Operand(o) => vec![o],
+            Subscript::Neg { operand, .. } => operand.operands(),
             Subscript::Bin { lhs, rhs, .. } => {
                 let mut v = lhs.operands();
                 v.extend(rhs.operands());

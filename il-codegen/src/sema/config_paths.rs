@@ -478,7 +478,8 @@ fn member(
 }
 
 /// The value of a subscript of a configuration path: integer literals
-/// joined by `+ - *` (a path names one place for the whole run).
+/// joined by `+ - * / MOD`, parentheses and unary minus (a path names one
+/// place for the whole run), folded exactly.
 fn constant_subscript(cx: &mut Cx, s: &Subscript) -> Option<(i128, Span)> {
     match s {
         Subscript::Operand(Operand::Lit(l)) => match &l.kind {
@@ -492,17 +493,27 @@ fn constant_subscript(cx: &mut Cx, s: &Subscript) -> Option<(i128, Span)> {
             cx.err(
                 BAD_CONFIG,
                 o.span(),
-                "a subscript of a configuration path must be a constant (an integer literal, or literals with `+ - *`): the path names one place for the whole run",
+                "a subscript of a configuration path must be a constant (integer literals with `+ - * / MOD`): the path names one place for the whole run",
             );
             None
+        }
+        Subscript::Neg { operand, span } => {
+            let (n, _) = constant_subscript(cx, operand)?;
+            Some((-n, *span))
         }
         Subscript::Bin { op, lhs, rhs, span } => {
             let (l, _) = constant_subscript(cx, lhs)?;
             let (r, _) = constant_subscript(cx, rhs)?;
+            if r == 0 && matches!(op, ExprOp::Div | ExprOp::Mod) {
+                cx.err(BAD_INDEX, *span, "the subscript divides by zero");
+                return None;
+            }
             let v = match op {
                 ExprOp::Add => l.checked_add(r),
                 ExprOp::Sub => l.checked_sub(r),
-                _ => l.checked_mul(r),
+                ExprOp::Mul => l.checked_mul(r),
+                ExprOp::Div => l.checked_div(r),
+                _ => l.checked_rem(r),
             };
             let Some(v) = v.filter(|v| i64::try_from(*v).is_ok()) else {
                 cx.err(BAD_INDEX, *span, "the subscript overflows LINT");

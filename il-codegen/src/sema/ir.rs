@@ -130,7 +130,7 @@ impl CheckedPou {
             Value::Read(i) => self.place(*i).ty.elem(),
             Value::Widen(b) => Some(b.1.to),
             Value::Resized(r) => r.1.elem(),
-            Value::Arith(_) => Some(Elem::LINT),
+            Value::Arith(a) => Some(a.elem),
         }
     }
 }
@@ -514,18 +514,21 @@ pub enum Value {
     /// `StringOverflow` fault recorded when that cut something off. Boxed
     /// with its type: rare.
     Resized(Box<(Value, Ty)>),
-    /// A subscript expression (`i + 1`, `2 * i`). Only in
+    /// A subscript expression (`i + 1`, `2 * i`, `-i`, `i MOD 4`). Only in
     /// [`PathElem::Index`] subscripts. Boxed: rare.
     Arith(Box<Arith>),
 }
 
-/// A subscript expression ([`Value::Arith`]): `lhs op rhs` with `op`
-/// `Add`, `Sub` or `Mul`, both sides (integers of any type) converted to
-/// LINT and computed with wrapping; the value is a LINT.
+/// A subscript expression ([`Value::Arith`]): `lhs op rhs` computed in
+/// the integer type `elem` that both sides already have (the checker
+/// widened them), as the operator of that name computes it: wrapping, and
+/// `Div`/`Mod` by zero give 0 and record a `DivisionByZero` fault.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Arith {
-    /// `Add`, `Sub` or `Mul`.
+    /// `Add`, `Sub`, `Mul`, `Div` or `Mod`.
     pub op: BinOp,
+    /// The type of both sides and of the result.
+    pub elem: Elem,
     /// The left operand.
     pub lhs: Value,
     /// The right operand.

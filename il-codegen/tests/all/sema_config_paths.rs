@@ -48,13 +48,23 @@ rh : RES1.h[-0 + 4] : INT;
 k1 : RES1.P1.k[1] : INT;
 END_VAR",
     );
-    // Subscripts of a configuration path are literals: the lexer takes `+`
-    // as an operator only in a body's subscripts.
-    let e = errors(&src);
-    assert_eq!(e.len(), 1, "{e:?}");
-    assert_eq!((e[0].0.as_str(), e[0].1), ("IL0001", 33), "{e:?}");
-    let src = src.replace("rh : RES1.h[-0 + 4] : INT;", "rh : RES1.h[4] : INT;");
+    // Subscripts of a configuration path are constant expressions.
     assert_eq!(errors(&src), []);
+    let with = |sub: &str| src.replace("RES1.h[-0 + 4]", &format!("RES1.h[{sub}]"));
+    for sub in ["4", "7 MOD 3 + 3", "-(-4)", "(1 + 1) * 2", "9 / 2", "16#4"] {
+        assert_eq!(errors(&with(sub)), [], "{sub}");
+    }
+    // Refused: out of bounds once folded, a division by zero, a variable.
+    for (sub, msg) in [
+        ("10 / 2 * 2", "outside"),
+        ("4 MOD 0", "divides by zero"),
+        ("1 / (2 - 2)", "divides by zero"),
+        ("k + 1", "must be a constant"),
+    ] {
+        let e = errors(&with(sub));
+        assert_eq!(e.len(), 1, "{sub}: {e:?}");
+        assert!(e[0].3.contains(msg), "{sub}: {e:?}");
+    }
 }
 
 #[test]

@@ -151,7 +151,7 @@ fn subscript_expressions() {
     let body = |b: &str| {
         errors(&format!(
             "PROGRAM Main\nVAR a : ARRAY[1..4] OF INT; m : ARRAY[1..2, 0..3] OF INT; \
-             i : INT; u : ULINT; r : REAL; x : INT; END_VAR\n{b}\nEND_PROGRAM\n"
+             i : INT; u : ULINT; w : UINT; r : REAL; x : INT; END_VAR\n{b}\nEND_PROGRAM\n"
         ))
     };
     let ok = Vec::<(String, String, u32)>::new();
@@ -160,9 +160,19 @@ fn subscript_expressions() {
         body("LD a[(i + 1) * 2]\nST a[-1 + i]\nLD a[2 * 2]\nST a[1+1]"),
         ok
     );
-    assert_eq!(body("LD 1\nST a[i * i * i - 3 + u]"), ok);
+    // `/ MOD`, unary minus, parentheses; INT and UINT meet at DINT.
+    assert_eq!(
+        body("LD a[3 MOD 2 + 3]\nST a[i / 2]\nST a[-i + 5]\nST a[-(i - 5)]\nST a[i MOD w]"),
+        ok
+    );
+    assert_eq!(
+        body("LD 1\nST a[i * i * i - 3 + w]\nST a[(i + 1) mod 4 + 1]"),
+        ok
+    );
     // Refused: a literal expression outside the bounds (folded), a REAL in
-    // the expression, an operator other than + - *, a dangling operator.
+    // the expression, a dangling operator, a constant division by zero,
+    // INT with ULINT (no integer type holds both), negated unsigned
+    // integers, a literal that does not fit the expression's type.
     let e = body("LD a[2 * 3]\nST x");
     assert_eq!((e[0].0.as_str(), e[0].2), ("IL0125", 3), "{e:?}");
     assert!(
@@ -172,10 +182,26 @@ fn subscript_expressions() {
     let e = body("LD a[i + r]\nST x");
     assert_eq!((e[0].0.as_str(), e[0].2), ("IL0125", 3), "{e:?}");
     assert!(e[0].1.contains("must be an integer, not REAL"), "{e:?}");
-    let e = body("LD x\nST a[i / 2]");
-    assert!(!e.is_empty() && e.iter().all(|d| d.2 == 4), "{e:?}");
     let e = body("LD a[i +]\nST x");
     assert!(!e.is_empty() && e.iter().all(|d| d.2 == 3), "{e:?}");
+    for (b, msg) in [
+        ("LD a[i / 0]", "`i / 0` divides by zero"),
+        ("LD a[i MOD (1 - 1)]", "`i MOD (1 - 1)` divides by zero"),
+        (
+            "LD a[i + u]",
+            "no integer type holds both INT and ULINT in `i + u`; convert one side (ULINT_TO_LINT)",
+        ),
+        ("LD a[-w]", "`-w` negates an unsigned integer (UINT)"),
+        (
+            "LD a[i + 40000]",
+            "in a subscript of type INT: 40000 does not fit in INT",
+        ),
+    ] {
+        let e = body(&format!("{b}\nST x"));
+        assert_eq!(e.len(), 1, "{b}: {e:?}");
+        assert_eq!((e[0].0.as_str(), e[0].2), ("IL0125", 3), "{b}: {e:?}");
+        assert!(e[0].1.contains(msg), "{b}: {e:?}");
+    }
 }
 
 #[test]

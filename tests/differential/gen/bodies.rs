@@ -30,20 +30,53 @@ impl Pou<'_> {
         let arrays: Vec<_> = self.arrays.iter().filter(|a| a.1 == t).cloned().collect();
         if !arrays.is_empty() && self.rng.chance(15) {
             let (a, _, lo, hi) = self.rng.pick(&arrays).clone();
-            let idx = self.vars_of(T::Int);
-            if !idx.is_empty() && self.rng.chance(60) {
-                let i = self.rng.pick(&idx).clone();
-                return format!("{a}[{i}]");
-            }
-            return format!(
-                "{a}[{}]",
-                lo + self.rng.below((hi - lo + 1) as usize) as i64
-            );
+            let sub = self.subscript(lo, hi);
+            return format!("{a}[{sub}]");
         }
         if !vars.is_empty() && self.rng.chance(65) {
             return self.rng.pick(&vars).clone();
         }
         self.literal(t, nonzero_lit)
+    }
+
+    /// A subscript of a dimension `lo..hi`: a literal inside it, an INT
+    /// variable (any value: out of range is a recorded fault), or an
+    /// expression over them with `+ - * / MOD`, parentheses and unary minus
+    /// (a divisor variable may be 0: a recorded fault). An expression of
+    /// literals only is kept inside the bounds (outside, it does not compile).
+    pub(super) fn subscript(&mut self, lo: i64, hi: i64) -> String {
+        let n = hi - lo + 1;
+        let k = lo + self.rng.below(n as usize) as i64;
+        let idx = self.vars_of(T::Int);
+        if idx.is_empty() || self.rng.chance(25) {
+            if self.rng.chance(30) {
+                // Folded by the checker: `(k + 3) MOD n + lo` style, in range.
+                let c = 1 + self.rng.below(5) as i64;
+                self.mark("subscript expression");
+                self.mark("subscript with MOD or division");
+                return format!("({k} - {lo} + {c} * {n}) MOD {n} + {lo}");
+            }
+            return k.to_string();
+        }
+        let v = self.rng.pick(&idx).clone();
+        let w = self.rng.pick(&idx).clone();
+        if self.rng.chance(35) {
+            return v;
+        }
+        self.mark("subscript expression");
+        let e = match self.rng.below(7) {
+            0 => format!("{v} MOD {n} + {lo}"),
+            1 => format!("{v} / {} - {k}", 1 + self.rng.below(3)),
+            2 => format!("{v} MOD {w}"),
+            3 => format!("({v} + 1) * 2 / {w}"),
+            4 => format!("-{v} + {k}"),
+            5 => format!("-({v} - {w}) MOD {n}"),
+            _ => format!("{v} - {w} * 2 + {k}"),
+        };
+        if e.contains("MOD") || e.contains('/') {
+            self.mark("subscript with MOD or division");
+        }
+        e
     }
 
     pub(super) fn literal(&mut self, t: T, nonzero: bool) -> String {
@@ -177,13 +210,10 @@ impl Pou<'_> {
         let v = self.rng.pick(&w).clone();
         let arrays: Vec<_> = self.arrays.iter().filter(|a| a.1 == t).cloned().collect();
         if !arrays.is_empty() && self.rng.chance(15) {
-            let (a, ..) = self.rng.pick(&arrays).clone();
-            let idx = self.vars_of(T::Int);
-            if !idx.is_empty() {
-                let i = self.rng.pick(&idx).clone();
-                self.emit(format!("ST {a}[{i}]"));
-                return;
-            }
+            let (a, _, lo, hi) = self.rng.pick(&arrays).clone();
+            let sub = self.subscript(lo, hi);
+            self.emit(format!("ST {a}[{sub}]"));
+            return;
         }
         if (t == T::Bool || t.is_bits()) && self.rng.chance(25) {
             self.emit(format!("STN {v}"));

@@ -168,13 +168,23 @@ impl Pou<'_> {
                     self.emit(format!("{n} {inst}"));
                 }
                 self.mark("FB: input operators");
+                if inst.contains('[') {
+                    self.mark("FB: input operators on an array element");
+                }
             }
         }
     }
 
     pub(super) fn fb_call(&mut self) {
-        let k = self.rng.below(self.fbs.len());
-        let (inst, ty) = self.fbs[k].clone();
+        let (inst, ty) = if !self.fb_arrays.is_empty() && self.rng.chance(25) {
+            let (a, ty) = self.rng.pick(&self.fb_arrays).clone();
+            let sub = self.subscript(0, 1);
+            self.mark("FB array element");
+            (format!("{a}[{sub}]"), ty)
+        } else {
+            let k = self.rng.below(self.fbs.len());
+            self.fbs[k].clone()
+        };
         let b = self.vars_of(T::Bool);
         let bv = |s: &mut Self| s.rng.pick(&b).clone();
         let pv = |s: &mut Self| format!("{}", 1 + s.rng.below(5));
@@ -286,6 +296,9 @@ impl Pou<'_> {
                 self.emit(format!("{n} {inst}"));
             }
             self.mark("FB: input operators");
+            if inst.contains('[') {
+                self.mark("FB: input operators on an array element");
+            }
         } else if self.rng.chance(50) {
             let l: Vec<String> = ins.iter().map(|(n, v)| format!("{n} := {v}")).collect();
             self.emit(format!("CAL {inst}({})", l.join(", ")));

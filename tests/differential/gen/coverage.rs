@@ -74,6 +74,10 @@ pub const CONSTRUCTS: &[&str] = &[
     "shift/rotate",
     "S/R",
     "operand list (ADD a, b)",
+    "subscript expression",
+    "subscript with MOD or division",
+    "FB array element",
+    "FB: input operators on an array element",
     // user types and the process image (user.rs)
     "enum",
     "subrange",

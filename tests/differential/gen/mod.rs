@@ -195,6 +195,8 @@ struct Pou<'r> {
     loops: usize,
     /// Standard blocks and user blocks available: (instance, type).
     fbs: Vec<(String, &'static str)>,
+    /// Arrays `ARRAY[0..1]` of standard blocks: (array, block type).
+    fb_arrays: Vec<(String, &'static str)>,
     has_fn: Option<T>,
     arrays: Vec<(String, T, i64, i64)>,
     in_function: bool,
@@ -224,6 +226,7 @@ impl<'r> Pou<'r> {
             labels: 0,
             loops: 0,
             fbs: Vec::new(),
+            fb_arrays: Vec::new(),
             has_fn: None,
             arrays: Vec::new(),
             in_function: false,
@@ -481,6 +484,18 @@ pub fn generate(seed: u64) -> Program {
     fbs.push(("t1".into(), "TON"));
     fbs.push(("t2".into(), "TOF"));
     fbs.push(("t3".into(), "TP"));
+    // Elements of arrays of blocks: input operators and CAL on `ca[i MOD 2]`.
+    let mut fb_arrays: Vec<(String, &'static str)> = vec![
+        ("sra".into(), "SR"),
+        ("rsa".into(), "RS"),
+        ("ea".into(), "R_TRIG"),
+        ("ta".into(), "TON"),
+    ];
+    if types.contains(&T::Int) {
+        fb_arrays.push(("ca".into(), "CTU"));
+        fb_arrays.push(("da".into(), "CTD"));
+        fb_arrays.push(("cda".into(), "CTUD"));
+    }
     let extras = user::extras(&mut rng, &types);
     let with_strings = rng.chance(50);
     let with_dates = rng.chance(40);
@@ -501,6 +516,7 @@ pub fn generate(seed: u64) -> Program {
             &ro,
         );
         p.fbs = fbs.clone();
+        p.fb_arrays = fb_arrays.clone();
         p.has_fn = Some(ft);
         p.arrays = arrays.clone();
         p.max_loops = n_loops;
@@ -534,6 +550,11 @@ pub fn generate(seed: u64) -> Program {
     let fb_decls: String = fbs
         .iter()
         .map(|(n, t)| format!("    {n} : {t};\n"))
+        .chain(
+            fb_arrays
+                .iter()
+                .map(|(n, t)| format!("    {n} : ARRAY[0..1] OF {t};\n")),
+        )
         .collect();
     // With a configuration, the second local of each type is a VAR_OUTPUT
     // it can bind to a global.

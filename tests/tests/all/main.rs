@@ -36,6 +36,7 @@ mod seeds;
 mod std_blocks;
 mod std_en_eno;
 mod std_funcs;
+mod subscript_exprs;
 mod trace;
 mod ui;
 mod user_types;

@@ -34,15 +34,12 @@ impl PouEmitter<'_> {
             Value::Read(p) => self.read(self.pou.place(*p), line),
             Value::Saved(i) => super::saved_ident(*i),
             Value::Widen(b) => widened(self.value(&b.0, line), &Some(b.1)),
+            // As the operator of that name in that type.
             Value::Arith(a) => {
-                let l = self.value(&a.lhs, line);
+                let l = self.receiver(&a.lhs, line);
                 let r = self.value(&a.rhs, line);
-                let f = match a.op {
-                    BinOp::Add => "wrapping_add",
-                    BinOp::Sub => "wrapping_sub",
-                    _ => "wrapping_mul",
-                };
-                format!("({l} as i64).{f}({r} as i64)")
+                let nonzero = matches!(&a.rhs, Value::Const(Const::Int(n, _)) if n.get() != 0);
+                self.binary(a.op, Some(a.elem), l, r, nonzero, line)
             }
             Value::Resized(r) => {
                 let (v, to) = &**r;
@@ -201,8 +198,12 @@ impl PouEmitter<'_> {
             Value::Cr(_) | Value::Const(_) | Value::Saved(..) => true,
             Value::Widen(b) => self.inline_subscript(&b.0, p, first),
             Value::Resized(..) => false,
+            // A division by a variable may record a fault.
             Value::Arith(a) => {
-                self.inline_subscript(&a.lhs, p, first) && self.inline_subscript(&a.rhs, p, first)
+                (!matches!(a.op, BinOp::Div | BinOp::Mod)
+                    || matches!(&a.rhs, Value::Const(Const::Int(n, _)) if n.get() != 0))
+                    && self.inline_subscript(&a.lhs, p, first)
+                    && self.inline_subscript(&a.rhs, p, first)
             }
             Value::Read(q) => {
                 let q = self.pou.place(*q);

@@ -4,21 +4,44 @@
 use super::*;
 
 impl Walk<'_, '_> {
-    /// If the operand is a plain FB instance (of one of `types`, or any FB when
-    /// `types` is empty), its place.
-    pub(super) fn fb_operand(&mut self, o: &Operand, types: &[&str]) -> Option<Place> {
+    /// If the operand is an FB instance (a variable, a member or an array
+    /// element: `ctr`, `line.t1`, `cnt[i]`) of a standard block that has
+    /// the input `input`, its place: then `S`/`R`/`LD` are that block's
+    /// input operators (Table 54), not the BOOL or load instructions.
+    pub(super) fn fb_operand(&mut self, o: &Operand, input: &str) -> Option<Place> {
         let Operand::Var(v) = o else { return None };
-        let (_, var) = self.sig.var(&v.base.name)?;
-        let Ty::Fb(t) = &var.ty else { return None };
-        if v.path.is_empty()
-            && (types.is_empty() || types.iter().any(|x| x.eq_ignore_ascii_case(t)))
-        {
-            let saved = self.final_pass;
-            let p = self.place(v, false);
-            self.final_pass = saved;
-            return p;
+        let Ty::Fb(t) = self.ref_ty(v)? else {
+            return None;
+        };
+        let has = |s: &stdfb::StdFb| s.inputs.iter().any(|(n, _)| n.eq_ignore_ascii_case(input));
+        if !stdfb::lookup(&t).is_some_and(has) {
+            return None;
         }
-        None
+        let saved = self.final_pass;
+        let p = self.place(v, false);
+        self.final_pass = saved;
+        p
+    }
+
+    /// Whether the operand names an FB instance (of any block type).
+    pub(super) fn is_fb_instance(&self, o: &Operand) -> bool {
+        matches!(o, Operand::Var(v) if matches!(self.ref_ty(v), Some(Ty::Fb(_))))
+    }
+
+    /// The type a variable reference names, from the declarations alone:
+    /// no subscript is evaluated and nothing is reported (the caller
+    /// resolves the place itself when it needs it).
+    fn ref_ty(&self, v: &VarRef) -> Option<Ty> {
+        let (_, var) = self.sig.var(&v.base.name)?;
+        let mut ty = var.ty.clone();
+        for acc in &v.path {
+            ty = match (acc, &ty) {
+                (Accessor::Field(f), Ty::Fb(t) | Ty::Struct(t)) => self.find_member(t, &f.name)?.1,
+                (Accessor::Index(..), Ty::Array(a)) => a.elem.clone(),
+                _ => return None,
+            };
+        }
+        Some(ty)
     }
 
     /// Table 54: set one input from the CR and call the instance.

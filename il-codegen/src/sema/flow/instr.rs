@@ -122,7 +122,7 @@ impl Walk<'_, '_> {
         let span = i.span;
         match &i.kind {
             InstrKind::Load { negate, operand } => {
-                if !negate && let Some(inst) = self.fb_operand(operand, &["CTD", "CTUD"]) {
+                if !negate && let Some(inst) = self.fb_operand(operand, "LD") {
                     return self.fb_input(inst, "LD", cr, span);
                 }
                 self.load(*negate, operand, span)
@@ -173,28 +173,14 @@ impl Walk<'_, '_> {
             }
             InstrKind::Set { target } | InstrKind::Reset { target } => {
                 let set = matches!(i.kind, InstrKind::Set { .. });
-                let fbs: &[&str] = if set {
-                    &["RS"]
-                } else {
-                    &[
-                        "SR",
-                        "CTU",
-                        "CTUD",
-                        "CTU_DINT",
-                        "CTU_LINT",
-                        "CTU_UDINT",
-                        "CTU_ULINT",
-                        "CTUD_DINT",
-                        "CTUD_LINT",
-                        "CTUD_UDINT",
-                        "CTUD_ULINT",
-                    ]
-                };
-                if let Some(inst) = self.fb_operand(target, fbs) {
-                    return self.fb_input(inst, if set { "S" } else { "R" }, cr, span);
+                let which = if set { "S" } else { "R" };
+                if let Some(inst) = self.fb_operand(target, which) {
+                    return self.fb_input(inst, which, cr, span);
                 }
-                if let Some(inst) = self.fb_operand(target, &[]) {
-                    let which = if set { "S" } else { "R" };
+                if self.is_fb_instance(target) {
+                    let Some(inst) = self.place_of(target, false) else {
+                        return cr;
+                    };
                     self.err(
                         BAD_INPUT_OP,
                         target.span(),

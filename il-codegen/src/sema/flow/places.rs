@@ -321,7 +321,7 @@ impl Walk<'_, '_> {
     }
 
     /// The member `name` of FB type `fb`, as [`Walk::members`] lists them.
-    fn find_member(&self, fb: &str, name: &str) -> Option<(String, Ty, bool)> {
+    pub(super) fn find_member(&self, fb: &str, name: &str) -> Option<(String, Ty, bool)> {
         if let Some(s) = stdfb::lookup(fb) {
             let find = |list: &[(&str, Elem)], input: bool| {
                 (list.iter().find(|(n, _)| n.eq_ignore_ascii_case(name)))

@@ -265,6 +265,9 @@ impl<'a> Lexer<'a> {
                         span: span(s, e),
                     };
                     self.push(s, Tok::Lit(Box::new(lit)), e);
+                } else if up == "MOD" && self.nest > 0 && self.after_subscript_operand() {
+                    // `a[i MOD 4]`: MOD is a reserved word, never a name.
+                    self.push(s, Tok::ModKw, e);
                 } else if up == "NOT" && (self.arg_depth > 0 || !body) {
                     self.push(s, Tok::Not, e);
                 } else if !body && let Some(kw) = decl_keyword(&up) {
@@ -274,12 +277,13 @@ impl<'a> Lexer<'a> {
                 }
             }
             b'0'..=b'9' => self.number(start, None),
-            // Inside a subscript `+ - *` are operators (`a[i + 1]`, `a[i-1]`);
+            // Inside a subscript `+ - * /` are operators (`a[i + 1]`, `a[i-1]`);
             // a sign right after `[`, `,` or an operator belongs to a number.
-            b'+' | b'-' | b'*' if body && self.nest > 0 && self.subscript_operator(c) => {
+            b'+' | b'-' | b'*' | b'/' if self.nest > 0 && self.subscript_operator(c) => {
                 let t = match c {
                     b'+' => Tok::Plus,
                     b'-' => Tok::Minus,
+                    b'/' => Tok::Slash,
                     _ => Tok::Star,
                 };
                 self.punct(start, 1, t);
@@ -391,12 +395,15 @@ impl<'a> Lexer<'a> {
     /// Whether `c` (`+`, `-` or `*` inside brackets) is a subscript
     /// operator: `*` always, a sign only after an operand.
     fn subscript_operator(&self, c: u8) -> bool {
-        c == b'*'
-            || !self.peek(1).is_ascii_digit()
-            || matches!(
-                self.last_tok(),
-                Some(Tok::Ident(_) | Tok::Lit(_) | Tok::Addr(_) | Tok::RBracket | Tok::RParen)
-            )
+        c == b'*' || c == b'/' || !self.peek(1).is_ascii_digit() || self.after_subscript_operand()
+    }
+
+    /// Whether the last token ends an operand (so what follows is an operator).
+    pub(super) fn after_subscript_operand(&self) -> bool {
+        matches!(
+            self.last_tok(),
+            Some(Tok::Ident(_) | Tok::Lit(_) | Tok::Addr(_) | Tok::RBracket | Tok::RParen)
+        )
     }
 
     pub(super) fn punct(&mut self, start: usize, n: usize, t: Tok) {

@@ -59,7 +59,10 @@ impl<'a> Lexer<'a> {
             if self.mode == Mode::Header {
                 self.header_toks += 1;
             }
-            if up == "TRUE" || up == "FALSE" {
+            if up == "MOD" && self.nest > 0 && self.after_subscript_operand() {
+                // A constant subscript of a configuration path (`R.P.a[7 MOD 3]`).
+                self.push(s, Tok::ModKw, e);
+            } else if up == "TRUE" || up == "FALSE" {
                 let lit = Literal {
                     kind: LitKind::Bool(up == "TRUE"),
                     type_prefix: None,

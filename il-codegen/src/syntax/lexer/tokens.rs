@@ -90,6 +90,10 @@ pub enum Tok {
     Minus,
     /// `*` in a subscript (`m[2 * i]`).
     Star,
+    /// `/` in a subscript (`a[i / 2]`).
+    Slash,
+    /// `MOD` in a subscript (`a[i MOD 4]`).
+    ModKw,
     // Declaration keywords.
     /// `VAR`, `VAR_INPUT`, `VAR_OUTPUT`, `VAR_IN_OUT`, `VAR_EXTERNAL`, `VAR_GLOBAL`, `VAR_TEMP`.
     Var(VarKind),

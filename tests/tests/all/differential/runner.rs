@@ -4,11 +4,19 @@
 
 use super::*;
 
-/// The variables compared: every variable of Main but its FB instances.
+/// The variables compared: every variable of Main but its FB instances
+/// and arrays of them (their outputs are compared where the body reads them).
 pub(super) fn watched(m: &Machine) -> Vec<String> {
+    fn instance(v: &Value) -> bool {
+        match v {
+            Value::Fb(_) | Value::StdFb(_) => true,
+            Value::Array(e) => e.first().is_some_and(instance),
+            _ => false,
+        }
+    }
     m.vars()
         .into_iter()
-        .filter(|(_, v)| !matches!(v, Value::Fb(_) | Value::StdFb(_)))
+        .filter(|(_, v)| !instance(v))
         .map(|(n, _)| n)
         .collect()
 }

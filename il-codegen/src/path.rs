@@ -1,0 +1,227 @@
+//! Host paths: the text a user gives a tool to name one place of a running
+//! program (`tank.level`, `valves[2].open`, `m[2 * 3 - 1, 0]`), as `ilc run
+//! --set/--watch` and the interpreter's host access read it.
+//!
+//! A path names one place for the whole run, so its subscripts are
+//! constants: integer literals (`16#FF`, `1_000`) joined by `+ - * / MOD`,
+//! parentheses and unary minus, folded exactly as the checker folds a
+//! constant subscript (division truncates toward zero, MOD takes the
+//! dividend's sign).
+
+/// A parsed path: its first name and the steps after it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct HostPath {
+    /// The variable (or instance) the path starts at, as written.
+    pub root: String,
+    /// `.name` and `[i, j]` steps, in order.
+    pub parts: Vec<PathPart>,
+}
+
+/// One step of a [`HostPath`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum PathPart {
+    /// `.name`: a member, as written.
+    Field(String),
+    /// `[i, j]`: the subscripts' values, one per dimension.
+    Index(Vec<i64>),
+}
+
+fn is_ident(c: char) -> bool {
+    c.is_ascii_alphanumeric() || c == '_'
+}
+
+/// Parse `a.b[1, 2 + k].c`-style text (no direct addresses: the caller
+/// handles `%IX0.0`). The error names the path and what is wrong in it.
+pub fn parse(text: &str) -> Result<HostPath, String> {
+    let bad = || format!("`{text}` is not a variable path like `tank.level` or `valves[2].open`");
+    let t = text.trim();
+    let end = t.find(|c: char| !is_ident(c)).unwrap_or(t.len());
+    let (root, mut rest) = t.split_at(end);
+    if root.is_empty() || root.starts_with(|c: char| c.is_ascii_digit()) {
+        return Err(bad());
+    }
+    let mut parts = Vec::new();
+    while !rest.is_empty() {
+        if let Some(r) = rest.strip_prefix('.') {
+            let end = r.find(|c: char| !is_ident(c)).unwrap_or(r.len());
+            if end == 0 || r.starts_with(|c: char| c.is_ascii_digit()) {
+                return Err(bad());
+            }
+            parts.push(PathPart::Field(r[..end].to_string()));
+            rest = &r[end..];
+        } else if let Some(r) = rest.strip_prefix('[') {
+            let close = r.find(']').ok_or_else(bad)?;
+            let subs = r[..close]
+                .split(',')
+                .map(|s| {
+                    constant(s).map_err(|e| format!("`{text}`: the subscript `{}` {e}", s.trim()))
+                })
+                .collect::<Result<_, _>>()?;
+            parts.push(PathPart::Index(subs));
+            rest = &r[close + 1..];
+        } else {
+            return Err(bad());
+        }
+    }
+    Ok(HostPath {
+        root: root.to_string(),
+        parts,
+    })
+}
+
+/// The value of a constant subscript expression (`7 MOD 3 - (2 / 2)`);
+/// the error completes "the subscript `…` ".
+pub fn constant(text: &str) -> Result<i64, String> {
+    let mut p = Parser {
+        toks: tokens(text)?,
+        at: 0,
+    };
+    let v = p.sum()?;
+    if p.at != p.toks.len() {
+        return Err("is not an integer expression".into());
+    }
+    i64::try_from(v).map_err(|_| "overflows LINT".to_string())
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Tok {
+    Num(i128),
+    Op(char),
+    Mod,
+}
+
+fn tokens(text: &str) -> Result<Vec<Tok>, String> {
+    let not_int = || "is not an integer expression".to_string();
+    let mut out = Vec::new();
+    let b = text.as_bytes();
+    let mut i = 0;
+    while i < b.len() {
+        let c = b[i] as char;
+        if c.is_whitespace() {
+            i += 1;
+        } else if "+-*/()".contains(c) {
+            out.push(Tok::Op(c));
+            i += 1;
+        } else if c.is_ascii_alphanumeric() {
+            let end = text[i..]
+                .find(|c: char| !(is_ident(c) || c == '#'))
+                .map_or(text.len(), |e| i + e);
+            let word = &text[i..end];
+            if word.eq_ignore_ascii_case("MOD") {
+                out.push(Tok::Mod);
+            } else if c.is_ascii_digit() {
+                let n = il_std::literal::parse_int(word).map_err(|_| not_int())?;
+                out.push(Tok::Num(n));
+            } else {
+                return Err("is not a constant: a path names one place for the whole run".into());
+            }
+            i = end;
+        } else {
+            return Err(not_int());
+        }
+    }
+    Ok(out)
+}
+
+/// Recursive descent over `+ -` / `* / MOD` / unary `-` / atoms, exact in i128.
+struct Parser {
+    toks: Vec<Tok>,
+    at: usize,
+}
+
+impl Parser {
+    fn peek(&self) -> Option<&Tok> {
+        self.toks.get(self.at)
+    }
+
+    fn sum(&mut self) -> Result<i128, String> {
+        let mut v = self.term()?;
+        while let Some(Tok::Op(c @ ('+' | '-'))) = self.peek().cloned() {
+            self.at += 1;
+            let r = self.term()?;
+            v = if c == '+' {
+                v.checked_add(r)
+            } else {
+                v.checked_sub(r)
+            }
+            .ok_or("overflows")?;
+        }
+        Ok(v)
+    }
+
+    fn term(&mut self) -> Result<i128, String> {
+        let mut v = self.unary()?;
+        loop {
+            let op = match self.peek() {
+                Some(Tok::Op(c @ ('*' | '/'))) => *c,
+                Some(Tok::Mod) => '%',
+                _ => return Ok(v),
+            };
+            self.at += 1;
+            let r = self.unary()?;
+            if r == 0 && op != '*' {
+                return Err("divides by zero".into());
+            }
+            v = match op {
+                '*' => v.checked_mul(r),
+                '/' => v.checked_div(r),
+                _ => v.checked_rem(r),
+            }
+            .ok_or("overflows")?;
+        }
+    }
+
+    fn unary(&mut self) -> Result<i128, String> {
+        match self.peek().cloned() {
+            Some(Tok::Op('-')) => {
+                self.at += 1;
+                Ok(-self.unary()?)
+            }
+            Some(Tok::Op('(')) => {
+                self.at += 1;
+                let v = self.sum()?;
+                if self.peek() != Some(&Tok::Op(')')) {
+                    return Err("has an unclosed `(`".into());
+                }
+                self.at += 1;
+                Ok(v)
+            }
+            Some(Tok::Num(n)) => {
+                self.at += 1;
+                Ok(n)
+            }
+            _ => Err("is not an integer expression".into()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn subscripts_are_constant_expressions() {
+        assert_eq!(constant("3 MOD 2 + 7"), Ok(8));
+        assert_eq!(constant("-(-4)"), Ok(4));
+        assert_eq!(constant("7 mod 3 - (2 / 2)"), Ok(0));
+        assert_eq!(constant("-7 / 2"), Ok(-3));
+        assert_eq!(constant("-7 MOD 2"), Ok(-1));
+        assert_eq!(constant("16#10 * 2"), Ok(32));
+        assert_eq!(constant("1 / 0"), Err("divides by zero".into()));
+        assert!(constant("i + 1").unwrap_err().contains("not a constant"));
+        assert!(constant("(1 + 2").unwrap_err().contains("unclosed"));
+        assert!(constant("1 +").is_err() && constant("").is_err() && constant("2 3").is_err());
+        let p = parse("line.t[1 + 1, 0].Q").unwrap();
+        assert_eq!(p.root, "line");
+        assert_eq!(
+            p.parts,
+            vec![
+                PathPart::Field("t".into()),
+                PathPart::Index(vec![2, 0]),
+                PathPart::Field("Q".into())
+            ]
+        );
+        assert!(parse("a[1 / 0]").unwrap_err().contains("divides by zero"));
+        assert!(parse("1a").is_err() && parse("a.").is_err() && parse("a[1").is_err());
+    }
+}
