@@ -14,11 +14,15 @@
 //! * the standard functions in [`func`], their signatures in [`signature`], and literal parsing
 //!   helpers in [`literal`] shared with the compiler.
 //!
-//! The crate is `#![no_std]`, has no dependencies, never allocates and never panics on any
-//! input. Everything above is the default `runtime` feature; without it (as the compiler
-//! builds the crate) only the types, [`literal`] and [`signature`] remain. The optional `std` feature adds `std::error::Error` for [`Fault`] and a wall-clock
-//! helper `RealClock`; the `alloc` feature (on with `std`) adds `heap`, the allocation of
-//! arrays over 64 KiB in generated FUNCTION_BLOCK and PROGRAM instances.
+//! The crate is `#![no_std]`, never allocates and never panics on any input. It depends only
+//! on `no_std` crates of the Rust project itself or of equal standing: `libm`, whose functions
+//! are the numeric ones (`SQRT`, `SIN`, `EXPT` ...: within 1 ulp, the same bits on every
+//! target; see [`math`]), and `serde` behind its feature. Everything above is the default
+//! `runtime` feature; without it (as the compiler builds the crate) only the types, [`literal`]
+//! and [`signature`] remain, and libm is not compiled. The optional `std` feature adds
+//! `std::error::Error` for [`Fault`] and a wall-clock helper `RealClock`; the `alloc` feature
+//! (on with `std`) adds `heap`, the allocation of arrays over 64 KiB in generated
+//! FUNCTION_BLOCK and PROGRAM instances.
 //!
 //! Conventions the compiler relies on: integer arithmetic wraps; integer `DIV`/`MOD` by zero
 //! gives 0 and generated code records the fault with the `*_checked` variants of [`func`]

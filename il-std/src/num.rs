@@ -51,6 +51,12 @@ pub trait AnyInt: AnyNum + Ord {
 pub trait AnyReal: AnyNum {
     /// The value from `f64` (rounded to nearest for `REAL`).
     fn from_f64(v: f64) -> Self;
+    /// `lreal(self)` for `LREAL`, `real(self)` for `REAL`: how the numeric functions of
+    /// [`func`](crate::func) pick the [`math`](crate::math) function of their type.
+    fn apply(self, lreal: fn(f64) -> f64, real: fn(f32) -> f32) -> Self;
+    /// `self` to the power `y` (`EXPT`): [`math::pow`](crate::math::pow) for `LREAL`,
+    /// [`math::powf`](crate::math::powf) for `REAL`. `y` is any IEC number as `f64`.
+    fn iec_pow(self, y: f64) -> Self;
 }
 
 /// `ANY_BIT`: `BOOL` and the bit strings (`BYTE WORD DWORD LWORD`).
@@ -124,12 +130,37 @@ macro_rules! real_impls {
             fn to_f64(self) -> f64 { self as f64 }
             fn as_i64_exact(self) -> Option<i64> { None }
         }
-        impl AnyReal for $t {
-            fn from_f64(v: f64) -> Self { v as $t }
-        }
     )*};
 }
 real_impls!(f32, 0x7fff_ffff; f64, 0x7fff_ffff_ffff_ffff);
+
+impl AnyReal for f32 {
+    fn from_f64(v: f64) -> Self {
+        v as f32
+    }
+    #[inline]
+    fn apply(self, _: fn(f64) -> f64, real: fn(f32) -> f32) -> Self {
+        real(self)
+    }
+    #[inline]
+    fn iec_pow(self, y: f64) -> Self {
+        crate::math::powf(self, y)
+    }
+}
+
+impl AnyReal for f64 {
+    fn from_f64(v: f64) -> Self {
+        v
+    }
+    #[inline]
+    fn apply(self, lreal: fn(f64) -> f64, _: fn(f32) -> f32) -> Self {
+        lreal(self)
+    }
+    #[inline]
+    fn iec_pow(self, y: f64) -> Self {
+        crate::math::pow(self, y)
+    }
+}
 
 macro_rules! dur_impls {
     ($($t:ident),*) => {$(

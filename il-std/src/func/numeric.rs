@@ -1,40 +1,40 @@
 //! Numeric functions of `ANY_REAL`: SQRT LN LOG EXP SIN COS TAN ASIN ACOS ATAN EXPT, and TRUNC.
 //!
-//! Computed by [`math`](crate::math) — the same pure-Rust code on every target, so results
-//! are reproducible. `REAL` arguments are computed in `f64` and rounded once (within 1e-6
-//! relative, in fact within an ulp); `LREAL` results are within 1e-12 relative (see
-//! [`math`](crate::math) for the exact bounds). NaN and infinities follow IEEE 754.
+//! Computed by [`math`](crate::math): libm's pure-Rust code, the same bits on every target, so
+//! results are reproducible, and within 1 ulp of the correctly rounded result. `REAL` uses the
+//! `f32` functions, `LREAL` the `f64` ones. NaN and infinities follow IEEE 754.
 
 use crate::math;
 use crate::num::{AnyNum, AnyReal};
 
 macro_rules! unary_real {
-    ($($name:ident => $f:path, $doc:literal;)*) => {$(
+    ($($name:ident => $f:ident, $ff:ident, $doc:literal;)*) => {$(
         #[doc = $doc]
         pub fn $name<T: AnyReal>(IN: T) -> T {
-            T::from_f64($f(IN.to_f64()))
+            IN.apply(math::$f, math::$ff)
         }
     )*};
 }
 
 unary_real! {
-    SQRT => math::sqrt, "`SQRT`: square root (`SQRT(-1.0)` is NaN).";
-    LN => math::ln, "`LN`: natural logarithm (`LN(0.0) = -∞`, negative arguments give NaN).";
-    LOG => math::log10, "`LOG`: base-10 logarithm (`LOG(0.0) = -∞`, negative arguments give NaN).";
-    EXP => math::exp, "`EXP`: natural exponential `e^IN` (overflow gives +∞).";
-    SIN => math::sin, "`SIN`: sine of `IN` radians.";
-    COS => math::cos, "`COS`: cosine of `IN` radians.";
-    TAN => math::tan, "`TAN`: tangent of `IN` radians.";
-    ASIN => math::asin, "`ASIN`: principal arc sine in `[-π/2, π/2]` (NaN outside `[-1, 1]`).";
-    ACOS => math::acos, "`ACOS`: principal arc cosine in `[0, π]` (NaN outside `[-1, 1]`).";
-    ATAN => math::atan, "`ATAN`: principal arc tangent in `[-π/2, π/2]`.";
+    SQRT => sqrt, sqrtf, "`SQRT`: square root (`SQRT(-1.0)` is NaN).";
+    LN => ln, lnf, "`LN`: natural logarithm (`LN(0.0) = -∞`, negative arguments give NaN).";
+    LOG => log10, log10f, "`LOG`: base-10 logarithm (`LOG(0.0) = -∞`, negative arguments give NaN).";
+    EXP => exp, expf, "`EXP`: natural exponential `e^IN` (overflow gives +∞).";
+    SIN => sin, sinf, "`SIN`: sine of `IN` radians.";
+    COS => cos, cosf, "`COS`: cosine of `IN` radians.";
+    TAN => tan, tanf, "`TAN`: tangent of `IN` radians.";
+    ASIN => asin, asinf, "`ASIN`: principal arc sine in `[-π/2, π/2]` (NaN outside `[-1, 1]`).";
+    ACOS => acos, acosf, "`ACOS`: principal arc cosine in `[0, π]` (NaN outside `[-1, 1]`).";
+    ATAN => atan, atanf, "`ATAN`: principal arc tangent in `[-π/2, π/2]`.";
 }
 
 /// `EXPT`: `IN1` raised to the power `IN2` (`IN1: ANY_REAL`, `IN2: ANY_NUM`), with the IEEE 754
 /// `pow` special cases (`EXPT(x, 0) = 1`, a negative base with a non-integer exponent is NaN,
-/// `EXPT(0.0, -1) = +∞`). Integer exponents up to ±64 are computed by repeated multiplication.
+/// `EXPT(0.0, -1) = +∞`). The exponent is used exactly, whatever its type (see
+/// [`math::powf`]): an integer exponent of a negative base keeps its parity.
 pub fn EXPT<T: AnyReal, E: AnyNum>(IN1: T, IN2: E) -> T {
-    T::from_f64(math::pow(IN1.to_f64(), IN2.to_f64()))
+    IN1.iec_pow(IN2.to_f64())
 }
 
 /// `TRUNC`: truncates toward zero to a `DINT` (`TRUNC(-1.6) = -1`); out of range saturates
