@@ -5,7 +5,7 @@
 use std::io::Write;
 
 use crate::run_target::Target;
-use il_codegen::sema::types::Ty;
+use il_codegen::ir::types::Ty;
 use il_interp::il_std::{self, Cycle, TIME};
 use il_interp::{ConfigMachine, Machine, Value, fmt_dur};
 
@@ -217,7 +217,7 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
 /// Scan `m` `o.cycles` times and print the table (and the waves).
 fn scan_table<T: Target>(
     o: &Options,
-    prog: &il_codegen::sema::ir::Program,
+    prog: &il_codegen::ir::Program,
     m: &mut T,
     out: &mut dyn Write,
     err: &mut dyn Write,

@@ -2,7 +2,7 @@
 //! whole CONFIGURATION with its tasks. The scan loop and the table in
 //! `run.rs` are the same for both; only naming places and scanning differ.
 
-use il_codegen::sema::types::Ty;
+use il_codegen::ir::types::Ty;
 use il_interp::il_std::Cycle;
 use il_interp::{ConfigMachine, ConfigPlace, HostPlace, Machine, Value};
 

@@ -4,8 +4,8 @@
 
 use std::path::PathBuf;
 
-use il_codegen::sema::ir::{Program, TypeDef};
-use il_codegen::sema::types::{Elem, Ty};
+use il_codegen::ir::types::{Elem, Ty};
+use il_codegen::ir::{Program, TypeDef};
 use il_interp::Value;
 use il_interp::il_std::TIME;
 use il_interp::il_std::trace::{Value as TValue, Visitor};

@@ -46,7 +46,7 @@ mod builder;
 pub mod codes;
 pub mod diag;
 pub mod dialect;
-pub mod path;
+pub mod ir;
 pub mod plcopen;
 pub mod read;
 pub mod work;

@@ -5,8 +5,8 @@ use crate::places::self_root;
 use crate::values::{Instance, Value};
 use crate::{Frame, Machine, find_var, held, stdfn};
 use il_codegen::ast::{Edge, PouKind, VarKind};
-use il_codegen::sema::ir::{CheckedPou, Expr, Op, PathElem, Place, Root, Storage};
-use il_codegen::sema::types::Ty;
+use il_codegen::ir::types::Ty;
+use il_codegen::ir::{CheckedPou, Expr, Op, PathElem, Place, Root, Storage};
 use il_std::{Cycle, FaultKind};
 
 /// Names of the VAR_IN_OUTs of `pou`, in declaration order.
@@ -30,7 +30,7 @@ impl Machine {
         let Expr::CallUser(c) = call else {
             return Err("internal: not a user function call".into());
         };
-        let il_codegen::sema::ir::UserCall {
+        let il_codegen::ir::UserCall {
             en,
             eno,
             ret,
@@ -95,7 +95,7 @@ impl Machine {
         let Expr::CallStd(c) = e else {
             return Err("internal: not a standard function call".into());
         };
-        let il_codegen::sema::ir::StdFnCall {
+        let il_codegen::ir::StdFnCall {
             en,
             call,
             args,
@@ -132,7 +132,7 @@ impl Machine {
         let Op::CallFb(c) = op else {
             return Err("internal: not a CAL".into());
         };
-        let il_codegen::sema::ir::FbCall {
+        let il_codegen::ir::FbCall {
             inst,
             inputs,
             outputs,
@@ -399,7 +399,7 @@ impl Machine {
 }
 
 /// `v` converted by the checker's implicit widening of an output, if any.
-fn widened(v: Value, w: &Option<il_codegen::sema::ir::Widen>) -> Result<Value, String> {
+fn widened(v: Value, w: &Option<il_codegen::ir::Widen>) -> Result<Value, String> {
     match w {
         Some(w) => stdfn::convert(w.from, w.to, &v)
             .ok_or_else(|| "internal: a widening the interpreter cannot convert".into()),

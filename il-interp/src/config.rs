@@ -13,7 +13,7 @@ use crate::places::{Step, io_read, io_write};
 use crate::values::{Instance, Value};
 use crate::{Machine, find_var};
 use il_codegen::ast::Area;
-use il_codegen::sema::ir::{
+use il_codegen::ir::{
     AccessTarget, ConfigDef, GlobalRef, InstancePath, PathElem, ProgArg, Program, TaskSource,
 };
 use il_std::{Cycle, TIME, TaskState};
@@ -61,7 +61,7 @@ impl ConfigMachine {
                 )
             })?;
         let m = Machine::bare(prog);
-        let init = |vs: &[il_codegen::sema::ir::Var]| -> Result<Vec<Value>, String> {
+        let init = |vs: &[il_codegen::ir::Var]| -> Result<Vec<Value>, String> {
             vs.iter()
                 .map(|v| m.init_of(&v.ty, v.init.as_ref()))
                 .collect()
@@ -368,7 +368,7 @@ impl ConfigMachine {
         }
     }
 
-    pub(crate) fn var_of(&self, g: GlobalRef) -> &il_codegen::sema::ir::Var {
+    pub(crate) fn var_of(&self, g: GlobalRef) -> &il_codegen::ir::Var {
         match g.resource {
             None => &self.def.globals[g.index],
             Some(r) => &self.def.resources[r].globals[g.index],
@@ -398,7 +398,7 @@ impl ConfigMachine {
     }
 
     pub(crate) fn find_global(&self, name: &str) -> Option<GlobalRef> {
-        let find = |vs: &[il_codegen::sema::ir::Var], n: &str| {
+        let find = |vs: &[il_codegen::ir::Var], n: &str| {
             vs.iter().position(|v| v.name.eq_ignore_ascii_case(n))
         };
         if let Some((res, n)) = name.split_once('.') {

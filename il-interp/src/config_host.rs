@@ -8,9 +8,9 @@ use crate::host::{Part, hint, split};
 use crate::places::{Step, io_read, io_write};
 use crate::values::Value;
 use crate::{ConfigMachine, find_var, held};
-use il_codegen::sema::ir::{GlobalRef, Loc, Storage};
-use il_codegen::sema::parse_address;
-use il_codegen::sema::types::Ty;
+use il_codegen::ir::parse_address;
+use il_codegen::ir::types::Ty;
+use il_codegen::ir::{GlobalRef, Loc, Storage};
 use il_std::Cycle;
 
 /// A resolved place of a configuration: [`ConfigMachine::lookup`] makes one.
@@ -162,7 +162,7 @@ impl ConfigMachine {
     fn scope_names(&self, scope: Option<usize>) -> Vec<String> {
         let d = &self.def;
         let mut names: Vec<String> = Vec::new();
-        let res_names = |r: &il_codegen::sema::ir::ResourceDef| -> Vec<String> {
+        let res_names = |r: &il_codegen::ir::ResourceDef| -> Vec<String> {
             (r.globals.iter().map(|v| v.name.clone()))
                 .chain(r.programs.iter().map(|p| p.name.clone()))
                 .collect()

@@ -4,8 +4,8 @@ use crate::Machine;
 use crate::places::Step;
 use crate::values::StdFb;
 use crate::values::{Instance, Struct, Value};
-use il_codegen::sema::ir::{Init, TypeDef};
-use il_codegen::sema::types::{Elem, Ty};
+use il_codegen::ir::types::{Elem, Ty};
+use il_codegen::ir::{Init, TypeDef};
 
 impl Machine {
     pub(crate) fn new_instance(&self, pou: usize) -> Result<Instance, String> {
@@ -70,12 +70,12 @@ impl Machine {
                     return Err(format!("internal: `{n}` is not an enumeration"));
                 }
             },
-            Ty::Elem(_) | Ty::Str { .. } => Value::from_const(&il_codegen::sema::default_const(t)),
+            Ty::Elem(_) | Ty::Str { .. } => Value::from_const(&il_codegen::ir::default_const(t)),
             Ty::Array(a) => {
                 let (dims, elem) = (&a.dims, &a.elem);
                 let n: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
                 // As the emitter: an array of a subrange starts at its lower limit.
-                let d = match il_codegen::sema::ir::element_start(t) {
+                let d = match il_codegen::ir::element_start(t) {
                     Some(c) => Value::from_const(&c),
                     None => self.default_of(elem)?,
                 };

@@ -2,8 +2,8 @@
 
 use crate::values::Value;
 use crate::{Frame, Machine, stdfn};
-use il_codegen::sema::ir::{BinOp, Condition, Expr, Value as IrValue};
-use il_codegen::sema::types::Elem;
+use il_codegen::ir::types::Elem;
+use il_codegen::ir::{BinOp, Condition, Expr, Value as IrValue};
 use il_std::{Cycle, FaultKind};
 
 fn cond_holds(c: &Option<bool>, want: bool) -> bool {
@@ -12,7 +12,7 @@ fn cond_holds(c: &Option<bool>, want: bool) -> bool {
 
 impl Machine {
     /// The frame's slot of CR local `i` (the frame holds them in the
-    /// order of [`il_codegen::sema::ir::CheckedPou::cr_types`]).
+    /// order of [`il_codegen::ir::CheckedPou::cr_types`]).
     pub(crate) fn cr_slot(f: &Frame, i: u32) -> Result<usize, String> {
         let i = i as usize;
         if i < f.cr.len() {

@@ -2,7 +2,7 @@
 
 use crate::values::Value;
 use crate::{Frame, Machine, STEP_LIMIT, stdfn};
-use il_codegen::sema::ir::{Op, Stmt, Value as IrValue};
+use il_codegen::ir::{Op, Stmt, Value as IrValue};
 use il_std::{Cycle, FaultKind};
 
 impl Machine {

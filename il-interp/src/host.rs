@@ -7,9 +7,10 @@
 use crate::places::{Step, io_read, io_write};
 use crate::values::Value;
 use crate::{Machine, find_var, held};
-use il_codegen::sema::ir::{Loc, Storage, TypeDef};
-use il_codegen::sema::types::{Elem, Ty};
-use il_codegen::sema::{parse_address, suggest};
+use il_codegen::ir::parse_address;
+use il_codegen::ir::types::{Elem, Ty};
+use il_codegen::ir::{Loc, Storage, TypeDef};
+use il_codegen::sema::suggest;
 use il_std::Cycle;
 
 /// A resolved host place: [`Machine::lookup`] makes one, [`Machine::get_at`]
@@ -59,13 +60,13 @@ pub(crate) enum Part {
 /// Split `a.b[1, 2].c` into its root and parts (il-codegen's host paths:
 /// constant subscript expressions are folded there).
 pub(crate) fn split(text: &str) -> Result<(String, Vec<Part>), String> {
-    let p = il_codegen::path::parse(text)?;
+    let p = il_codegen::ir::path::parse(text)?;
     let parts = p
         .parts
         .into_iter()
         .map(|s| match s {
-            il_codegen::path::PathPart::Field(f) => Part::Field(f),
-            il_codegen::path::PathPart::Index(i) => Part::Index(i),
+            il_codegen::ir::path::PathPart::Field(f) => Part::Field(f),
+            il_codegen::ir::path::PathPart::Index(i) => Part::Index(i),
         })
         .collect();
     Ok((p.root, parts))
@@ -390,7 +391,7 @@ impl Machine {
 }
 
 /// A variable a host can name: the instance's memory and its located variables.
-fn visible(v: &il_codegen::sema::ir::Var) -> bool {
+fn visible(v: &il_codegen::ir::Var) -> bool {
     held(v) || v.storage == Storage::Located
 }
 

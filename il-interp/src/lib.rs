@@ -14,7 +14,7 @@
 //! let mut ctx = il_std::Cycle::new();
 //! m.scan(&mut ctx).unwrap();
 //! m.scan(&mut ctx).unwrap();
-//! assert_eq!(m.get("n"), Some(Value::Int(2, il_codegen::sema::types::Elem::INT)));
+//! assert_eq!(m.get("n"), Some(Value::Int(2, il_codegen::ir::types::Elem::INT)));
 //! ```
 
 mod calls;
@@ -41,8 +41,8 @@ pub use values::{Instance, Struct, Value, fmt_dur};
 
 use il_codegen::ast::PouKind;
 use il_codegen::diag::SourceFile;
-use il_codegen::sema::ir::{CheckedPou, Program, Storage, Var};
-use il_codegen::sema::types::{Elem, Ty};
+use il_codegen::ir::types::{Elem, Ty};
+use il_codegen::ir::{CheckedPou, Program, Storage, Var};
 use il_std::Cycle;
 use values::wrap;
 

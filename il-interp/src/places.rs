@@ -3,8 +3,8 @@
 
 use crate::values::Value;
 use crate::{Frame, Machine, find_var};
-use il_codegen::sema::ir::{Loc, PathElem, Place, Root, Value as IrValue};
-use il_codegen::sema::types::{Elem, Ty};
+use il_codegen::ir::types::{Elem, Ty};
+use il_codegen::ir::{Loc, PathElem, Place, Root, Value as IrValue};
 use il_std::{Cycle, FaultKind};
 
 /// A resolved step of a place's path.

@@ -2,8 +2,8 @@
 //! what the il-std function the emitter calls computes (most call it).
 
 use crate::values::{Value, wrap};
-use il_codegen::sema::ir::StdCall;
-use il_codegen::sema::types::{Elem, Ty};
+use il_codegen::ir::StdCall;
+use il_codegen::ir::types::{Elem, Ty};
 use il_std::FaultKind;
 use il_std::func as f;
 use std::cmp::Ordering;

@@ -1,8 +1,8 @@
 //! Runtime values of the reference interpreter and the elementary operations
 //! on them, with the same results as the Rust the emitter generates.
 
-use il_codegen::sema::ir::Const;
-use il_codegen::sema::types::Elem;
+use il_codegen::ir::Const;
+use il_codegen::ir::types::Elem;
 use il_std::Cycle;
 
 /// A runtime value.

@@ -6,7 +6,7 @@ use lsp_types::{Hover, HoverContents, MarkupContent, MarkupKind, Position, Uri};
 
 use super::index::{Index, Kind, Step, Target, fb_signature};
 use super::workspace::Workspace;
-use il_codegen::sema::ir::CrState;
+use il_codegen::ir::CrState;
 use il_interp::il_std::signature::{Class, Ext, ParamTy, Signature};
 
 pub fn hover(ws: &Workspace, uri: &Uri, pos: Position) -> Option<Hover> {

@@ -7,7 +7,7 @@ use lsp_types::{InlayHint, InlayHintKind, InlayHintLabel, Range, Uri};
 
 use super::index::Step;
 use super::workspace::Workspace;
-use il_codegen::sema::ir::CrState;
+use il_codegen::ir::CrState;
 
 pub fn hints(ws: &Workspace, uri: &Uri, range: Range) -> Vec<InlayHint> {
     if !ws.settings.cr_type_hints {

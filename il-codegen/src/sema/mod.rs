@@ -15,7 +15,6 @@ mod graph;
 mod hash;
 mod init;
 mod interface;
-pub mod ir;
 mod literals;
 mod name_index;
 mod nesting;
@@ -25,11 +24,13 @@ mod resolve;
 pub(crate) mod size;
 mod stdfb;
 mod stdfn;
-pub mod types;
 pub mod widen;
 
+// The IR and its types live in `crate::ir`, the public contract; the
+// checker names them as its own.
 use crate::ast::{self, Span};
 use crate::diag::{Diagnostic, SourceFile};
+pub(crate) use crate::ir::{self, types};
 pub use address::parse_address;
 pub use codes::CODES;
 

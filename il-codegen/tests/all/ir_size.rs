@@ -12,8 +12,8 @@
 //! slots and places by index into per-POU tables, 120, 32 and 64; before
 //! a binary operation kept the elementary type only, 72).
 
-use il_codegen::sema::ir::{Const, Expr, Loc, Op, PathElem, Place, Root, Stmt, Value};
-use il_codegen::sema::types::Ty;
+use il_codegen::ir::types::Ty;
+use il_codegen::ir::{Const, Expr, Loc, Op, PathElem, Place, Root, Stmt, Value};
 use std::mem::size_of;
 
 #[test]

@@ -249,7 +249,7 @@ fn parentheses_share_a_save_slot_per_depth_and_type() {
         .body
         .iter()
         .filter_map(|s| match &s.op {
-            il_codegen::sema::ir::Op::Save { slot, .. } => Some(*slot),
+            il_codegen::ir::Op::Save { slot, .. } => Some(*slot),
             _ => None,
         })
         .collect();

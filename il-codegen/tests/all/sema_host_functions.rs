@@ -6,7 +6,7 @@ use crate::checked::{errors, errors_std};
 
 const HOST: &str = "{extern}\nFUNCTION log_value : BOOL\nVAR_INPUT v : INT; END_VAR\nVAR_OUTPUT seen : INT; END_VAR\nVAR_IN_OUT n : DINT; END_VAR\nEND_FUNCTION\n";
 
-fn checked_pous(src: &str) -> Vec<il_codegen::sema::ir::CheckedPou> {
+fn checked_pous(src: &str) -> Vec<il_codegen::ir::CheckedPou> {
     let f = il_codegen::diag::SourceFile::new("t.il", src);
     il_codegen::Program::new()
         .il(f)

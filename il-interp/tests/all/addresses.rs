@@ -4,7 +4,7 @@
 //! little-endian words, signed types, REAL bits), also set by a host.
 
 use il_codegen::diag::SourceFile;
-use il_codegen::sema::types::Elem;
+use il_codegen::ir::types::Elem;
 use il_interp::{Machine, Value, load};
 use il_std::{Area, Cycle};
 

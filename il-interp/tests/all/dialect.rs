@@ -3,7 +3,7 @@
 //! and the same file refused under the 2nd edition.
 
 use il_codegen::diag::SourceFile;
-use il_codegen::sema::types::Elem;
+use il_codegen::ir::types::Elem;
 use il_interp::{Machine, Value, int, load, load_std};
 use il_std::Cycle;
 

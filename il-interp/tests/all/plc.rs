@@ -2,11 +2,11 @@
 //! asserting what `tests/tests/*.rs` assert for the generated code.
 
 use il_codegen::diag::SourceFile;
-use il_codegen::sema::types::Elem;
+use il_codegen::ir::types::Elem;
 use il_interp::{Machine, Value, load};
 use il_std::{Cycle, FaultKind, TIME};
 
-fn program(file: &str) -> il_codegen::sema::ir::Program {
+fn program(file: &str) -> il_codegen::ir::Program {
     let path = format!("{}/../tests/plc/{file}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).expect("read IL");
     load(&SourceFile::new(file, text)).unwrap_or_else(|e| panic!("{file}: {e}"))

@@ -3,11 +3,11 @@
 //! not covered by plc.rs give the results the compiled code gives.
 
 use il_codegen::diag::SourceFile;
-use il_codegen::sema::types::Elem;
+use il_codegen::ir::types::Elem;
 use il_interp::{Machine, Value, load};
 use il_std::{Cycle, FaultKind, TIME};
 
-fn prog(name: &str, text: &str) -> il_codegen::sema::ir::Program {
+fn prog(name: &str, text: &str) -> il_codegen::ir::Program {
     load(&SourceFile::new(name, text)).unwrap_or_else(|e| panic!("{name}: {e}"))
 }
 

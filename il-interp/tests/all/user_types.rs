@@ -5,7 +5,7 @@
 //! and element paths as a host names them.
 
 use il_codegen::diag::SourceFile;
-use il_codegen::sema::types::Elem;
+use il_codegen::ir::types::Elem;
 use il_interp::{Machine, Value, load};
 use il_std::{Cycle, FaultKind, TIME};
 

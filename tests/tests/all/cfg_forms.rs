@@ -114,7 +114,7 @@ fn interpreted() -> Outcome {
         c.set_global("trigger", Value::Bool(trigger)).unwrap();
         ctx.io.set_bit(Area::Input, 0, 1, input);
         if ms == 50 {
-            let t = Value::Time(30_000_000, il_codegen::sema::types::Elem::TIME);
+            let t = Value::Time(30_000_000, il_codegen::ir::types::Elem::TIME);
             c.set_global("period", t).unwrap();
         }
         c.run_traced(&mut ctx, |t, p| {
@@ -262,7 +262,7 @@ mod io {
 }
 
 fn io_interpreted() -> IoOutcome {
-    use il_codegen::sema::types::Elem;
+    use il_codegen::ir::types::Elem;
     use il_interp::{ConfigMachine, Value};
     let src = std::fs::read_to_string("plc/cfg_forms.il").expect("read");
     let file = il_codegen::diag::SourceFile::new("cfg_forms.il", src);
@@ -307,7 +307,7 @@ fn timer_interpreted() -> Vec<(i64, bool)> {
     for ms in [0, 10, 20, 30] {
         ctx.set_now(TIME::from_ms(ms));
         if ms == 20 {
-            let v = Value::Time(30_000_000, il_codegen::sema::types::Elem::TIME);
+            let v = Value::Time(30_000_000, il_codegen::ir::types::Elem::TIME);
             c.set_access("Delay", v).unwrap();
         }
         c.run(&mut ctx).unwrap();

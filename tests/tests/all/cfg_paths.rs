@@ -108,7 +108,7 @@ paths_tests!(via_build);
 paths_tests!(via_macro);
 
 /// plc/cfg_paths.il, checked, for the interpreter.
-fn checked() -> il_codegen::sema::ir::Program {
+fn checked() -> il_codegen::ir::Program {
     let src = std::fs::read_to_string("plc/cfg_paths.il").expect("read");
     let file = il_codegen::diag::SourceFile::new("cfg_paths.il", src);
     il_interp::load(&file).expect("checks")
@@ -119,8 +119,8 @@ fn the_interpreter_refuses_a_write_outside_a_subrange() {
     use il_interp::ConfigMachine;
     let prog = checked();
     let mut c = ConfigMachine::new(&prog, "CfgPaths").expect("configuration");
-    let int = |v: i128| il_interp::int(v, il_codegen::sema::types::Elem::INT);
-    let usint = |v: i128| il_interp::int(v, il_codegen::sema::types::Elem::USINT);
+    let int = |v: i128| il_interp::int(v, il_codegen::ir::types::Elem::INT);
+    let usint = |v: i128| il_interp::int(v, il_codegen::ir::types::Elem::USINT);
     c.set_access("Level", int(100)).expect("inside");
     let e = c.set_access("Level", int(101)).unwrap_err();
     assert!(e.contains("outside the subrange 0..100"), "{e}");
@@ -139,7 +139,7 @@ fn the_interpreter_reads_and_writes_the_same_places() {
     use il_interp::{ConfigMachine, Value};
     let prog = checked();
     let mut c = ConfigMachine::new(&prog, "CfgPaths").expect("configuration");
-    let int = |v: i16| il_interp::int(v as i128, il_codegen::sema::types::Elem::INT);
+    let int = |v: i16| il_interp::int(v as i128, il_codegen::ir::types::Elem::INT);
     assert!(
         c.set_access("A2", int(1))
             .unwrap_err()

@@ -78,7 +78,7 @@ dialect_tests!(via_macro);
 
 /// `WideningStd` through the interpreter: (lim, big, small, q).
 fn widening_std_interpreted(s: i8, i: i16, d: i32) -> (i16, i32, i16, bool) {
-    use il_codegen::sema::types::Elem;
+    use il_codegen::ir::types::Elem;
     let src = std::fs::read_to_string("plc/dialect.il").expect("read");
     let prog = il_interp::load(&il_codegen::diag::SourceFile::new("dialect.il", src)).unwrap();
     let mut m = il_interp::Machine::new(&prog, "WideningStd").unwrap();

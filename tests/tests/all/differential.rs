@@ -33,8 +33,8 @@ mod generator;
 
 use generator::{Lit, Program, T};
 use il_codegen::diag::SourceFile;
-use il_codegen::sema::ir::Loc;
-use il_codegen::sema::types::Elem;
+use il_codegen::ir::Loc;
+use il_codegen::ir::types::Elem;
 use il_interp::{Machine, Value, load};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};

@@ -4,7 +4,7 @@
 //! the generated code (build.rs and `il!`) and the interpreter, given the
 //! same functions as closures, agree scan by scan.
 
-use il_codegen::sema::types::Elem;
+use il_codegen::ir::types::Elem;
 use il_interp::{Machine, Value};
 use il_std::Cycle;
 

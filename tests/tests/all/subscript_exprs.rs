@@ -68,7 +68,7 @@ subscript_tests!(via_macro);
 
 #[test]
 fn the_interpreter_agrees() {
-    use il_codegen::sema::types::Elem;
+    use il_codegen::ir::types::Elem;
     use il_interp::{Machine, Value};
     let src = std::fs::read_to_string("plc/subscript_exprs.il").expect("read");
     let file = il_codegen::diag::SourceFile::new("subscript_exprs.il", src);

@@ -4,7 +4,7 @@
 use std::collections::HashMap;
 
 use il_codegen::ast::{self, Span, TypeSpec};
-use il_codegen::sema::ir;
+use il_codegen::ir;
 use il_interp::il_std::signature as sig;
 use lsp_types::SymbolKind;
 

@@ -17,8 +17,8 @@ use std::collections::HashMap;
 use il_codegen::Checked;
 use il_codegen::Input;
 use il_codegen::ast::{self, Span, TypeSpec};
-use il_codegen::sema::ir::{self, CrState};
-use il_codegen::sema::types::Ty;
+use il_codegen::ir::types::Ty;
+use il_codegen::ir::{self, CrState};
 use il_interp::il_std::signature::{self as sig, FbSignature, Signature};
 use lsp_types::SymbolKind;
 

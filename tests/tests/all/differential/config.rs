@@ -12,7 +12,7 @@ pub(super) struct CfgCase {
     access: Vec<(String, T, bool, bool)>,
 }
 
-pub(super) fn config_case(prog: &il_codegen::sema::ir::Program) -> Option<CfgCase> {
+pub(super) fn config_case(prog: &il_codegen::ir::Program) -> Option<CfgCase> {
     let def = prog.configs.first()?;
     Some(CfgCase {
         name: def.name.clone(),
@@ -49,7 +49,7 @@ fn config_writes(c: &CfgCase, k: usize) -> Vec<(&str, T, Lit, bool)> {
 /// 1000 + k): faults and image, programs run, the (task, program) trace,
 /// overruns per task, then every access path.
 pub(super) fn interpret_config(
-    prog: &il_codegen::sema::ir::Program,
+    prog: &il_codegen::ir::Program,
     c: &CfgCase,
 ) -> Result<Vec<String>, String> {
     let mut m = il_interp::ConfigMachine::new(prog, &c.name)?;

@@ -23,7 +23,7 @@ pub(super) fn watched(m: &Machine) -> Vec<String> {
 
 /// Interpret: one line per scan.
 pub(super) fn interpret(
-    prog: &il_codegen::sema::ir::Program,
+    prog: &il_codegen::ir::Program,
     p: &Program,
 ) -> Result<Vec<String>, String> {
     let mut m = Machine::new(prog, "Main")?;
@@ -81,8 +81,8 @@ pub(super) fn set_input(v: &generator::Var, l: &Lit, loc: Option<&Loc>) -> Strin
 }
 
 /// `Canon` for the program's user types (the interpreter's `canon` prints the same).
-pub(super) fn canon_impls(prog: &il_codegen::sema::ir::Program) -> String {
-    use il_codegen::sema::ir::TypeDef;
+pub(super) fn canon_impls(prog: &il_codegen::ir::Program) -> String {
+    use il_codegen::ir::TypeDef;
     let mut s = String::new();
     for t in &prog.types {
         match t {

@@ -92,7 +92,7 @@ pub(super) fn value_lit(v: &Value) -> Lit {
     }
 }
 
-pub(super) fn gen_type(t: &il_codegen::sema::types::Ty) -> T {
+pub(super) fn gen_type(t: &il_codegen::ir::types::Ty) -> T {
     let name = t.to_string();
     [
         T::Bool,

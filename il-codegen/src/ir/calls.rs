@@ -1,8 +1,8 @@
 //! The calls of the checked IR, boxed in [`super::Expr`] and [`super::Op`]: rare and
 //! large, inline they would set the size of every expression and statement.
 
+use super::types::Ty;
 use super::{Condition, Place, StdCall, Value, Widen};
-use crate::sema::types::Ty;
 
 /// A call of a user FUNCTION: arguments in declaration order of its
 /// inputs; `out_types` are all its outputs, `outputs` the ones read with

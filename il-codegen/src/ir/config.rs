@@ -1,7 +1,7 @@
 //! The checked CONFIGURATION: resources, tasks and their data sources,
 //! program instances with their arguments, VAR_CONFIG and VAR_ACCESS.
 
-use super::super::types::Ty;
+use super::types::Ty;
 use super::{Const, Init, Loc, PathElem, Value, Var};
 
 /// A CONFIGURATION: its globals, and its resources with their tasks and

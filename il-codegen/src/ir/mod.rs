@@ -1,11 +1,28 @@
-//! The checked program: every name resolved, every value typed. The emitter
-//! turns this into Rust without further checks, so anything it accepts here
-//! must compile.
+//! The checked program: the one contract between the checker and every
+//! consumer (the emitter, the interpreter, the language server, the
+//! waveform writer). Every name is resolved, every value typed and every
+//! decision made: the emitter only prints it and the interpreter only
+//! evaluates it. The emitter turns it into Rust without further checks, so
+//! anything it accepts here must compile.
+//!
+//! [`crate::Checked::ir`] gives it; [`types`] holds the types it names,
+//! [`path`] the host paths (`tank.level`, `valves[2].open`) that tools
+//! take from users.
 
-use super::types::{Elem, Name, Ty};
+pub mod path;
+pub mod types;
+
 /// The IR's binary operators are the IL expression operators themselves.
 pub use crate::ast::ExprOp as BinOp;
-use crate::ast::{PouKind, VarKind};
+/// The syntax the IR names: kinds of POUs and variables, edges, memory
+/// areas, spans into the source, integer values.
+pub use crate::ast::{Area, Edge, PouKind, Span, VarKind};
+/// The initial value of a type (its default, or a subrange's lower limit).
+pub use crate::sema::default_const;
+/// Where `%IW1` lives in the process image, as the checker decides it for
+/// an address in a program.
+pub use crate::sema::parse_address;
+use types::{Elem, Name, Ty};
 
 /// A checked compilation unit: what the emitter and the interpreter consume.
 #[derive(Clone, Debug, Default)]

@@ -288,7 +288,7 @@ impl Ty {
     /// Both are strings of one kind (STRING or WSTRING) with different
     /// capacities: one type for assignment, parameters and comparison
     /// (docs/semantics.md, "Types"); a value going to `to` is cut at its
-    /// length ([`super::ir::Value::Resized`]).
+    /// length ([`super::Value::Resized`]).
     pub fn resizes_to(&self, to: &Ty) -> bool {
         matches!((self, to), (Ty::Str { wide: a, len: m }, Ty::Str { wide: b, len: n }) if a == b && m != n)
     }
