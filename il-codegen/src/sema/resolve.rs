@@ -224,7 +224,8 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
                     );
                     return None;
                 }
-                total = total.saturating_mul((hi - lo + 1) as i128);
+                // In i128: the extreme i64 bounds overflow an i64 difference.
+                total = total.saturating_mul(i128::from(hi) - i128::from(lo) + 1);
                 out.push((lo, hi));
             }
             if total > 1 << 24 {
@@ -241,31 +242,7 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
                 range,
             })))
         }
-        TypeSpec::Subrange { base, range, span } => {
-            let e =
-                Elem::from_name(&base.name).filter(|e| e.int_range().is_some() && *e != Elem::BOOL);
-            let Some(e) = e else {
-                cx.err(
-                    BAD_INIT,
-                    base.span,
-                    format!("a subrange needs an integer base type, not `{base}`"),
-                );
-                return None;
-            };
-            let (Some(lo), Some(hi)) = (const_int(cx, &range.lo), const_int(cx, &range.hi)) else {
-                return None;
-            };
-            let (min, max) = e.int_range().unwrap_or_default();
-            if lo > hi || (lo as i128) < min || (hi as i128) > max {
-                cx.err(
-                    BAD_INIT,
-                    *span,
-                    format!("the subrange {lo}..{hi} is empty or outside {}", e.name()),
-                );
-                return None;
-            }
-            Some(Ty::Elem(e))
-        }
+        TypeSpec::Subrange { base, range, .. } => subrange(cx, base, range).map(Ty::Elem),
         TypeSpec::Enum { span, .. } | TypeSpec::Struct { span, .. } => {
             cx.err(
                 UNSUPPORTED,
@@ -275,6 +252,75 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
             None
         }
     }
+}
+
+/// The base type of a subrange `base (lo..hi)`, after checking it (an
+/// integer type, not a bit string: subranges are of integer types, Ed.2
+/// 2.3.3.1) and its limits (literals inside the base type, not reversed).
+fn subrange(cx: &mut Cx, base: &ast::Ident, range: &ast::Subrange) -> Option<Elem> {
+    let e = match Elem::from_name(&base.name) {
+        Some(e) if e.is_int() => e,
+        Some(e) if e.is_bitstring() => {
+            cx.err(
+                BAD_INIT,
+                base.span,
+                format!(
+                    "a subrange needs an integer base type, not the bit string {}",
+                    e.name()
+                ),
+            );
+            return None;
+        }
+        _ => {
+            cx.err(
+                BAD_INIT,
+                base.span,
+                format!("a subrange needs an integer base type, not `{base}`"),
+            );
+            return None;
+        }
+    };
+    let (min, max) = e.int_range().unwrap_or_default();
+    let mut limit = |c: &ConstExpr| match c {
+        ConstExpr::Lit(Literal {
+            kind: LitKind::Int(n),
+            span,
+            ..
+        }) => {
+            let n = n.get();
+            if n < min || n > max {
+                cx.err(
+                    BAD_INIT,
+                    *span,
+                    format!(
+                        "the subrange limit {n} is outside {} ({min}..{max})",
+                        e.name()
+                    ),
+                );
+                return None;
+            }
+            Some(n)
+        }
+        other => {
+            cx.err(
+                BAD_INIT,
+                other.span(),
+                "subrange limits must be integer literals",
+            );
+            None
+        }
+    };
+    let (lo, hi) = (limit(&range.lo), limit(&range.hi));
+    let (lo, hi) = (lo?, hi?);
+    if lo > hi {
+        cx.err(
+            BAD_INIT,
+            range.span,
+            format!("the subrange {lo}..{hi} is empty: its lower limit is above its upper limit"),
+        );
+        return None;
+    }
+    Some(e)
 }
 
 pub(crate) fn const_int(cx: &mut Cx, c: &ConstExpr) -> Option<i64> {
