@@ -25,6 +25,7 @@ mod resolve;
 pub(crate) mod size;
 mod stdfb;
 mod stdfn;
+mod typedecls;
 pub mod types;
 pub mod widen;
 

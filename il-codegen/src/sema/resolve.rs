@@ -3,10 +3,10 @@
 
 use super::codes::*;
 use super::env::*;
-use super::ir::Loc;
+use super::ir::{Init, Loc};
 use super::types::{ArrayTy, DEFAULT_STRING_LEN, Elem, Ty};
 use super::{Cx, stdfb, suggest};
-use crate::ast::{self, ConstExpr, Initializer, LitKind, Literal, PouKind, Span, TypeSpec};
+use crate::ast::{self, ConstExpr, LitKind, Literal, PouKind, Span, TypeSpec};
 
 /// Resolve a direct address, checking it against the process image and,
 /// for a located variable, against its declared type.
@@ -340,18 +340,22 @@ pub(crate) fn const_int(cx: &mut Cx, c: &ConstExpr) -> Option<i64> {
     }
 }
 
-// How `Names` resolves a user type while the types are being collected:
-// here beside `resolve_type`, which it calls and which calls it.
+// How `Names` resolves a user type: here beside `resolve_type`, which
+// calls it and which it calls.
 impl Names<'_> {
     /// A user type by key: `Some(Some(ty))` when resolved, `Some(None)` after
     /// an error, `None` when no user type has that name.
     pub(crate) fn user_type(&self, cx: &mut Cx, key: &str, span: Span) -> Option<Option<Ty>> {
         let decl = self.types.get(key)?;
+        if let Some(r) = self.resolved.borrow().get(key) {
+            return Some(r.ty.clone());
+        }
         Some(match &decl.spec {
             TypeSpec::Struct { .. } => Some(Ty::Struct(decl.name.name.to_string().into())),
             TypeSpec::Enum { .. } => Some(Ty::Enum(decl.name.name.to_string().into())),
             spec => {
-                // An alias or a subrange: the type it names (aliases may chain).
+                // Not resolved yet: `typedecls` resolves what a type names
+                // before it, so this is a safety net only (aliases may chain).
                 if self.depth.get() > 32 {
                     cx.err(
                         RECURSION,
@@ -368,12 +372,8 @@ impl Names<'_> {
         })
     }
 
-    /// Subrange bounds of a type spec (inline or through aliases).
+    /// Subrange bounds of a type spec (inline, or of the named type).
     pub fn range_of(&self, spec: &TypeSpec) -> Option<(i128, i128)> {
-        self.range_depth(spec, 0)
-    }
-
-    fn range_depth(&self, spec: &TypeSpec, depth: u32) -> Option<(i128, i128)> {
         match spec {
             TypeSpec::Subrange { range, .. } => match (&range.lo, &range.hi) {
                 (
@@ -388,27 +388,17 @@ impl Names<'_> {
                 ) => Some((lo.get(), hi.get())),
                 _ => None,
             },
-            TypeSpec::Named(id) if depth < 32 => self
-                .types
-                .get(&id.key())
-                .and_then(|d| self.range_depth(&d.spec, depth + 1)),
+            TypeSpec::Named(id) => self.resolved.borrow().get(&id.key())?.range,
             _ => None,
         }
     }
 
-    /// The initial value a named type gives its variables (`TYPE T : INT := 5`).
-    pub fn default_init(&self, spec: &TypeSpec) -> Option<&Initializer> {
-        let mut spec = spec;
-        for _ in 0..32 {
-            let TypeSpec::Named(id) = spec else {
-                return None;
-            };
-            let decl = self.types.get(&id.key())?;
-            if let Some(i) = &decl.init {
-                return Some(i);
-            }
-            spec = &decl.spec;
-        }
-        None
+    /// The initial value a named type gives its variables (`TYPE T : INT :=
+    /// 5`), checked where the type is declared.
+    pub fn type_init(&self, spec: &TypeSpec) -> Option<Init> {
+        let TypeSpec::Named(id) = spec else {
+            return None;
+        };
+        self.resolved.borrow().get(&id.key())?.init.clone()
     }
 }
