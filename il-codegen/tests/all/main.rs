@@ -30,6 +30,7 @@ mod sema_host_functions;
 mod sema_hostile_names;
 mod sema_literals;
 mod sema_types;
+mod syntax_comments;
 mod syntax_corpus;
 mod syntax_declarations;
 mod syntax_errors;
