@@ -93,15 +93,6 @@ VAR my__flag : BOOL; END_VAR
 END_PROGRAM
 ",
     ),
-    (
-        "IL0127",
-        "\
-PROGRAM Main
-VAR limit : INT := TRUE; END_VAR
-    LD   limit
-END_PROGRAM
-",
-    ),
 ];
 
 /// Codes that have no example anywhere, and why.

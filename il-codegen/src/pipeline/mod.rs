@@ -91,10 +91,15 @@ impl Program {
     /// Parse and check every input.
     pub fn check(self) -> Checked {
         let files: Vec<&SourceFile> = self.inputs.iter().map(Input::il_text).collect();
-        let (units, mut diags): (Vec<_>, Vec<Vec<Diagnostic>>) = files
-            .iter()
-            .map(|f| syntax::parse_std(f, self.standard))
-            .unzip();
+        let mut units = Vec::new();
+        let mut diags: Vec<Vec<Diagnostic>> = Vec::new();
+        let mut inner_opens = Vec::new();
+        for f in &files {
+            let (u, d, n) = syntax::parse_noted(f, self.standard);
+            units.push(u);
+            diags.push(d);
+            inner_opens.push(n);
+        }
         // Files with syntax errors stay out of the semantic check (it would
         // mostly repeat them); the others are checked together. A pragma
         // refused by the strict standard is no damage to the syntax tree, so
@@ -109,8 +114,9 @@ impl Program {
         let pairs: Vec<_> = clean.iter().map(|&i| (files[i], &units[i])).collect();
         let (programs, more) = sema::check_all(&pairs, self.standard, self.cr_steps);
         let mut ir: Vec<sema::ir::Program> = files.iter().map(|_| Default::default()).collect();
-        for ((&i, p), m) in clean.iter().zip(programs).zip(more) {
+        for ((&i, p), mut m) in clean.iter().zip(programs).zip(more) {
             ir[i] = p;
+            syntax::lexer::comments::name_nested(&files[i].text, &inner_opens[i], &mut m);
             diags[i].extend(m);
         }
         let diagnostics: Vec<Vec<Diagnostic>> = self

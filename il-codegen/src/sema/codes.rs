@@ -72,5 +72,5 @@ codes! {
     HOST_BODY = "IL0140", "a host FUNCTION with a body or local variables",
         "A FUNCTION marked `{extern}` is a host function: IL declares its interface (result, VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT) and the crate around the generated code provides its body as a Rust function of the same name. It has no instructions and no VAR or VAR_TEMP of its own.\n\n    {extern}\n    FUNCTION log_value : BOOL\n    VAR_INPUT v : INT; END_VAR\n        LD v\n    END_FUNCTION\n\nRemove the instructions (write them in Rust: `fn log_value(ctx: &mut il_std::Cycle, v: i16) -> bool`), or remove `{extern}` to compile the FUNCTION from IL.";
     BAD_INIT = "IL0127", "invalid initial value",
-        "The initial value does not fit the declared type.";
+        "The initial value does not fit the declared type, or the type itself is wrong where it is declared: a subrange is of an integer type (SINT .. ULINT, not a bit string such as WORD), its limits are integer literals inside that type, and the lower one is not above the upper one. Every TYPE and variable is checked where it is declared, whether anything uses it or not.\n\n    TYPE Level : SINT (0..300); END_TYPE   (* a SINT holds -128..127 *)";
 }

@@ -1,7 +1,7 @@
 //! The environment the checker works in: every POU's interface, the
 //! resolved user types, and the names of FBs and types while they resolve.
 
-use super::ir::{Field, TypeDef, Var};
+use super::ir::{Field, Init, TypeDef, Var};
 use super::types::{Name, Ty};
 use crate::ast::{self, PouKind, Span};
 use std::collections::{HashMap, HashSet};
@@ -56,7 +56,22 @@ pub(crate) struct Names<'u> {
     pub pous: HashMap<String, (String, PouKind)>,
     /// User type key → its declaration.
     pub types: HashMap<String, &'u ast::TypeDecl>,
+    /// User type key → what it resolved to: filled once for every TYPE
+    /// declaration before any POU is checked (`typedecls.rs`), so that a use
+    /// reads the result instead of resolving (and reporting) again.
+    pub resolved: std::cell::RefCell<HashMap<String, Resolved>>,
     pub(crate) depth: std::cell::Cell<u32>,
+}
+
+/// A TYPE declaration, resolved and checked.
+pub(crate) struct Resolved {
+    /// `None` after an error (reported at the declaration).
+    pub ty: Option<Ty>,
+    /// Subrange bounds, its own or those of the type it renames.
+    pub range: Option<(i128, i128)>,
+    /// The initial value its variables take when they give none: its own
+    /// (`TYPE T : INT := 5`) or that of the type it renames.
+    pub init: Option<Init>,
 }
 
 pub(crate) struct PouSig {

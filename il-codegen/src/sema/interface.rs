@@ -134,13 +134,12 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
                 cx.warn(BAD_INIT, decl.span, "the initial value of a located variable is not applied: the host owns the process image");
             }
             let range = fb_names.range_of(&decl.ty);
-            let init = decl
-                .init
-                .as_ref()
-                .or_else(|| fb_names.default_init(&decl.ty));
-            let init = init
-                .and_then(|i| init_value(cx, types, i, &ty, range))
-                .or_else(|| subrange_start(&ty, range));
+            let init = match &decl.init {
+                Some(i) => init_value(cx, types, i, &ty, range),
+                // Checked once, where the type is declared.
+                None => fb_names.type_init(&decl.ty),
+            }
+            .or_else(|| subrange_start(&ty, range));
             for name in &decl.names {
                 check_ident(cx, name);
                 let key = name.key();

@@ -24,6 +24,7 @@ mod resolve;
 pub(crate) mod size;
 mod stdfb;
 mod stdfn;
+mod typedecls;
 pub mod widen;
 
 // The IR and its types live in `crate::ir`, the public contract; the

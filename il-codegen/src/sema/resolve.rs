@@ -3,10 +3,10 @@
 
 use super::codes::*;
 use super::env::*;
-use super::ir::Loc;
+use super::ir::{Init, Loc};
 use super::types::{ArrayTy, DEFAULT_STRING_LEN, Elem, Ty};
 use super::{Cx, stdfb, suggest};
-use crate::ast::{self, ConstExpr, Initializer, LitKind, Literal, PouKind, Span, TypeSpec};
+use crate::ast::{self, ConstExpr, LitKind, Literal, PouKind, Span, TypeSpec};
 
 /// Resolve a direct address, checking it against the process image and,
 /// for a located variable, against its declared type.
@@ -224,7 +224,8 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
                     );
                     return None;
                 }
-                total = total.saturating_mul((hi - lo + 1) as i128);
+                // In i128: the extreme i64 bounds overflow an i64 difference.
+                total = total.saturating_mul(i128::from(hi) - i128::from(lo) + 1);
                 out.push((lo, hi));
             }
             if total > 1 << 24 {
@@ -241,31 +242,7 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
                 range,
             })))
         }
-        TypeSpec::Subrange { base, range, span } => {
-            let e =
-                Elem::from_name(&base.name).filter(|e| e.int_range().is_some() && *e != Elem::BOOL);
-            let Some(e) = e else {
-                cx.err(
-                    BAD_INIT,
-                    base.span,
-                    format!("a subrange needs an integer base type, not `{base}`"),
-                );
-                return None;
-            };
-            let (Some(lo), Some(hi)) = (const_int(cx, &range.lo), const_int(cx, &range.hi)) else {
-                return None;
-            };
-            let (min, max) = e.int_range().unwrap_or_default();
-            if lo > hi || (lo as i128) < min || (hi as i128) > max {
-                cx.err(
-                    BAD_INIT,
-                    *span,
-                    format!("the subrange {lo}..{hi} is empty or outside {}", e.name()),
-                );
-                return None;
-            }
-            Some(Ty::Elem(e))
-        }
+        TypeSpec::Subrange { base, range, .. } => subrange(cx, base, range).map(Ty::Elem),
         TypeSpec::Enum { span, .. } | TypeSpec::Struct { span, .. } => {
             cx.err(
                 UNSUPPORTED,
@@ -275,6 +252,75 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
             None
         }
     }
+}
+
+/// The base type of a subrange `base (lo..hi)`, after checking it (an
+/// integer type, not a bit string: subranges are of integer types, Ed.2
+/// 2.3.3.1) and its limits (literals inside the base type, not reversed).
+fn subrange(cx: &mut Cx, base: &ast::Ident, range: &ast::Subrange) -> Option<Elem> {
+    let e = match Elem::from_name(&base.name) {
+        Some(e) if e.is_int() => e,
+        Some(e) if e.is_bitstring() => {
+            cx.err(
+                BAD_INIT,
+                base.span,
+                format!(
+                    "a subrange needs an integer base type, not the bit string {}",
+                    e.name()
+                ),
+            );
+            return None;
+        }
+        _ => {
+            cx.err(
+                BAD_INIT,
+                base.span,
+                format!("a subrange needs an integer base type, not `{base}`"),
+            );
+            return None;
+        }
+    };
+    let (min, max) = e.int_range().unwrap_or_default();
+    let mut limit = |c: &ConstExpr| match c {
+        ConstExpr::Lit(Literal {
+            kind: LitKind::Int(n),
+            span,
+            ..
+        }) => {
+            let n = n.get();
+            if n < min || n > max {
+                cx.err(
+                    BAD_INIT,
+                    *span,
+                    format!(
+                        "the subrange limit {n} is outside {} ({min}..{max})",
+                        e.name()
+                    ),
+                );
+                return None;
+            }
+            Some(n)
+        }
+        other => {
+            cx.err(
+                BAD_INIT,
+                other.span(),
+                "subrange limits must be integer literals",
+            );
+            None
+        }
+    };
+    let (lo, hi) = (limit(&range.lo), limit(&range.hi));
+    let (lo, hi) = (lo?, hi?);
+    if lo > hi {
+        cx.err(
+            BAD_INIT,
+            range.span,
+            format!("the subrange {lo}..{hi} is empty: its lower limit is above its upper limit"),
+        );
+        return None;
+    }
+    Some(e)
 }
 
 pub(crate) fn const_int(cx: &mut Cx, c: &ConstExpr) -> Option<i64> {
@@ -294,18 +340,22 @@ pub(crate) fn const_int(cx: &mut Cx, c: &ConstExpr) -> Option<i64> {
     }
 }
 
-// How `Names` resolves a user type while the types are being collected:
-// here beside `resolve_type`, which it calls and which calls it.
+// How `Names` resolves a user type: here beside `resolve_type`, which
+// calls it and which it calls.
 impl Names<'_> {
     /// A user type by key: `Some(Some(ty))` when resolved, `Some(None)` after
     /// an error, `None` when no user type has that name.
     pub(crate) fn user_type(&self, cx: &mut Cx, key: &str, span: Span) -> Option<Option<Ty>> {
         let decl = self.types.get(key)?;
+        if let Some(r) = self.resolved.borrow().get(key) {
+            return Some(r.ty.clone());
+        }
         Some(match &decl.spec {
             TypeSpec::Struct { .. } => Some(Ty::Struct(decl.name.name.to_string().into())),
             TypeSpec::Enum { .. } => Some(Ty::Enum(decl.name.name.to_string().into())),
             spec => {
-                // An alias or a subrange: the type it names (aliases may chain).
+                // Not resolved yet: `typedecls` resolves what a type names
+                // before it, so this is a safety net only (aliases may chain).
                 if self.depth.get() > 32 {
                     cx.err(
                         RECURSION,
@@ -322,12 +372,8 @@ impl Names<'_> {
         })
     }
 
-    /// Subrange bounds of a type spec (inline or through aliases).
+    /// Subrange bounds of a type spec (inline, or of the named type).
     pub fn range_of(&self, spec: &TypeSpec) -> Option<(i128, i128)> {
-        self.range_depth(spec, 0)
-    }
-
-    fn range_depth(&self, spec: &TypeSpec, depth: u32) -> Option<(i128, i128)> {
         match spec {
             TypeSpec::Subrange { range, .. } => match (&range.lo, &range.hi) {
                 (
@@ -342,27 +388,17 @@ impl Names<'_> {
                 ) => Some((lo.get(), hi.get())),
                 _ => None,
             },
-            TypeSpec::Named(id) if depth < 32 => self
-                .types
-                .get(&id.key())
-                .and_then(|d| self.range_depth(&d.spec, depth + 1)),
+            TypeSpec::Named(id) => self.resolved.borrow().get(&id.key())?.range,
             _ => None,
         }
     }
 
-    /// The initial value a named type gives its variables (`TYPE T : INT := 5`).
-    pub fn default_init(&self, spec: &TypeSpec) -> Option<&Initializer> {
-        let mut spec = spec;
-        for _ in 0..32 {
-            let TypeSpec::Named(id) = spec else {
-                return None;
-            };
-            let decl = self.types.get(&id.key())?;
-            if let Some(i) = &decl.init {
-                return Some(i);
-            }
-            spec = &decl.spec;
-        }
-        None
+    /// The initial value a named type gives its variables (`TYPE T : INT :=
+    /// 5`), checked where the type is declared.
+    pub fn type_init(&self, spec: &TypeSpec) -> Option<Init> {
+        let TypeSpec::Named(id) = spec else {
+            return None;
+        };
+        self.resolved.borrow().get(&id.key())?.init.clone()
     }
 }

@@ -35,6 +35,21 @@ pub fn parse_std(
     file: &SourceFile,
     standard: crate::dialect::Standard,
 ) -> (CompilationUnit, Vec<Diagnostic>) {
+    let (unit, diags, _) = parse_noted(file, standard);
+    (unit, diags)
+}
+
+/// [`parse_std`], with the comments of the file that hold a `(*`: the
+/// checker's errors in the text after one are named by
+/// [`lexer::comments::name_nested`] too (the syntax errors already are).
+pub(crate) fn parse_noted(
+    file: &SourceFile,
+    standard: crate::dialect::Standard,
+) -> (
+    CompilationUnit,
+    Vec<Diagnostic>,
+    Vec<lexer::comments::InnerOpen>,
+) {
     if file.text.len() > u32::MAX as usize {
         let d = Diagnostic::error(
             code::TOO_LARGE,
@@ -43,7 +58,7 @@ pub fn parse_std(
         )
         .with_label("file too large")
         .with_help("split the program into several files");
-        return (CompilationUnit::default(), vec![d]);
+        return (CompilationUnit::default(), vec![d], Vec::new());
     }
     let mut lx = lexer::Lexer::new(&file.text, standard);
     let mut ctx = actions::Ctx::default();
@@ -55,7 +70,11 @@ pub fn parse_std(
     // file to lex, for the lexer's own diagnostics.
     let result = grammar::UnitParser::new().parse(&mut ctx, lx.by_ref());
     lx.by_ref().for_each(drop);
-    let (mut diags, host_marks) = lx.finish_marked();
+    let lexer::Finished {
+        mut diags,
+        host_marks,
+        inner_opens,
+    } = lx.finish_marked();
     let failed = result.is_err() || !ctx.errors.is_empty();
     let toks = if failed {
         lexer::lex_std(&file.text, standard).0
@@ -74,8 +93,9 @@ pub fn parse_std(
     }
     diags.extend(ctx.diags);
     host::mark(&mut unit, &host_marks, &mut diags);
+    lexer::comments::name_nested(&file.text, &inner_opens, &mut diags);
     diags.sort_by_key(|d| (d.span.lo, d.span.hi));
     diags.dedup_by(|a, b| a.span == b.span && a.code == b.code);
     crate::diag::limit(&mut diags);
-    (unit, diags)
+    (unit, diags, inner_opens)
 }

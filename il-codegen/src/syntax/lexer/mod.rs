@@ -25,6 +25,7 @@ use super::literal_message;
 use il_std::literal;
 
 mod body;
+pub mod comments;
 mod decls;
 mod keywords;
 mod literals;
@@ -94,6 +95,21 @@ pub struct Lexer<'a> {
     standard: crate::dialect::Standard,
     /// `{extern}` pragmas, which mark the next FUNCTION as a host function.
     host_marks: Vec<Span>,
+    /// Comments that hold a `(*` (see `comments.rs`).
+    inner_opens: Vec<comments::InnerOpen>,
+    /// Whether comments nest: never in IEC (and so here), but some tools'
+    /// exports declare that theirs do.
+    nested_comments: bool,
+}
+
+/// What the lexer leaves besides the tokens ([`Lexer::finish_marked`]).
+pub struct Finished {
+    /// Its diagnostics.
+    pub diags: Vec<Diagnostic>,
+    /// The spans of the `{extern}` pragmas.
+    pub host_marks: Vec<Span>,
+    /// The comments that hold a `(*`, in file order.
+    pub inner_opens: Vec<comments::InnerOpen>,
 }
 
 fn is_ident_start(c: u8) -> bool {
@@ -160,6 +176,8 @@ impl<'a> Lexer<'a> {
             scratch: Diagnostic::error("", Span::default(), ""),
             standard,
             host_marks: Vec::new(),
+            inner_opens: Vec::new(),
+            nested_comments: false,
         };
         if src.starts_with('\u{feff}') {
             lx.pos = 3;
@@ -167,11 +185,16 @@ impl<'a> Lexer<'a> {
         lx
     }
 
-    /// The lexer's diagnostics and the spans of the `{extern}` pragmas (the
+    /// The lexer's diagnostics, the spans of the `{extern}` pragmas (the
     /// only pragma with a meaning: the FUNCTION after it is the host's, see
-    /// `syntax::host`), once every token was taken.
-    pub fn finish_marked(mut self) -> (Vec<Diagnostic>, Vec<Span>) {
-        (self.take_diags(), std::mem::take(&mut self.host_marks))
+    /// `syntax::host`) and the comments that hold a `(*`, once every token
+    /// was taken.
+    pub fn finish_marked(mut self) -> Finished {
+        Finished {
+            diags: self.take_diags(),
+            host_marks: std::mem::take(&mut self.host_marks),
+            inner_opens: std::mem::take(&mut self.inner_opens),
+        }
     }
 
     /// The diagnostics kept, and a "not shown" note for those that were not.
@@ -287,9 +310,18 @@ impl<'a> Lexer<'a> {
                 b' ' | b'\t' | b'\r' | 0x0B | 0x0C => self.pos += 1,
                 b'(' if self.peek(1) == b'*' => {
                     let start = self.pos;
-                    match self.src[start + 2..].find("*)") {
+                    let comment = comments::scan(self.src, start, self.nested_comments);
+                    match comment.end {
                         Some(end) => {
-                            let end = start + 2 + end + 2;
+                            if let Some(inner) = comment.inner
+                                && self.inner_opens.len() < comments::MAX_NOTED
+                            {
+                                self.inner_opens.push(comments::InnerOpen {
+                                    open: start,
+                                    inner,
+                                    close: end - 2,
+                                });
+                            }
                             if let Some(i) = self.src[start..end].find('\n') {
                                 nl.get_or_insert(start + i);
                             }
