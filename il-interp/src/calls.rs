@@ -96,6 +96,7 @@ impl Machine {
             return Err("internal: not a standard function call".into());
         };
         let il_codegen::ir::StdFnCall {
+            sig,
             en,
             call,
             args,
@@ -114,7 +115,9 @@ impl Machine {
             vals.push(self.value(f, a, ctx, line)?);
         }
         let mut faults = Vec::new();
-        let r = stdfn::call(call, &vals, ret, *fault, &mut |k| faults.push(k))?;
+        let r = stdfn::call(call, &vals, ret, (*fault, sig.rounding), &mut |k| {
+            faults.push(k)
+        })?;
         for k in faults {
             self.fault(ctx, f, k, line);
         }
@@ -137,6 +140,7 @@ impl Machine {
             inputs,
             outputs,
             inouts,
+            inouts_in_instance,
             externals,
             cond: _,
         } = &**c;
@@ -168,7 +172,7 @@ impl Machine {
         };
         names.extend(externals.iter().map(|(e, _)| e.clone()));
         let refs: Vec<(String, &Place)> = names.into_iter().zip(&places).collect();
-        let back = self.call_fb_at(f, inst, ins, &refs, ctx, line)?;
+        let back = self.call_fb_at(f, inst, ins, (&refs, *inouts_in_instance), ctx, line)?;
         for (p, v) in places.iter().zip(back) {
             self.write(f, p, v, ctx, line)?;
         }
@@ -200,7 +204,7 @@ impl Machine {
         f: &mut Frame,
         inst: &Place,
         ins: Vec<(String, Value)>,
-        refs: &[(String, &Place)],
+        (refs, inouts_in_instance): (&[(String, &Place)], bool),
         ctx: &mut Cycle,
         line: u32,
     ) -> Result<Vec<Value>, String> {
@@ -229,12 +233,11 @@ impl Machine {
                         .ok_or_else(|| format!("internal: no input {n}"))?;
                     i.vars[k] = v;
                 }
-                // The in-outs are read with the inputs set, as generated
-                // code binds them: one bound to a member of the instance
-                // itself (`CAL b(x := i, io := b.x)`) sees the input, so
-                // the instance goes back to its place first (only then:
-                // it is a copy of the whole instance).
-                if refs.iter().any(|(_, p)| p.root == inst.root) {
+                // The in-outs are read with the inputs set: one bound to a
+                // member of the instance itself sees the input, so the
+                // instance goes back to its place first (only then: it is
+                // a copy of the whole instance).
+                if inouts_in_instance {
                     let mut root = std::mem::replace(self_root(f, &inst.root)?, Value::Bool(false));
                     let done = self.write_at(&mut root, &steps, Value::Fb(i.clone()));
                     *self_root(f, &inst.root)? = root;

@@ -6,6 +6,7 @@ use il_codegen::ir::StdCall;
 use il_codegen::ir::types::{Elem, Ty};
 use il_std::FaultKind;
 use il_std::func as f;
+use il_std::signature::Rounding;
 use std::cmp::Ordering;
 
 /// Evaluates `$body` with the type alias `$t` naming the Rust type of the
@@ -577,7 +578,7 @@ pub fn call(
     call: &StdCall,
     args: &[Value],
     ret: &Ty,
-    kind: Option<FaultKind>,
+    (kind, rounding): (Option<FaultKind>, Option<Rounding>),
     fault: &mut dyn FnMut(FaultKind),
 ) -> Result<Value, String> {
     match (call, kind) {
@@ -593,12 +594,10 @@ pub fn call(
         // saturate and record the fault.
         (StdCall::Plain(n), Some(k @ FaultKind::ConversionOutOfRange)) => {
             let x = args.first().map(Value::as_f64).unwrap_or(0.0);
-            // The fault is the table's; the rounding is the function's:
-            // TRUNC and REAL_TRUNC_* truncate.
-            let r = if n.contains("TRUNC") {
-                x.trunc()
-            } else {
-                x.round_ties_even()
+            // The fault and the rounding are the table's.
+            let r = match rounding {
+                Some(Rounding::TowardZero) => x.trunc(),
+                _ => x.round_ties_even(),
             };
             let (lo, hi) = ret.elem().and_then(Elem::int_range).unwrap_or((0, 0));
             if !r.is_finite() || r < lo as f64 || r > hi as f64 {

@@ -550,11 +550,14 @@ impl PouEmitter<'_> {
                 format!("if {c} {{ {w} }}")
             }
             Op::CallFb(c) => {
+                // `inouts_in_instance` needs no code of its own: an in-out
+                // under the instance is copied in after the inputs are set.
                 let crate::sema::ir::FbCall {
                     inst,
                     inputs,
                     outputs,
                     inouts,
+                    inouts_in_instance: _,
                     externals,
                     cond,
                 } = &**c;

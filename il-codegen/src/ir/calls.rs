@@ -31,6 +31,9 @@ pub struct UserCall {
 /// A call of an il-std function.
 #[derive(Clone, Debug, PartialEq)]
 pub struct StdFnCall {
+    /// The function's entry in il-std's table: its name, its rounding
+    /// ([`il_std::signature::Signature::rounding`]) and its documentation.
+    pub sig: &'static il_std::signature::Signature,
     /// `EN := value` of a formal call: evaluated only when TRUE, else the
     /// result is the type's default (and `ENO =>` targets get FALSE).
     pub en: Option<Value>,
@@ -61,6 +64,10 @@ pub struct FbCall {
     pub outputs: Vec<(String, Place, bool, Option<Widen>)>,
     /// Places bound to the FB's VAR_IN_OUTs, in their declaration order.
     pub inouts: Vec<Place>,
+    /// Some in-out is bound to a place under the instance's own root
+    /// (`CAL b(x := i, io := b.x)`): in-outs are references, so each is
+    /// read after the inputs are set and sees them.
+    pub inouts_in_instance: bool,
     /// The FB's (non-located) VAR_EXTERNALs, in declaration order: the
     /// caller passes its own externals of the same names. `true`: the
     /// FB declares it CONSTANT (a shared reference suffices).

@@ -24,6 +24,7 @@ pub(crate) enum ArgShape {
 }
 
 pub(crate) struct Resolved {
+    pub sig: &'static il_std::signature::Signature,
     pub call: StdCall,
     /// The type each argument must have.
     pub params: Vec<Ty>,
@@ -341,6 +342,7 @@ pub(crate) fn resolve(
     let elems: Vec<sig::Elem> = params.iter().filter_map(sig_elem).collect();
     let fault = s.fault_for(&elems);
     Ok(Resolved {
+        sig: s,
         call,
         params,
         ret,

@@ -245,8 +245,22 @@ pub struct Signature {
     /// [`FaultKind::DivisionByZero`] applies only to an integer divisor: see
     /// [`Signature::fault_for`], which compilers and interpreters ask.
     pub fault: Option<FaultKind>,
+    /// How a REAL argument becomes an integer result, for the conversions
+    /// that do (REAL_TO_INT rounds half to even; TRUNC and REAL_TRUNC_INT
+    /// truncate): what a compiler's or an interpreter's out-of-range check
+    /// must round as the function does.
+    pub rounding: Option<Rounding>,
     /// One line saying what the function does.
     pub doc: &'static str,
+}
+
+/// How a real number becomes an integer ([`Signature::rounding`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Rounding {
+    /// To the nearest integer, halves to the even one (`REAL_TO_INT`).
+    HalfEven,
+    /// Toward zero (`TRUNC`, `REAL_TRUNC_INT`).
+    TowardZero,
 }
 
 impl Signature {
@@ -301,8 +315,31 @@ macro_rules! conv_fault {
     };
 }
 
+/// The rounding of a conversion, by its kind in [`conversions`].
+macro_rules! conv_rounding {
+    (round) => {
+        Some(Rounding::HalfEven)
+    };
+    (trunc) => {
+        Some(Rounding::TowardZero)
+    };
+    ($other:ident) => {
+        None
+    };
+}
+
+/// The rounding of a hand-written entry (`~ TowardZero`).
+macro_rules! rounding {
+    () => {
+        None
+    };
+    ($r:ident) => {
+        Some(Rounding::$r)
+    };
+}
+
 macro_rules! build_table {
-    ([ $( $name:ident $ext:ident ( $( $p:ident : $pk:ident $pc:ident ),* ) -> $rk:ident $rc:ident $( ! $fault:ident )? , $doc:literal ; )* ]
+    ([ $( $name:ident $ext:ident ( $( $p:ident : $pk:ident $pc:ident ),* ) -> $rk:ident $rc:ident $( ! $fault:ident )? $( ~ $round:ident )? , $doc:literal ; )* ]
      $( $cname:ident : $src:ident => $dst:ident, $kind:ident ; )*) => {
         /// Every standard function of [`func`](crate::func): the hand-written overloaded ones
         /// first, then the type conversions.
@@ -313,6 +350,7 @@ macro_rules! build_table {
                 ret: pty!($rk $rc),
                 ext: Ext::$ext,
                 fault: fault!($($fault)?),
+                rounding: rounding!($($round)?),
                 doc: $doc,
             }, )*
             $( Signature {
@@ -321,6 +359,7 @@ macro_rules! build_table {
                 ret: ParamTy::Concrete(Elem::$dst),
                 ext: Ext::Fixed,
                 fault: conv_fault!($kind),
+                rounding: conv_rounding!($kind),
                 doc: concat!("Converts ", stringify!($src), " to ", stringify!($dst), "."),
             }, )*
         ];
@@ -353,7 +392,7 @@ conversions!(build_table;
     ACOS Fixed (IN: T AnyReal) -> T AnyReal, "Principal arc cosine.";
     ATAN Fixed (IN: T AnyReal) -> T AnyReal, "Principal arc tangent.";
     EXPT Fixed (IN1: T AnyReal, IN2: O AnyNum) -> T AnyReal, "Exponentiation IN1 ** IN2.";
-    TRUNC Fixed (IN: O AnyReal) -> C DINT ! ConversionOutOfRange, "Truncation toward zero to DINT.";
+    TRUNC Fixed (IN: O AnyReal) -> C DINT ! ConversionOutOfRange ~ TowardZero, "Truncation toward zero to DINT.";
     SHL Fixed (IN: T AnyBitString, N: O AnyInt) -> T AnyBitString, "Shift left by N bits, zero-filled.";
     SHR Fixed (IN: T AnyBitString, N: O AnyInt) -> T AnyBitString, "Shift right by N bits, zero-filled.";
     ROL Fixed (IN: T AnyBitString, N: O AnyInt) -> T AnyBitString, "Rotate left by N bits.";

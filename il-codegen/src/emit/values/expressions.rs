@@ -2,6 +2,7 @@
 //! calls with their faults.
 
 use super::*;
+use il_std::signature::Rounding;
 
 impl PouEmitter<'_> {
     pub(crate) fn expr(&self, e: &Expr, line: u32) -> String {
@@ -87,6 +88,7 @@ impl PouEmitter<'_> {
             }
             Expr::CallStd(c) => {
                 let crate::sema::ir::StdFnCall {
+                    sig,
                     en,
                     call,
                     args,
@@ -99,14 +101,12 @@ impl PouEmitter<'_> {
                     match (call, fault) {
                         // REAL → integer out of range (or NaN) saturates, as the
                         // plain function does, and is recorded as a fault.
-                        (StdCall::Plain(n), Some(k @ FaultKind::ConversionOutOfRange)) => {
+                        (StdCall::Plain(_), Some(k @ FaultKind::ConversionOutOfRange)) => {
                             let t = rust_ty(ret);
-                            // The fault is the table's; the rounding is the
-                            // function's: TRUNC and REAL_TRUNC_* truncate.
-                            let f = if n.contains("TRUNC") {
-                                "trunc_to_int_checked"
-                            } else {
-                                "real_to_int_checked"
+                            // The fault and the rounding are the table's.
+                            let f = match sig.rounding {
+                                Some(Rounding::TowardZero) => "trunc_to_int_checked",
+                                _ => "real_to_int_checked",
                             };
                             let a = &args[0];
                             let fault = self.fault_of(*k, line);

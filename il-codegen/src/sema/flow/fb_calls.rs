@@ -91,6 +91,7 @@ impl Walk<'_, '_> {
             inputs: vec![(name, value)],
             outputs: Vec::new(),
             inouts: Vec::new(),
+            inouts_in_instance: false,
             externals,
             cond: None,
         })));

@@ -458,6 +458,7 @@ impl Walk<'_, '_> {
         self.push(Op::SetCr {
             cr,
             expr: Expr::CallStd(Box::new(crate::sema::ir::StdFnCall {
+                sig: res.sig,
                 en,
                 call: res.call,
                 args: values,

@@ -406,7 +406,7 @@ impl Walk<'_, '_> {
                     return Cr::Undef(Why::AfterCal(self.line));
                 }
                 // In declaration order.
-                let inouts = inouts_decl
+                let inouts: Vec<Place> = inouts_decl
                     .iter()
                     .filter_map(|(n, _)| {
                         inouts
@@ -415,7 +415,9 @@ impl Walk<'_, '_> {
                             .map(|(_, p)| p.clone())
                     })
                     .collect();
+                let inouts_in_instance = inouts.iter().any(|p: &Place| p.root == inst.root);
                 self.push(Op::CallFb(Box::new(crate::sema::ir::FbCall {
+                    inouts_in_instance,
                     inst,
                     inputs,
                     outputs,
