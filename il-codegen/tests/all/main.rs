@@ -28,6 +28,7 @@ mod sema_hints;
 mod sema_host_functions;
 mod sema_hostile_names;
 mod sema_literals;
+mod sema_std_blocks;
 mod sema_types;
 mod syntax_corpus;
 mod syntax_declarations;
