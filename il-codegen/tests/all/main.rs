@@ -30,6 +30,8 @@ mod sema_hostile_names;
 mod sema_literals;
 mod sema_std_blocks;
 mod sema_types;
+#[cfg(feature = "plcopen")]
+mod sources_by_content;
 mod syntax_corpus;
 mod syntax_declarations;
 mod syntax_errors;
