@@ -39,8 +39,9 @@ fn main() {
             row(stringify!($ctud), size_of::<$ctud>(), 8 * B + 2 * size_of::<$t>());
         )*};
     }
-    counters!(CTU CTD CTUD i16, CTU_DINT CTD_DINT CTUD_DINT i32, CTU_LINT CTD_LINT CTUD_LINT i64,
-        CTU_UDINT CTD_UDINT CTUD_UDINT u32, CTU_ULINT CTD_ULINT CTUD_ULINT u64);
+    counters!(CTU CTD CTUD i16, CTU_INT CTD_INT CTUD_INT i16, CTU_DINT CTD_DINT CTUD_DINT i32,
+        CTU_LINT CTD_LINT CTUD_LINT i64, CTU_UDINT CTD_UDINT CTUD_UDINT u32,
+        CTU_ULINT CTD_ULINT CTUD_ULINT u64);
     // TP: IN PT Q ET in_m state(1-byte enum) acc last
     row("TP", size_of::<TP>(), 3 * B + 1 + 4 * T);
     // TON: IN PT Q ET running acc last

@@ -71,8 +71,9 @@ pub fn run(
     bar.stage("Checking", err);
     // The files form one program, as with `ilc emit` and the build-script
     // Builder: a FUNCTION_BLOCK of one file may be used in another.
-    // A `.xml` file is a PLCopen project: its IL is checked with the rest and
-    // its diagnostics point into the XML.
+    // An XML file (its text starts with `<`, or named `.xml`) is a PLCopen
+    // project: its IL is checked with the rest and its diagnostics point
+    // into the XML.
     let program = front.program(files);
     let checked = program.check();
     bar.clear(err);

@@ -15,6 +15,7 @@ Examples:
   ilc emit -o src/plc *.il               Write one .rs file per IL file
   ilc check src/*.il                     Check several files (all are checked)
   ilc check plc.xml                      Check the IL POUs of a PLCopen XML project
+                                         (any file whose text starts with `<`)
   ilc check --message-format json a.il   One JSON object per diagnostic on stdout
   ilc check --color always a.il | less -R
   cat a.il | ilc check -                 Read the source from standard input
@@ -52,8 +53,9 @@ const LSP_EXAMPLES: &str = "\
 Examples:
   ilc lsp                     Started by the editor, which talks to it on stdin/stdout
 
-The editor sends the IL (.il) and PLCopen (.xml) documents it opens; the .il
-files of its workspace folders are read too, and all of them are checked as
+The editor sends the IL (.il) and PLCopen (.xml) documents it opens, each read
+as XML when its text starts with `<` and as IL otherwise, whatever its name;
+the .il files of its workspace folders are read too, and all of them are checked as
 one program, as `ilc check a.il b.il` does. The server publishes the same
 diagnostics as `ilc check`, and answers hover (the CR type before and after
 an instruction, declarations, standard signatures), inlay hints (the CR type
@@ -118,7 +120,9 @@ impl Front {
         files.into_iter().fold(
             il_codegen::Program::new().standard(self.standard),
             |p, f| {
-                if self.snippet {
+                // XML is no instruction list: it is imported under
+                // `--snippet` too.
+                if self.snippet && !il_codegen::pipeline::is_xml(&f.name, &f.text) {
                     p.snippet(f)
                 } else {
                     p.source(f)
@@ -144,7 +148,7 @@ pub fn command() -> Command {
                 .arg(
                     Arg::new("files")
                         .value_name("FILE")
-                        .help("IL source files to check (`-` reads standard input); a `.xml` file is a PLCopen TC6 project")
+                        .help("IL source files to check (`-` reads standard input); a file whose text starts with `<` (or named `.xml`) is a PLCopen TC6 project")
                         .required(true)
                         .num_args(1..)
                         .action(ArgAction::Append),
@@ -183,7 +187,7 @@ pub fn command() -> Command {
                 .arg(
                     Arg::new("files")
                         .value_name("FILE")
-                        .help("IL source files (or PLCopen `.xml` projects), compiled together as one program")
+                        .help("IL source files (or PLCopen XML projects, known by their text), compiled together as one program")
                         .required(true)
                         .num_args(1..)
                         .action(ArgAction::Append),
@@ -214,7 +218,7 @@ pub fn command() -> Command {
                     Arg::new("file")
                         .value_name("FILE")
                         .required(true)
-                        .help("IL source file, or a PLCopen `.xml` project"),
+                        .help("IL source file, or a PLCopen XML project (known by its text)"),
                 )
                 .arg(Arg::new("program").long("program").value_name("NAME").help(
                     "The PROGRAM (or FUNCTION_BLOCK) to run; default: the file's only CONFIGURATION, else its only PROGRAM",

@@ -4,7 +4,7 @@ use il_codegen::diag::render::render;
 use std::io::Write;
 use std::path::Path;
 
-/// Compile `files` as one program (a `.xml` file is a PLCopen project). Diagnostics go to `err`; the Rust code to
+/// Compile `files` as one program (an XML file is a PLCopen project). Diagnostics go to `err`; the Rust code to
 /// `out`, or to `<dir>/<stem>.rs` per input (two inputs with one stem are refused;
 /// written only when every file
 /// compiles, each atomically and only when changed). Returns success.

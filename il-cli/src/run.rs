@@ -154,7 +154,8 @@ pub fn run(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> u8 {
 }
 
 fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), String> {
-    // A `.xml` file is a PLCopen project: its IL POUs are run.
+    // An XML file (by its text or a `.xml` name) is a PLCopen project: its
+    // IL POUs are run.
     let program = o.front.program(vec![crate::check::read_source(&o.file)?]);
     let checked = program.check();
     let _ = write!(err, "{}", checked.render(o.color));

@@ -11,7 +11,8 @@
 //! `include!(concat!(env!("OUT_DIR"), "/motor.rs"));`.
 //!
 //! A PLCopen TC6 XML project joins the same program with
-//! `.plcopen_file("plc/project.xml")` and becomes `$OUT_DIR/project.rs`.
+//! `.plcopen_file("plc/project.xml")` (or `.file`, which knows XML by its
+//! text) and becomes `$OUT_DIR/project.rs`.
 
 use crate::diag::render::render;
 use crate::pipeline::{Input, Program};
@@ -21,7 +22,8 @@ use std::path::{Path, PathBuf};
 /// Compiles IL files to Rust files, for build scripts.
 #[derive(Clone, Debug, Default)]
 pub struct Builder {
-    /// Each file, and whether it is PLCopen XML.
+    /// Each file, and whether it was given as PLCopen XML (else its
+    /// content decides: [`is_xml`](crate::pipeline::is_xml)).
     files: Vec<(PathBuf, bool)>,
     out_dir: Option<PathBuf>,
     cargo_directives: Option<bool>,
@@ -58,8 +60,10 @@ impl Builder {
         Builder::default()
     }
 
-    /// Add an IL source file (relative paths are relative to the crate root,
-    /// where cargo runs build scripts).
+    /// Add a source file (relative paths are relative to the crate root,
+    /// where cargo runs build scripts): IL, or a PLCopen TC6 XML project
+    /// when its text is XML (starts with `<`) or its name ends in `.xml`,
+    /// as with [`Builder::plcopen_file`].
     pub fn file(mut self, path: impl AsRef<Path>) -> Self {
         self.files.push((path.as_ref().to_path_buf(), false));
         self
@@ -164,12 +168,16 @@ impl Builder {
                     sources.push(if *xml {
                         Input::plcopen(file)
                     } else {
-                        Input::il(file)
+                        Input::by_content(file)
                     });
                 }
                 Err(e) => failed.push_str(&format!(
-                    "error: cannot read {} file `{}`: {}\n",
-                    if *xml { "PLCopen XML" } else { "IL" },
+                    "error: cannot read {} `{}`: {}\n",
+                    if *xml {
+                        "PLCopen XML file"
+                    } else {
+                        "source file"
+                    },
                     e.path,
                     e.reason
                 )),

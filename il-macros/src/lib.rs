@@ -24,8 +24,9 @@
 //! - `il!(r#"...IL..."#)`: inline IL, in a raw string (IL's `T#1s` and
 //!   `'text'` are not Rust tokens).
 //! - `il!(file = "plc/motor.il")`: a file relative to the crate root
-//!   (`CARGO_MANIFEST_DIR`); edits to it rebuild the crate. A `.xml` file is
-//!   a PLCopen TC6 XML project: that needs the `plcopen` feature, off by
+//!   (`CARGO_MANIFEST_DIR`); edits to it rebuild the crate. A file whose
+//!   text starts with `<` (or named `.xml`) is a PLCopen TC6 XML project,
+//!   whatever its name: that needs the `plcopen` feature, off by
 //!   default so that crates reading only IL compile no XML parser
 //!   (`il-macros = { version = "0.1", features = ["plcopen"] }`; without it
 //!   the call fails with IL0210, which says so).

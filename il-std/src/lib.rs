@@ -10,7 +10,8 @@
 //! * the process image [`ProcessImage`] (`%I`, `%Q`, `%M`), which a host reads and writes by
 //!   typed IEC address with [`addr`]: `ctx.io.set(addr::iw(1), 500)`, `ctx.io.get(addr::qx(0, 2))`;
 //! * the standard function blocks ([`SR`], [`RS`], [`R_TRIG`], [`F_TRIG`], [`CTU`], [`CTD`],
-//!   [`CTUD`] and their typed variants, [`TP`], [`TON`], [`TOF`], [`RTC`]);
+//!   [`CTUD`] and their typed variants `_INT` `_DINT` `_LINT` `_UDINT` `_ULINT` ([`CTU_INT`]
+//!   ... [`CTUD_ULINT`]), [`TP`], [`TON`], [`TOF`], [`RTC`]);
 //! * the standard functions in [`func`], their signatures in [`signature`], and literal parsing
 //!   helpers in [`literal`] shared with the compiler.
 //!
@@ -94,11 +95,15 @@ pub use cycle::RealClock;
 pub use cycle::{Cycle, FAULT_RING_LEN, Fault};
 pub use fault::FaultKind;
 #[cfg(feature = "runtime")]
-pub use fb::{
-    CTD, CTD_DINT, CTD_LINT, CTD_UDINT, CTD_ULINT, CTU, CTU_DINT, CTU_LINT, CTU_UDINT, CTU_ULINT,
-    CTUD, CTUD_DINT, CTUD_LINT, CTUD_UDINT, CTUD_ULINT, F_TRIG, FunctionBlock, R_TRIG, RS, RTC, SR,
-    TOF, TON, TP,
-};
+pub use fb::FunctionBlock;
+/// The standard blocks at the crate root, as the table lists them.
+macro_rules! reexport_blocks {
+    ($( $name:ident $inputs:tt -> $outputs:tt; )*) => {
+        #[cfg(feature = "runtime")]
+        pub use fb::{$($name),*};
+    };
+}
+crate::std_function_blocks!(reexport_blocks);
 #[cfg(feature = "runtime")]
 pub use image::address as addr;
 #[cfg(feature = "runtime")]

@@ -136,41 +136,19 @@ impl<const N: usize> AsValue for WSTRING<N> {
     }
 }
 
-/// `impl Visit` for a standard block from its public members and their IEC types.
+/// `impl Visit` for every standard block of the table: its inputs, then its
+/// outputs, with the IEC type names the table gives them.
 macro_rules! visit_std {
-    ($($fb:ident { $($m:ident : $t:literal),* $(,)? })*) => {
+    ($( $fb:ident ( $( $i:ident : $it:ident ),* ) -> ( $( $o:ident : $ot:ident ),* ); )*) => {
         $(impl Visit for crate::$fb {
             fn visit(&self, v: &mut dyn Visitor) {
-                $(v.var(stringify!($m), $t, self.$m.as_value());)*
+                $(v.var(stringify!($i), stringify!($it), self.$i.as_value());)*
+                $(v.var(stringify!($o), stringify!($ot), self.$o.as_value());)*
             }
         })*
     };
 }
-visit_std! {
-    SR { S1: "BOOL", R: "BOOL", Q1: "BOOL" }
-    RS { S: "BOOL", R1: "BOOL", Q1: "BOOL" }
-    R_TRIG { CLK: "BOOL", Q: "BOOL" }
-    F_TRIG { CLK: "BOOL", Q: "BOOL" }
-    CTU { CU: "BOOL", R: "BOOL", PV: "INT", Q: "BOOL", CV: "INT" }
-    CTU_DINT { CU: "BOOL", R: "BOOL", PV: "DINT", Q: "BOOL", CV: "DINT" }
-    CTU_LINT { CU: "BOOL", R: "BOOL", PV: "LINT", Q: "BOOL", CV: "LINT" }
-    CTU_UDINT { CU: "BOOL", R: "BOOL", PV: "UDINT", Q: "BOOL", CV: "UDINT" }
-    CTU_ULINT { CU: "BOOL", R: "BOOL", PV: "ULINT", Q: "BOOL", CV: "ULINT" }
-    CTD { CD: "BOOL", LD: "BOOL", PV: "INT", Q: "BOOL", CV: "INT" }
-    CTD_DINT { CD: "BOOL", LD: "BOOL", PV: "DINT", Q: "BOOL", CV: "DINT" }
-    CTD_LINT { CD: "BOOL", LD: "BOOL", PV: "LINT", Q: "BOOL", CV: "LINT" }
-    CTD_UDINT { CD: "BOOL", LD: "BOOL", PV: "UDINT", Q: "BOOL", CV: "UDINT" }
-    CTD_ULINT { CD: "BOOL", LD: "BOOL", PV: "ULINT", Q: "BOOL", CV: "ULINT" }
-    CTUD { CU: "BOOL", CD: "BOOL", R: "BOOL", LD: "BOOL", PV: "INT", QU: "BOOL", QD: "BOOL", CV: "INT" }
-    CTUD_DINT { CU: "BOOL", CD: "BOOL", R: "BOOL", LD: "BOOL", PV: "DINT", QU: "BOOL", QD: "BOOL", CV: "DINT" }
-    CTUD_LINT { CU: "BOOL", CD: "BOOL", R: "BOOL", LD: "BOOL", PV: "LINT", QU: "BOOL", QD: "BOOL", CV: "LINT" }
-    CTUD_UDINT { CU: "BOOL", CD: "BOOL", R: "BOOL", LD: "BOOL", PV: "UDINT", QU: "BOOL", QD: "BOOL", CV: "UDINT" }
-    CTUD_ULINT { CU: "BOOL", CD: "BOOL", R: "BOOL", LD: "BOOL", PV: "ULINT", QU: "BOOL", QD: "BOOL", CV: "ULINT" }
-    TP { IN: "BOOL", PT: "TIME", Q: "BOOL", ET: "TIME" }
-    TON { IN: "BOOL", PT: "TIME", Q: "BOOL", ET: "TIME" }
-    TOF { IN: "BOOL", PT: "TIME", Q: "BOOL", ET: "TIME" }
-    RTC { IN: "BOOL", PDT: "DT", Q: "BOOL", CDT: "DT" }
-}
+crate::std_function_blocks!(visit_std);
 
 #[cfg(test)]
 mod tests {

@@ -328,4 +328,28 @@ mod tests {
         assert_eq!(ws.docs[0].uri, editor);
         assert_eq!(ws.docs[0].text, "b");
     }
+
+    /// The editor's name for a document does not decide its language: its
+    /// text does, as for `ilc check`.
+    #[test]
+    fn a_document_is_xml_by_its_text_whatever_its_name() {
+        let mut ws = Workspace::default();
+        let xml = "\u{feff}<?xml version=\"1.0\"?>\n<ProjectDescriptor xmlns=\"urn:x\">\n</ProjectDescriptor>\n";
+        ws.open("file:///plc/Counters1.smbp".parse().unwrap(), xml.into());
+        ws.open(
+            "file:///plc/main.il".parse().unwrap(),
+            "PROGRAM Main\nVAR x : INT; END_VAR\n    LD x\n    ST x\nEND_PROGRAM\n".into(),
+        );
+        ws.check();
+        let d = &ws.analysis.diagnostics[0];
+        assert_eq!(d.len(), 1, "{d:?}");
+        assert_eq!(
+            d[0].code,
+            Some(lsp_types::NumberOrString::String("IL0202".into()))
+        );
+        assert!(d[0].message.contains("`<ProjectDescriptor>`"), "{d:?}");
+        assert!(d[0].message.contains("`urn:x`"), "{d:?}");
+        assert_eq!(d[0].range.start.line, 1);
+        assert_eq!(ws.analysis.diagnostics[1], []);
+    }
 }

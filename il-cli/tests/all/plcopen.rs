@@ -1,5 +1,6 @@
-//! `ilc check`, `ilc emit` and `ilc run` on PLCopen TC6 XML files (detected by
-//! the `.xml` extension): diagnostics in XML lines, JSON output, exit status.
+//! `ilc check`, `ilc emit` and `ilc run` on PLCopen TC6 XML files (known by
+//! their text, whatever their name): diagnostics in XML lines, JSON output,
+//! exit status; other XML is one error.
 
 use il_testkit::json;
 
@@ -176,4 +177,151 @@ fn the_corpus_project_checks_with_warnings_only() {
     let code = String::from_utf8_lossy(&o.stdout);
     assert!(code.contains("pub struct CounterIL"), "{code}");
     assert!(code.contains("// 943: LD Reset"), "{code}");
+}
+
+/// The JSON diagnostics of `ilc check` of `path`, and its exit status.
+fn check_json(args: &[&str]) -> (Option<i32>, Vec<J>) {
+    let mut all = vec!["check", "--message-format", "json"];
+    all.extend(args);
+    let o = ilc(&all);
+    let out = String::from_utf8(o.stdout).unwrap();
+    (o.status.code(), out.lines().map(json::parse).collect())
+}
+
+#[test]
+fn xml_of_another_tool_is_one_error_naming_its_root() {
+    // A SoMachine Basic project: UTF-8 with a byte order mark, its own root.
+    let smbp = "\u{feff}<?xml version=\"1.0\" encoding=\"utf-8\"?>\n\
+        <ProjectDescriptor xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\">\n\
+        <ProjectVersion>1.6.0.0</ProjectVersion>\n\
+        <InstructionLines><InstructionLine>LD %I0.0 &amp; ; x</InstructionLine></InstructionLines>\n\
+        </ProjectDescriptor>\n";
+    let p = temp("Counters1.smbp", smbp);
+    let path = p.to_str().unwrap();
+    let (code, diags) = check_json(&[path]);
+    assert_eq!(code, Some(1));
+    assert_eq!(diags.len(), 1, "{diags:?}");
+    let d = &diags[0];
+    assert_eq!(get(d, "code"), &J::Str("IL0202".into()));
+    assert_eq!(get(d, "file"), &J::Str(path.into()));
+    assert_eq!(get(d, "line"), &J::Num(2.0));
+    assert_eq!(get(d, "column"), &J::Num(1.0));
+    let J::Str(msg) = get(d, "message") else {
+        panic!("{d:?}")
+    };
+    assert!(
+        msg.contains("`<ProjectDescriptor>` (no namespace)"),
+        "{msg}"
+    );
+    let J::Str(rendered) = get(d, "rendered") else {
+        panic!("{d:?}")
+    };
+    assert!(rendered.contains("PLCopen TC6 XML projects"), "{rendered}");
+    // A namespace is named; another schema's `<project>` is no PLCopen one.
+    for (name, xml, want) in [
+        (
+            "Main.TcPOU",
+            "<?xml version=\"1.0\"?>\n<TcPlcObject xmlns=\"urn:beckhoff\"/>\n",
+            "`<TcPlcObject>` in namespace `urn:beckhoff`",
+        ),
+        (
+            "pom.xml",
+            "<project xmlns=\"http://maven.apache.org/POM/4.0.0\"/>",
+            "`<project>` in namespace `http://maven.apache.org/POM/4.0.0`",
+        ),
+    ] {
+        let p = temp(name, xml);
+        let (code, diags) = check_json(&[p.to_str().unwrap()]);
+        assert_eq!(code, Some(1));
+        assert_eq!(diags.len(), 1, "{diags:?}");
+        let J::Str(msg) = get(&diags[0], "message") else {
+            panic!("{diags:?}")
+        };
+        assert!(msg.contains(want), "{msg}");
+    }
+}
+
+#[test]
+fn a_plcopen_project_under_any_name_is_imported() {
+    let variants = [
+        ("blink_named.il", PROJECT.to_string()),
+        ("blink_named.txt", PROJECT.to_string()),
+        ("blink_bom.plcprj", format!("\u{feff}{PROJECT}")),
+        // Blank lines before the declaration (which XML itself refuses).
+        ("blink_blank.il", format!("\u{feff}\r\n  \n{PROJECT}")),
+        (
+            "blink_nodecl.il",
+            PROJECT.split_once('\n').unwrap().1.to_string(),
+        ),
+    ];
+    for (name, text) in &variants {
+        let p = temp(name, text);
+        let path = p.to_str().unwrap();
+        let (code, diags) = check_json(&[path]);
+        assert_eq!(code, Some(0), "{name}: {diags:?}");
+        assert_eq!(diags.len(), 1, "{name}: {diags:?}");
+        assert_eq!(get(&diags[0], "code"), &J::Str("IL0203".into()), "{name}");
+        // The XML's own lines, shifted by what stands before the declaration.
+        let shift = text.matches('\n').count() as f64 - PROJECT.matches('\n').count() as f64;
+        assert_eq!(get(&diags[0], "line"), &J::Num(20.0 + shift), "{name}");
+        let o = ilc(&[
+            "run",
+            path,
+            "--program",
+            "Blink",
+            "--cycles",
+            "2",
+            "--set",
+            "run=TRUE",
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{name}: {}", stderr(&o));
+    }
+    // `emit` names the output after the stem, whatever the extension.
+    let p = temp("blink_named.txt", PROJECT);
+    let dir = p.parent().unwrap().join("out_txt");
+    let o = ilc(&["emit", "-o", dir.to_str().unwrap(), p.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let code = std::fs::read_to_string(dir.join("blink_named.rs")).unwrap();
+    assert!(code.contains("// 13: LD run"), "{code}");
+    // `--snippet` and standard input read XML as XML too.
+    let (code, diags) = check_json(&["--snippet", p.to_str().unwrap()]);
+    assert_eq!((code, diags.len()), (Some(0), 1), "{diags:?}");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ilc"))
+        .args(["check", "--color", "never", "-"])
+        .stdin(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    use std::io::Write;
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(PROJECT.as_bytes())
+        .unwrap();
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stderr(&o).contains("warning[IL0203]"), "{}", stderr(&o));
+}
+
+#[test]
+fn the_corpus_smbp_projects_are_one_error_each() {
+    let dir = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../shared/corpus/m221/ss56_somachine-basic-programs"
+    );
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        eprintln!("SKIPPED: {dir} not found");
+        return;
+    };
+    for p in entries.flatten().map(|e| e.path()) {
+        let (code, diags) = check_json(&[p.to_str().unwrap()]);
+        assert_eq!(code, Some(1), "{}", p.display());
+        assert_eq!(diags.len(), 1, "{}: {diags:?}", p.display());
+        assert_eq!(get(&diags[0], "code"), &J::Str("IL0202".into()));
+        let J::Str(msg) = get(&diags[0], "message") else {
+            panic!("{diags:?}")
+        };
+        assert!(msg.contains("`<ProjectDescriptor>`"), "{msg}");
+    }
 }

@@ -4,8 +4,8 @@
 //!
 //! Forms: `il!(r#"...IL..."#)`, `il!(file = "plc/motor.il")` and
 //! `il!(files = ["plc/types.il", "plc/tank.xml"])` (relative to the crate
-//! being compiled; the files are tracked so edits rebuild; `.xml` files are
-//! PLCopen projects), each optionally followed by `, serde` to derive
+//! being compiled; the files are tracked so edits rebuild; XML files, by
+//! their text or a `.xml` name, are PLCopen projects), each optionally followed by `, serde` to derive
 //! serde's traits on the generated types. One call is one program: its
 //! POUs see each other's TYPEs and FBs, and no other call's.
 
@@ -104,7 +104,8 @@ fn expand_inner(tokens: &[Tok]) -> Expansion {
                         sources.push((file, lit.span));
                     }
                     Err(e) => {
-                        let msg = format!("cannot read IL file `{}`: {}", path.display(), e.reason);
+                        let msg =
+                            format!("cannot read source file `{}`: {}", path.display(), e.reason);
                         unreadable.errors.push((msg, lit.span));
                     }
                 }

@@ -195,3 +195,43 @@ VAR_ACCESS\n    A : R.P1.a : INT READ_WRITE;\n    B : R.P2.b : INT READ_WRITE;\n
     assert!(code.contains("__s.R.P2.b=7i16;"), "{t}");
     assert!(!code.contains("access_A") && !code.contains("P1"), "{t}");
 }
+
+/// `il!(file = ...)` knows XML by its text: a PLCopen project named `.il` is
+/// imported (with the `plcopen` feature; without it, IL0210 names the
+/// feature), another tool's XML is one IL0202.
+#[test]
+fn a_file_is_xml_by_its_text() {
+    let dir = std::env::temp_dir().join(format!("il-expand-xml-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let project = "\u{feff}<?xml version=\"1.0\"?>\n<project><types><pous>\
+        <pou name=\"Blink\" pouType=\"functionBlock\"><interface><localVars>\
+        <variable name=\"lamp\"><type><BOOL/></type></variable></localVars></interface>\
+        <body><IL><p><![CDATA[LD lamp\nSTN lamp]]></p></IL></body></pou></pous></types></project>\n";
+    let (il, smbp) = (dir.join("blink.il"), dir.join("Counters1.smbp"));
+    std::fs::write(&il, project).unwrap();
+    std::fs::write(&smbp, "<?xml version=\"1.0\"?>\n<ProjectDescriptor/>\n").unwrap();
+    let file = |f: &std::path::Path| expand(&[id("file"), p('='), s(&f.display().to_string())]);
+    let (imported, other) = (file(&il), file(&smbp));
+    let _ = std::fs::remove_dir_all(&dir);
+    if cfg!(feature = "plcopen") {
+        assert!(imported.errors.is_empty(), "{}", text(&imported));
+        assert!(
+            imported.code.contains("pub struct Blink"),
+            "{}",
+            text(&imported)
+        );
+        assert_eq!(other.errors.len(), 1, "{}", text(&other));
+        assert!(other.errors[0].0.contains("IL0202"), "{}", text(&other));
+        assert!(
+            other.errors[0].0.contains("`<ProjectDescriptor>`"),
+            "{}",
+            text(&other)
+        );
+    } else {
+        for e in [&imported, &other] {
+            assert_eq!(e.errors.len(), 1, "{}", text(e));
+            assert!(e.errors[0].0.contains("IL0210"), "{}", text(e));
+            assert!(e.errors[0].0.contains("`plcopen` feature"), "{}", text(e));
+        }
+    }
+}

@@ -35,9 +35,10 @@ impl Input {
         Input::Snippet(Box::new(Snippet::new(file)))
     }
 
-    /// PLCopen XML when the name ends in `.xml` (any case), IL otherwise.
-    pub fn by_extension(file: SourceFile) -> Input {
-        if is_xml_name(&file.name) {
+    /// PLCopen XML when the file is XML ([`is_xml`]: its text starts with
+    /// `<`, or its name ends in `.xml`), IL otherwise.
+    pub fn by_content(file: SourceFile) -> Input {
+        if is_xml(&file.name, &file.text) {
             Input::plcopen(file)
         } else {
             Input::il(file)
@@ -80,9 +81,51 @@ impl Input {
     }
 }
 
-/// Whether a file name ends in `.xml` (any case).
-pub fn is_xml_name(name: &str) -> bool {
-    std::path::Path::new(name)
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("xml"))
+/// Whether a source is XML, by its text: it starts with `<` after an
+/// optional byte order mark and whitespace. No IL text does (it starts with
+/// a keyword, a comment or a pragma), and XML always does (a declaration
+/// `<?xml`, a comment or the root element), so PLC tools' own extensions
+/// (`.smbp`, `.plcprj`, `.TcPOU`) and a project saved as `.il` or `.txt`
+/// are read for what they are. A name ending in `.xml` (any case) is XML
+/// whatever its text, as before: an empty or broken `.xml` file gets the XML
+/// parser's one error, not the IL parser's many.
+pub fn is_xml(name: &str, text: &str) -> bool {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    text.trim_start_matches([' ', '\t', '\r', '\n'])
+        .starts_with('<')
+        || std::path::Path::new(name)
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("xml"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::is_xml;
+
+    #[test]
+    fn xml_is_known_by_its_first_character() {
+        for text in [
+            "<?xml version=\"1.0\"?><project/>",
+            "\u{feff}<?xml version=\"1.0\"?><project/>",
+            "\u{feff} \r\n\t<?xml version=\"1.0\"?><project/>",
+            "\n\n<project/>",
+            "<!-- exported --><project/>",
+        ] {
+            for name in ["a.smbp", "a.il", "a.txt", "a.TcPOU", "a", "a.xml"] {
+                assert!(is_xml(name, text), "{name}: {text:?}");
+            }
+        }
+        for text in [
+            "PROGRAM p END_PROGRAM",
+            "(* <project> *) PROGRAM p END_PROGRAM",
+            "{extern} FUNCTION f : INT END_FUNCTION",
+            "\u{feff}PROGRAM p END_PROGRAM",
+            "",
+        ] {
+            assert!(!is_xml("a.il", text), "{text:?}");
+            assert!(!is_xml("a.smbp", text), "{text:?}");
+            // A `.xml` name is XML whatever its text.
+            assert!(is_xml("A.XML", text), "{text:?}");
+        }
+    }
 }

@@ -13,7 +13,7 @@ mod file;
 mod input;
 pub mod snippet;
 
-pub use input::{Input, is_xml_name};
+pub use input::{Input, is_xml};
 
 #[cfg(feature = "build")]
 use crate::diag::render;
@@ -44,10 +44,10 @@ impl Program {
         self.input(Input::plcopen(file))
     }
 
-    /// With a source that is PLCopen XML when its name ends in `.xml`, IL
-    /// otherwise.
+    /// With a source that is PLCopen XML when it is XML (its text starts
+    /// with `<`, or its name ends in `.xml`: [`is_xml`]), IL otherwise.
     pub fn source(self, file: SourceFile) -> Self {
-        self.input(Input::by_extension(file))
+        self.input(Input::by_content(file))
     }
 
     /// With a bare instruction list, the body of a PROGRAM named after the

@@ -16,9 +16,13 @@
 //! whose program instances run a POU that was not translated is left out
 //! with a warning (IL0204).
 //!
+//! A source is XML by its text ([`crate::pipeline::is_xml`]: it starts
+//! with `<`), or by a `.xml` name; XML whose root is not PLCopen's
+//! `<project>` is one error (IL0202) naming its root.
+//!
 //! Reading XML is the `plcopen` feature (roxmltree and the translation): on
 //! by default in il-codegen, off by default in il-macros (an `il!` user who
-//! reads `.xml` names it); without it, an XML source is one error (IL0210)
+//! reads XML names it); without it, an XML source is one error (IL0210)
 //! saying how to turn it on.
 
 #[cfg(feature = "plcopen")]
@@ -44,7 +48,7 @@ pub mod codes {
     MALFORMED_XML = "IL0201", "malformed XML",
         "The file is not well-formed XML, so it cannot be read as a PLCopen project. The message gives the line and column where the XML parser stopped.\n\n    <pou name=\"Main\" pouType=\"program\">\n      <body><IL><xhtml:p>LD a</IL></body>   <!-- </xhtml:p> missing -->";
     BAD_PROJECT = "IL0202", "not a valid PLCopen project",
-        "The XML is well-formed but lacks something a PLCopen TC6 project must have: the root `<project>`, a POU's `name` or `pouType`, a variable's `<type>`, a FUNCTION's `<returnType>`.\n\n    <pou name=\"Main\">   <!-- pouType=\"program\" missing -->";
+        "The XML is well-formed but is not a PLCopen TC6 project, or lacks something one must have. A source whose text starts with `<` (after a byte order mark and blank space) is read as XML whatever its name, so another tool's XML (a SoMachine Basic `.smbp`, a TwinCAT `.TcPOU`) gets this one error, which names its root element and namespace: the compiler reads IL text and PLCopen TC6 projects, whose root is `<project>` in PLCopen's namespace (`http://www.plcopen.org/xml/tc6_0201`, `tc6_0200`) or in none. Export such a program as PLCopen XML or as IL text. Inside a project, the error is a POU without `name` or `pouType`, a variable without `<type>`, a FUNCTION without `<returnType>`.\n\n    <?xml version=\"1.0\" encoding=\"utf-8\"?>\n    <ProjectDescriptor>   <!-- SoMachine Basic's root, not PLCopen's <project> -->\n\n    <pou name=\"Main\">   <!-- pouType=\"program\" missing -->";
     NOT_IL = "IL0203", "POU body not in IL",
         "Only POUs whose body is Instruction List (`<body><IL>`) are translated. A POU in Structured Text, FBD, LD or SFC is left out with this warning; the other POUs still compile. A POU that uses a left-out one gets an `unknown type` error.\n\n    <pou name=\"CounterST\" pouType=\"functionBlock\">\n      <body><ST><xhtml:p>Cnt := Cnt + 1;</xhtml:p></ST></body>";
     NOT_TRANSLATED = "IL0204", "PLCopen element left out",
@@ -60,7 +64,7 @@ pub mod codes {
     BODY_ESCAPES = "IL0209", "IL body reaches outside its POU",
         "The text of an `<IL>` body is copied into the POU as it is, so it must not end the POU (`END_PROGRAM`, `END_FUNCTION_BLOCK` ...), start another POU, a `TYPE` or a `CONFIGURATION`, or open a comment `(*` that it does not close (which would swallow what follows). The POU is left out.\n\n    <IL><xhtml:p>LD a\n    END_PROGRAM\n    PROGRAM Other ...</xhtml:p></IL>";
     NOT_BUILT = "IL0210", "PLCopen XML import not built in",
-        "A `.xml` source (a PLCopen project) reached a build of the compiler without its `plcopen` feature, which reads XML. `il-codegen` (build.rs, `ilc`) has the feature by default; `il-macros` leaves it out by default, so that the many crates whose `il!` calls read only IL compile no XML parser. A crate that reads a `.xml` file in `il!` names the feature:\n\n    il-macros = { version = \"0.1\", features = [\"plcopen\"] }";
+        "An XML source (a PLCopen project: its text starts with `<`, or its name ends in `.xml`) reached a build of the compiler without its `plcopen` feature, which reads XML. `il-codegen` (build.rs, `ilc`) has the feature by default; `il-macros` leaves it out by default, so that the many crates whose `il!` calls read only IL compile no XML parser. A crate that reads an XML file in `il!` names the feature:\n\n    il-macros = { version = \"0.1\", features = [\"plcopen\"] }";
     }
 }
 pub use codes::CODES;
@@ -170,6 +174,42 @@ fn offset_of(text: &str, row: u32, col: u32) -> usize {
             .map_or(line.len(), |(k, _)| k)
 }
 
+/// The text the XML parser reads: the file's, except that an XML
+/// declaration after leading whitespace is blanked. XML (and roxmltree)
+/// takes `<?xml` only as the very first characters, but editors and
+/// concatenation leave blank lines before it, and the declaration says
+/// nothing the import needs. Each of its characters becomes spaces of the
+/// same length (line breaks stay), so every offset and line is the file's.
+#[cfg(feature = "plcopen")]
+fn parse_text(text: &str) -> std::borrow::Cow<'_, str> {
+    let body = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let rest = body.trim_start_matches([' ', '\t', '\r', '\n']);
+    let declaration = rest.len() < body.len()
+        && rest
+            .strip_prefix("<?xml")
+            .is_some_and(|r| r.starts_with([' ', '\t', '\r', '\n']));
+    let start = text.len() - rest.len();
+    let end = declaration
+        .then(|| rest.find("?>"))
+        .flatten()
+        .map(|k| start + k + 2);
+    let Some(end) = end else {
+        // No whitespace before it, or no declaration: the parser reads the
+        // file as it is (and reports a declaration that never ends).
+        return std::borrow::Cow::Borrowed(text);
+    };
+    let mut out = String::with_capacity(text.len());
+    out.push_str(&text[..start]);
+    for c in text[start..end].chars() {
+        match c {
+            '\n' | '\r' => out.push(c),
+            _ => out.extend(std::iter::repeat_n(' ', c.len_utf8())),
+        }
+    }
+    out.push_str(&text[end..]);
+    std::borrow::Cow::Owned(out)
+}
+
 impl Import {
     /// Translate a PLCopen XML file. Never fails: a malformed file gives an
     /// import with an empty IL text and an error (IL0201) in `diagnostics`.
@@ -202,11 +242,11 @@ impl Import {
                     codes::NOT_BUILT,
                     Span::new(0, first),
                     format!(
-                        "`{}` is a PLCopen XML project, and this build of the IL compiler cannot read XML",
+                        "`{}` is XML (read as a PLCopen project), and this build of the IL compiler cannot read XML",
                         xml.name
                     ),
                 )
-                .with_label("PLCopen XML")
+                .with_label("XML")
                 .with_note(
                     "turn on the `plcopen` feature: `il-macros = { version = \"0.1\", features = [\"plcopen\"] }` (il-codegen has it by default)",
                 ),
@@ -221,6 +261,7 @@ impl Import {
             allow_dtd: false,
             ..roxmltree::ParsingOptions::default()
         };
+        let parsed = parse_text(&xml.text);
         let parsed = match limits::check(&xml.text) {
             Some(e) => {
                 Err(
@@ -228,9 +269,14 @@ impl Import {
                         .with_label(e.label),
                 )
             }
-            None => roxmltree::Document::parse_with_options(&xml.text, opts).map_err(|e| {
+            None => roxmltree::Document::parse_with_options(&parsed, opts).map_err(|e| {
                 let pos = e.pos();
-                let at = offset_of(&xml.text, pos.row, pos.col);
+                // Offsets are the file's (see `parse_text`); a character
+                // of a blanked declaration may be wider in the file.
+                let mut at = offset_of(&parsed, pos.row, pos.col);
+                while !xml.text.is_char_boundary(at) {
+                    at -= 1;
+                }
                 let width = xml.text[at..].chars().next().map_or(0, char::len_utf8);
                 let msg = e.to_string();
                 // roxmltree ends its messages with "at ROW:COL"; the
@@ -317,6 +363,16 @@ mod tests_not_built {
     /// `cargo test -p il-codegen --no-default-features --lib plcopen`.
     #[test]
     fn an_xml_source_is_one_error_that_names_the_feature() {
+        // Known by its text too: not 200 IL errors about `<`.
+        let other = SourceFile::new(
+            "plc/cell.plcprj",
+            "\u{feff}\n<?xml version=\"1.0\"?><project/>".to_string(),
+        );
+        let checked = Program::new().source(other).check();
+        let d = &checked.diagnostics()[0];
+        assert_eq!(d.len(), 1, "{d:?}");
+        assert_eq!(d[0].code, super::codes::NOT_BUILT);
+        assert!(d[0].message.contains("plc/cell.plcprj"), "{d:?}");
         let xml = SourceFile::new(
             "plc/cell.xml",
             "<?xml version=\"1.0\"?><project/>".to_string(),

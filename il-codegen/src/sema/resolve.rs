@@ -174,9 +174,10 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
                 }
                 None => {}
             }
-            let names = super::types::ALL_ELEMS.iter().map(|e| e.name()).chain([
-                "TON", "TOF", "TP", "CTU", "CTD", "CTUD", "SR", "RS", "R_TRIG", "F_TRIG",
-            ]);
+            let names = super::types::ALL_ELEMS
+                .iter()
+                .map(|e| e.name())
+                .chain(il_std::signature::FB_SIGNATURES.iter().map(|f| f.name));
             let d = cx
                 .err(UNKNOWN_TYPE, id.span, format!("unknown type `{id}`"))
                 .set_label("not an elementary type or function block");

@@ -29,7 +29,10 @@ mod sema_hints;
 mod sema_host_functions;
 mod sema_hostile_names;
 mod sema_literals;
+mod sema_std_blocks;
 mod sema_types;
+#[cfg(feature = "plcopen")]
+mod sources_by_content;
 mod syntax_comments;
 mod syntax_corpus;
 mod syntax_declarations;

@@ -426,6 +426,48 @@ fn standard_blocks_with_time() {
     );
 }
 
+/// The INT counters of the 3rd edition, scan by scan as the generated code
+/// runs them (`tests/tests/all/std_blocks.rs`, `INT_COUNTER_SCANS`).
+#[test]
+fn int_counters_count_as_the_generated_code() {
+    let mut ctx = Cycle::new();
+    let mut f = machine("std_blocks.il", "UseIntCounters");
+    let scans = [
+        ((false, false, true), (0, false, 2, false, 2, true, false)),
+        ((true, false, false), (1, false, 2, false, 3, true, false)),
+        ((false, true, false), (1, false, 1, false, 2, true, false)),
+        ((true, false, false), (2, false, 1, false, 3, true, false)),
+        ((false, true, false), (2, false, 0, true, 2, true, false)),
+        ((true, false, false), (3, true, 0, true, 3, true, false)),
+        ((true, true, false), (3, true, -1, true, 2, true, false)),
+        ((false, false, false), (3, true, -1, true, 2, true, false)),
+        ((true, true, false), (4, true, -2, true, 2, true, false)),
+        ((false, false, true), (4, true, 2, false, 2, true, false)),
+        ((false, true, false), (4, true, 1, false, 1, false, false)),
+        ((false, false, false), (4, true, 1, false, 1, false, false)),
+        ((false, true, false), (4, true, 0, true, 0, false, true)),
+    ];
+    for (k, ((cu, cd, load), want)) in scans.into_iter().enumerate() {
+        f.set("cu", Value::Bool(cu)).unwrap();
+        f.set("cd", Value::Bool(cd)).unwrap();
+        f.set("load", Value::Bool(load)).unwrap();
+        scan(&mut f, &mut ctx);
+        let got = (
+            int(&f, "up"),
+            boolean(&f, "up_q"),
+            int(&f, "down"),
+            boolean(&f, "down_q"),
+            int(&f, "both"),
+            boolean(&f, "qu"),
+            boolean(&f, "qd"),
+        );
+        assert_eq!(got, want, "scan {k}");
+    }
+    // The instances are il-std's blocks of those names, with INT members.
+    assert_eq!(f.get("c.CV"), Some(i(4, Elem::INT)));
+    assert_eq!(f.get("e.PV"), Some(i(2, Elem::INT)));
+}
+
 #[test]
 fn unknown_names_are_errors_not_panics() {
     let prog = program("jumps.il");

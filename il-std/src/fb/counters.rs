@@ -1,4 +1,4 @@
-//! Counters CTU, CTD, CTUD and their typed variants (_DINT, _LINT, _UDINT, _ULINT).
+//! Counters CTU, CTD, CTUD and their typed variants (_INT, _DINT, _LINT, _UDINT, _ULINT).
 //!
 //! `CU`/`CD` are declared `R_EDGE` by the standard: the block itself detects their rising edge
 //! (its edge memory starts FALSE, so a TRUE `CU` on the first call counts). Counting stops at the
@@ -183,6 +183,9 @@ macro_rules! counters {
 }
 
 counters!(CTU, CTD, CTUD, i16, "INT");
+// The 3rd edition names the INT counters too; they are CTU/CTD/CTUD under
+// their own names (own types, so that each name is one table row).
+counters!(CTU_INT, CTD_INT, CTUD_INT, i16, "INT");
 counters!(CTU_DINT, CTD_DINT, CTUD_DINT, i32, "DINT");
 counters!(CTU_LINT, CTD_LINT, CTUD_LINT, i64, "LINT");
 counters!(CTU_UDINT, CTD_UDINT, CTUD_UDINT, u32, "UDINT");
@@ -395,6 +398,37 @@ mod tests {
         c.CD = true;
         c.call(&mut ctx);
         assert_eq!(c.CV, 2);
+    }
+
+    #[test]
+    fn int_counters_are_ctu_ctd_ctud_under_their_3rd_edition_names() {
+        let mut ctx = Cycle::new();
+        let (mut a, mut b) = (CTU::new(), CTU_INT::new());
+        let (mut c, mut d) = (CTD::new(), CTD_INT::new());
+        let (mut e, mut f) = (CTUD::new(), CTUD_INT::new());
+        (a.PV, b.PV, c.PV, d.PV, e.PV, f.PV) = (2, 2, 1, 1, 2, 2);
+        (a.CV, b.CV) = (i16::MAX - 1, i16::MAX - 1);
+        for k in 0..8 {
+            let edge = k % 2 == 0;
+            (a.CU, b.CU, e.CU, f.CU) = (edge, edge, edge, edge);
+            (c.LD, d.LD) = (k == 0, k == 0);
+            (c.CD, d.CD, e.CD, f.CD) = (edge, edge, k > 4, k > 4);
+            for x in [
+                &mut a as &mut dyn crate::FunctionBlock,
+                &mut b,
+                &mut c,
+                &mut d,
+                &mut e,
+                &mut f,
+            ] {
+                x.call(&mut ctx);
+            }
+            assert_eq!((a.CV, a.Q), (b.CV, b.Q));
+            assert_eq!((c.CV, c.Q), (d.CV, d.Q));
+            assert_eq!((e.CV, e.QU, e.QD), (f.CV, f.QU, f.QD));
+        }
+        assert_eq!(b.CV, i16::MAX);
+        assert_eq!(d.CV, -2);
     }
 
     #[test]

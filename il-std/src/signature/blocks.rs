@@ -27,7 +27,9 @@ pub struct FbSignature {
 /// `$callback! { NAME (INPUT: TYPE, ...) -> (OUTPUT: TYPE, ...); ... }` with every block, in
 /// the order of [`FB_SIGNATURES`]. Types are [`Elem`] names; fields are the blocks' field
 /// names. [`FB_SIGNATURES`] is built from it, and a test proves every block and field exists
-/// with its type; interpreters use it to reach the fields by name.
+/// with its type; so are the crate root's re-exports of the blocks, their `FunctionBlock`
+/// and `trace::Visit` impls (the `runtime` feature), and the interpreter's instances,
+/// which reach the fields by name. Adding a block is its struct and one line here.
 #[macro_export]
 macro_rules! std_function_blocks {
     ($callback:ident) => {
@@ -37,16 +39,19 @@ macro_rules! std_function_blocks {
             R_TRIG (CLK: BOOL) -> (Q: BOOL);
             F_TRIG (CLK: BOOL) -> (Q: BOOL);
             CTU (CU: BOOL, R: BOOL, PV: INT) -> (Q: BOOL, CV: INT);
+            CTU_INT (CU: BOOL, R: BOOL, PV: INT) -> (Q: BOOL, CV: INT);
             CTU_DINT (CU: BOOL, R: BOOL, PV: DINT) -> (Q: BOOL, CV: DINT);
             CTU_LINT (CU: BOOL, R: BOOL, PV: LINT) -> (Q: BOOL, CV: LINT);
             CTU_UDINT (CU: BOOL, R: BOOL, PV: UDINT) -> (Q: BOOL, CV: UDINT);
             CTU_ULINT (CU: BOOL, R: BOOL, PV: ULINT) -> (Q: BOOL, CV: ULINT);
             CTD (CD: BOOL, LD: BOOL, PV: INT) -> (Q: BOOL, CV: INT);
+            CTD_INT (CD: BOOL, LD: BOOL, PV: INT) -> (Q: BOOL, CV: INT);
             CTD_DINT (CD: BOOL, LD: BOOL, PV: DINT) -> (Q: BOOL, CV: DINT);
             CTD_LINT (CD: BOOL, LD: BOOL, PV: LINT) -> (Q: BOOL, CV: LINT);
             CTD_UDINT (CD: BOOL, LD: BOOL, PV: UDINT) -> (Q: BOOL, CV: UDINT);
             CTD_ULINT (CD: BOOL, LD: BOOL, PV: ULINT) -> (Q: BOOL, CV: ULINT);
             CTUD (CU: BOOL, CD: BOOL, R: BOOL, LD: BOOL, PV: INT) -> (QU: BOOL, QD: BOOL, CV: INT);
+            CTUD_INT (CU: BOOL, CD: BOOL, R: BOOL, LD: BOOL, PV: INT) -> (QU: BOOL, QD: BOOL, CV: INT);
             CTUD_DINT (CU: BOOL, CD: BOOL, R: BOOL, LD: BOOL, PV: DINT) -> (QU: BOOL, QD: BOOL, CV: DINT);
             CTUD_LINT (CU: BOOL, CD: BOOL, R: BOOL, LD: BOOL, PV: LINT) -> (QU: BOOL, QD: BOOL, CV: LINT);
             CTUD_UDINT (CU: BOOL, CD: BOOL, R: BOOL, LD: BOOL, PV: UDINT) -> (QU: BOOL, QD: BOOL, CV: UDINT);

@@ -12,7 +12,17 @@ fn function_blocks_are_in_the_table() {
     assert_eq!(names(ton.inputs), [("IN", Elem::BOOL), ("PT", Elem::TIME)]);
     assert_eq!(names(ton.outputs), [("Q", Elem::BOOL), ("ET", Elem::TIME)]);
     assert_eq!(lookup_fb("CTUD_UDINT").unwrap().outputs.len(), 3);
-    assert_eq!(FB_SIGNATURES.len(), 23);
+    assert_eq!(FB_SIGNATURES.len(), 26);
+    // The 3rd edition's typed counters, every one of them.
+    for fb in ["CTU", "CTD", "CTUD"] {
+        for ty in ["", "_INT", "_DINT", "_LINT", "_UDINT", "_ULINT"] {
+            let name = std::format!("{fb}{ty}");
+            let sig = lookup_fb(&name).unwrap_or_else(|| panic!("{name}"));
+            let cv = sig.outputs.iter().find(|p| p.name == "CV").unwrap();
+            let want = if ty.is_empty() { "INT" } else { &ty[1..] };
+            assert_eq!(cv.ty.name(), want, "{name}");
+        }
+    }
     assert!(lookup_fb("ADD").is_none());
 }
 

@@ -290,9 +290,42 @@ macro_rules! std_block_tests {
                 assert!(!f.waiting);
                 assert_eq!(f.big, 1);
             }
+
+            #[test]
+            fn int_counters_via_input_operators_and_cal() {
+                let mut ctx = Cycle::new();
+                let mut f = UseIntCounters::default();
+                for (k, ((cu, cd, load), want)) in INT_COUNTER_SCANS.into_iter().enumerate() {
+                    (f.cu, f.cd, f.load) = (cu, cd, load);
+                    f.call(&mut ctx);
+                    let got = (f.up, f.up_q, f.down, f.down_q, f.both, f.qu, f.qd);
+                    assert_eq!(got, want, "scan {k}");
+                }
+            }
         }
     };
 }
+
+/// `UseIntCounters` scan by scan: `(cu, cd, load)` in, then `(up, up_q,
+/// down, down_q, both, qu, qd)` out (il-interp's plc.rs runs the same).
+#[allow(clippy::type_complexity)]
+const INT_COUNTER_SCANS: [((bool, bool, bool), (i16, bool, i16, bool, i16, bool, bool)); 13] = [
+    ((false, false, true), (0, false, 2, false, 2, true, false)),
+    ((true, false, false), (1, false, 2, false, 3, true, false)),
+    ((false, true, false), (1, false, 1, false, 2, true, false)),
+    ((true, false, false), (2, false, 1, false, 3, true, false)),
+    ((false, true, false), (2, false, 0, true, 2, true, false)),
+    ((true, false, false), (3, true, 0, true, 3, true, false)),
+    // CU held, CD rises: the CTUD_INT counts down only.
+    ((true, true, false), (3, true, -1, true, 2, true, false)),
+    ((false, false, false), (3, true, -1, true, 2, true, false)),
+    // CU and CD rise together: the CTUD_INT does not count.
+    ((true, true, false), (4, true, -2, true, 2, true, false)),
+    ((false, false, true), (4, true, 2, false, 2, true, false)),
+    ((false, true, false), (4, true, 1, false, 1, false, false)),
+    ((false, false, false), (4, true, 1, false, 1, false, false)),
+    ((false, true, false), (4, true, 0, true, 0, false, true)),
+];
 
 std_block_tests!(via_build);
 std_block_tests!(via_macro);

@@ -107,6 +107,42 @@ fn first_element<'a, 'i>(n: Node<'a, 'i>) -> Option<Node<'a, 'i>> {
     })
 }
 
+/// PLCopen's `<project>`: in a namespace of plcopen.org (`tc6_0200`,
+/// `tc6_0201` ...) or in none (hand-written and older exports). Another
+/// schema's `<project>` (a Maven POM) would otherwise import as an empty
+/// program without a word.
+fn is_plcopen_root(root: Node) -> bool {
+    let tag = root.tag_name();
+    tag.name() == "project"
+        && tag
+            .namespace()
+            .is_none_or(|ns| ns.to_ascii_lowercase().contains("plcopen.org"))
+}
+
+/// The one error for XML that is not a PLCopen project (a SoMachine Basic
+/// `.smbp`, a TwinCAT `.TcPOU` ...): its root, and what is read instead.
+fn not_plcopen(root: Node, at: Span) -> Diagnostic {
+    let tag = root.tag_name();
+    let ns = match tag.namespace() {
+        Some(ns) => format!(" in namespace `{}`", shown(ns)),
+        None => " (no namespace)".to_string(),
+    };
+    Diagnostic::error(
+        BAD_PROJECT,
+        at,
+        format!(
+            "this XML is not a PLCopen TC6 project: its root element is `<{}>`{ns}, not PLCopen's `<project>`",
+            shown(tag.name())
+        ),
+    )
+    .with_label("not PLCopen's `<project>`")
+    .with_note(
+        "the IL compiler reads IL source text and PLCopen TC6 XML projects \
+         (`<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">`, as Beremiz, OpenPLC and CODESYS export them); \
+         a file whose text starts with `<` is read as XML whatever its name",
+    )
+}
+
 fn flag(n: Node, name: &str) -> bool {
     matches!(n.attribute(name), Some("true" | "1"))
 }
@@ -121,19 +157,9 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
         left_out: LeftOut::default(),
     };
     let root = doc.root_element();
-    if root.tag_name().name() != "project" {
+    if !is_plcopen_root(root) {
         let at = t.tag(root);
-        t.diags.push(
-            Diagnostic::error(
-                BAD_PROJECT,
-                at,
-                format!(
-                    "this is not a PLCopen TC6 project: the root element is `<{}>`, not `<project>`",
-                    shown(root.tag_name().name())
-                ),
-            )
-            .with_label("expected `<project>`"),
-        );
+        t.diags.push(not_plcopen(root, at));
         return t.finish();
     }
     let types = kid(root, "types");
