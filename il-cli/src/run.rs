@@ -168,7 +168,7 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
     let programs: Vec<&str> = prog
         .pous
         .iter()
-        .filter(|p| p.kind == il_codegen::ast::PouKind::Program)
+        .filter(|p| p.kind == il_codegen::ir::PouKind::Program)
         .map(|p| p.name.as_str())
         .collect();
     // A CONFIGURATION is run when named, or when no --program is given and

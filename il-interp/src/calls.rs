@@ -4,9 +4,9 @@
 use crate::places::self_root;
 use crate::values::{Instance, Value};
 use crate::{Frame, Machine, find_var, held, stdfn};
-use il_codegen::ast::{Edge, PouKind, VarKind};
 use il_codegen::ir::types::Ty;
 use il_codegen::ir::{CheckedPou, Expr, Op, PathElem, Place, Root, Storage};
+use il_codegen::ir::{Edge, PouKind, VarKind};
 use il_std::{Cycle, FaultKind};
 
 /// Names of the VAR_IN_OUTs of `pou`, in declaration order.

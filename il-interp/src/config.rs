@@ -12,7 +12,7 @@
 use crate::places::{Step, io_read, io_write};
 use crate::values::{Instance, Value};
 use crate::{Machine, find_var};
-use il_codegen::ast::Area;
+use il_codegen::ir::Area;
 use il_codegen::ir::{
     AccessTarget, ConfigDef, GlobalRef, InstancePath, PathElem, ProgArg, Program, TaskSource,
 };

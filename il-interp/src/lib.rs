@@ -39,8 +39,8 @@ pub use il_std;
 pub use values::StdFb;
 pub use values::{Instance, Struct, Value, fmt_dur};
 
-use il_codegen::ast::PouKind;
 use il_codegen::diag::SourceFile;
+use il_codegen::ir::PouKind;
 use il_codegen::ir::types::{Elem, Ty};
 use il_codegen::ir::{CheckedPou, Program, Storage, Var};
 use il_std::Cycle;

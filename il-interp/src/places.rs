@@ -15,12 +15,9 @@ pub(crate) enum Step {
     Index(Option<usize>),
 }
 
+/// The IR names the areas with il-std's type.
 pub(crate) fn io_area(l: &Loc) -> il_std::Area {
-    match l.area {
-        il_codegen::ast::Area::Input => il_std::Area::Input,
-        il_codegen::ast::Area::Output => il_std::Area::Output,
-        il_codegen::ast::Area::Memory => il_std::Area::Memory,
-    }
+    l.area
 }
 
 pub(crate) fn io_read(ctx: &Cycle, l: &Loc) -> Value {

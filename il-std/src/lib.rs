@@ -60,7 +60,7 @@ extern crate std;
 // default), so that the compiler's own build of this crate (il-codegen turns
 // default features off) is a fraction of the whole and il-codegen starts
 // compiling sooner in a user's cold build.
-mod area_size;
+mod area;
 #[cfg(feature = "runtime")]
 pub mod conv;
 #[cfg(feature = "runtime")]
@@ -88,7 +88,7 @@ mod time;
 pub mod trace;
 mod types;
 
-pub use area_size::{INPUT_BYTES, MEMORY_BYTES, OUTPUT_BYTES};
+pub use area::{Area, INPUT_BYTES, MEMORY_BYTES, OUTPUT_BYTES};
 #[cfg(feature = "std")]
 pub use cycle::RealClock;
 #[cfg(feature = "runtime")]
@@ -107,7 +107,7 @@ crate::std_function_blocks!(reexport_blocks);
 #[cfg(feature = "runtime")]
 pub use image::address as addr;
 #[cfg(feature = "runtime")]
-pub use image::{Area, Located, ProcessImage};
+pub use image::{Located, ProcessImage};
 pub use string::{DEFAULT_STRING_LEN, STRING, WSTRING};
 #[cfg(feature = "runtime")]
 pub use task::{TaskInfo, TaskState};

@@ -410,16 +410,9 @@ impl Subscript {
     }
 }
 
-/// The memory area of a direct address.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Area {
-    /// `%I`: inputs of the process image.
-    Input,
-    /// `%Q`: outputs of the process image.
-    Output,
-    /// `%M`: memory (markers).
-    Memory,
-}
+/// The memory area of a direct address: il-std's, so the compiler and the
+/// runtime name the areas with one type.
+pub use il_std::Area;
 
 /// The size letter of a direct address.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -30,7 +30,7 @@ fn every_plc_program_runs() {
             continue;
         };
         for pou in &p.pous {
-            if pou.kind == il_codegen::ast::PouKind::Function {
+            if pou.kind == il_codegen::ir::PouKind::Function {
                 continue;
             }
             let mut ctx = Cycle::new();

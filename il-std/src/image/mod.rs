@@ -16,18 +16,9 @@
 
 pub mod address;
 
-use crate::area_size::{INPUT_BYTES, MEMORY_BYTES, OUTPUT_BYTES};
+use crate::area::{INPUT_BYTES, MEMORY_BYTES, OUTPUT_BYTES};
 
-/// One of the three areas.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Area {
-    /// `%I`: written by the host before a scan.
-    Input,
-    /// `%Q`: read by the host after a scan.
-    Output,
-    /// `%M`: flags kept between scans.
-    Memory,
-}
+pub use crate::area::Area;
 
 /// A located variable or direct address used by generated code, for hosts
 /// that bind fieldbus data (see each generated POU's `ADDRESSES`).
