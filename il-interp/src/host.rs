@@ -229,9 +229,7 @@ impl Machine {
                 let p = params()
                     .find(|p| p.name.eq_ignore_ascii_case(f))
                     .ok_or_else(|| none(params().map(|p| p.name).collect(), n))?;
-                let e = Elem::from_name(p.ty.name())
-                    .ok_or_else(|| format!("internal: type of {n}.{}", p.name))?;
-                Ok((p.name.to_string(), Ty::Elem(e), None))
+                Ok((p.name.to_string(), Ty::of_std(p.ty), None))
             }
             _ => Err(format!("`{text}`: {ty} has no members")),
         }

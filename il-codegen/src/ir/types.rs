@@ -56,6 +56,73 @@ pub const ALL_ELEMS: &[Elem] = &[
     TIME, LTIME, DATE, TOD, DT,
 ];
 
+/// il-std's vocabulary of elementary types (its signature tables) and
+/// this one are one: every type here is one there, matched arm by arm so
+/// that a type added to either side fails to compile until both agree.
+impl From<Elem> for il_std::signature::Elem {
+    fn from(e: Elem) -> Self {
+        use il_std::signature::Elem as S;
+        match e {
+            BOOL => S::BOOL,
+            SINT => S::SINT,
+            INT => S::INT,
+            DINT => S::DINT,
+            LINT => S::LINT,
+            USINT => S::USINT,
+            UINT => S::UINT,
+            UDINT => S::UDINT,
+            ULINT => S::ULINT,
+            BYTE => S::BYTE,
+            WORD => S::WORD,
+            DWORD => S::DWORD,
+            LWORD => S::LWORD,
+            REAL => S::REAL,
+            LREAL => S::LREAL,
+            TIME => S::TIME,
+            LTIME => S::LTIME,
+            DATE => S::DATE,
+            TOD => S::TOD,
+            DT => S::DT,
+        }
+    }
+}
+
+impl Ty {
+    /// The type il-std's tables name: strings are [`Ty::Str`] of the
+    /// default capacity, the others elementary.
+    pub fn of_std(e: il_std::signature::Elem) -> Ty {
+        use il_std::signature::Elem as S;
+        Ty::Elem(match e {
+            S::STRING | S::WSTRING => {
+                return Ty::Str {
+                    wide: e == S::WSTRING,
+                    len: DEFAULT_STRING_LEN,
+                };
+            }
+            S::BOOL => BOOL,
+            S::SINT => SINT,
+            S::INT => INT,
+            S::DINT => DINT,
+            S::LINT => LINT,
+            S::USINT => USINT,
+            S::UINT => UINT,
+            S::UDINT => UDINT,
+            S::ULINT => ULINT,
+            S::BYTE => BYTE,
+            S::WORD => WORD,
+            S::DWORD => DWORD,
+            S::LWORD => LWORD,
+            S::REAL => REAL,
+            S::LREAL => LREAL,
+            S::TIME => TIME,
+            S::LTIME => LTIME,
+            S::DATE => DATE,
+            S::TOD => TOD,
+            S::DT => DT,
+        })
+    }
+}
+
 impl Elem {
     /// The IEC name (the long form for `TIME_OF_DAY` and `DATE_AND_TIME`).
     pub fn name(self) -> &'static str {

@@ -15,7 +15,10 @@ pub struct StdFb {
 fn params(ps: &[FbParam]) -> Vec<(&'static str, Elem)> {
     ps.iter()
         .map(|p| {
-            let e = Elem::from_name(p.ty.name())
+            // il-std's blocks have elementary parameters only (its table's
+            // compile-time proof names each field's type).
+            let e = super::types::Ty::of_std(p.ty)
+                .elem()
                 .unwrap_or_else(|| panic!("standard FB parameter {} : {:?}", p.name, p.ty));
             (p.name, e)
         })

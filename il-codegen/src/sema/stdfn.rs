@@ -41,22 +41,12 @@ pub(crate) struct ResolveError {
 }
 
 fn to_ty(e: sig::Elem) -> Ty {
-    match e {
-        sig::Elem::STRING => Ty::Str {
-            wide: false,
-            len: DEFAULT_STRING_LEN,
-        },
-        sig::Elem::WSTRING => Ty::Str {
-            wide: true,
-            len: DEFAULT_STRING_LEN,
-        },
-        e => Elem::from_name(e.name()).map(Ty::Elem).unwrap_or(Ty::BOOL),
-    }
+    Ty::of_std(e)
 }
 
 fn in_class(t: &Ty, c: Class) -> bool {
     match t {
-        Ty::Elem(e) => sig::Elem::from_name(e.name()).is_some_and(|s| s.class_member(c)),
+        Ty::Elem(e) => sig::Elem::from(*e).class_member(c),
         Ty::Str { wide, .. } => {
             let s = if *wide {
                 sig::Elem::WSTRING
@@ -353,7 +343,7 @@ pub(crate) fn resolve(
 /// The signature table's name of an elementary or string type.
 fn sig_elem(t: &Ty) -> Option<sig::Elem> {
     match t {
-        Ty::Elem(e) => sig::Elem::from_name(e.name()),
+        Ty::Elem(e) => Some(sig::Elem::from(*e)),
         Ty::Str { wide: false, .. } => Some(sig::Elem::STRING),
         Ty::Str { wide: true, .. } => Some(sig::Elem::WSTRING),
         _ => None,
