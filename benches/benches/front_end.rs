@@ -9,8 +9,8 @@
 use divan::counter::ItemsCount;
 use divan::{Bencher, black_box};
 use il_bench::generator;
+use il_codegen::EmitOptions;
 use il_codegen::diag::SourceFile;
-use il_codegen::{emit, sema, syntax};
 
 fn main() {
     divan::main();
@@ -42,21 +42,24 @@ fn lines_of(f: &SourceFile) -> ItemsCount {
 
 fn bench_parse(b: Bencher, file: SourceFile) {
     b.counter(lines_of(&file))
-        .bench_local(|| syntax::parse(black_box(&file)));
+        .bench_local(|| il_codegen::ast::parse(black_box(&file)));
 }
 
+/// Parse and check through the pipeline (the checker is private: the
+/// check alone is this less `parse`).
 fn bench_check(b: Bencher, file: SourceFile) {
-    let (unit, _) = syntax::parse(&file);
-    b.counter(lines_of(&file))
-        .bench_local(|| sema::check(black_box(&file), black_box(&unit)));
+    b.counter(lines_of(&file)).bench_local(|| {
+        il_codegen::Program::new()
+            .il(black_box(&file).clone())
+            .check()
+    });
 }
 
 fn bench_emit(b: Bencher, file: SourceFile) {
-    let (unit, _) = syntax::parse(&file);
-    let (program, diags) = sema::check(&file, &unit);
-    assert!(!diags.iter().any(|d| d.is_error()));
+    let checked = il_codegen::Program::new().il(file.clone()).check();
+    assert!(!checked.has_errors());
     b.counter(lines_of(&file))
-        .bench_local(|| emit::program(black_box(&program), emit::Options::default()));
+        .bench_local(|| black_box(&checked).emit(EmitOptions::default()));
 }
 
 fn bench_whole(b: Bencher, file: SourceFile) {
@@ -64,7 +67,7 @@ fn bench_whole(b: Bencher, file: SourceFile) {
         let program = il_codegen::Program::new().il(black_box(&file).clone());
         let checked = program.check();
         let mut emitted = checked
-            .emit(emit::Options::default())
+            .emit(EmitOptions::default())
             .expect("generated IL compiles");
         emitted.remove(0).text
     });
@@ -77,7 +80,7 @@ fn bench_to_file(b: Bencher, file: SourceFile) {
         il_codegen::Program::new()
             .il(black_box(&file).clone())
             .check()
-            .files(emit::Options::default())
+            .files(EmitOptions::default())
             .expect("generated IL compiles")
     });
 }
@@ -159,7 +162,7 @@ mod many_labels {
             checked.drop_syntax();
             black_box(checked.render(false));
             let texts = checked
-                .files(emit::Options::default())
+                .files(EmitOptions::default())
                 .expect("generated IL compiles");
             il_codegen::write_if_changed(&path, &texts[0]).expect("written");
         });

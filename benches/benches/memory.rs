@@ -91,7 +91,7 @@ fn main() {
     let before = vm_hwm_kib();
     let program = il_codegen::Program::new().il(file.clone());
     let checked = program.check();
-    let opts = il_codegen::emit::Options {
+    let opts = il_codegen::EmitOptions {
         line_markers: true,
         ..Default::default()
     };

@@ -190,7 +190,7 @@ fn render_all(file: &SourceFile, diags: &[il_codegen::diag::Diagnostic]) {
 /// The parser and every diagnostic renderer.
 pub fn front_end(data: &[u8]) {
     let file = source(data);
-    let (_unit, diags) = il_codegen::syntax::parse(&file);
+    let (_unit, diags) = il_codegen::ast::parse(&file);
     render_all(&file, &diags);
 }
 
@@ -222,7 +222,7 @@ pub fn pipeline(data: &[u8]) {
     let program = il_codegen::Program::new().il(file.clone());
     let checked = program.check();
     let diags = &checked.diagnostics()[0];
-    let compiled = checked.emit(il_codegen::emit::Options {
+    let compiled = checked.emit(il_codegen::EmitOptions {
         line_markers: true,
         ..Default::default()
     });

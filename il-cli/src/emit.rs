@@ -58,7 +58,7 @@ pub fn run(
     // The syntax tree is not needed for code: its memory is reused for
     // the text.
     checked.drop_syntax();
-    let opts = il_codegen::emit::Options {
+    let opts = il_codegen::EmitOptions {
         line_markers: true,
         ..Default::default()
     };

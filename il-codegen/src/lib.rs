@@ -51,23 +51,15 @@ pub mod plcopen;
 pub mod read;
 pub mod work;
 
-// The stages and the front-end glue: public for the other crates of this
-// workspace (the macro crate, il-interp, the benchmarks, the tests),
-// but not the documented API (as prost-build and cxx-build keep theirs):
-// their items change with the compiler. Users drive the compiler through
-// `Builder`, `Program` and `il!`.
-#[doc(hidden)]
+// The stages are private: their items change with the compiler. The
+// documented contract between the checker and its consumers is `ir`;
+// front ends drive the compiler through `Builder`, `Program` and `il!`.
 pub mod ast;
-#[doc(hidden)]
-pub mod emit;
-#[doc(hidden)]
+mod emit;
 pub mod expand;
-#[doc(hidden)]
 pub mod pipeline;
-#[doc(hidden)]
-pub mod sema;
-#[doc(hidden)]
-pub mod syntax;
+mod sema;
+mod syntax;
 
 #[cfg(feature = "build")]
 pub use builder::{Builder, Error, output_paths, write_if_changed};

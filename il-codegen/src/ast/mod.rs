@@ -8,6 +8,9 @@ mod configuration;
 mod decls;
 mod int_value;
 
+/// Parse one IL file into its syntax tree, with the syntax diagnostics
+/// (tools that read the tree itself: outlines, formatters, fuzzers).
+pub use crate::syntax::{parse, parse_std};
 pub use body::*;
 pub use configuration::*;
 pub use decls::*;

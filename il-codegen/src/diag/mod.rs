@@ -11,6 +11,9 @@ pub mod codes;
 pub mod json;
 pub mod render;
 
+/// "Did you mean": the closest of the candidates to a name, for every tool
+/// that takes names from users.
+pub use crate::sema::suggest;
 #[cfg(feature = "build")]
 pub use json::to_json;
 #[cfg(feature = "build")]

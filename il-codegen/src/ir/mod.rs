@@ -564,8 +564,8 @@ impl Value {
     }
 }
 
-/// An implicit widening conversion the checker applied (from its one table,
-/// [`super::widen::widens`]): lossless, so the emitter and the interpreter
+/// An implicit widening conversion the checker applied (from its one table of
+/// implicit widenings): lossless, so the emitter and the interpreter
 /// convert as the `FROM_TO_TO` function does and never fail.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Widen {

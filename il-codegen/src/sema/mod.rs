@@ -35,17 +35,6 @@ pub(crate) use crate::ir::{self, types};
 pub use address::parse_address;
 pub use codes::CODES;
 
-/// Check a parsed unit. Returns the checked program (whatever could be
-/// checked) and the diagnostics; the program may be emitted only when no
-/// diagnostic is an error.
-pub fn check(file: &SourceFile, unit: &ast::CompilationUnit) -> (ir::Program, Vec<Diagnostic>) {
-    let (mut programs, mut diags) = check_all(&[(file, unit)], Default::default(), false);
-    (
-        programs.pop().unwrap_or_default(),
-        diags.pop().unwrap_or_default(),
-    )
-}
-
 /// Check several files as one program (a FUNCTION_BLOCK of one file used in
 /// another) against a standard. Returns one program and one diagnostic
 /// list per file. `cr_steps`: record [`ir::CheckedPou::cr_steps`] (for

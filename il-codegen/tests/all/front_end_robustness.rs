@@ -10,9 +10,9 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
+use il_codegen::ast::parse;
 use il_codegen::ast::{CompilationUnit, Item, Span};
 use il_codegen::diag::{Diagnostic, SourceFile, render, render_short, to_json};
-use il_codegen::syntax::parse;
 
 /// xorshift64* (Vigna): small, fast, good enough for test inputs.
 struct Rng(u64);

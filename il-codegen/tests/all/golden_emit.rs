@@ -21,7 +21,7 @@ fn emitted_rust_matches_golden_files() {
         let file = SourceFile::new(name, std::fs::read_to_string(&il).unwrap());
         let program = il_codegen::Program::new().il(file);
         let checked = program.check();
-        let opts = il_codegen::emit::Options {
+        let opts = il_codegen::EmitOptions {
             line_markers: true,
             ..Default::default()
         };
@@ -59,7 +59,7 @@ fn emitted_text_of_every_golden_input_parses_as_rust() {
         let file = SourceFile::new("g.il", std::fs::read_to_string(&il).unwrap());
         let checked = il_codegen::Program::new().il(file).check();
         for serde in [false, true] {
-            let opts = il_codegen::emit::Options {
+            let opts = il_codegen::EmitOptions {
                 serde,
                 ..Default::default()
             };

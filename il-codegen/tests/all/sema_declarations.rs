@@ -368,10 +368,9 @@ fn named_types_give_their_initial_values_through_aliases() {
     let src = "TYPE I : INT (0..10) := 5; J : I; K : J; E : (A, B) := E#B; F : E; END_TYPE\n\
                PROGRAM Main\nVAR k : K; f : F; END_VAR\nLD k\nST k\nEND_PROGRAM\n";
     let file = SourceFile::new("t.il", src);
-    let (unit, d) = il_codegen::syntax::parse(&file);
-    assert_eq!(d, []);
-    let (program, d) = il_codegen::sema::check(&file, &unit);
-    assert_eq!(d, []);
+    let checked = il_codegen::Program::new().il(file).check();
+    assert!(!checked.has_errors(), "{}", checked.render(false));
+    let program = &checked.ir().expect("no errors")[0];
     let vars = &program.pous[0].vars;
     let init = |n: &str| {
         let v = vars.iter().find(|v| v.name == n).expect("declared");

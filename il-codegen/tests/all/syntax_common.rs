@@ -1,9 +1,9 @@
 //! Helpers shared by the syntax tests.
 #![allow(dead_code)]
 
+pub use il_codegen::ast::parse;
 pub use il_codegen::ast::*;
 pub use il_codegen::diag::{Diagnostic, SourceFile};
-pub use il_codegen::syntax::parse;
 
 /// Parse and fail on any diagnostic.
 pub fn ok(src: &str) -> CompilationUnit {

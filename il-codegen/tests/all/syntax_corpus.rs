@@ -1,9 +1,9 @@
 //! Every IL file of the shared corpus is accepted, or refused with located
 //! diagnostics that name the non-standard construct.
 
+use il_codegen::ast::parse;
 use il_codegen::ast::*;
 use il_codegen::diag::{Diagnostic, SourceFile};
-use il_codegen::syntax::parse;
 
 const CORPUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../../shared/corpus");
 
