@@ -44,32 +44,18 @@ impl HostPlace {
     }
 }
 
-/// A member: its declared name, type and subrange bounds.
-type Member = (String, Ty, Option<(i128, i128)>);
-
 /// Where a path's parts lead: the steps, and the type and subrange bounds
 /// of the place they end at.
 pub(crate) type Resolved = (Vec<Step>, Ty, Option<(i128, i128)>);
 
 /// One part of a path: `.name` or `[i, j]` (the subscripts' values).
-pub(crate) enum Part {
-    Field(String),
-    Index(Vec<i64>),
-}
+pub(crate) use il_codegen::ir::path::PathPart as Part;
 
-/// Split `a.b[1, 2].c` into its root and parts (il-codegen's host paths:
+/// Split `a.b[1, 2].c` into its root and parts (the IR's host paths:
 /// constant subscript expressions are folded there).
 pub(crate) fn split(text: &str) -> Result<(String, Vec<Part>), String> {
     let p = il_codegen::ir::path::parse(text)?;
-    let parts = p
-        .parts
-        .into_iter()
-        .map(|s| match s {
-            il_codegen::ir::path::PathPart::Field(f) => Part::Field(f),
-            il_codegen::ir::path::PathPart::Index(i) => Part::Index(i),
-        })
-        .collect();
-    Ok((p.root, parts))
+    Ok((p.root, p.parts))
 }
 
 /// ", did you mean `x`?" when a candidate is close.
@@ -143,96 +129,26 @@ impl Machine {
     }
 
     /// The steps `parts` take into a place of type `ty` (subrange `range`):
-    /// the steps, the type and subrange of the place they end at. `text` is
-    /// the whole path, for the messages.
+    /// the steps, the type and subrange of the place they end at, as the
+    /// one path resolver of the IR finds them. `text` is the whole path, for
+    /// the messages.
     pub(crate) fn resolve_parts(
         &self,
-        mut ty: Ty,
-        mut range: Option<(i128, i128)>,
+        ty: Ty,
+        range: Option<(i128, i128)>,
         parts: &[Part],
         text: &str,
     ) -> Result<Resolved, String> {
-        let mut steps = Vec::new();
-        for part in parts {
-            match part {
-                Part::Field(f) => {
-                    let (name, fty, frange) = self.member(&ty, f, text)?;
-                    steps.push(Step::Field(name));
-                    ty = fty;
-                    range = frange;
-                }
-                Part::Index(subs) => {
-                    let Ty::Array(arr) = &ty else {
-                        return Err(format!("`{text}`: {ty} is not an array"));
-                    };
-                    let (dims, elem, elem_range) = (&arr.dims, &arr.elem, &arr.range);
-                    if subs.len() != dims.len() {
-                        return Err(format!(
-                            "`{text}`: {} subscripts for an array of {} dimensions",
-                            subs.len(),
-                            dims.len()
-                        ));
-                    }
-                    let mut flat = 0usize;
-                    for (&k, (lo, hi)) in subs.iter().zip(dims) {
-                        if k < *lo || k > *hi {
-                            return Err(format!(
-                                "`{text}`: subscript {k} is outside the bounds {lo}..{hi}"
-                            ));
-                        }
-                        flat = flat * (hi - lo + 1) as usize + (k - lo) as usize;
-                    }
-                    steps.push(Step::Index(Some(flat)));
-                    // An element of an array of a subrange keeps its bounds.
-                    range = *elem_range;
-                    ty = elem.clone();
-                }
-            }
-        }
-        Ok((steps, ty, range))
-    }
-
-    /// The member `f` of a value of type `ty`: its declared name, type and subrange.
-    fn member(&self, ty: &Ty, f: &str, text: &str) -> Result<Member, String> {
-        let none = |names: Vec<&str>, of: &str| {
-            format!("`{text}`: {of} has no member `{f}`{}", hint(f, names))
-        };
-        match ty {
-            Ty::Struct(n) => match self.type_def(n)? {
-                TypeDef::Struct { fields, .. } => fields
-                    .iter()
-                    .find(|x| x.name.eq_ignore_ascii_case(f))
-                    .map(|x| (x.name.clone(), x.ty.clone(), x.range))
-                    .ok_or_else(|| none(fields.iter().map(|x| x.name.as_str()).collect(), n)),
-                TypeDef::Enum { .. } => Err(format!("`{text}`: {n} has no members")),
-            },
-            Ty::Fb(n) => {
-                if let Some(p) = self
-                    .prog
-                    .pous
-                    .iter()
-                    .find(|p| p.name.eq_ignore_ascii_case(n))
-                {
-                    let vars = p.vars.iter().filter(|v| held(v));
-                    let mut names = Vec::new();
-                    for v in vars {
-                        if v.name.eq_ignore_ascii_case(f) {
-                            return Ok((v.name.clone(), v.ty.clone(), v.range));
-                        }
-                        names.push(v.name.as_str());
-                    }
-                    return Err(none(names, n));
-                }
-                let s = il_std::signature::lookup_fb(n)
-                    .ok_or_else(|| format!("internal: no function block {n}"))?;
-                let params = || s.inputs.iter().chain(s.outputs);
-                let p = params()
-                    .find(|p| p.name.eq_ignore_ascii_case(f))
-                    .ok_or_else(|| none(params().map(|p| p.name).collect(), n))?;
-                Ok((p.name.to_string(), Ty::of_std(p.ty), None))
-            }
-            _ => Err(format!("`{text}`: {ty} has no members")),
-        }
+        let r = il_codegen::ir::path::resolve(&self.prog, (ty, range), parts, text)?;
+        let steps = r
+            .steps
+            .into_iter()
+            .map(|s| match s {
+                il_codegen::ir::path::Step::Field(f) => Step::Field(f),
+                il_codegen::ir::path::Step::Element(k) => Step::Index(Some(k)),
+            })
+            .collect();
+        Ok((steps, r.ty, r.range))
     }
 
     /// The current value of a host place (the process image is the cycle's).

@@ -8,6 +8,9 @@
 //! constant subscript (division truncates toward zero, MOD takes the
 //! dividend's sign).
 
+use super::types::Ty;
+use super::{Program, Storage, TypeDef, Var};
+
 /// A parsed path: its first name and the steps after it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct HostPath {
@@ -81,6 +84,139 @@ pub fn constant(text: &str) -> Result<i64, String> {
         return Err("is not an integer expression".into());
     }
     i64::try_from(v).map_err(|_| "overflows LINT".to_string())
+}
+
+/// One step of a resolved path: a member by its declared name, or an
+/// element by its row-major index over all dimensions.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Step {
+    /// A member of a structure or an FB instance, as declared.
+    Field(String),
+    /// The element at this flat index.
+    Element(usize),
+}
+
+/// Where a path's parts lead from a place of some type.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Resolved {
+    /// The steps, in order.
+    pub steps: Vec<Step>,
+    /// The type of the place they end at.
+    pub ty: Ty,
+    /// Its subrange, if it has one.
+    pub range: Option<(i128, i128)>,
+}
+
+/// The steps `parts` take from a place of type `ty` (subrange `range`) in
+/// `prog`: members of structures, of user FB instances (their inputs,
+/// outputs and variables held in the instance) and of standard blocks, and
+/// array elements inside the bounds. `text` is the whole path, for the
+/// messages, which name the closest member where one is close.
+pub fn resolve(
+    prog: &Program,
+    (ty, range): (Ty, Option<(i128, i128)>),
+    parts: &[PathPart],
+    text: &str,
+) -> Result<Resolved, String> {
+    let (mut ty, mut range) = (ty, range);
+    let mut steps = Vec::with_capacity(parts.len());
+    for part in parts {
+        match part {
+            PathPart::Field(f) => {
+                let (name, fty, frange) = member(prog, &ty, f, text)?;
+                steps.push(Step::Field(name));
+                ty = fty;
+                range = frange;
+            }
+            PathPart::Index(subs) => {
+                let Ty::Array(arr) = &ty else {
+                    return Err(format!("`{text}`: {ty} is not an array"));
+                };
+                if subs.len() != arr.dims.len() {
+                    return Err(format!(
+                        "`{text}`: {} subscripts for an array of {} dimensions",
+                        subs.len(),
+                        arr.dims.len()
+                    ));
+                }
+                let mut flat = 0usize;
+                for (&k, &(lo, hi)) in subs.iter().zip(&arr.dims) {
+                    if k < lo || k > hi {
+                        return Err(format!(
+                            "`{text}`: subscript {k} is outside the bounds {lo}..{hi}"
+                        ));
+                    }
+                    flat = flat * (hi - lo + 1) as usize + (k - lo) as usize;
+                }
+                steps.push(Step::Element(flat));
+                // An element of an array of a subrange keeps its bounds.
+                range = arr.range;
+                ty = arr.elem.clone();
+            }
+        }
+    }
+    Ok(Resolved { steps, ty, range })
+}
+
+/// Whether a variable of a POU lives in its instance (what a path can name).
+pub fn held(v: &Var) -> bool {
+    matches!(v.storage, Storage::Instance | Storage::External)
+}
+
+/// The member `f` of a value of type `ty`: its declared name, type and subrange.
+#[allow(clippy::type_complexity)]
+fn member(
+    prog: &Program,
+    ty: &Ty,
+    f: &str,
+    text: &str,
+) -> Result<(String, Ty, Option<(i128, i128)>), String> {
+    let none = |names: Vec<&str>, of: &str| {
+        let hint = crate::diag::suggest(f, names.iter().copied())
+            .map(|s| format!("; did you mean `{s}`?"))
+            .unwrap_or_default();
+        format!("`{text}`: {of} has no member `{f}`{hint}")
+    };
+    match ty {
+        Ty::Struct(n) => {
+            let def = prog.types.iter().find(|d| match d {
+                TypeDef::Struct { name, .. } | TypeDef::Enum { name, .. } => {
+                    name.eq_ignore_ascii_case(n)
+                }
+            });
+            match def {
+                Some(TypeDef::Struct { fields, .. }) => fields
+                    .iter()
+                    .find(|x| x.name.eq_ignore_ascii_case(f))
+                    .map(|x| (x.name.clone(), x.ty.clone(), x.range))
+                    .ok_or_else(|| none(fields.iter().map(|x| x.name.as_str()).collect(), n)),
+                Some(TypeDef::Enum { .. }) => Err(format!("`{text}`: {n} has no members")),
+                None => Err(format!(
+                    "internal: no user type `{n}` in the checked program"
+                )),
+            }
+        }
+        Ty::Fb(n) => {
+            if let Some(p) = prog.pous.iter().find(|p| p.name.eq_ignore_ascii_case(n)) {
+                let mut names = Vec::new();
+                for v in p.vars.iter().filter(|v| held(v)) {
+                    if v.name.eq_ignore_ascii_case(f) {
+                        return Ok((v.name.clone(), v.ty.clone(), v.range));
+                    }
+                    names.push(v.name.as_str());
+                }
+                return Err(none(names, n));
+            }
+            let s = il_std::signature::lookup_fb(n)
+                .ok_or_else(|| format!("internal: no function block {n}"))?;
+            let params = || s.inputs.iter().chain(s.outputs);
+            let p = params()
+                .find(|p| p.name.eq_ignore_ascii_case(f))
+                .ok_or_else(|| none(params().map(|p| p.name).collect(), n))?;
+            Ok((p.name.to_string(), Ty::of_std(p.ty), None))
+        }
+        _ => Err(format!("`{text}`: {ty} has no members")),
+    }
 }
 
 #[derive(Clone, Debug, PartialEq)]
