@@ -48,27 +48,36 @@ impl Tree {
     }
 }
 
-/// `a.b[1].c` → `["a", "b[1]"]`, `"c"`; a direct address (`%IX0.0`) is one name.
+/// `a.b[1].c` → `["a", "b[1]"]`, `"c"`; a direct address (`%IX0.0`) is one
+/// name. The path is read by the IR's host-path parser (constant
+/// subscripts folded: `m[1 + 1]` is `m[2]`); text it refuses (which the
+/// interpreter refused first) is one name.
 fn split_path(text: &str) -> (Vec<String>, String) {
-    let text: String = text.chars().filter(|c| !c.is_whitespace()).collect();
-    if text.starts_with('%') {
-        return (Vec::new(), text);
+    use il_codegen::ir::path::{PathPart, parse};
+    let flat = || {
+        (
+            Vec::new(),
+            text.chars().filter(|c| !c.is_whitespace()).collect(),
+        )
+    };
+    if text.trim_start().starts_with('%') {
+        return flat();
     }
-    let mut parts = Vec::new();
-    let (mut depth, mut start) = (0usize, 0usize);
-    for (i, c) in text.char_indices() {
-        match c {
-            '[' => depth += 1,
-            ']' => depth = depth.saturating_sub(1),
-            '.' if depth == 0 => {
-                parts.push(text[start..i].to_string());
-                start = i + 1;
+    let Ok(p) = parse(text) else { return flat() };
+    let mut names = vec![p.root];
+    for part in p.parts {
+        match part {
+            PathPart::Field(f) => names.push(f),
+            PathPart::Index(subs) => {
+                let subs: Vec<String> = subs.iter().map(i64::to_string).collect();
+                if let Some(last) = names.last_mut() {
+                    last.push_str(&format!("[{}]", subs.join(",")));
+                }
             }
-            _ => {}
         }
     }
-    let last = text[start..].to_string();
-    (parts, last)
+    let last = names.pop().unwrap_or_default();
+    (names, last)
 }
 
 /// What is recorded of a run.
@@ -308,5 +317,12 @@ mod tests {
         );
         assert_eq!(s("m[1, 2]"), (vec![], "m[1,2]".to_string()));
         assert_eq!(s("%IX0.0"), (vec![], "%IX0.0".to_string()));
+        assert_eq!(
+            s("line.t[3 MOD 2 + 1].Q"),
+            (
+                vec!["line".to_string(), "t[2]".to_string()],
+                "Q".to_string()
+            )
+        );
     }
 }
