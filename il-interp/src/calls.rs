@@ -115,9 +115,7 @@ impl Machine {
             vals.push(self.value(f, a, ctx, line)?);
         }
         let mut faults = Vec::new();
-        let r = stdfn::call(call, &vals, ret, (*fault, sig.rounding), &mut |k| {
-            faults.push(k)
-        })?;
+        let r = stdfn::call(call, &vals, ret, (*fault, sig), &mut |k| faults.push(k))?;
         for k in faults {
             self.fault(ctx, f, k, line);
         }

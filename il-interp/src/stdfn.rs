@@ -6,7 +6,7 @@ use il_codegen::ir::StdCall;
 use il_codegen::ir::types::{Elem, Ty};
 use il_std::FaultKind;
 use il_std::func as f;
-use il_std::signature::Rounding;
+use il_std::signature::{ConvKind, Conversion, Rounding, Signature};
 use std::cmp::Ordering;
 
 /// Evaluates `$body` with the type alias `$t` naming the Rust type of the
@@ -379,36 +379,36 @@ pub fn plain(name: &str, args: &[Value], ret: &Ty) -> Result<Value, String> {
         "LEFT" | "RIGHT" | "MID" | "CONCAT" | "INSERT" | "DELETE" | "REPLACE" | "FIND" => {
             string_fn(name, args, ret).map(|(v, _)| v).ok_or_else(bad)
         }
-        _ if name.contains("BCD") => {
-            // BCD_TO_x / x_BCD_TO_y decode, x_TO_BCD / x_TO_BCD_y encode.
-            let (Some(Value::Int(x, _)), Some(to)) = (args.first(), ret.elem()) else {
+        _ => Err(unsupported(name)),
+    }
+}
+
+/// A type conversion, by its entry in il-std's table (what it converts
+/// from and to, and how), not by its name.
+fn conversion(c: &Conversion, name: &str, args: &[Value]) -> Result<Value, String> {
+    let bad = || format!("{name}: unexpected argument types in the interpreter");
+    let x = args.first().ok_or_else(bad)?;
+    let (Ty::Elem(from), Ty::Elem(to)) = (Ty::of_std(c.from), Ty::of_std(c.to)) else {
+        return Err(unsupported(name));
+    };
+    match c.kind {
+        ConvKind::Trunc => {
+            let x = x.as_f64();
+            let r = by_type!(to, T => il_std::conv::trunc_to_int_checked::<T>(x).0 as i128);
+            Ok(Value::Int(r, to))
+        }
+        ConvKind::FromBcd | ConvKind::ToBcd => {
+            let Value::Int(x, _) = x else {
                 return Err(bad());
             };
-            let r = if name.starts_with("BCD_TO_") || name.contains("_BCD_TO_") {
+            let r = if c.kind == ConvKind::FromBcd {
                 il_std::conv::bcd_decode_checked(*x as u64).0 as i128
             } else {
                 il_std::conv::bcd_encode_checked(*x, crate::values::bits(to) / 4).0 as i128
             };
             Ok(Value::Int(wrap(r, to), to))
         }
-        _ => {
-            if let Some((from, to)) = name.split_once("_TRUNC_") {
-                let (Some(_), Some(to)) = (Elem::from_name(from), Elem::from_name(to)) else {
-                    return Err(unsupported(name));
-                };
-                let x = args.first().ok_or_else(bad)?.as_f64();
-                let r = by_type!(to, T => il_std::conv::trunc_to_int_checked::<T>(x).0 as i128);
-                return Ok(Value::Int(r, to));
-            }
-            if let Some((from, to)) = name.split_once("_TO_")
-                && let (Some(from), Some(to)) = (Elem::from_name(from), Elem::from_name(to))
-                && ret.elem() == Some(to)
-            {
-                return convert(from, to, args.first().ok_or_else(bad)?)
-                    .ok_or_else(|| unsupported(name));
-            }
-            Err(unsupported(name))
-        }
+        ConvKind::Value => convert(from, to, x).ok_or_else(|| unsupported(name)),
     }
 }
 
@@ -578,9 +578,15 @@ pub fn call(
     call: &StdCall,
     args: &[Value],
     ret: &Ty,
-    (kind, rounding): (Option<FaultKind>, Option<Rounding>),
+    (kind, sig): (Option<FaultKind>, &Signature),
     fault: &mut dyn FnMut(FaultKind),
 ) -> Result<Value, String> {
+    let rounding = sig.rounding;
+    // A conversion is evaluated from its table entry; the others by name.
+    let plain = |n: &str, args: &[Value], ret: &Ty| match &sig.conversion {
+        Some(c) => conversion(c, n, args),
+        None => plain(n, args, ret),
+    };
     match (call, kind) {
         // As the emitter: DIV, MOD and DIV_TIME by an integer zero give 0
         // (T#0s) and record the fault.

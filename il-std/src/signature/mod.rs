@@ -250,8 +250,54 @@ pub struct Signature {
     /// truncate): what a compiler's or an interpreter's out-of-range check
     /// must round as the function does.
     pub rounding: Option<Rounding>,
+    /// For a type conversion (`INT_TO_REAL`, `REAL_TRUNC_INT`, `INT_TO_BCD`):
+    /// what it converts from and to, and how ([`Conversion`]); `None` for
+    /// the other functions.
+    pub conversion: Option<Conversion>,
     /// One line saying what the function does.
     pub doc: &'static str,
+}
+
+/// A type conversion of the table ([`Signature::conversion`]): a tool that
+/// evaluates calls (an interpreter) converts by this, not by the name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Conversion {
+    /// The argument's type.
+    pub from: Elem,
+    /// The result's type.
+    pub to: Elem,
+    /// How.
+    pub kind: ConvKind,
+}
+
+/// How a [`Conversion`] converts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ConvKind {
+    /// By the value and the two types (widening, narrowing with wrap, REAL
+    /// rounding half to even, durations, strings ...), as `FROM_TO_TO` does.
+    Value,
+    /// REAL to an integer, truncated toward zero (`REAL_TRUNC_INT`).
+    Trunc,
+    /// An integer to its binary-coded decimal (`INT_TO_BCD`).
+    ToBcd,
+    /// A binary-coded decimal to an integer (`BCD_TO_INT`).
+    FromBcd,
+}
+
+/// The [`ConvKind`] of a conversion, by its kind in [`conversions`].
+macro_rules! conv_kind {
+    (trunc) => {
+        ConvKind::Trunc
+    };
+    (to_bcd) => {
+        ConvKind::ToBcd
+    };
+    (bcd_to) => {
+        ConvKind::FromBcd
+    };
+    ($other:ident) => {
+        ConvKind::Value
+    };
 }
 
 /// How a real number becomes an integer ([`Signature::rounding`]).
@@ -351,6 +397,7 @@ macro_rules! build_table {
                 ext: Ext::$ext,
                 fault: fault!($($fault)?),
                 rounding: rounding!($($round)?),
+                conversion: None,
                 doc: $doc,
             }, )*
             $( Signature {
@@ -360,6 +407,11 @@ macro_rules! build_table {
                 ext: Ext::Fixed,
                 fault: conv_fault!($kind),
                 rounding: conv_rounding!($kind),
+                conversion: Some(Conversion {
+                    from: Elem::$src,
+                    to: Elem::$dst,
+                    kind: conv_kind!($kind),
+                }),
                 doc: concat!("Converts ", stringify!($src), " to ", stringify!($dst), "."),
             }, )*
         ];
