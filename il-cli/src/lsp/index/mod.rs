@@ -9,6 +9,8 @@
 //! comes from the checked IR when the POU could be checked and from the
 //! declaration as written otherwise).
 
+#[cfg(test)]
+mod compare;
 mod declare;
 mod refs;
 
