@@ -5,7 +5,7 @@
 
 use lsp_types::{CompletionItem, CompletionItemKind, Position, Uri};
 
-use super::index::{Index, Kind, SymId, Target};
+use super::index::{Index, Kind, Member, SymId};
 use super::workspace::Workspace;
 use il_codegen::ast::{PouKind, VarKind};
 use il_interp::il_std::signature as sig;
@@ -187,7 +187,7 @@ fn chain_type(ix: &Index, pou: SymId, chain: &str) -> Option<String> {
     let mut ty = ix.symbols[first].ty.clone();
     for p in parts {
         ty = match ix.member(ty.as_deref()?, p)? {
-            Target::Sym(m) => ix.symbols[m].ty.clone(),
+            Member::Sym(m) => ix.symbols[m].ty.clone(),
             _ => None,
         };
     }

@@ -1,19 +1,23 @@
 //! Hover: the CR before and after an instruction (and the paths into a
 //! label where they disagree), a variable's declaration, a standard
-//! function's or block's signature.
+//! function's or block's signature. What a name names is the checker's
+//! resolution table's answer; its declaration's text is the index's.
 
 use lsp_types::{Hover, HoverContents, MarkupContent, MarkupKind, Position, Uri};
 
-use super::index::{Index, Kind, Step, Target, fb_signature};
+use super::index::{Index, Kind, Step, fb_signature};
 use super::workspace::Workspace;
-use il_codegen::ir::CrState;
-use il_interp::il_std::signature::{Class, Ext, ParamTy, Signature};
+use il_codegen::ir::{CrState, SymbolId, SymbolKind};
+use il_interp::il_std::signature::{self as sig, Class, Ext, ParamTy, Signature};
 
 pub fn hover(ws: &Workspace, uri: &Uri, pos: Position) -> Option<Hover> {
     let (k, off) = ws.locate(uri, pos)?;
     let ix = ws.analysis.index(k)?;
-    let (span, text) = match ix.ref_at(k, off) {
-        Some((span, t)) => (span, target_text(ix, t)),
+    let named = ix
+        .name_at(k, off)
+        .and_then(|(span, s)| Some((span, symbol_text(ix, s)?)));
+    let (span, text) = match named {
+        Some(n) => n,
         None => {
             let s = ix.step_at(k, off)?;
             (s.span, step_text(s))
@@ -28,40 +32,68 @@ pub fn hover(ws: &Workspace, uri: &Uri, pos: Position) -> Option<Hover> {
     })
 }
 
-fn target_text(ix: &Index, t: Target) -> String {
-    match t {
-        Target::Sym(s) => {
-            let sym = &ix.symbols[s];
-            let mut out = format!("```il\n{}\n```", sym.decl);
-            if !sym.note.is_empty() {
-                out.push_str("\n\n");
-                out.push_str(&sym.note);
-            }
-            if sym.kind == Kind::Label
-                && let Some(step) = ix
-                    .step_at(sym.file, sym.span.lo as usize)
-                    .filter(|s| s.label)
-            {
-                out.push_str("\n\n");
-                out.push_str(&step_text(step));
-            }
-            out
-        }
-        Target::StdFn(f) => fn_signature(f),
-        Target::StdFb(fb) => fb_signature(fb),
-        Target::StdMember(fb, i) => {
-            let (dir, p) = match fb.inputs.get(i) {
-                Some(p) => ("input", p),
-                None => ("output", &fb.outputs[i - fb.inputs.len()]),
-            };
+/// What symbol `s` of the table is: its declaration as written, or a
+/// standard function's or block's signature.
+fn symbol_text(ix: &Index, s: SymbolId) -> Option<String> {
+    let t = &ix.table.symbols[s];
+    Some(match t.kind {
+        SymbolKind::StdFunction => fn_signature(sig::lookup(&t.name)?),
+        SymbolKind::StdBlock => fb_signature(sig::lookup_fb(&t.name)?),
+        SymbolKind::StdMember { block, input } => {
+            let fb = sig::lookup_fb(&ix.table.symbols[block].name)?;
+            let list = if input { fb.inputs } else { fb.outputs };
+            let p = list.iter().find(|p| p.name == t.name)?;
             format!(
-                "```il\n{} : {}\n```\n\n{dir} of the standard function block `{}`",
+                "```il\n{} : {}\n```\n\n{} of the standard function block `{}`",
                 p.name,
                 p.ty.name(),
+                if input { "input" } else { "output" },
                 fb.name
             )
         }
+        _ => match ix.declared(s) {
+            Some(d) => declaration_text(ix, d),
+            None => other_text(ix, s),
+        },
+    })
+}
+
+/// A name the index keeps no declaration text for (an enumeration value,
+/// a resource, a program instance): what it is.
+fn other_text(ix: &Index, s: SymbolId) -> String {
+    let t = &ix.table.symbols;
+    let sym = &t[s];
+    let what = match sym.kind {
+        SymbolKind::EnumValue { ty } => format!("value of the enumeration `{}`", t[ty].name),
+        SymbolKind::Resource { config } => {
+            format!("RESOURCE of CONFIGURATION `{}`", t[config].name)
+        }
+        SymbolKind::ProgramInstance { config } => {
+            format!("program instance of CONFIGURATION `{}`", t[config].name)
+        }
+        k => format!("{k:?}"),
+    };
+    format!("```il\n{}\n```\n\n{what}", sym.name)
+}
+
+/// A declared name: its declaration as written, and for a label the CR
+/// there.
+fn declaration_text(ix: &Index, s: super::index::SymId) -> String {
+    let sym = &ix.symbols[s];
+    let mut out = format!("```il\n{}\n```", sym.decl);
+    if !sym.note.is_empty() {
+        out.push_str("\n\n");
+        out.push_str(&sym.note);
     }
+    if sym.kind == Kind::Label
+        && let Some(step) = ix
+            .step_at(sym.file, sym.span.lo as usize)
+            .filter(|s| s.label)
+    {
+        out.push_str("\n\n");
+        out.push_str(&step_text(step));
+    }
+    out
 }
 
 fn cr(s: &CrState) -> String {

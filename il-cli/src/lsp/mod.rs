@@ -58,6 +58,7 @@ fn capabilities() -> ServerCapabilities {
         hover_provider: Some(HoverProviderCapability::Simple(true)),
         definition_provider: Some(OneOf::Left(true)),
         references_provider: Some(OneOf::Left(true)),
+        document_highlight_provider: Some(OneOf::Left(true)),
         rename_provider: Some(OneOf::Right(RenameOptions {
             prepare_provider: Some(true),
             work_done_progress_options: WorkDoneProgressOptions::default(),
@@ -286,6 +287,14 @@ fn request(ws: &Workspace, r: Request) -> Response {
                 &tp.text_document.uri,
                 tp.position,
                 decl,
+            )))
+        }),
+        req::DocumentHighlightRequest::METHOD => answer::<req::DocumentHighlightRequest>(r, |p| {
+            let tp = p.text_document_position_params;
+            Ok(Some(navigation::highlight(
+                ws,
+                &tp.text_document.uri,
+                tp.position,
             )))
         }),
         req::PrepareRenameRequest::METHOD => answer::<req::PrepareRenameRequest>(r, |p| {

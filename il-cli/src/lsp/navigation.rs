@@ -1,51 +1,74 @@
-//! Go to definition, find references, rename (variables and labels).
+//! Go to definition, find references, document highlight, rename
+//! (variables, globals and labels): all from the checker's resolution
+//! table ([`il_codegen::ir::Resolutions`]).
 
 use std::collections::HashMap;
 
-use lsp_types::{Location, Position, PrepareRenameResponse, TextEdit, Uri, WorkspaceEdit};
+use il_codegen::ir::{SymbolId, SymbolKind};
+use lsp_types::{
+    DocumentHighlight, Location, Position, PrepareRenameResponse, TextEdit, Uri, WorkspaceEdit,
+};
 
-use super::index::{Index, Kind, SymId, Target};
+use super::index::Index;
 use super::workspace::Workspace;
 
-/// The symbol named at a position, and the index of its program.
+/// The name at a position: its document, span and symbol, and the index of
+/// its program.
 fn symbol_at<'w>(
     ws: &'w Workspace,
     uri: &Uri,
     pos: Position,
-) -> Option<(usize, il_codegen::ast::Span, SymId, &'w Index)> {
+) -> Option<(usize, il_codegen::ast::Span, SymbolId, &'w Index)> {
     let (k, off) = ws.locate(uri, pos)?;
     let ix = ws.analysis.index(k)?;
-    match ix.ref_at(k, off)? {
-        (span, Target::Sym(s)) => Some((k, span, s, ix)),
-        _ => None,
-    }
+    let (span, s) = ix.name_at(k, off)?;
+    Some((k, span, s, ix))
 }
 
 pub fn definition(ws: &Workspace, uri: &Uri, pos: Position) -> Option<Location> {
     let (_, _, s, ix) = symbol_at(ws, uri, pos)?;
-    let sym = &ix.symbols[s];
-    ws.location(sym.file, sym.span)
+    let d = ix.table.symbols[s].decl?;
+    ws.location(d.file, d.span)
 }
 
 pub fn references(ws: &Workspace, uri: &Uri, pos: Position, with_decl: bool) -> Vec<Location> {
     let Some((_, _, s, ix)) = symbol_at(ws, uri, pos) else {
         return Vec::new();
     };
-    let sym = &ix.symbols[s];
-    ix.uses[s]
-        .iter()
-        .filter(|(f, span)| with_decl || !(*f == sym.file && *span == sym.span))
-        .filter_map(|(f, span)| ws.location(*f, *span))
+    // A standard function or block is declared nowhere: it has uses only.
+    let Some(d) = ix.table.symbols[s].decl else {
+        return Vec::new();
+    };
+    ix.uses(s)
+        .filter(|&(f, span)| with_decl || !(f == d.file && span == d.span))
+        .filter_map(|(f, span)| ws.location(f, span))
         .collect()
 }
 
-fn renamable(kind: Kind) -> bool {
-    matches!(kind, Kind::Var(_) | Kind::Label)
+/// Every use of the name at a position in its own document.
+pub fn highlight(ws: &Workspace, uri: &Uri, pos: Position) -> Vec<DocumentHighlight> {
+    let Some((k, _, s, ix)) = symbol_at(ws, uri, pos) else {
+        return Vec::new();
+    };
+    ix.uses(s)
+        .filter(|&(f, _)| f == k)
+        .map(|(_, span)| DocumentHighlight {
+            range: ws.range(k, span),
+            kind: None,
+        })
+        .collect()
+}
+
+fn renamable(kind: SymbolKind) -> bool {
+    matches!(
+        kind,
+        SymbolKind::Var { .. } | SymbolKind::Global { .. } | SymbolKind::Label { .. }
+    )
 }
 
 pub fn prepare_rename(ws: &Workspace, uri: &Uri, pos: Position) -> Option<PrepareRenameResponse> {
     let (k, span, s, ix) = symbol_at(ws, uri, pos)?;
-    renamable(ix.symbols[s].kind).then(|| PrepareRenameResponse::Range(ws.range(k, span)))
+    renamable(ix.table.symbols[s].kind).then(|| PrepareRenameResponse::Range(ws.range(k, span)))
 }
 
 /// An IEC identifier: a letter or `_`, then letters, digits and single `_`.
@@ -66,7 +89,11 @@ pub fn rename(
     let Some((_, _, s, ix)) = symbol_at(ws, uri, pos) else {
         return Ok(None);
     };
-    if !renamable(ix.symbols[s].kind) {
+    let sym = &ix.table.symbols[s];
+    if sym.decl.is_none() {
+        return Ok(None); // a standard function or block
+    }
+    if !renamable(sym.kind) {
         return Err("only variables and labels can be renamed".into());
     }
     if !is_identifier(new_name) {
@@ -75,8 +102,8 @@ pub fn rename(
     // `WorkspaceEdit` is keyed by `Uri`, whose hash does not change.
     #[allow(clippy::mutable_key_type)]
     let mut changes: HashMap<Uri, Vec<TextEdit>> = HashMap::new();
-    for (f, span) in &ix.uses[s] {
-        if let Some(loc) = ws.location(*f, *span) {
+    for (f, span) in ix.uses(s) {
+        if let Some(loc) = ws.location(f, span) {
             changes
                 .entry(loc.uri)
                 .or_default()

@@ -266,10 +266,13 @@ impl Workspace {
         let mut indexes = Vec::new();
         let mut program_of = vec![0; self.docs.len()];
         for group in programs(&self.docs) {
-            let program = group.iter().fold(Program::new().cr_steps(true), |p, &k| {
-                let d = &self.docs[k];
-                p.source(SourceFile::new(d.name.clone(), d.text.clone()))
-            });
+            let program =
+                group
+                    .iter()
+                    .fold(Program::new().cr_steps(true).resolutions(true), |p, &k| {
+                        let d = &self.docs[k];
+                        p.source(SourceFile::new(d.name.clone(), d.text.clone()))
+                    });
             let checked = program.check();
             for (&k, ds) in group.iter().zip(checked.diagnostics()) {
                 diagnostics[k] = diagnostics::convert(&self.docs, &lines, k, ds);

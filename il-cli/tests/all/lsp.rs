@@ -12,6 +12,7 @@ use serde_json::{Value, json};
 
 /// Programs per folder.
 mod folders;
+mod table;
 
 const LIB: &str = "\
 FUNCTION_BLOCK Motor

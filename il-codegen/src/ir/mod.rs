@@ -40,8 +40,10 @@ pub struct Program {
 
 mod calls;
 mod config;
+mod resolutions;
 pub use calls::*;
 pub use config::*;
+pub use resolutions::*;
 
 /// A user type that becomes a Rust item.
 #[derive(Clone, Debug, PartialEq)]

@@ -63,6 +63,15 @@ impl Input {
         }
     }
 
+    /// A span of the IL text in [`Input::source`], the file the user wrote.
+    pub fn to_source(&self, span: crate::ast::Span) -> crate::ast::Span {
+        match self {
+            Input::Il(_) => span,
+            Input::PlcOpen(i) => i.map.to_xml(span),
+            Input::Snippet(s) => s.to_file(span),
+        }
+    }
+
     /// Diagnostics of the IL text moved into [`Input::source`], with the
     /// input's own (import) diagnostics, sorted by position.
     pub fn finish(&self, diags: Vec<Diagnostic>) -> Vec<Diagnostic> {

@@ -26,6 +26,7 @@ pub struct Program {
     inputs: Vec<Input>,
     standard: crate::dialect::Standard,
     cr_steps: bool,
+    resolutions: bool,
 }
 
 impl Program {
@@ -88,6 +89,15 @@ impl Program {
         self
     }
 
+    /// Also record what every name of the program names, as the checker
+    /// resolves it ([`Checked::resolutions`], for tools such as the language
+    /// server's definition and references); off by default: the compiler
+    /// does not read it.
+    pub fn resolutions(mut self, record: bool) -> Self {
+        self.resolutions = record;
+        self
+    }
+
     /// Parse and check every input.
     pub fn check(self) -> Checked {
         let files: Vec<&SourceFile> = self.inputs.iter().map(Input::il_text).collect();
@@ -112,7 +122,13 @@ impl Program {
             })
             .collect();
         let pairs: Vec<_> = clean.iter().map(|&i| (files[i], &units[i])).collect();
-        let (programs, more) = sema::check_all(&pairs, self.standard, self.cr_steps);
+        let broken = clean.len() < files.len();
+        let (programs, more, table) = sema::check_recorded(
+            &pairs,
+            self.standard,
+            self.cr_steps,
+            self.resolutions && !broken,
+        );
         let mut ir: Vec<sema::ir::Program> = files.iter().map(|_| Default::default()).collect();
         for ((&i, p), mut m) in clean.iter().zip(programs).zip(more) {
             ir[i] = p;
@@ -126,12 +142,25 @@ impl Program {
             .map(|(input, d)| input.finish(d))
             .collect();
         let ok = !diagnostics.iter().any(|d| has_errors(d));
+        let resolutions = if self.resolutions && broken {
+            // A file with syntax errors stays out of the check, but its
+            // names are still the editor's: the table then comes from a
+            // check of every file (partial trees are checked safely: `il!`
+            // does it for its stubs), whose diagnostics and IR go unused.
+            let every: Vec<usize> = (0..files.len()).collect();
+            let all: Vec<_> = every.iter().map(|&i| (files[i], &units[i])).collect();
+            let (_, _, t) = sema::check_recorded(&all, self.standard, false, true);
+            t.map(|t| to_inputs(t, &every, &self.inputs))
+        } else {
+            table.map(|t| to_inputs(t, &clean, &self.inputs))
+        };
         Checked {
             inputs: self.inputs,
             diagnostics,
             ir,
             units,
             ok,
+            resolutions,
         }
     }
 }
@@ -144,6 +173,33 @@ pub struct Checked {
     ir: Vec<sema::ir::Program>,
     units: Vec<crate::ast::CompilationUnit>,
     ok: bool,
+    resolutions: Option<crate::ir::Resolutions>,
+}
+
+/// The table of the checked files (`clean`, numbered as checked, spans in
+/// the IL text) numbered and placed as the inputs: the file the user wrote.
+fn to_inputs(
+    mut t: crate::ir::Resolutions,
+    clean: &[usize],
+    inputs: &[Input],
+) -> crate::ir::Resolutions {
+    let mut uses = vec![Vec::new(); inputs.len()];
+    for (&i, mut u) in clean.iter().zip(std::mem::take(&mut t.uses)) {
+        for (s, _) in &mut u {
+            *s = inputs[i].to_source(*s);
+        }
+        // The XML map keeps the order of spans; re-sorted all the same.
+        u.sort_by_key(|(s, _)| (s.lo, s.hi));
+        uses[i] = u;
+    }
+    for sym in &mut t.symbols {
+        if let Some(d) = &mut sym.decl {
+            d.file = clean[d.file];
+            d.span = inputs[d.file].to_source(d.span);
+        }
+    }
+    t.uses = uses;
+    t
 }
 
 impl Checked {
@@ -197,6 +253,13 @@ impl Checked {
     /// hover); never emit code from it: use [`Checked::ir`].
     pub fn partial_ir(&self) -> &[sema::ir::Program] {
         &self.ir
+    }
+
+    /// What every name of the program names ([`crate::ir::Resolutions`],
+    /// in the positions of the files the user wrote), when asked for by
+    /// [`Program::resolutions`]; an input with syntax errors has no names.
+    pub fn resolutions(&self) -> Option<&crate::ir::Resolutions> {
+        self.resolutions.as_ref()
     }
 
     /// The syntax tree of each input's IL text (partial where it has syntax

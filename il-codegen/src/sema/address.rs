@@ -31,6 +31,7 @@ pub fn parse_address(text: &str) -> Result<Loc, String> {
         diags: Vec::new(),
         standard: Default::default(),
         cr_steps: false,
+        names: None,
     };
     match resolve_addr(&mut cx, &addr, None) {
         Some(l) if cx.diags.is_empty() => Ok(l),

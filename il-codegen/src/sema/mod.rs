@@ -44,6 +44,22 @@ pub fn check_all(
     standard: crate::dialect::Standard,
     cr_steps: bool,
 ) -> (Vec<ir::Program>, Vec<Vec<Diagnostic>>) {
+    let (programs, diags, _) = check_recorded(units, standard, cr_steps, false);
+    (programs, diags)
+}
+
+/// [`check_all`], and with `resolutions` the resolution table (spans in
+/// each unit's IL text; `None` when not asked).
+pub(crate) fn check_recorded(
+    units: &[(&SourceFile, &ast::CompilationUnit)],
+    standard: crate::dialect::Standard,
+    cr_steps: bool,
+    resolutions: bool,
+) -> (
+    Vec<ir::Program>,
+    Vec<Vec<Diagnostic>>,
+    Option<ir::Resolutions>,
+) {
     let mut cxs: Vec<Cx> = units
         .iter()
         .map(|(file, _)| Cx {
@@ -51,6 +67,7 @@ pub fn check_all(
             diags: Vec::new(),
             standard,
             cr_steps,
+            names: resolutions.then(Vec::new),
         })
         .collect();
     let asts: Vec<&ast::CompilationUnit> = units.iter().map(|(_, u)| *u).collect();
@@ -95,6 +112,15 @@ pub fn check_all(
     }
     recursion::check_recursion(&mut cxs, &env, &asts);
     nesting::check_nesting(&mut cxs, &env, &asts);
+    // Before the signatures give their variables away (the table numbers
+    // variables by them).
+    let table = resolutions.then(|| {
+        let noted = cxs
+            .iter_mut()
+            .map(|c| c.names.take().unwrap_or_default())
+            .collect();
+        flow::table(&env, &asts, noted)
+    });
     // Nothing reads the signatures any more: each checked POU takes its
     // variables from its own (a checked POU is pushed only for the
     // signature its name finds).
@@ -103,7 +129,7 @@ pub fn check_all(
             p.vars = std::mem::take(&mut sig.vars);
         }
     }
-    (programs, cxs.into_iter().map(|c| c.diags).collect())
+    (programs, cxs.into_iter().map(|c| c.diags).collect(), table)
 }
 
 /// What every pass shares: the file (for line numbers) and the diagnostics.
@@ -115,6 +141,9 @@ pub(crate) struct Cx<'a> {
     /// Record the CR at every step ([`ir::CrStep`]): only tools read them,
     /// and for the compiler they were a seventh of the checked program.
     pub cr_steps: bool,
+    /// The names resolved in this file, when the resolution table is asked
+    /// for ([`ir::Resolutions`]; `None`: not recorded).
+    pub names: Option<flow::Noted>,
 }
 
 impl Cx<'_> {

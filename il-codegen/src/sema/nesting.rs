@@ -192,6 +192,7 @@ mod tests {
             diags: Vec::new(),
             standard: Default::default(),
             cr_steps: false,
+            names: None,
         }];
         let env = super::super::decls::collect(&mut cxs, &[&unit]);
         check_nesting(&mut cxs, &env, &[&unit]);

@@ -130,6 +130,11 @@ pub(crate) fn check_ident(cx: &mut Cx, id: &ast::Ident) {
 pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Option<Ty> {
     match spec {
         TypeSpec::Named(id) => {
+            if let Some(names) = &mut cx.names
+                && let Some(k) = super::flow::type_key(fb_names, spec)
+            {
+                names.push((id.span, k));
+            }
             if let Some(e) = Elem::from_name(&id.name) {
                 return Some(Ty::Elem(e));
             }
@@ -366,7 +371,11 @@ impl Names<'_> {
                     return Some(None);
                 }
                 self.depth.set(self.depth.get() + 1);
+                // The spec is the declaration's (maybe of another file):
+                // its names are noted where the declaration is checked.
+                let names = cx.names.take();
                 let t = resolve_type(cx, self, spec);
+                cx.names = names;
                 self.depth.set(self.depth.get() - 1);
                 t
             }

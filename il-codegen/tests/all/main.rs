@@ -19,6 +19,7 @@ mod pipeline_snippet;
 #[cfg(feature = "plcopen")]
 mod plcopen_corpus;
 mod render_golden;
+mod resolutions;
 mod scaling;
 mod sema_calls;
 mod sema_config_forms;

@@ -12,18 +12,18 @@ use super::*;
 
 impl Builder<'_> {
     /// Declarations: POUs with their variables and labels, types with
-    /// their fields, configurations with their globals. Returns each POU of
-    /// the unit (in item order) with its symbol.
+    /// their fields, configurations with their globals.
     pub(super) fn declare(
         &self,
         ix: &mut Index,
         unit: &ast::CompilationUnit,
         ir_pous: &HashMap<String, &ir::CheckedPou>,
-    ) -> Vec<Option<SymId>> {
-        let mut pous = Vec::new();
+    ) {
         for item in &unit.items {
             match item {
-                ast::Item::Pou(p) => pous.push(Some(self.declare_pou(ix, p, ir_pous))),
+                ast::Item::Pou(p) => {
+                    self.declare_pou(ix, p, ir_pous);
+                }
                 ast::Item::Types(decls) => {
                     for d in decls {
                         self.declare_type(ix, d);
@@ -32,7 +32,6 @@ impl Builder<'_> {
                 ast::Item::Configuration(c) => self.declare_config(ix, c),
             }
         }
-        pous
     }
 
     fn declare_pou(

@@ -1,16 +1,12 @@
-//! What the editor asks about, indexed once per check: every declared name
-//! (a [`Symbol`]), every place a name is written (a reference to its
-//! symbol or to a standard function or block), the CR the checker proved at
-//! every instruction, and each file's outline. Requests then look a position
-//! up by binary search instead of walking the tree.
-//!
-//! Names are resolved as the checker resolves them (case-insensitively, in
-//! the POU's own variables; members through the instance's type, which
-//! comes from the checked IR when the POU could be checked and from the
-//! declaration as written otherwise).
+//! What the editor asks about, indexed once per check. What a name names
+//! is the checker's answer: its resolution table ([`ir::Resolutions`]),
+//! which definition, references, rename, highlight and hover read. Kept
+//! here is what that table does not hold: each declaration as text (hover),
+//! the scopes completion offers while the text is not yet valid IL (a
+//! POU's variables, a type's members, a POU's labels), each file's outline,
+//! and the CR the checker proved at every instruction.
 
 mod declare;
-mod refs;
 
 use std::collections::HashMap;
 
@@ -19,7 +15,7 @@ use il_codegen::Input;
 use il_codegen::ast::{self, Span, TypeSpec};
 use il_codegen::ir::types::Ty;
 use il_codegen::ir::{self, CrState};
-use il_interp::il_std::signature::{self as sig, FbSignature, Signature};
+use il_interp::il_std::signature::{self as sig, FbSignature};
 use lsp_types::SymbolKind;
 
 pub type SymId = usize;
@@ -54,14 +50,12 @@ pub struct Symbol {
     pub ty: Option<String>,
 }
 
-/// What a written name refers to.
+/// A member of a type, for completion.
 #[derive(Clone, Copy, Debug)]
-pub enum Target {
+pub enum Member {
     Sym(SymId),
-    StdFn(&'static Signature),
-    StdFb(&'static FbSignature),
-    /// An input (index below `inputs.len()`) or output of a standard block.
-    StdMember(&'static FbSignature, usize),
+    /// An input or output of a standard block.
+    Std,
 }
 
 /// The CR at one instruction or label ([`ir::CrStep`] in the user's file).
@@ -87,9 +81,6 @@ pub struct Outline {
 
 #[derive(Debug, Default)]
 pub struct FileIndex {
-    /// Every written name with what it refers to, sorted by position
-    /// (declarations included: they refer to themselves).
-    pub refs: Vec<(Span, Target)>,
     /// Sorted by position.
     pub steps: Vec<Step>,
     /// Each POU's whole text and symbol, sorted.
@@ -103,10 +94,13 @@ pub struct Index {
     /// Per file of the program checked, in the order of `docs`.
     pub files: Vec<FileIndex>,
     /// The workspace document of each file (see [`Index::relocate`]);
-    /// [`Symbol::file`] and [`Index::uses`] hold these numbers.
+    /// [`Symbol::file`] and the table's declarations hold these numbers.
     pub docs: Vec<usize>,
-    /// Every place each symbol is written: (file, span).
-    pub uses: Vec<Vec<(usize, Span)>>,
+    /// The checker's resolution table (its uses numbered by the program's
+    /// files: [`Index::name_at`] and [`Index::uses`] take documents).
+    pub table: ir::Resolutions,
+    /// (document, start of the name) of each declaration → its symbol here.
+    by_decl: HashMap<(usize, u32), SymId>,
     pub pou_by_name: HashMap<String, SymId>,
     pub type_by_name: HashMap<String, SymId>,
     /// (POU, STRUCT type or configuration, NAME) → its variable or field.
@@ -128,7 +122,6 @@ impl Index {
         let empty = ast::CompilationUnit::default();
         let units = checked.syntax();
         let irs = checked.partial_ir();
-        let mut pous_of_file = Vec::new();
         for (f, input) in checked.inputs().iter().enumerate() {
             let unit = units.get(f).unwrap_or(&empty);
             let ir_pous: HashMap<String, &ir::CheckedPou> = irs
@@ -141,12 +134,7 @@ impl Index {
                 })
                 .unwrap_or_default();
             let b = Builder { input, f };
-            pous_of_file.push(b.declare(&mut ix, unit, &ir_pous));
-        }
-        for (f, input) in checked.inputs().iter().enumerate() {
-            let unit = units.get(f).unwrap_or(&empty);
-            let b = Builder { input, f };
-            b.resolve(&mut ix, unit, &pous_of_file[f]);
+            b.declare(&mut ix, unit, &ir_pous);
             if let Some(p) = irs.get(f) {
                 for c in &p.pous {
                     for s in &c.cr_steps {
@@ -163,23 +151,19 @@ impl Index {
             let file = &mut ix.files[f];
             file.steps
                 .sort_by_key(|s| (s.span.lo, std::cmp::Reverse(s.span.hi)));
-            file.refs.sort_by_key(|(s, _)| (s.lo, s.hi));
-            file.refs.dedup_by_key(|(s, _)| *s);
             file.pous.sort_by_key(|(s, _)| s.lo);
         }
-        ix.uses = (0..ix.symbols.len()).map(|_| Vec::new()).collect();
-        for (f, file) in ix.files.iter().enumerate() {
-            for (span, t) in &file.refs {
-                if let Target::Sym(s) = t {
-                    ix.uses[*s].push((f, *span));
-                }
-            }
-        }
+        ix.table = checked.resolutions().cloned().unwrap_or_default();
+        ix.index_decls();
         ix
     }
 
-    /// The reference at byte `off` of file `f` (a name containing it, or
-    /// ending right at it: the cursor after a name).
+    fn index_decls(&mut self) {
+        self.by_decl = (self.symbols.iter().enumerate())
+            .map(|(id, s)| ((s.file, s.span.lo), id))
+            .collect();
+    }
+
     /// The index of workspace document `doc`, if this program holds it.
     pub fn file(&self, doc: usize) -> Option<&FileIndex> {
         let k = self.docs.binary_search(&doc).ok()?;
@@ -193,18 +177,36 @@ impl Index {
         for s in &mut self.symbols {
             s.file = docs[s.file];
         }
-        for u in self.uses.iter_mut().flatten() {
-            u.0 = docs[u.0];
+        for d in self
+            .table
+            .symbols
+            .iter_mut()
+            .filter_map(|s| s.decl.as_mut())
+        {
+            d.file = docs[d.file];
         }
         self.docs = docs;
+        self.index_decls();
     }
 
-    pub fn ref_at(&self, f: usize, off: usize) -> Option<(Span, Target)> {
-        let refs = &self.file(f)?.refs;
-        let off = off as u32;
-        let i = refs.partition_point(|(s, _)| s.lo <= off);
-        let (s, t) = *refs.get(i.checked_sub(1)?)?;
-        (off >= s.lo && off <= s.hi).then_some((s, t))
+    /// The name at byte `off` of document `doc` (a name holding it, or
+    /// ending right at it: the cursor after a name) and its symbol in the
+    /// table.
+    pub fn name_at(&self, doc: usize, off: usize) -> Option<(Span, ir::SymbolId)> {
+        let k = self.docs.binary_search(&doc).ok()?;
+        self.table.at(k, off)
+    }
+
+    /// Every place symbol `s` of the table is written, its declaration
+    /// included: (document, span).
+    pub fn uses(&self, s: ir::SymbolId) -> impl Iterator<Item = (usize, Span)> + '_ {
+        self.table.uses_of(s).map(|(k, span)| (self.docs[k], span))
+    }
+
+    /// The declaration here of symbol `s` of the table.
+    pub fn declared(&self, s: ir::SymbolId) -> Option<SymId> {
+        let d = self.table.symbols.get(s)?.decl?;
+        self.by_decl.get(&(d.file, d.span.lo)).copied()
     }
 
     /// The innermost instruction or label at byte `off` of file `f`.
@@ -250,19 +252,19 @@ impl Index {
     }
 
     /// Member `name` of an instance of type `key` (upper case).
-    pub fn member(&self, key: &str, name: &str) -> Option<Target> {
+    pub fn member(&self, key: &str, name: &str) -> Option<Member> {
         if let Some(t) = self.type_sym(key) {
             return self
                 .scope
                 .get(&(t, name.to_ascii_uppercase()))
-                .map(|&m| Target::Sym(m));
+                .map(|&m| Member::Sym(m));
         }
         let fb = sig::lookup_fb(key)?;
         fb.inputs
             .iter()
             .chain(fb.outputs)
-            .position(|p| p.name.eq_ignore_ascii_case(name))
-            .map(|i| Target::StdMember(fb, i))
+            .any(|p| p.name.eq_ignore_ascii_case(name))
+            .then_some(Member::Std)
     }
 }
 
@@ -291,7 +293,7 @@ pub fn pou_symbol_kind(k: ast::PouKind) -> SymbolKind {
     }
 }
 
-/// Indexes one input; [`declare`] and [`refs`] add its methods.
+/// Indexes one input; [`declare`] adds its methods.
 struct Builder<'a> {
     input: &'a Input,
     f: usize,
@@ -312,10 +314,8 @@ impl Builder<'_> {
     }
 
     fn add(&self, ix: &mut Index, sym: Symbol) -> SymId {
-        let id = ix.symbols.len();
-        ix.files[self.f].refs.push((sym.span, Target::Sym(id)));
         ix.symbols.push(sym);
-        id
+        ix.symbols.len() - 1
     }
 }
 

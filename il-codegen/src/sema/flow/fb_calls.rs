@@ -187,6 +187,7 @@ impl Walk<'_, '_> {
                 // NOT Q => waiting`): nothing is ambiguous there.
                 let mut seen = std::collections::HashSet::new();
                 for p in list {
+                    self.note(p.name.span, |w| w.member_key(fb, &p.name.name));
                     if matches!(p.kind, ParamKind::Input(_)) && !seen.insert(p.name.key()) {
                         self.err(
                             UNKNOWN_MEMBER,

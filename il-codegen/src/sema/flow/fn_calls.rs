@@ -76,6 +76,14 @@ impl Walk<'_, '_> {
             .pou(&name.name)
             .filter(|s| s.kind == PouKind::Function)
         {
+            self.note(name.span, |_| Some(names::Key::Pou(name.key())));
+            if let CallArgs::Formal(list) = args {
+                for p in list {
+                    if let Some((i, _)) = sig.var(&p.name.name) {
+                        self.note(p.name.span, |_| Some(names::Key::Var(name.key(), i)));
+                    }
+                }
+            }
             let inputs: Vec<(usize, String, Ty)> = sig
                 .inputs()
                 .map(|(i, v)| (i, v.name.clone(), v.ty.clone()))
@@ -302,6 +310,9 @@ impl Walk<'_, '_> {
         }
         let key = name.key();
         if stdfn::is_std(&key) {
+            self.note(name.span, |_| {
+                il_std::signature::lookup(&key).map(|s| names::Key::StdFn(s.name))
+            });
             let mut argv: Vec<(Arg, Span)> = Vec::new();
             match args {
                 CallArgs::NonFormal(list) if !formal_only => {

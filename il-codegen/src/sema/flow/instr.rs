@@ -284,6 +284,7 @@ impl Walk<'_, '_> {
                     return if *cond == Cond::Always { Cr::Dead } else { cr };
                 };
                 self.jumped[l] = true;
+                self.note(label.span, |w| Some(names::Key::Label(w.pou_key(), l)));
                 match cond {
                     Cond::Always => {
                         let cr = self.settle_cr(cr);

@@ -18,6 +18,7 @@ use crate::ast::{
 mod fb_calls;
 mod fn_calls;
 mod instr;
+mod names;
 mod operands;
 mod operators;
 mod place_table;
@@ -25,6 +26,7 @@ mod places;
 mod subscripts;
 mod values;
 
+pub(crate) use names::{Noted, table, type_key};
 pub use operators::default_const;
 use operators::*;
 
@@ -112,6 +114,7 @@ pub(crate) fn check_pou(
             label_pos[l] = i;
         }
     }
+    let cx_names = cx.names.is_some();
     let mut w = Walk {
         cx,
         env,
@@ -138,6 +141,9 @@ pub(crate) fn check_pou(
         addresses: Vec::new(),
         places: Vec::new(),
         place_ids: Default::default(),
+        // Not for a duplicate's body: its names are not the table's symbols.
+        noting: cx_names && env.pou(&sig.name).is_some_and(|s| std::ptr::eq(s, sig)),
+        noted: Vec::new(),
     };
     // Fixpoint: the lattice per label is short (dead → literal → type → mixed),
     // so a few rounds settle it; the cap only guards against oscillation bugs.
@@ -205,6 +211,9 @@ pub(crate) fn check_pou(
                 format!("label `{name}` is never jumped to"),
             );
         }
+    }
+    if let Some(names) = &mut w.cx.names {
+        names.append(&mut w.noted);
     }
     Some(CheckedPou {
         kind: pou.kind,
@@ -441,6 +450,9 @@ struct Walk<'a, 'c> {
     /// subscripts in it by a hash of its root and steps ([`place_table`]).
     places: Vec<Place>,
     place_ids: super::hash::FxMap<u64, u32>,
+    /// Note the names resolved ([`names`]), and those of the final pass.
+    noting: bool,
+    noted: Noted,
 }
 
 impl Walk<'_, '_> {
@@ -555,6 +567,7 @@ impl Walk<'_, '_> {
         self.out.clear();
         self.counted = 0;
         self.cr_steps.clear();
+        self.noted.clear();
         self.cr_types.clear();
         self.addresses.clear();
         self.places.clear();
@@ -606,6 +619,7 @@ impl Walk<'_, '_> {
                         }
                         warned_dead = true;
                         self.step(i.span, false, &Cr::Dead, &Cr::Dead);
+                        self.note_dead(i);
                         continue;
                     }
                     let at = if self.final_pass {
@@ -614,7 +628,12 @@ impl Walk<'_, '_> {
                         self.counted
                     };
                     let (line, col) = (self.line, self.col);
+                    let errors = self.cx.diags.len();
                     cr = self.instr(i, cr, false);
+                    if self.cx.diags.len() > errors {
+                        // It stopped at the error: its other names still count.
+                        self.note_dead(i);
+                    }
                     self.line_stmt(at, line, col);
                 }
             }

@@ -33,6 +33,10 @@ impl Walk<'_, '_> {
                     }
                     return None;
                 };
+                let k = ty.key();
+                self.note(ty.span, |_| Some(names::Key::Type(k.clone())));
+                let i = vals.iter().position(|x| x == v).unwrap_or(0);
+                self.note(value.span, |_| Some(names::Key::EnumValue(k, i)));
                 let c = Const::enum_value(name.clone(), v.clone());
                 return Some(Arg::Typed(Value::Const(c.clone()), c.ty()));
             }
@@ -42,6 +46,12 @@ impl Walk<'_, '_> {
                     && !(self.sig.kind == PouKind::Function && v.base.is(&self.sig.name)) =>
             {
                 if let Some((ty, value)) = self.env.types.enum_of_value(&v.base.name) {
+                    self.note(v.base.span, |w| {
+                        let k = ty.to_ascii_uppercase();
+                        let (_, vals) = w.env.types.enums.get(&k)?;
+                        let i = vals.iter().position(|x| *x == value)?;
+                        Some(names::Key::EnumValue(k, i))
+                    });
                     let c = Const::enum_value(ty, value);
                     return Some(Arg::Typed(Value::Const(c.clone()), c.ty()));
                 }

@@ -53,6 +53,11 @@ impl Walk<'_, '_> {
 
     /// Resolve a variable reference; `write` checks that it may be stored to.
     pub(super) fn place(&mut self, v: &VarRef, write: bool) -> Option<Place> {
+        self.note(v.base.span, |w| match w.sig.var(&v.base.name) {
+            Some((i, _)) => Some(names::Key::Var(w.pou_key(), i)),
+            None => (w.sig.kind == PouKind::Function && v.base.is(&w.sig.name))
+                .then(|| names::Key::Pou(w.pou_key())),
+        });
         // One lookup of the name (a place is in most instructions).
         let (root, mut ty, constant, var_range) = if let Some((i, var)) = self.sig.var(&v.base.name)
         {
@@ -146,6 +151,7 @@ impl Walk<'_, '_> {
                         }
                         None => self.member(&fb, &f.name, f.span)?,
                     };
+                    self.note(f.span, |w| w.member_key(&fb, &f.name));
                     if write && !is_input {
                         self.err(
                             NOT_WRITABLE,
