@@ -3,11 +3,7 @@
 
 mod address;
 pub mod codes;
-mod config_args;
-mod config_paths;
-mod config_tasks;
-mod config_vars;
-mod configuration;
+mod config;
 mod decls;
 mod env;
 mod flow;

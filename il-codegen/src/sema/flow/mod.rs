@@ -219,7 +219,7 @@ pub(crate) fn check_pou(
         places: w.places,
         cr_types: w.cr_types,
         save_types: w.save_types,
-        retained: super::configuration::retained(env, sig),
+        retained: super::config::retained(env, sig),
         cr_steps: w.cr_steps,
         host: false,
     })
@@ -268,7 +268,7 @@ fn host_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou, sig: &PouSig) -> CheckedPou 
         addresses: Vec::new(),
         cr_types: Vec::new(),
         save_types: Vec::new(),
-        retained: super::configuration::retained(env, sig),
+        retained: super::config::retained(env, sig),
         cr_steps: Vec::new(),
         host: true,
     }
