@@ -272,7 +272,8 @@ impl Workspace {
             });
             let checked = program.check();
             for (&k, ds) in group.iter().zip(checked.diagnostics()) {
-                diagnostics[k] = diagnostics::convert(&self.docs, &lines, k, ds);
+                let d = &self.docs[k];
+                diagnostics[k] = diagnostics::convert(&d.uri, &d.text, &lines[k], ds);
                 program_of[k] = indexes.len();
             }
             let mut index = Index::build(&checked);
