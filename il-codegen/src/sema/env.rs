@@ -13,7 +13,7 @@ pub(crate) struct Env {
     /// Checked configurations, with the index of the declaring file.
     pub configs: Vec<(usize, super::ir::ConfigDef)>,
     /// Bytes of each user FB (`FB:NAME`) and STRUCT (`S:NAME`), for the
-    /// large-array rules (see `size.rs`).
+    /// large-array rules (see `heap_arrays.rs`).
     pub sizes: Sizes,
     /// The signatures of POUs declared again under a name already taken:
     /// their bodies are still checked (against their own declarations), so

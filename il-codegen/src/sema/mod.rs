@@ -9,6 +9,7 @@ mod env;
 mod flow;
 mod graph;
 mod hash;
+pub(crate) mod heap_arrays;
 mod init;
 mod interface;
 mod literals;
@@ -17,7 +18,6 @@ mod nesting;
 mod partly;
 mod recursion;
 mod resolve;
-pub(crate) mod size;
 mod stdfb;
 mod stdfn;
 mod typedecls;
@@ -62,7 +62,7 @@ pub fn check_all(
         .collect();
     let asts: Vec<&ast::CompilationUnit> = units.iter().map(|(_, u)| *u).collect();
     let mut env = decls::collect(&mut cxs, &asts);
-    size::mark_heap(&mut cxs, &mut env, &asts);
+    heap_arrays::mark_heap(&mut cxs, &mut env, &asts);
     let mut programs = Vec::new();
     for (f, unit) in asts.iter().enumerate() {
         let types = env
