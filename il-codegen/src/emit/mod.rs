@@ -13,7 +13,6 @@ mod configuration;
 mod flow;
 mod io;
 mod names;
-mod partly;
 mod tasks;
 pub(crate) mod text;
 mod values;

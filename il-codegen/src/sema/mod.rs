@@ -15,7 +15,7 @@ mod interface;
 mod literals;
 mod name_index;
 mod nesting;
-mod partly;
+mod partial_address;
 mod recursion;
 mod resolve;
 mod stdfb;

@@ -34,7 +34,7 @@ pub(super) fn globals(
             kind: VarKind::Var,
             ..b.clone()
         };
-        crate::sema::partly::refuse_in_globals(cx, &mut b);
+        crate::sema::partial_address::refuse_in_globals(cx, &mut b);
         var_blocks.push(b);
     }
     let fake = ast::Pou {
