@@ -49,7 +49,7 @@ pub mod dialect;
 pub mod ir;
 pub mod plcopen;
 pub mod read;
-pub mod work;
+pub mod step_counter;
 
 // The stages and the front-end glue: public for the other crates of this
 // workspace (the macro crate, il-interp, the benchmarks, the tests),

@@ -138,7 +138,7 @@ impl LeftOut {
 
     /// The POU named `name` (in any case), when it was left out.
     pub(crate) fn get(&self, name: &str) -> Option<usize> {
-        crate::work::add(1);
+        crate::step_counter::add(1);
         self.0.get(&name.to_ascii_lowercase()).copied()
     }
 }
@@ -336,7 +336,7 @@ impl Import {
             .text
             .split('\n')
             .map(|line| {
-                crate::work::add(1);
+                crate::step_counter::add(1);
                 let lead = line.len() - line.trim_start().len();
                 let off = u32::try_from(start + lead).unwrap_or(u32::MAX);
                 start += line.len() + 1;

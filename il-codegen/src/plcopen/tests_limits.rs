@@ -266,11 +266,11 @@ fn big_body(bytes: usize, escaped: bool) -> String {
 /// the bound can sit close to linear.
 const LINEAR: f64 = 12.0;
 
-/// Steps `f` counts on this thread (see [`crate::work`]).
+/// Steps `f` counts on this thread (see [`crate::step_counter`]).
 fn steps(f: impl FnOnce()) -> u64 {
-    let s0 = crate::work::steps();
+    let s0 = crate::step_counter::steps();
     f();
-    crate::work::steps() - s0
+    crate::step_counter::steps() - s0
 }
 
 /// Steps at n and 8n: linear is 8x, quadratic 64x. Then the same in
@@ -407,9 +407,9 @@ fn xml_lines_of_a_body_on_one_line_take_linear_time() {
     // Counted steps (lines mapped, columns counted), not time: a time ratio
     // here failed on a loaded machine (65x for linear code, cache effects).
     let steps = |imp: &Import| {
-        let s0 = crate::work::steps();
+        let s0 = crate::step_counter::steps();
         drop(imp.xml_lines());
-        crate::work::steps() - s0
+        crate::step_counter::steps() - s0
     };
     let (s1, s8) = (steps(&small), steps(&large));
     let ratio = s8 as f64 / s1.max(1) as f64;

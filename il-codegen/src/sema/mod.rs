@@ -172,7 +172,7 @@ pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) ->
     // a candidate that extends the name (`Q` → `Q1`), then the closest length.
     let mut best: Option<((usize, bool, usize), &str)> = None;
     for c in candidates {
-        crate::work::add(1);
+        crate::step_counter::add(1);
         let limit = (up.len().max(c.len()) / 3).max(1);
         if up.len().abs_diff(c.len()) > limit || c.len() > MAX_SUGGEST_LEN {
             continue;
@@ -181,7 +181,7 @@ pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) ->
         if cu == up {
             continue;
         }
-        crate::work::add((up.len() * cu.len()) as u64);
+        crate::step_counter::add((up.len() * cu.len()) as u64);
         let d = edit_distance(&up, &cu);
         let rank = (
             d,

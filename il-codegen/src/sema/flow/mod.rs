@@ -584,7 +584,7 @@ impl Walk<'_, '_> {
                     // previous round's backward edges.
                     let mut into = self.edges[l].clone();
                     into.extend(self.back_prev[l].iter().cloned());
-                    crate::work::add(1 + into.len() as u64);
+                    crate::step_counter::add(1 + into.len() as u64);
                     let before = cr;
                     cr = match join(&into) {
                         Cr::Undef(Why::Mixed(paths)) => {
