@@ -1,9 +1,8 @@
 //! `ilc check`: read, check, report.
 
 use std::io::{self, IsTerminal, Write};
-use std::path::Path;
 
-use il_codegen::diag::{Severity, SourceFile, render, to_json};
+use il_codegen::diag::{Severity, render, to_json};
 
 /// How diagnostics are written.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -32,24 +31,13 @@ pub fn use_color(when: &str) -> bool {
     }
 }
 
-/// Read one source. `-` is standard input. The error names the path.
-/// (`il_codegen::read`: the same rules as the build script and `il!`.)
-pub fn read_source(path: &str) -> Result<SourceFile, String> {
-    let read = if path == "-" {
-        il_codegen::read::read_stream(io::stdin().lock(), "<stdin>")
-    } else {
-        il_codegen::read::read_source(Path::new(path), path)
-    };
-    read.map_err(|e| e.to_string())
-}
-
 /// Run `ilc check` over `paths`, writing JSON to `out` and everything else to
 /// `err`. Returns the totals; the caller turns them into the exit status.
 pub fn run(
     paths: &[String],
     format: Format,
     color: bool,
-    front: crate::cli::Front,
+    front: crate::input::Front,
     progress: bool,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -59,7 +47,7 @@ pub fn run(
     let mut bar = crate::progress::Progress::new(progress, paths.len());
     for (k, path) in paths.iter().enumerate() {
         bar.reading(k + 1, err);
-        match read_source(path) {
+        match crate::input::read_source(path) {
             Ok(f) => files.push(f),
             Err(msg) => {
                 bar.clear(err);
@@ -186,23 +174,5 @@ mod tests {
             unreadable: 2,
         };
         assert_eq!(summary(&t).unwrap(), "check failed: 2 files not read");
-    }
-
-    #[test]
-    fn byte_order_mark_is_dropped() {
-        let dir = std::env::temp_dir().join(format!("ilc-bom-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let p = dir.join("bom.il");
-        std::fs::write(&p, "\u{feff}PROGRAM p\nEND_PROGRAM\n").unwrap();
-        let f = read_source(p.to_str().unwrap()).unwrap();
-        assert!(f.text.starts_with("PROGRAM"));
-        let _ = std::fs::remove_dir_all(&dir);
-    }
-
-    #[test]
-    fn missing_file_names_the_path() {
-        let e = read_source("/nonexistent/dir/x.il").unwrap_err();
-        assert!(e.contains("`/nonexistent/dir/x.il`"), "{e}");
-        assert!(e.contains("no such file"), "{e}");
     }
 }

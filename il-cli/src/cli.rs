@@ -2,6 +2,8 @@
 
 use clap::{Arg, ArgAction, Command, builder::PossibleValuesParser};
 
+use crate::input::{snippet_arg, std_arg};
+
 const ABOUT: &str = "Check IEC 61131-3 Instruction List (IL) sources and compile them to Rust";
 
 const LONG_ABOUT: &str = "\
@@ -62,75 +64,6 @@ an instruction, declarations, standard signatures), inlay hints (the CR type
 at the end of each instruction line; off with the client setting
 `inlayHints.crType: false`), go to definition, references, rename, document
 and workspace symbols and completion. editors/vscode holds a VS Code client.";
-
-/// `--std=iec2003`: refuse the 3rd-edition and vendor forms (pragmas,
-/// implicit widening, partial access), each with an error naming it.
-fn std_arg() -> Arg {
-    Arg::new("std")
-        .long("std")
-        .value_name("STANDARD")
-        .help("Edition of IEC 61131-3 to check against")
-        .long_help(
-            "Edition of IEC 61131-3 to check against: `iec2013` (the default) accepts the \
-             3rd-edition and vendor forms real projects use (pragmas, implicit widening \
-             conversions, partial bit access); `iec2003` refuses each of them with an error \
-             that names it",
-        )
-        .value_parser(PossibleValuesParser::new(["iec2013", "iec2003"]))
-        .default_value("iec2013")
-}
-
-/// `--snippet`: the file is a bare instruction list.
-fn snippet_arg() -> Arg {
-    Arg::new("snippet")
-        .long("snippet")
-        .action(ArgAction::SetTrue)
-        .help("Each file is a bare instruction list, the body of a PROGRAM named after the file")
-        .long_help(
-            "Each file is a bare instruction list with no POU around it, like the standard's \
-             Table 51 (`START: LD %IX1 / ANDN %MX5 / ST %QX2`): it is compiled as the body \
-             of a PROGRAM named after the file. Only direct addresses and literals need no \
-             declaration; an error lists every other name",
-        )
-}
-
-/// How the sources become a program: `--std` and `--snippet`.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct Front {
-    /// `--std`: the edition the program is checked against.
-    pub standard: il_codegen::Standard,
-    /// `--snippet`: each file is the body of a PROGRAM.
-    pub snippet: bool,
-}
-
-impl Front {
-    /// `--std` and `--snippet` as given.
-    pub fn of(m: &clap::ArgMatches) -> Front {
-        Front {
-            standard: m
-                .get_one::<String>("std")
-                .and_then(|s| il_codegen::Standard::from_name(s))
-                .unwrap_or_default(),
-            snippet: m.get_flag("snippet"),
-        }
-    }
-
-    /// A program of `files`, each read as these options say.
-    pub fn program(self, files: Vec<il_codegen::SourceFile>) -> il_codegen::Program {
-        files.into_iter().fold(
-            il_codegen::Program::new().standard(self.standard),
-            |p, f| {
-                // XML is no instruction list: it is imported under
-                // `--snippet` too.
-                if self.snippet && !il_codegen::pipeline::is_xml(&f.name, &f.text) {
-                    p.snippet(f)
-                } else {
-                    p.source(f)
-                }
-            },
-        )
-    }
-}
 
 /// The whole command line.
 pub fn command() -> Command {

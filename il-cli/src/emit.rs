@@ -12,7 +12,7 @@ pub fn run(
     files: &[String],
     dir: Option<&Path>,
     color: bool,
-    front: crate::cli::Front,
+    front: crate::input::Front,
     progress: bool,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -39,7 +39,7 @@ pub fn run(
     let mut bar = crate::progress::Progress::new(progress, files.len());
     for (k, f) in files.iter().enumerate() {
         bar.reading(k + 1, err);
-        match crate::check::read_source(f) {
+        match crate::input::read_source(f) {
             Ok(src) => sources.push(src),
             Err(e) => {
                 bar.clear(err);

@@ -3,6 +3,7 @@
 mod check;
 mod cli;
 mod emit;
+mod input;
 mod lsp;
 mod plot;
 mod progress;
@@ -34,7 +35,7 @@ fn main() -> ExitCode {
                 &files,
                 format,
                 color,
-                cli::Front::of(m),
+                input::Front::of(m),
                 io::stderr().is_terminal(),
                 &mut io::stdout().lock(),
                 &mut io::stderr().lock(),
@@ -59,7 +60,7 @@ fn main() -> ExitCode {
                 &files,
                 dir.as_deref(),
                 color,
-                cli::Front::of(m),
+                input::Front::of(m),
                 io::stderr().is_terminal(),
                 &mut io::stdout().lock(),
                 &mut io::stderr().lock(),
@@ -95,7 +96,7 @@ fn main() -> ExitCode {
                 color: check::use_color(
                     m.get_one::<String>("color").map_or("auto", String::as_str),
                 ),
-                front: cli::Front::of(m),
+                front: input::Front::of(m),
                 vcd: m.get_one::<String>("vcd").map(std::path::PathBuf::from),
                 plot: m.get_one::<String>("plot").map(std::path::PathBuf::from),
             };

@@ -133,7 +133,7 @@ pub struct Options {
     pub watch: Vec<String>,
     pub color: bool,
     /// `--std` and `--snippet`.
-    pub front: crate::cli::Front,
+    pub front: crate::input::Front,
     /// `--vcd FILE`.
     pub vcd: Option<std::path::PathBuf>,
     /// `--plot FILE`.
@@ -156,7 +156,7 @@ pub fn run(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> u8 {
 fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), String> {
     // An XML file (by its text or a `.xml` name) is a PLCopen project: its
     // IL POUs are run.
-    let program = o.front.program(vec![crate::check::read_source(&o.file)?]);
+    let program = o.front.program(vec![crate::input::read_source(&o.file)?]);
     let checked = program.check();
     let _ = write!(err, "{}", checked.render(o.color));
     let Some([prog]) = checked.ir() else {

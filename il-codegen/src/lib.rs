@@ -49,7 +49,7 @@ pub mod dialect;
 pub mod ir;
 pub mod plcopen;
 pub mod read;
-pub mod work;
+pub mod step_counter;
 
 // The stages are private: their items change with the compiler. The
 // documented contract between the checker and its consumers is `ir`;

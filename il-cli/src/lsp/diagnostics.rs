@@ -3,20 +3,17 @@
 //! places as related information.
 
 use il_codegen::diag::{Diagnostic, Severity};
-use lsp_types::{DiagnosticRelatedInformation, DiagnosticSeverity, Location, NumberOrString};
+use lsp_types::{DiagnosticRelatedInformation, DiagnosticSeverity, Location, NumberOrString, Uri};
 
 use super::convert::LineIndex;
-use super::workspace::Doc;
 
+/// The diagnostics of the document at `uri`, whose `text` `ix` indexes.
 pub fn convert(
-    docs: &[Doc],
-    lines: &[LineIndex],
-    k: usize,
+    uri: &Uri,
+    text: &str,
+    ix: &LineIndex,
     diags: &[Diagnostic],
 ) -> Vec<lsp_types::Diagnostic> {
-    let (Some(doc), Some(ix)) = (docs.get(k), lines.get(k)) else {
-        return Vec::new();
-    };
     diags
         .iter()
         .map(|d| {
@@ -34,12 +31,12 @@ pub fn convert(
                 .secondary
                 .iter()
                 .map(|(span, label)| DiagnosticRelatedInformation {
-                    location: Location::new(doc.uri.clone(), ix.range(&doc.text, *span)),
+                    location: Location::new(uri.clone(), ix.range(text, *span)),
                     message: label.clone(),
                 })
                 .collect();
             lsp_types::Diagnostic {
-                range: ix.range(&doc.text, d.span),
+                range: ix.range(text, d.span),
                 severity: Some(match d.severity {
                     Severity::Error => DiagnosticSeverity::ERROR,
                     Severity::Warning => DiagnosticSeverity::WARNING,

@@ -183,7 +183,7 @@ impl Workspace {
                     && self.docs.len() < MAX_FILES
                     && let Some(uri) = path_to_uri(&p)
                     && self.doc(&uri).is_none()
-                    && let Ok(f) = crate::check::read_source(&p.to_string_lossy())
+                    && let Ok(f) = crate::input::read_source(&p.to_string_lossy())
                 {
                     self.insert(uri, f.text, false, true);
                 }
@@ -240,7 +240,7 @@ impl Workspace {
         let k = self.doc(uri)?;
         if self.docs[k].on_disk {
             self.docs[k].open = false;
-            if let Ok(f) = crate::check::read_source(&self.docs[k].name) {
+            if let Ok(f) = crate::input::read_source(&self.docs[k].name) {
                 self.docs[k].text = f.text;
             }
             return None;
@@ -275,7 +275,8 @@ impl Workspace {
                     });
             let checked = program.check();
             for (&k, ds) in group.iter().zip(checked.diagnostics()) {
-                diagnostics[k] = diagnostics::convert(&self.docs, &lines, k, ds);
+                let d = &self.docs[k];
+                diagnostics[k] = diagnostics::convert(&d.uri, &d.text, &lines[k], ds);
                 program_of[k] = indexes.len();
             }
             let mut index = Index::build(&checked);

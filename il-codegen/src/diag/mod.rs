@@ -132,7 +132,7 @@ impl SourceFile {
         let start = self.line_starts[line] as usize;
         // Most columns are a few bytes from the line start: count those
         // directly; far ones from the nearest block (long lines stay linear).
-        crate::work::add(1 + (offset - start.min(offset)).min(CHAR_BLOCK) as u64);
+        crate::step_counter::add(1 + (offset - start.min(offset)).min(CHAR_BLOCK) as u64);
         let col = match self.text.as_bytes().get(start..offset) {
             Some(rest) if rest.len() <= CHAR_BLOCK => {
                 rest.iter().filter(|&&b| starts_char(b)).count()

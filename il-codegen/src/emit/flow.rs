@@ -145,7 +145,7 @@ fn widen_blocks(regions: &mut [Region], len: usize) -> bool {
             k /= 2;
             steps += 1;
         }
-        crate::work::add(steps);
+        crate::step_counter::add(steps);
         best
     };
     for i in order {
@@ -176,7 +176,7 @@ fn widen_blocks(regions: &mut [Region], len: usize) -> bool {
             b /= 2;
             steps += 1;
         }
-        crate::work::add(steps);
+        crate::step_counter::add(steps);
     }
     true
 }

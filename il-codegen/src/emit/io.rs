@@ -1,12 +1,16 @@
 //! What a host needs to bind I/O: the `ADDRESSES` table of a POU or
 //! configuration, and typed accessors for its located variables, so that a
 //! host writes `Tank::set_io_level(&mut ctx, 500)` with the variable's own
-//! Rust type instead of byte offsets into `Cycle::io`.
+//! Rust type instead of byte offsets into `Cycle::io`. Variables declared
+//! `AT %I*` / `%Q*` / `%M*` are ordinary fields, listed in the table as not
+//! bound so that a host sees what it must bind (by reading or writing the
+//! field).
 
 use super::rust_ident;
 use super::text::{doc, str_lit};
 use super::values::{io_read, io_write};
 use crate::sema::ir::{CheckedPou, Loc, Var};
+use crate::sema::types::Elem;
 
 /// The `il_std::Located` entries of a POU: its located variables, then the
 /// direct addresses its code uses.
@@ -20,7 +24,7 @@ pub(super) fn addresses(pou: &CheckedPou) -> Vec<String> {
         .chain(direct)
         .map(|(name, l)| self::located(name, l))
         .collect();
-    out.extend(super::partly::unbound(&pou.vars));
+    out.extend(unbound(&pou.vars));
     out
 }
 
@@ -40,6 +44,27 @@ pub(super) fn located(name: &str, l: &Loc) -> String {
     format!(
         "::il_std::Located {{ name: {name}, address: {text}, area: {area}, byte: {byte}, bit: {bit}, ty: {ty}, bound: true, }}"
     )
+}
+
+/// One `il_std::Located { bound: false, .. }` per partly located variable.
+fn unbound(vars: &[Var]) -> Vec<String> {
+    vars.iter()
+        .filter_map(|v| {
+            let (area, text) = v.partly.as_ref()?;
+            let loc = Loc {
+                area: *area,
+                byte: 0,
+                bit: None,
+                elem: Elem::BOOL,
+                text: text.clone(),
+            };
+            let a = super::values::area(&loc);
+            let (name, text, ty) = (str_lit(&v.name), str_lit(text), str_lit(&v.ty.to_string()));
+            Some(format!(
+                "::il_std::Located {{ name: {name}, address: {text}, area: {a}, byte: 0, bit: ::core::option::Option::None, ty: {ty}, bound: false, }}"
+            ))
+        })
+        .collect()
 }
 
 /// `io_NAME(ctx) -> T` and `set_io_NAME(ctx, v: T)` for every located

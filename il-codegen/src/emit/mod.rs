@@ -13,7 +13,6 @@ mod configuration;
 mod flow;
 mod io;
 mod names;
-mod partly;
 mod tasks;
 pub(crate) mod text;
 mod values;
@@ -60,10 +59,10 @@ pub(crate) fn serde_field(t: &Ty, opts: Options) -> String {
 }
 
 /// The Rust type of a field: a heap field (an array over 64 KiB, see
-/// `sema/size.rs`) is `Box<[Row]>`.
+/// `sema/heap_arrays.rs`) is `Box<[Row]>`.
 pub(crate) fn field_ty(v: &crate::sema::ir::Var) -> String {
     if v.heap {
-        let row = rust_ty(&crate::sema::size::row(&v.ty));
+        let row = rust_ty(&crate::sema::heap_arrays::row(&v.ty));
         format!("::il_std::heap::Box<[{row}]>")
     } else {
         rust_ty(&v.ty)
@@ -390,7 +389,7 @@ fn retain_items(o: &mut Out, pou: &CheckedPou, opts: Options) {
                 // The snapshot of each instance, arrays mapped element-wise.
                 let snap = |t: &Ty| t.rust(&names::retain_ident);
                 let ty = if v.heap {
-                    let row = snap(&crate::sema::size::row(&v.ty));
+                    let row = snap(&crate::sema::heap_arrays::row(&v.ty));
                     format!("::il_std::heap::Box<[{row}]>")
                 } else {
                     snap(&v.ty)

@@ -22,7 +22,7 @@ pub(crate) fn format_file_with<'a>(
     // The emitter's text is already laid out (emit/text.rs).
     if let Some(kind) = lines_of {
         for line in text.lines() {
-            crate::work::add(1);
+            crate::step_counter::add(1);
             write_line(&mut out, line, Some(kind), &il_line);
         }
         return out;
@@ -33,7 +33,7 @@ pub(crate) fn format_file_with<'a>(
     {
         let mut copied = 0;
         for &at in at {
-            crate::work::add(1);
+            crate::step_counter::add(1);
             let start = at - indent_before(text, at);
             let end = text[at..].find('\n').map_or(text.len(), |n| at + n);
             out.push_str(&text[copied..start]);
@@ -54,7 +54,7 @@ pub(crate) fn format_file_with<'a>(
     let mut copied = 0;
     let mut start = 0;
     while start < text.len() {
-        crate::work::add(1);
+        crate::step_counter::add(1);
         let end = text[start..].find('\n').map_or(text.len(), |n| start + n);
         let line = &text[start..end];
         if line[indent_len(line)..].starts_with(MARKER) {
@@ -171,10 +171,10 @@ mod tests {
         let at = [13, 66];
         assert_eq!(&text[at[0]..at[0] + 4], "__il");
         assert_eq!(&text[at[1]..at[1] + 4], "__il");
-        let before = crate::work::steps();
+        let before = crate::step_counter::steps();
         let marked = format_file_with("a.il", text, Some(&at), None, il);
         // A step per marker, not per line: the offsets were used.
-        assert_eq!(crate::work::steps() - before, 2);
+        assert_eq!(crate::step_counter::steps() - before, 2);
         assert_eq!(marked, searched);
         // Offsets that do not hold a marker at a line's start: searched.
         for stale in [&[13, 46][..], &[66, 13], &[14], &[500]] {

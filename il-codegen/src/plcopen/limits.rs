@@ -93,7 +93,7 @@ pub(crate) fn check(xml: &str) -> Option<Exceeded> {
                 }
                 j += 1 + xml[j + 1..].find(char::from(q))? + 1;
                 attrs += 1;
-                crate::work::add(1);
+                crate::step_counter::add(1);
                 if attrs > MAX_ATTRIBUTES {
                     return Some(Exceeded {
                         at: tag..name_end,

@@ -44,7 +44,7 @@ impl Writer {
             return;
         }
         // One step per piece (a chunk of text), not per byte.
-        crate::work::add(1);
+        crate::step_counter::add(1);
         let hi = at.end.max(at.start);
         self.pieces.push(Piece {
             il: u(self.text.len()),
@@ -60,7 +60,7 @@ impl Writer {
         if s.is_empty() {
             return;
         }
-        crate::work::add(1);
+        crate::step_counter::add(1);
         self.pieces.push(Piece {
             il: u(self.text.len()),
             xml_lo: u(xml_start),
@@ -115,7 +115,7 @@ impl Writer {
 fn piece_before(pieces: &[Piece], off: u32) -> usize {
     pieces
         .partition_point(|p| {
-            crate::work::add(1);
+            crate::step_counter::add(1);
             p.il <= off
         })
         .saturating_sub(1)

@@ -126,7 +126,7 @@ pub struct Import {
 /// project's POUs. A look-up counts one step, for the one candidate a hash
 /// look-up compares; whatever replaces it must count one per candidate
 /// compared, so that a scan of every POU grows with the square of the
-/// project in the scaling tests (`tests_limits.rs`, which time nothing).
+/// project in the scaling tests (`tests/all/plcopen_limits.rs`, which time nothing).
 #[derive(Clone, Debug, Default)]
 pub(crate) struct LeftOut(HashMap<String, usize>);
 
@@ -138,7 +138,7 @@ impl LeftOut {
 
     /// The POU named `name` (in any case), when it was left out.
     pub(crate) fn get(&self, name: &str) -> Option<usize> {
-        crate::work::add(1);
+        crate::step_counter::add(1);
         self.0.get(&name.to_ascii_lowercase()).copied()
     }
 }
@@ -336,7 +336,7 @@ impl Import {
             .text
             .split('\n')
             .map(|line| {
-                crate::work::add(1);
+                crate::step_counter::add(1);
                 let lead = line.len() - line.trim_start().len();
                 let off = u32::try_from(start + lead).unwrap_or(u32::MAX);
                 start += line.len() + 1;
@@ -348,55 +348,7 @@ impl Import {
     }
 }
 
+// The one import test that reads the lexer's tokens; the others, through
+// the public API, are tests/all/plcopen_*.rs.
 #[cfg(all(test, feature = "plcopen"))]
 mod tests;
-#[cfg(all(test, feature = "plcopen"))]
-mod tests_hostile;
-#[cfg(all(test, feature = "plcopen"))]
-mod tests_limits;
-
-#[cfg(all(test, not(feature = "plcopen")))]
-mod tests_not_built {
-    use crate::diag::SourceFile;
-    use crate::pipeline::Program;
-
-    /// `cargo test -p il-codegen --no-default-features --lib plcopen`.
-    #[test]
-    fn an_xml_source_is_one_error_that_names_the_feature() {
-        // Known by its text too: not 200 IL errors about `<`.
-        let other = SourceFile::new(
-            "plc/cell.plcprj",
-            "\u{feff}\n<?xml version=\"1.0\"?><project/>".to_string(),
-        );
-        let checked = Program::new().source(other).check();
-        let d = &checked.diagnostics()[0];
-        assert_eq!(d.len(), 1, "{d:?}");
-        assert_eq!(d[0].code, super::codes::NOT_BUILT);
-        assert!(d[0].message.contains("plc/cell.plcprj"), "{d:?}");
-        let xml = SourceFile::new(
-            "plc/cell.xml",
-            "<?xml version=\"1.0\"?><project/>".to_string(),
-        );
-        let checked = Program::new().source(xml).check();
-        let diags: Vec<_> = checked
-            .reports()
-            .flat_map(|(_, d)| d.iter().cloned())
-            .collect();
-        assert_eq!(diags.len(), 1, "{diags:?}");
-        assert_eq!(diags[0].code, super::codes::NOT_BUILT);
-        assert!(
-            diags[0].message.contains("plc/cell.xml"),
-            "{}",
-            diags[0].message
-        );
-        assert!(
-            diags[0]
-                .notes
-                .iter()
-                .any(|n| n.contains("`plcopen` feature")),
-            "{:?}",
-            diags[0].notes
-        );
-        assert!(checked.emit(Default::default()).is_none());
-    }
-}

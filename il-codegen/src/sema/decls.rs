@@ -104,8 +104,8 @@ pub(crate) fn collect(cxs: &mut [Cx], units: &[&ast::CompilationUnit]) -> Env {
             }
         }
     }
-    env.configs = super::configuration::collect(cxs, units, &fb_names, &mut env);
-    super::configuration::check_fb_externals(cxs, &pous, &env);
+    env.configs = super::config::collect(cxs, units, &fb_names, &mut env);
+    super::config::check_fb_externals(cxs, &pous, &env);
     env
 }
 use super::interface::pou_sig;

@@ -13,8 +13,8 @@ pub(crate) struct Env {
     /// Checked configurations, with the index of the declaring file.
     pub configs: Vec<(usize, super::ir::ConfigDef)>,
     /// Bytes of each user FB (`FB:NAME`) and STRUCT (`S:NAME`), for the
-    /// large-array rules (see `size.rs`).
-    pub sizes: super::size::Sizes,
+    /// large-array rules (see `heap_arrays.rs`).
+    pub sizes: Sizes,
     /// The signatures of POUs declared again under a name already taken:
     /// their bodies are still checked (against their own declarations), so
     /// that a duplicate name does not hide the real errors in them.
@@ -24,6 +24,9 @@ pub(crate) struct Env {
     /// an unmemoised walk is exponential in the nesting depth.
     pub holds_retain: std::cell::RefCell<HashMap<String, bool>>,
 }
+
+/// The sizes of the user FBs/PROGRAMs (`FB:NAME`) and STRUCTs (`S:NAME`).
+pub(crate) type Sizes = HashMap<String, u64>;
 
 /// Resolved user types.
 #[derive(Default)]

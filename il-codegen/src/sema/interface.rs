@@ -103,7 +103,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
             }
             let partly = match &decl.location {
                 Some(a) if a.partial => {
-                    if !super::partly::allowed(cx, p.kind, block.kind, a, &ty) {
+                    if !super::partial_address::allowed(cx, p.kind, block.kind, a, &ty) {
                         sig.poisoned.extend(decl.names.iter().map(|n| n.key()));
                         continue;
                     }

@@ -3,25 +3,21 @@
 
 mod address;
 pub mod codes;
-mod config_args;
-mod config_paths;
-mod config_tasks;
-mod config_vars;
-mod configuration;
+mod config;
 mod decls;
 mod env;
 mod flow;
 mod graph;
 mod hash;
+pub(crate) mod heap_arrays;
 mod init;
 mod interface;
 mod literals;
 mod name_index;
 mod nesting;
-mod partly;
+mod partial_address;
 mod recursion;
 mod resolve;
-pub(crate) mod size;
 mod stdfb;
 mod stdfn;
 mod typedecls;
@@ -72,7 +68,7 @@ pub(crate) fn check_recorded(
         .collect();
     let asts: Vec<&ast::CompilationUnit> = units.iter().map(|(_, u)| *u).collect();
     let mut env = decls::collect(&mut cxs, &asts);
-    size::mark_heap(&mut cxs, &mut env, &asts);
+    heap_arrays::mark_heap(&mut cxs, &mut env, &asts);
     let mut programs = Vec::new();
     for (f, unit) in asts.iter().enumerate() {
         let types = env
@@ -194,7 +190,7 @@ pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) ->
     // a candidate that extends the name (`Q` → `Q1`), then the closest length.
     let mut best: Option<((usize, bool, usize), &str)> = None;
     for c in candidates {
-        crate::work::add(1);
+        crate::step_counter::add(1);
         let limit = (up.len().max(c.len()) / 3).max(1);
         if up.len().abs_diff(c.len()) > limit || c.len() > MAX_SUGGEST_LEN {
             continue;
@@ -203,7 +199,7 @@ pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) ->
         if cu == up {
             continue;
         }
-        crate::work::add((up.len() * cu.len()) as u64);
+        crate::step_counter::add((up.len() * cu.len()) as u64);
         let d = edit_distance(&up, &cu);
         let rank = (
             d,

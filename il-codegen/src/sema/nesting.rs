@@ -88,7 +88,7 @@ pub(crate) fn check_nesting(cxs: &mut [Cx], env: &Env, units: &[&ast::Compilatio
                     continue;
                 }
                 // One step per type resolved: the memo makes it once each.
-                crate::work::add(1);
+                crate::step_counter::add(1);
                 memo.insert(k, None);
                 stack.push((n, true));
                 let mut ps = Vec::new();

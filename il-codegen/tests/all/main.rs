@@ -18,6 +18,16 @@ mod ir_size;
 mod pipeline_snippet;
 #[cfg(feature = "plcopen")]
 mod plcopen_corpus;
+#[cfg(feature = "plcopen")]
+mod plcopen_hostile;
+#[cfg(feature = "plcopen")]
+mod plcopen_import;
+#[cfg(feature = "plcopen")]
+mod plcopen_limits;
+#[cfg(not(feature = "plcopen"))]
+mod plcopen_not_built;
+#[cfg(feature = "plcopen")]
+mod plcopen_xml;
 mod render_golden;
 mod resolutions;
 mod scaling;

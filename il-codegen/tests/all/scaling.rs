@@ -5,7 +5,7 @@
 //! Work is measured by counters, so that no measure depends on the
 //! machine's load or on other tests: allocations (count and peak live
 //! bytes), counted per thread by this binary's allocator, and the front
-//! end's own count of steps (`il_codegen::work`: lexer steps, columns
+//! end's own count of steps (`il_codegen::step_counter`: lexer steps, columns
 //! counted, instructions checked, label joins, suggestion distances, lines
 //! written). Linear growth is 8x; the bound of 12x leaves room for vectors
 //! that double, and a quadratic stage (64x) fails it. (A time ratio, the
@@ -65,7 +65,7 @@ static COUNTING: Counting = Counting;
 struct Work {
     allocs: u64,
     peak: i64,
-    /// Steps counted by the front end (`il_codegen::work::steps`).
+    /// Steps counted by the front end (`il_codegen::step_counter::steps`).
     steps: u64,
 }
 
@@ -74,7 +74,7 @@ struct Work {
 fn pipeline(files: &[SourceFile]) -> Work {
     let (a0, l0) = (ALLOCS.with(Cell::get), LIVE.with(Cell::get));
     PEAK.with(|p| p.set(l0));
-    let s0 = il_codegen::work::steps();
+    let s0 = il_codegen::step_counter::steps();
     let checked = files
         .iter()
         .fold(il_codegen::Program::new(), |p, f| p.il(f.clone()))
@@ -83,7 +83,7 @@ fn pipeline(files: &[SourceFile]) -> Work {
     std::hint::black_box((&checked, &files));
     drop((files, checked));
     Work {
-        steps: il_codegen::work::steps() - s0,
+        steps: il_codegen::step_counter::steps() - s0,
         allocs: ALLOCS.with(Cell::get) - a0,
         peak: PEAK.with(Cell::get) - l0,
     }
@@ -94,7 +94,7 @@ fn pipeline(files: &[SourceFile]) -> Work {
 fn front(files: &[SourceFile]) -> Work {
     let (a0, l0) = (ALLOCS.with(Cell::get), LIVE.with(Cell::get));
     PEAK.with(|p| p.set(l0));
-    let s0 = il_codegen::work::steps();
+    let s0 = il_codegen::step_counter::steps();
     let checked = files
         .iter()
         .fold(il_codegen::Program::new(), |p, f| p.il(f.clone()))
@@ -102,7 +102,7 @@ fn front(files: &[SourceFile]) -> Work {
     std::hint::black_box(&checked);
     drop(checked);
     Work {
-        steps: il_codegen::work::steps() - s0,
+        steps: il_codegen::step_counter::steps() - s0,
         allocs: ALLOCS.with(Cell::get) - a0,
         peak: PEAK.with(Cell::get) - l0,
     }

@@ -91,7 +91,7 @@ pub(crate) fn heap_init_value(t: &Ty, init: Option<&Init>) -> String {
             // subrange's lower limit.
             let d = match (dims.len(), crate::sema::ir::element_start(t)) {
                 (1, Some(c)) => constant(&c),
-                _ => default_value(&crate::sema::size::row(t)),
+                _ => default_value(&crate::sema::heap_arrays::row(t)),
             };
             format!("::il_std::heap::from_fn({n}, |_| {d})")
         }

@@ -91,7 +91,7 @@ fn is(n: &Node, name: &str) -> bool {
 fn kids<'a, 'i>(n: Node<'a, 'i>, name: &'static str) -> impl Iterator<Item = Node<'a, 'i>> {
     // One step per child our code looks at (roxmltree's parse is not ours).
     n.children().filter(move |c| {
-        crate::work::add(1);
+        crate::step_counter::add(1);
         is(c, name)
     })
 }
@@ -102,7 +102,7 @@ fn kid<'a, 'i>(n: Node<'a, 'i>, name: &'static str) -> Option<Node<'a, 'i>> {
 
 fn first_element<'a, 'i>(n: Node<'a, 'i>) -> Option<Node<'a, 'i>> {
     n.children().find(|c| {
-        crate::work::add(1);
+        crate::step_counter::add(1);
         c.is_element() && !is(c, "documentation") && !is(c, "addData")
     })
 }
@@ -236,7 +236,7 @@ impl<'a, 'i> Tr<'a, 'i> {
         name: &str,
         kind: Kind,
     ) -> Option<roxmltree::Attribute<'n, 'x>> {
-        crate::work::add(1);
+        crate::step_counter::add(1);
         let Some(a) = n.attributes().find(|a| a.name() == name) else {
             let at = self.tag(n);
             self.diags.push(

@@ -12,7 +12,7 @@ impl Walk<'_, '_> {
     /// 256 levels overflowed a 2 MiB thread (a debug `cargo test` thread)
     /// and aborted the process.
     pub(super) fn instr(&mut self, i: &ast::Instr, cr: Cr, in_parens: bool) -> Cr {
-        crate::work::add(1);
+        crate::step_counter::add(1);
         // Only the final pass records the CR for tools; the copy is kept
         // out of this frame's hot path (see above).
         let before = self.final_pass.then(|| Box::new(cr.clone()));

@@ -228,7 +228,7 @@ pub(crate) fn check_pou(
         places: w.places,
         cr_types: w.cr_types,
         save_types: w.save_types,
-        retained: super::configuration::retained(env, sig),
+        retained: super::config::retained(env, sig),
         cr_steps: w.cr_steps,
         host: false,
     })
@@ -277,7 +277,7 @@ fn host_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou, sig: &PouSig) -> CheckedPou 
         addresses: Vec::new(),
         cr_types: Vec::new(),
         save_types: Vec::new(),
-        retained: super::configuration::retained(env, sig),
+        retained: super::config::retained(env, sig),
         cr_steps: Vec::new(),
         host: true,
     }
@@ -597,7 +597,7 @@ impl Walk<'_, '_> {
                     // previous round's backward edges.
                     let mut into = self.edges[l].clone();
                     into.extend(self.back_prev[l].iter().cloned());
-                    crate::work::add(1 + into.len() as u64);
+                    crate::step_counter::add(1 + into.len() as u64);
                     let before = cr;
                     cr = match join(&into) {
                         Cr::Undef(Why::Mixed(paths)) => {

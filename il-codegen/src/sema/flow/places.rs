@@ -225,7 +225,7 @@ impl Walk<'_, '_> {
             return None;
         }
         // A whole array over 64 KiB would be copied through the stack.
-        if super::super::size::is_large(self.env, &ty) {
+        if super::super::heap_arrays::is_large(self.env, &ty) {
             let msg = format!(
                 "`{}` is an array of more than 64 KiB: it cannot be loaded, stored or passed as a whole",
                 v.base

@@ -273,7 +273,7 @@ impl<'a> Lexer<'a> {
                 return false;
             }
             let before = (self.pos, self.out.len(), self.mode);
-            crate::work::add(1);
+            crate::step_counter::add(1);
             match self.mode {
                 Mode::Skip => self.skip_step(),
                 Mode::Body if self.arg_depth == 0 => self.body_token(),

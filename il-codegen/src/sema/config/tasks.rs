@@ -2,13 +2,13 @@
 //! from any data source Ed.2 2.7.2 allows (a literal, a global of the
 //! configuration, a direct address), decided once into a [`TaskSource`].
 
-use super::Cx;
-use super::codes::*;
-use super::configuration::{lookup, unknown_global};
-use super::ir::{ConfigDef, TaskDef, TaskSource};
-use super::resolve::resolve_addr;
-use super::types::{Elem, Ty};
+use super::lookup::{lookup, unknown_global};
 use crate::ast::{self, LitKind, Operand};
+use crate::ir::{ConfigDef, TaskDef, TaskSource};
+use crate::sema::Cx;
+use crate::sema::codes::*;
+use crate::sema::resolve::resolve_addr;
+use crate::sema::types::{Elem, Ty};
 
 pub(crate) fn tasks(cx: &mut Cx, def: &ConfigDef, res: usize, r: &ast::Resource) -> Vec<TaskDef> {
     let mut out: Vec<TaskDef> = Vec::new();

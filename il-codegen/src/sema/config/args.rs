@@ -3,13 +3,13 @@
 //! each run, outputs copied out after it, and VAR_IN_OUTs are the global
 //! itself (passed by reference, Ed.2 2.7.1).
 
-use super::Cx;
-use super::codes::*;
-use super::configuration::{lookup, unknown_global};
-use super::env::{Env, PouSig};
-use super::init::init_value;
-use super::ir::{ConfigDef, GlobalRef, Init, ProgArg};
+use super::lookup::{lookup, unknown_global};
 use crate::ast::{self, Operand, ParamKind, VarKind};
+use crate::ir::{ConfigDef, GlobalRef, Init, ProgArg};
+use crate::sema::Cx;
+use crate::sema::codes::*;
+use crate::sema::env::{Env, PouSig};
+use crate::sema::init::init_value;
 
 /// The checked arguments of one program instance.
 #[derive(Default)]

@@ -13,10 +13,9 @@
 
 use super::Cx;
 use super::codes::TOO_LARGE;
-use super::env::Env;
+use super::env::{Env, Sizes};
 use super::types::{Elem, Ty};
 use crate::ast::{self, PouKind, VarKind};
-use std::collections::HashMap;
 
 /// An array larger than this many bytes is large (64 KiB).
 pub const LARGE_ARRAY_BYTES: u64 = 64 * 1024;
@@ -31,9 +30,6 @@ fn elem_bytes(e: Elem) -> u64 {
         _ => 8,
     }
 }
-
-/// The sizes of the user FBs/PROGRAMs (`FB:NAME`) and STRUCTs (`S:NAME`).
-pub(crate) type Sizes = HashMap<String, u64>;
 
 fn key(t: &Ty) -> Option<String> {
     match t {

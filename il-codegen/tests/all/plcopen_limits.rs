@@ -5,16 +5,24 @@
 
 use std::sync::{Mutex, MutexGuard};
 
-use super::tests::{check, import, project};
-use super::*;
-use crate::pipeline::Input;
+use crate::plcopen_import::{check, compile_inputs, import};
+use crate::plcopen_xml::{block, il_pou, project, var};
+use il_codegen::Input;
+use il_codegen::diag::{Diagnostic, SourceFile};
+use il_codegen::plcopen::Import;
 
 /// Heavy tests take this, so that they do not run side by side.
 static TIMING: Mutex<()> = Mutex::new(());
 
-pub(super) fn quiet() -> MutexGuard<'static, ()> {
+pub fn quiet() -> MutexGuard<'static, ()> {
     TIMING.lock().unwrap_or_else(|e| e.into_inner())
 }
+
+/// How deep types and values may nest (IL0207 in docs/diagnostics.md).
+const MAX_DEPTH: usize = 64;
+
+/// How many attributes an element may have (IL0208 in docs/diagnostics.md).
+const MAX_ATTRIBUTES: usize = 128;
 
 /// The stack the deep-nesting tests run on: 1 MiB, a quarter of the 4 MiB
 /// build scripts and test threads get by default here (debug build).
@@ -27,7 +35,7 @@ fn on_small_stack(xml: String) -> (String, Vec<Diagnostic>) {
         .stack_size(SMALL_STACK)
         .spawn(move || {
             let (input, d) = check(&xml);
-            let _ = super::tests::compile_inputs(std::slice::from_ref(&input));
+            let _ = compile_inputs(std::slice::from_ref(&input));
             (xml, d)
         })
         .expect("spawn")
@@ -161,14 +169,11 @@ fn deep_nesting_is_an_error_not_a_stack_overflow() {
         );
         let before = xml[..lo].matches(tag).count();
         assert!(
-            (translate::MAX_DEPTH - 1..=translate::MAX_DEPTH).contains(&before),
+            (MAX_DEPTH - 1..=MAX_DEPTH).contains(&before),
             "{what}: {before} levels before the error"
         );
         let (line, col) = SourceFile::new("x", xml.as_str()).line_col(lo as u32);
-        assert!(
-            line > translate::MAX_DEPTH && col >= 1,
-            "{what}: {line}:{col}"
-        );
+        assert!(line > MAX_DEPTH && col >= 1, "{what}: {line}:{col}");
     }
 }
 
@@ -176,7 +181,7 @@ fn deep_nesting_is_an_error_not_a_stack_overflow() {
 #[test]
 fn nesting_up_to_the_limit_translates() {
     let ty = nest(
-        translate::MAX_DEPTH - 1,
+        MAX_DEPTH - 1,
         r#"<array><dimension lower="0" upper="1"/><baseType>"#,
         "<INT/>",
         "</baseType></array>",
@@ -185,7 +190,7 @@ fn nesting_up_to_the_limit_translates() {
     assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
     assert_eq!(
         imp.il.text.matches("ARRAY [0..1] OF").count(),
-        translate::MAX_DEPTH - 1
+        MAX_DEPTH - 1
     );
 }
 
@@ -225,7 +230,7 @@ fn thousands_of_attributes_are_refused_in_linear_time() {
         assert_eq!(imp.diagnostics.len(), 1, "{:?}", imp.diagnostics);
         assert_eq!(imp.diagnostics[0].code, "IL0208");
         // Up to the limit, the element is read as usual.
-        let imp = import(&with_attributes(limits::MAX_ATTRIBUTES - 1));
+        let imp = import(&with_attributes(MAX_ATTRIBUTES - 1));
         assert!(imp.diagnostics.is_empty(), "{:?}", imp.diagnostics);
     }
     assert_linear("attributes", &xml, &large, |x| drop(import(x)));
@@ -254,7 +259,7 @@ fn big_body(bytes: usize, escaped: bool) -> String {
         "LD ok (* a b c *)\nST ok\n"
     };
     let body = line.repeat(bytes / line.len());
-    let iface = super::tests::block("localVars", "", &super::tests::var("ok", "<BOOL/>"));
+    let iface = block("localVars", "", &var("ok", "<BOOL/>"));
     let pou = format!(
         "      <pou name=\"P\" pouType=\"program\"><interface>{iface}</interface><body><IL><xhtml:p>{body}</xhtml:p></IL></body></pou>\n"
     );
@@ -266,11 +271,11 @@ fn big_body(bytes: usize, escaped: bool) -> String {
 /// the bound can sit close to linear.
 const LINEAR: f64 = 12.0;
 
-/// Steps `f` counts on this thread (see [`crate::work`]).
+/// Steps `f` counts on this thread (see [`il_codegen::step_counter`]).
 fn steps(f: impl FnOnce()) -> u64 {
-    let s0 = crate::work::steps();
+    let s0 = il_codegen::step_counter::steps();
     f();
-    crate::work::steps() - s0
+    il_codegen::step_counter::steps() - s0
 }
 
 /// Steps at n and 8n: linear is 8x, quadratic 64x. Then the same in
@@ -297,7 +302,7 @@ fn assert_linear(what: &str, small: &str, large: &str, f: impl Fn(&str)) {
 /// steps of every stage count. The input must compile.
 fn compile(xml: &str) {
     let input = Input::plcopen(SourceFile::new("project.xml", xml));
-    if let Err(d) = super::tests::compile_inputs(std::slice::from_ref(&input)) {
+    if let Err(d) = compile_inputs(std::slice::from_ref(&input)) {
         panic!("does not compile: {:?}", d.concat());
     }
 }
@@ -348,12 +353,7 @@ fn many_instances(n: usize) -> String {
             )
         })
         .collect();
-    pous.push_str(&super::tests::il_pou(
-        "MainIL000",
-        "program",
-        "",
-        "LD TRUE\nRET\n",
-    ));
+    pous.push_str(&il_pou("MainIL000", "program", "", "LD TRUE\nRET\n"));
     let instances: String = (0..n)
         .map(|k| format!("<pouInstance name=\"I{k}\" typeName=\"MainIL000\"/>\n"))
         .collect();
@@ -377,7 +377,7 @@ fn instances_find_their_pou_and_compile_in_linear_steps() {
 /// A body on one XML line (line breaks written as `&#10;`), `bytes` long.
 fn one_line_body(bytes: usize) -> String {
     let body = "LD ok&#10;ST ok&#10;".repeat(bytes / 20);
-    let iface = super::tests::block("localVars", "", &super::tests::var("ok", "<BOOL/>"));
+    let iface = block("localVars", "", &var("ok", "<BOOL/>"));
     let pou = format!(
         "      <pou name=\"P\" pouType=\"program\"><interface>{iface}</interface><body><IL><xhtml:p>{body}</xhtml:p></IL></body></pou>\n"
     );
@@ -407,9 +407,9 @@ fn xml_lines_of_a_body_on_one_line_take_linear_time() {
     // Counted steps (lines mapped, columns counted), not time: a time ratio
     // here failed on a loaded machine (65x for linear code, cache effects).
     let steps = |imp: &Import| {
-        let s0 = crate::work::steps();
+        let s0 = il_codegen::step_counter::steps();
         drop(imp.xml_lines());
-        crate::work::steps() - s0
+        il_codegen::step_counter::steps() - s0
     };
     let (s1, s8) = (steps(&small), steps(&large));
     let ratio = s8 as f64 / s1.max(1) as f64;

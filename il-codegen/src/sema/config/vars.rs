@@ -1,14 +1,14 @@
 //! VAR_CONFIG and VAR_ACCESS of a configuration (Ed.2 2.7.1): the
-//! declarations, once `config_paths` has resolved the path each names.
+//! declarations, once `paths` has resolved the path each names.
 
-use super::Cx;
-use super::codes::*;
-use super::config_paths::{access_path, config_path};
-use super::env::{Env, Names};
-use super::init::init_value;
-use super::ir::{AccessDef, ConfigDef, ConfigVarDef, InstancePath};
-use super::resolve::{resolve_addr, resolve_type};
+use super::paths::{access_path, config_path};
 use crate::ast;
+use crate::ir::{AccessDef, ConfigDef, ConfigVarDef, InstancePath};
+use crate::sema::Cx;
+use crate::sema::codes::*;
+use crate::sema::env::{Env, Names};
+use crate::sema::init::init_value;
+use crate::sema::resolve::{resolve_addr, resolve_type};
 
 /// The checked VAR_CONFIG declarations.
 pub(crate) fn var_config(

@@ -10,14 +10,13 @@
 //! checked against the bounds here, so a path names one place for the whole
 //! run and the emitted code indexes it with literals that cannot fail.
 
-use super::Cx;
-use super::codes::*;
-use super::configuration::{all_global_names, lookup};
-use super::env::Env;
-use super::ir::{AccessTarget, ConfigDef, Const, InstancePath, PathElem, Storage, Value};
-use super::suggest;
-use super::types::{Elem, Ty};
+use super::lookup::{all_global_names, lookup};
 use crate::ast::{self, Accessor, ExprOp, Ident, LitKind, Operand, Span, Subscript, VarRef};
+use crate::ir::{AccessTarget, ConfigDef, Const, InstancePath, PathElem, Storage, Value};
+use crate::sema::codes::*;
+use crate::sema::env::Env;
+use crate::sema::types::{Elem, Ty};
+use crate::sema::{Cx, suggest};
 
 /// What VAR_CONFIG and VAR_ACCESS need of the place a path names.
 pub(super) struct Named {
@@ -424,8 +423,8 @@ fn member(
                 v.partly.clone(),
             ))
         }
-        Ty::Fb(fb) if super::stdfb::lookup(fb).is_some() => {
-            let std = super::stdfb::lookup(fb)?;
+        Ty::Fb(fb) if crate::sema::stdfb::lookup(fb).is_some() => {
+            let std = crate::sema::stdfb::lookup(fb)?;
             let params = || std.inputs.iter().chain(&std.outputs);
             let Some((name, elem)) = params().find(|(n, _)| part.is(n)) else {
                 let names = params().map(|(n, _)| *n).collect();

@@ -1,0 +1,112 @@
+//! What every command reads: its sources (a path, or `-` for standard
+//! input) and how they become a program (`--std` and `--snippet`: the
+//! arguments and their values).
+
+use std::io;
+use std::path::Path;
+
+use clap::{Arg, ArgAction, builder::PossibleValuesParser};
+use il_codegen::SourceFile;
+
+/// Read one source. `-` is standard input. The error names the path.
+/// (`il_codegen::read`: the same rules as the build script and `il!`.)
+pub fn read_source(path: &str) -> Result<SourceFile, String> {
+    let read = if path == "-" {
+        il_codegen::read::read_stream(io::stdin().lock(), "<stdin>")
+    } else {
+        il_codegen::read::read_source(Path::new(path), path)
+    };
+    read.map_err(|e| e.to_string())
+}
+
+/// `--std=iec2003`: refuse the 3rd-edition and vendor forms (pragmas,
+/// implicit widening, partial access), each with an error naming it.
+pub fn std_arg() -> Arg {
+    Arg::new("std")
+        .long("std")
+        .value_name("STANDARD")
+        .help("Edition of IEC 61131-3 to check against")
+        .long_help(
+            "Edition of IEC 61131-3 to check against: `iec2013` (the default) accepts the \
+             3rd-edition and vendor forms real projects use (pragmas, implicit widening \
+             conversions, partial bit access); `iec2003` refuses each of them with an error \
+             that names it",
+        )
+        .value_parser(PossibleValuesParser::new(["iec2013", "iec2003"]))
+        .default_value("iec2013")
+}
+
+/// `--snippet`: the file is a bare instruction list.
+pub fn snippet_arg() -> Arg {
+    Arg::new("snippet")
+        .long("snippet")
+        .action(ArgAction::SetTrue)
+        .help("Each file is a bare instruction list, the body of a PROGRAM named after the file")
+        .long_help(
+            "Each file is a bare instruction list with no POU around it, like the standard's \
+             Table 51 (`START: LD %IX1 / ANDN %MX5 / ST %QX2`): it is compiled as the body \
+             of a PROGRAM named after the file. Only direct addresses and literals need no \
+             declaration; an error lists every other name",
+        )
+}
+
+/// How the sources become a program: `--std` and `--snippet`.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Front {
+    /// `--std`: the edition the program is checked against.
+    pub standard: il_codegen::Standard,
+    /// `--snippet`: each file is the body of a PROGRAM.
+    pub snippet: bool,
+}
+
+impl Front {
+    /// `--std` and `--snippet` as given.
+    pub fn of(m: &clap::ArgMatches) -> Front {
+        Front {
+            standard: m
+                .get_one::<String>("std")
+                .and_then(|s| il_codegen::Standard::from_name(s))
+                .unwrap_or_default(),
+            snippet: m.get_flag("snippet"),
+        }
+    }
+
+    /// A program of `files`, each read as these options say.
+    pub fn program(self, files: Vec<il_codegen::SourceFile>) -> il_codegen::Program {
+        files.into_iter().fold(
+            il_codegen::Program::new().standard(self.standard),
+            |p, f| {
+                // XML is no instruction list: it is imported under
+                // `--snippet` too.
+                if self.snippet && !il_codegen::pipeline::is_xml(&f.name, &f.text) {
+                    p.snippet(f)
+                } else {
+                    p.source(f)
+                }
+            },
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn byte_order_mark_is_dropped() {
+        let dir = std::env::temp_dir().join(format!("ilc-bom-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let p = dir.join("bom.il");
+        std::fs::write(&p, "\u{feff}PROGRAM p\nEND_PROGRAM\n").unwrap();
+        let f = read_source(p.to_str().unwrap()).unwrap();
+        assert!(f.text.starts_with("PROGRAM"));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn missing_file_names_the_path() {
+        let e = read_source("/nonexistent/dir/x.il").unwrap_err();
+        assert!(e.contains("`/nonexistent/dir/x.il`"), "{e}");
+        assert!(e.contains("no such file"), "{e}");
+    }
+}
