@@ -131,7 +131,7 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
     match spec {
         TypeSpec::Named(id) => {
             if let Some(names) = &mut cx.names
-                && let Some(k) = super::flow::type_key(fb_names, spec)
+                && let Some(k) = super::flow::keys::type_key(fb_names, spec)
             {
                 names.push((id.span, k));
             }

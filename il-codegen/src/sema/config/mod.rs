@@ -18,7 +18,7 @@ mod globals;
 mod lookup;
 mod paths;
 mod programs;
-mod retain;
+pub(crate) mod retain;
 mod tasks;
 mod vars;
 
@@ -28,7 +28,6 @@ use crate::sema::Cx;
 use crate::sema::env::{Env, Names};
 
 pub(crate) use externals::check_fb_externals;
-pub(crate) use retain::retained;
 
 /// Check every configuration; returns them with the index of their file.
 pub(crate) fn collect(

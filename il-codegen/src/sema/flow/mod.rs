@@ -18,6 +18,7 @@ use crate::ast::{
 mod fb_calls;
 mod fn_calls;
 mod instr;
+pub(crate) mod keys;
 mod names;
 mod operands;
 mod operators;
@@ -26,7 +27,7 @@ mod places;
 mod subscripts;
 mod values;
 
-pub(crate) use names::{Noted, table, type_key};
+pub(crate) use names::{Noted, table};
 pub use operators::default_const;
 use operators::*;
 
@@ -228,7 +229,7 @@ pub(crate) fn check_pou(
         places: w.places,
         cr_types: w.cr_types,
         save_types: w.save_types,
-        retained: super::config::retained(env, sig),
+        retained: super::config::retain::retained(env, sig),
         cr_steps: w.cr_steps,
         host: false,
     })
@@ -277,7 +278,7 @@ fn host_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou, sig: &PouSig) -> CheckedPou 
         addresses: Vec::new(),
         cr_types: Vec::new(),
         save_types: Vec::new(),
-        retained: super::config::retained(env, sig),
+        retained: super::config::retain::retained(env, sig),
         cr_steps: Vec::new(),
         host: true,
     }
