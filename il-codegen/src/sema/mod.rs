@@ -12,7 +12,6 @@ mod decls;
 mod env;
 mod flow;
 mod graph;
-mod hash;
 mod init;
 mod interface;
 pub mod ir;
