@@ -7,9 +7,10 @@
 use crate::places::{Step, io_read, io_write};
 use crate::values::Value;
 use crate::{Machine, find_var, held};
+use il_codegen::diag::suggest;
 use il_codegen::sema::ir::{Loc, Storage, TypeDef};
+use il_codegen::sema::parse_address;
 use il_codegen::sema::types::{Elem, Ty};
-use il_codegen::sema::{parse_address, suggest};
 use il_std::Cycle;
 
 /// A resolved host place: [`Machine::lookup`] makes one, [`Machine::get_at`]

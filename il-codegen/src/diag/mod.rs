@@ -7,10 +7,12 @@
 use crate::ast::Span;
 
 pub mod codes;
+mod did_you_mean;
 #[cfg(feature = "build")]
 pub mod json;
 pub mod render;
 
+pub use did_you_mean::suggest;
 #[cfg(feature = "build")]
 pub use json::to_json;
 #[cfg(feature = "build")]
