@@ -1,23 +1,40 @@
 //! Diagnostics: what every stage reports, and the source text they point into.
 //!
 //! Stages collect [`Diagnostic`]s instead of stopping at the first; the front
-//! ends render them (`render` for terminals and build scripts, `json` for
-//! editors, `short` for `compile_error!` inside `il!`).
+//! ends render them (`render` for terminals and build scripts, `to_json` for
+//! editors, `render_short` for `compile_error!` inside `il!`).
 
 use crate::ast::Span;
 
 pub mod codes;
 mod did_you_mean;
-#[cfg(feature = "build")]
-pub mod json;
+#[cfg(feature = "json")]
+mod json;
 pub mod render;
+pub(crate) mod text;
 
 pub use did_you_mean::suggest;
 #[cfg(feature = "build")]
-pub use json::to_json;
-#[cfg(feature = "build")]
 pub use render::render;
 pub use render::render_short;
+
+/// One diagnostic as one line of JSON, for editors (`ilc check
+/// --message-format json`):
+///
+/// ```json
+/// {"file":"a.il","line":12,"column":5,"end_line":12,"end_column":7,
+///  "severity":"error","code":"IL0003","message":"...","label":"...",
+///  "secondary":[{"line":3,"column":1,"end_line":3,"end_column":4,"label":"..."}],
+///  "notes":["..."],"help":"..."|null,"rendered":"error[IL0003]: ..."}
+/// ```
+///
+/// Lines and columns are 1-based; columns count characters (Unicode scalar
+/// values), not bytes; `end_*` is the position just after the span;
+/// `rendered` is [`render()`]'s report of it, without colours.
+#[cfg(all(feature = "build", feature = "json"))]
+pub fn to_json(file: &SourceFile, d: &Diagnostic) -> String {
+    json::object(file, d, &render(file, std::slice::from_ref(d), false))
+}
 
 /// A source file and its line table.
 #[derive(Clone, Debug)]
@@ -342,4 +359,37 @@ impl Diagnostic {
 /// True when any diagnostic is an error.
 pub fn has_errors(diags: &[Diagnostic]) -> bool {
     diags.iter().any(Diagnostic::is_error)
+}
+
+#[cfg(all(test, feature = "build", feature = "json"))]
+mod json_tests {
+    use super::*;
+    use il_testkit::json::{J, get, parse};
+
+    /// `rendered` is the plain report; text quoted from a file (a line
+    /// break, a lone CR, an escape sequence, a bidi override) stays escaped
+    /// and the object on one line.
+    #[test]
+    fn rendered_is_the_report_and_quoted_text_stays_escaped() {
+        let evil = "x\nerror[IL0000]: fake\r\u{1b}[2K\u{85}\u{2028}\u{202e}y";
+        let f = SourceFile::new(format!("a{evil}.il"), "PROGRAM p\n    LD x\nEND_PROGRAM\n");
+        let d = Diagnostic::error("IL0003", Span::new(14, 18), format!("unknown `{evil}`"))
+            .with_label(evil)
+            .with_secondary(Span::new(0, 7), evil)
+            .with_note(evil)
+            .with_help(evil);
+        let j = to_json(&f, &d);
+        assert!(
+            !j.chars()
+                .any(|c| c.is_control() || c == '\u{2028}' || c == '\u{202e}'),
+            "{j:?}"
+        );
+        assert!(
+            j.contains(r"x\nerror[IL0000]: fake\r\u001b[2K\u0085\u2028\u202ey"),
+            "{j}"
+        );
+        let v = parse(&j);
+        let rendered = render(&f, std::slice::from_ref(&d), false);
+        assert_eq!(get(&v, "rendered"), &J::Str(rendered));
+    }
 }
