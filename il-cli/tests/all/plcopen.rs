@@ -6,7 +6,7 @@ use il_testkit::json;
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
-use json::{J, get};
+use json::get;
 
 const PROJECT: &str = r#"<?xml version="1.0" encoding="utf-8"?>
 <project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
@@ -88,18 +88,18 @@ fn errors_point_at_xml_lines_in_human_and_json_output() {
     let o = ilc(&["check", "--message-format", "json", path]);
     assert_eq!(o.status.code(), Some(1));
     let out = String::from_utf8(o.stdout).unwrap();
-    let errors: Vec<J> = out
+    let errors: Vec<json::Value> = out
         .lines()
         .map(json::parse)
-        .filter(|j| get(j, "severity") == &J::Str("error".into()))
+        .filter(|j| get(j, "severity") == "error")
         .collect();
     assert_eq!(errors.len(), 1, "{out}");
     let e = &errors[0];
-    assert_eq!(get(e, "file"), &J::Str(path.into()));
-    assert_eq!(get(e, "code"), &J::Str("IL0101".into()));
-    assert_eq!(get(e, "line"), &J::Num(14.0));
-    assert_eq!(get(e, "column"), &J::Num(6.0));
-    assert_eq!(get(e, "end_column"), &J::Num(10.0));
+    assert_eq!(get(e, "file"), path);
+    assert_eq!(get(e, "code"), "IL0101");
+    assert_eq!(get(e, "line"), 14);
+    assert_eq!(get(e, "column"), 6);
+    assert_eq!(get(e, "end_column"), 10);
 }
 
 #[test]
