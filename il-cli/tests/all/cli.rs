@@ -341,8 +341,8 @@ fn emit_of_hostile_comments_and_strings() {
     assert_eq!((as_comment, as_string), (4, 2));
 }
 
-/// `ilc emit a/m.il b/m.il -o out` used to write both to `out/m.rs`, the
-/// second silently replacing the first: now it is refused before anything is
+/// `ilc emit a/m.il b/m.il -o out` would write both to `out/m.rs`, the
+/// second silently replacing the first: it is refused before anything is
 /// written, naming both inputs.
 #[test]
 fn emit_refuses_two_inputs_with_one_output_name() {

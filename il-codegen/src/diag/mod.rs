@@ -43,9 +43,9 @@ pub struct SourceFile {
     pub name: String,
     /// The whole text.
     pub text: String,
-    /// Byte offset of each line's start. `u32`, as spans: 4 bytes a line,
-    /// exactly sized (a `usize` table grown from a guess was up to 1.3
-    /// bytes per byte of a program of short lines).
+    /// Byte offset of each line's start: `u32`, as spans, and sized from a
+    /// count of the line breaks, so 4 bytes a line (for a program of short
+    /// lines a looser table costs about as much as the text).
     line_starts: Vec<u32>,
     /// Characters before each `CHAR_BLOCK`-byte block of the text: a column
     /// is then counted from the nearest block, not from the line start, so
@@ -97,8 +97,8 @@ impl SourceFile {
     fn chars_before(&self, offset: usize) -> usize {
         let offset = offset.min(self.text.len());
         // The text's end in a text of whole blocks has no entry of its own:
-        // count it from the last block (its base was once 0 there, and a
-        // column at the end of a 4096-byte file underflowed).
+        // count it from the last block (a base of 0 there would underflow
+        // the column at the end of a 4096-byte file).
         let block = (offset / CHAR_BLOCK).min(self.block_chars.len().saturating_sub(1));
         let base = self.block_chars.get(block).copied().unwrap_or(0) as usize;
         let rest = &self.text.as_bytes()[block * CHAR_BLOCK..offset];
@@ -140,8 +140,8 @@ impl SourceFile {
 
     /// [`Self::line_col`], looking first at the 1-based line `near` and the
     /// one after it: a walk over a body asks for each instruction's line
-    /// in order, and a search of the whole table each time was a tenth of
-    /// the check's own work.
+    /// in order, and searching the whole table each time would be about a
+    /// tenth of the check's own work.
     pub fn line_col_near(&self, offset: u32, near: usize) -> (usize, usize) {
         let offset = (offset as usize).min(self.text.len());
         let line = self.line_index(offset, near);
