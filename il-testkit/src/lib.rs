@@ -1,6 +1,6 @@
 //! Helpers the workspace's tests share (a dev-dependency only): golden-file
-//! snapshots ([`golden`]), a small JSON reader for checking the JSON that
-//! `ilc` and the diagnostics renderer write ([`json`]), and instruction
+//! snapshots ([`golden`]), reading back the JSON that `ilc` and the
+//! diagnostics renderer write ([`json`], with serde_json), and instruction
 //! counts at n and 8n for scaling tests ([`instructions`]).
 
 pub mod golden;

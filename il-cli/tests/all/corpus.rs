@@ -14,7 +14,7 @@ use il_testkit::json;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use json::{J, get};
+use json::get;
 
 #[derive(Debug)]
 enum Expect {
@@ -212,15 +212,17 @@ fn check_std(path: &Path, std: &str) -> (i32, Vec<(String, usize, String)>) {
     let mut errors = Vec::new();
     for line in stdout.lines() {
         let v = json::parse(line);
-        if get(&v, "severity") != &J::Str("error".into()) {
+        if get(&v, "severity") != "error" {
             continue;
         }
-        let (J::Str(code), J::Num(l), J::Str(msg)) =
-            (get(&v, "code"), get(&v, "line"), get(&v, "message"))
-        else {
+        let (Some(code), Some(l), Some(msg)) = (
+            get(&v, "code").as_str(),
+            get(&v, "line").as_u64(),
+            get(&v, "message").as_str(),
+        ) else {
             panic!("malformed diagnostic {line}")
         };
-        errors.push((code.clone(), *l as usize, msg.clone()));
+        errors.push((code.to_string(), l as usize, msg.to_string()));
     }
     (status, errors)
 }

@@ -7,7 +7,7 @@ use il_testkit::json;
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
-use json::{J, get};
+use json::get;
 
 const PROJECT: &str = r#"<?xml version="1.0" encoding="utf-8"?>
 <project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
@@ -89,18 +89,18 @@ fn errors_point_at_xml_lines_in_human_and_json_output() {
     let o = ilc(&["check", "--message-format", "json", path]);
     assert_eq!(o.status.code(), Some(1));
     let out = String::from_utf8(o.stdout).unwrap();
-    let errors: Vec<J> = out
+    let errors: Vec<json::Value> = out
         .lines()
         .map(json::parse)
-        .filter(|j| get(j, "severity") == &J::Str("error".into()))
+        .filter(|j| get(j, "severity") == "error")
         .collect();
     assert_eq!(errors.len(), 1, "{out}");
     let e = &errors[0];
-    assert_eq!(get(e, "file"), &J::Str(path.into()));
-    assert_eq!(get(e, "code"), &J::Str("IL0101".into()));
-    assert_eq!(get(e, "line"), &J::Num(14.0));
-    assert_eq!(get(e, "column"), &J::Num(6.0));
-    assert_eq!(get(e, "end_column"), &J::Num(10.0));
+    assert_eq!(get(e, "file"), path);
+    assert_eq!(get(e, "code"), "IL0101");
+    assert_eq!(get(e, "line"), 14);
+    assert_eq!(get(e, "column"), 6);
+    assert_eq!(get(e, "end_column"), 10);
 }
 
 #[test]
@@ -180,7 +180,7 @@ fn the_corpus_project_checks_with_warnings_only() {
 }
 
 /// The JSON diagnostics of `ilc check` of `path`, and its exit status.
-fn check_json(args: &[&str]) -> (Option<i32>, Vec<J>) {
+fn check_json(args: &[&str]) -> (Option<i32>, Vec<serde_json::Value>) {
     let mut all = vec!["check", "--message-format", "json"];
     all.extend(args);
     let o = ilc(&all);
@@ -202,18 +202,18 @@ fn xml_of_another_tool_is_one_error_naming_its_root() {
     assert_eq!(code, Some(1));
     assert_eq!(diags.len(), 1, "{diags:?}");
     let d = &diags[0];
-    assert_eq!(get(d, "code"), &J::Str("IL0202".into()));
-    assert_eq!(get(d, "file"), &J::Str(path.into()));
-    assert_eq!(get(d, "line"), &J::Num(2.0));
-    assert_eq!(get(d, "column"), &J::Num(1.0));
-    let J::Str(msg) = get(d, "message") else {
+    assert_eq!(get(d, "code"), &serde_json::Value::from("IL0202"));
+    assert_eq!(get(d, "file"), &serde_json::Value::from(path));
+    assert_eq!(get(d, "line"), &serde_json::json!(2.0 as u64));
+    assert_eq!(get(d, "column"), &serde_json::json!(1.0 as u64));
+    let serde_json::Value::String(msg) = get(d, "message") else {
         panic!("{d:?}")
     };
     assert!(
         msg.contains("`<ProjectDescriptor>` (no namespace)"),
         "{msg}"
     );
-    let J::Str(rendered) = get(d, "rendered") else {
+    let serde_json::Value::String(rendered) = get(d, "rendered") else {
         panic!("{d:?}")
     };
     assert!(rendered.contains("PLCopen TC6 XML projects"), "{rendered}");
@@ -234,7 +234,7 @@ fn xml_of_another_tool_is_one_error_naming_its_root() {
         let (code, diags) = check_json(&[p.to_str().unwrap()]);
         assert_eq!(code, Some(1));
         assert_eq!(diags.len(), 1, "{diags:?}");
-        let J::Str(msg) = get(&diags[0], "message") else {
+        let serde_json::Value::String(msg) = get(&diags[0], "message") else {
             panic!("{diags:?}")
         };
         assert!(msg.contains(want), "{msg}");
@@ -260,10 +260,18 @@ fn a_plcopen_project_under_any_name_is_imported() {
         let (code, diags) = check_json(&[path]);
         assert_eq!(code, Some(0), "{name}: {diags:?}");
         assert_eq!(diags.len(), 1, "{name}: {diags:?}");
-        assert_eq!(get(&diags[0], "code"), &J::Str("IL0203".into()), "{name}");
+        assert_eq!(
+            get(&diags[0], "code"),
+            &serde_json::Value::from("IL0203"),
+            "{name}"
+        );
         // The XML's own lines, shifted by what stands before the declaration.
         let shift = text.matches('\n').count() as f64 - PROJECT.matches('\n').count() as f64;
-        assert_eq!(get(&diags[0], "line"), &J::Num(20.0 + shift), "{name}");
+        assert_eq!(
+            get(&diags[0], "line"),
+            &serde_json::json!((20.0 + shift) as u64),
+            "{name}"
+        );
         let o = ilc(&[
             "run",
             path,
@@ -318,8 +326,8 @@ fn the_corpus_smbp_projects_are_one_error_each() {
         let (code, diags) = check_json(&[p.to_str().unwrap()]);
         assert_eq!(code, Some(1), "{}", p.display());
         assert_eq!(diags.len(), 1, "{}: {diags:?}", p.display());
-        assert_eq!(get(&diags[0], "code"), &J::Str("IL0202".into()));
-        let J::Str(msg) = get(&diags[0], "message") else {
+        assert_eq!(get(&diags[0], "code"), &serde_json::Value::from("IL0202"));
+        let serde_json::Value::String(msg) = get(&diags[0], "message") else {
             panic!("{diags:?}")
         };
         assert!(msg.contains("`<ProjectDescriptor>`"), "{msg}");

@@ -1,24 +1,40 @@
 //! Diagnostics: what every stage reports, and the source text they point into.
 //!
 //! Stages collect [`Diagnostic`]s instead of stopping at the first; the front
-//! ends render them (`render` for terminals and build scripts, `json` for
-//! editors, `short` for `compile_error!` inside `il!`).
+//! ends render them (`render` for terminals and build scripts, `to_json` for
+//! editors, `render_short` for `compile_error!` inside `il!`).
 
 use crate::ast::Span;
 
 pub mod codes;
-#[cfg(feature = "build")]
-pub mod json;
+mod did_you_mean;
+#[cfg(feature = "json")]
+mod json;
 pub mod render;
+pub(crate) mod text;
 
-/// "Did you mean": the closest of the candidates to a name, for every tool
-/// that takes names from users.
-pub use crate::sema::suggest;
-#[cfg(feature = "build")]
-pub use json::to_json;
+pub use did_you_mean::suggest;
 #[cfg(feature = "build")]
 pub use render::render;
 pub use render::render_short;
+
+/// One diagnostic as one line of JSON, for editors (`ilc check
+/// --message-format json`):
+///
+/// ```json
+/// {"file":"a.il","line":12,"column":5,"end_line":12,"end_column":7,
+///  "severity":"error","code":"IL0003","message":"...","label":"...",
+///  "secondary":[{"line":3,"column":1,"end_line":3,"end_column":4,"label":"..."}],
+///  "notes":["..."],"help":"..."|null,"rendered":"error[IL0003]: ..."}
+/// ```
+///
+/// Lines and columns are 1-based; columns count characters (Unicode scalar
+/// values), not bytes; `end_*` is the position just after the span;
+/// `rendered` is [`render()`]'s report of it, without colours.
+#[cfg(all(feature = "build", feature = "json"))]
+pub fn to_json(file: &SourceFile, d: &Diagnostic) -> String {
+    json::object(file, d, &render(file, std::slice::from_ref(d), false))
+}
 
 /// A source file and its line table.
 #[derive(Clone, Debug)]
@@ -27,9 +43,9 @@ pub struct SourceFile {
     pub name: String,
     /// The whole text.
     pub text: String,
-    /// Byte offset of each line's start. `u32`, as spans: 4 bytes a line,
-    /// exactly sized (a `usize` table grown from a guess was up to 1.3
-    /// bytes per byte of a program of short lines).
+    /// Byte offset of each line's start: `u32`, as spans, and sized from a
+    /// count of the line breaks, so 4 bytes a line (for a program of short
+    /// lines a looser table costs about as much as the text).
     line_starts: Vec<u32>,
     /// Characters before each `CHAR_BLOCK`-byte block of the text: a column
     /// is then counted from the nearest block, not from the line start, so
@@ -81,8 +97,8 @@ impl SourceFile {
     fn chars_before(&self, offset: usize) -> usize {
         let offset = offset.min(self.text.len());
         // The text's end in a text of whole blocks has no entry of its own:
-        // count it from the last block (its base was once 0 there, and a
-        // column at the end of a 4096-byte file underflowed).
+        // count it from the last block (a base of 0 there would underflow
+        // the column at the end of a 4096-byte file).
         let block = (offset / CHAR_BLOCK).min(self.block_chars.len().saturating_sub(1));
         let base = self.block_chars.get(block).copied().unwrap_or(0) as usize;
         let rest = &self.text.as_bytes()[block * CHAR_BLOCK..offset];
@@ -124,8 +140,8 @@ impl SourceFile {
 
     /// [`Self::line_col`], looking first at the 1-based line `near` and the
     /// one after it: a walk over a body asks for each instruction's line
-    /// in order, and a search of the whole table each time was a tenth of
-    /// the check's own work.
+    /// in order, and searching the whole table each time would be about a
+    /// tenth of the check's own work.
     pub fn line_col_near(&self, offset: u32, near: usize) -> (usize, usize) {
         let offset = (offset as usize).min(self.text.len());
         let line = self.line_index(offset, near);
@@ -343,4 +359,37 @@ impl Diagnostic {
 /// True when any diagnostic is an error.
 pub fn has_errors(diags: &[Diagnostic]) -> bool {
     diags.iter().any(Diagnostic::is_error)
+}
+
+#[cfg(all(test, feature = "build", feature = "json"))]
+mod json_tests {
+    use super::*;
+    use il_testkit::json::{get, parse};
+
+    /// `rendered` is the plain report; text quoted from a file (a line
+    /// break, a lone CR, an escape sequence, a bidi override) stays escaped
+    /// and the object on one line.
+    #[test]
+    fn rendered_is_the_report_and_quoted_text_stays_escaped() {
+        let evil = "x\nerror[IL0000]: fake\r\u{1b}[2K\u{85}\u{2028}\u{202e}y";
+        let f = SourceFile::new(format!("a{evil}.il"), "PROGRAM p\n    LD x\nEND_PROGRAM\n");
+        let d = Diagnostic::error("IL0003", Span::new(14, 18), format!("unknown `{evil}`"))
+            .with_label(evil)
+            .with_secondary(Span::new(0, 7), evil)
+            .with_note(evil)
+            .with_help(evil);
+        let j = to_json(&f, &d);
+        assert!(
+            !j.chars()
+                .any(|c| c.is_control() || c == '\u{2028}' || c == '\u{202e}'),
+            "{j:?}"
+        );
+        assert!(
+            j.contains(r"x\nerror[IL0000]: fake\r\u001b[2K\u0085\u2028\u202ey"),
+            "{j}"
+        );
+        let v = parse(&j);
+        let rendered = render(&f, std::slice::from_ref(&d), false);
+        assert_eq!(get(&v, "rendered"), rendered.as_str());
+    }
 }

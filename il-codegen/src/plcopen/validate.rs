@@ -83,7 +83,7 @@ pub(crate) fn check(kind: Kind, s: &str) -> Result<(), String> {
 /// Characters no attribute may hold, even inside a string literal: C0 and
 /// C1 controls, line and paragraph separators, bidirectional controls.
 pub(crate) fn forbidden_char(c: char) -> bool {
-    crate::diag::render::unsafe_char(c)
+    crate::diag::text::unsafe_char(c)
 }
 
 /// `s` as a message may quote it: control characters escaped (the

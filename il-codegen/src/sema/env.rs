@@ -8,7 +8,7 @@ use std::collections::{HashMap, HashSet};
 
 /// The interfaces of every POU of the unit, by upper-case name.
 pub(crate) struct Env {
-    pub pous: super::hash::FxMap<String, PouSig>,
+    pub pous: rustc_hash::FxHashMap<String, PouSig>,
     pub types: TypeTables,
     /// Checked configurations, with the index of the declaring file.
     pub configs: Vec<(usize, super::ir::ConfigDef)>,

@@ -8,7 +8,6 @@ mod decls;
 mod env;
 mod flow;
 mod graph;
-mod hash;
 pub(crate) mod heap_arrays;
 mod init;
 mod interface;
@@ -26,6 +25,7 @@ pub mod widen;
 // The IR and its types live in `crate::ir`, the public contract; the
 // checker names them as its own.
 use crate::ast::{self, Span};
+pub(crate) use crate::diag::suggest;
 use crate::diag::{Diagnostic, SourceFile};
 pub(crate) use crate::ir::{self, types};
 pub use address::parse_address;
@@ -172,91 +172,9 @@ impl Cx<'_> {
     }
 }
 
-/// Names longer than this get no "did you mean" (IEC identifiers in real
-/// programs are far shorter).
-const MAX_SUGGEST_LEN: usize = 64;
-
-/// Case-insensitive "did you mean": the closest of `candidates` to `name`
-/// (public for the tools that take names from users, like `ilc run`).
-pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
-    // Bounded: no suggestion for a name no one types (a damaged or hostile
-    // file), and no distance computed for a candidate whose length alone
-    // rules it out, so the search is linear in the candidates.
-    if name.len() > MAX_SUGGEST_LEN {
-        return None;
-    }
-    let up = name.to_ascii_uppercase();
-    // Rank by edit distance (a swap of two letters counts once), then prefer
-    // a candidate that extends the name (`Q` → `Q1`), then the closest length.
-    let mut best: Option<((usize, bool, usize), &str)> = None;
-    for c in candidates {
-        crate::step_counter::add(1);
-        let limit = (up.len().max(c.len()) / 3).max(1);
-        if up.len().abs_diff(c.len()) > limit || c.len() > MAX_SUGGEST_LEN {
-            continue;
-        }
-        let cu = c.to_ascii_uppercase();
-        if cu == up {
-            continue;
-        }
-        crate::step_counter::add((up.len() * cu.len()) as u64);
-        let d = edit_distance(&up, &cu);
-        let rank = (
-            d,
-            !(cu.starts_with(&up) || up.starts_with(&cu)),
-            up.len().abs_diff(cu.len()),
-        );
-        if d <= limit && best.is_none_or(|(b, _)| rank < b) {
-            best = Some((rank, c));
-        }
-    }
-    best.map(|(_, c)| c)
-}
-
-/// Optimal string alignment distance: insertions, deletions, substitutions
-/// and transpositions of neighbours each cost 1.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let a: Vec<char> = a.chars().collect();
-    let b: Vec<char> = b.chars().collect();
-    let mut d = vec![vec![0usize; b.len() + 1]; a.len() + 1];
-    for (i, row) in d.iter_mut().enumerate() {
-        row[0] = i;
-    }
-    for (j, cell) in d[0].iter_mut().enumerate() {
-        *cell = j;
-    }
-    for i in 1..=a.len() {
-        for j in 1..=b.len() {
-            let cost = usize::from(a[i - 1] != b[j - 1]);
-            let mut v = (d[i - 1][j] + 1)
-                .min(d[i][j - 1] + 1)
-                .min(d[i - 1][j - 1] + cost);
-            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
-                v = v.min(d[i - 2][j - 2] + 1);
-            }
-            d[i][j] = v;
-        }
-    }
-    d[a.len()][b.len()]
-}
-
 /// Whether `name` is a standard function block of il-std.
 pub(crate) fn is_std_fb(name: &str) -> bool {
     stdfb::lookup(name).is_some()
 }
 
 pub use flow::default_const;
-
-#[cfg(test)]
-mod suggest_tests {
-    use super::suggest;
-
-    #[test]
-    fn transpositions_prefixes_and_limits() {
-        assert_eq!(suggest("spede", ["speed", "spread"]), Some("speed"));
-        assert_eq!(suggest("strat", ["start", "stop"]), Some("start"));
-        assert_eq!(suggest("Q", ["S1", "R", "Q1"]), Some("Q1"));
-        assert_eq!(suggest("LDD", ["ADD", "LD"]), Some("LD"));
-        assert_eq!(suggest("motor", ["valve"]), None);
-    }
-}

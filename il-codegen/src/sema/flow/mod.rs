@@ -84,7 +84,7 @@ pub(crate) fn check_pou(
     if pou.host.is_some() {
         return Some(host_pou(cx, env, pou, sig));
     }
-    let mut labels = super::hash::FxMap::default();
+    let mut labels = rustc_hash::FxHashMap::default();
     let mut label_spans = Vec::new();
     let mut label_names = Vec::new();
     for s in &pou.body {
@@ -415,7 +415,7 @@ struct Walk<'a, 'c> {
     cx: &'a mut Cx<'c>,
     env: &'a Env,
     sig: &'a PouSig,
-    labels: super::hash::FxMap<String, usize>,
+    labels: rustc_hash::FxHashMap<String, usize>,
     /// Each label as declared (suggestions show the user's spelling).
     label_names: Vec<String>,
     /// CR after each label (from the previous round).
@@ -450,7 +450,7 @@ struct Walk<'a, 'c> {
     /// The body's place table, and the index of each place without
     /// subscripts in it by a hash of its root and steps ([`place_table`]).
     places: Vec<Place>,
-    place_ids: super::hash::FxMap<u64, u32>,
+    place_ids: rustc_hash::FxHashMap<u64, u32>,
     /// Note the names resolved ([`names`]), and those of the final pass.
     noting: bool,
     noted: Noted,

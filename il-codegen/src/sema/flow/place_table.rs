@@ -11,7 +11,7 @@ use std::hash::{Hash, Hasher};
 /// with subscripts (their values may differ between uses) or of the
 /// process image (rare): those are not shared.
 fn key(p: &Place) -> Option<u64> {
-    let mut h = super::super::hash::FxHasher::default();
+    let mut h = rustc_hash::FxHasher::default();
     match p.root {
         Root::Var(i) => i.hash(&mut h),
         Root::Ret => usize::MAX.hash(&mut h),
