@@ -4,7 +4,7 @@
 use super::text::doc;
 use super::values::constant;
 use super::{rust_ident, rust_ty};
-use crate::sema::ir::{AccessTarget, ConfigDef, Const, PathElem, Value};
+use crate::ir::{AccessTarget, ConfigDef, Const, PathElem, Value};
 
 /// `access_NAME(&self) -> T` and (READ_WRITE) `set_access_NAME(&mut self, v: T)`.
 pub(super) fn methods(c: &ConfigDef) -> String {

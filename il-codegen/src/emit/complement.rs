@@ -16,8 +16,8 @@
 
 use super::PouEmitter;
 use super::text::Out;
-use crate::sema::ir::{CheckedPou, Const, Expr, Op, PathElem, Place, Root, Storage, Value};
-use crate::sema::types::{Elem, Ty};
+use crate::ir::types::{Elem, Ty};
+use crate::ir::{CheckedPou, Const, Expr, Op, PathElem, Place, Root, Storage, Value};
 
 /// Fewest negated reads of an array for its complement to pay for the copy.
 const MIN_NEGATED_READS: usize = 8;

@@ -5,7 +5,7 @@
 
 use super::{rust_ident, values};
 use crate::ast::Area;
-use crate::sema::ir::{ConfigDef, InstancePath, PathElem};
+use crate::ir::{ConfigDef, InstancePath, PathElem};
 
 /// `base.Res.prog.fb.x` (`base.Res.prog.a[1].b`) for an instance path
 /// (`base` is `self` or `__s`); a standard block's member is its il-std

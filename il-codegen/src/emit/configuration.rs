@@ -3,7 +3,7 @@
 
 use super::text::{Out, doc, each, join, str_lit};
 use super::{item_ident, names, rust_ident, rust_ty, values};
-use crate::sema::ir::{ConfigDef, GlobalRef, ProgArg, Var};
+use crate::ir::{ConfigDef, GlobalRef, ProgArg, Var};
 
 pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
     let name = item_ident(&c.name);

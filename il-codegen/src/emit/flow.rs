@@ -13,8 +13,8 @@ use super::PouEmitter;
 use super::text::{Out, join, tail};
 use super::writeback::WriteBacks;
 use crate::ast::PouKind;
-use crate::sema::ir::{Expr, Op, PathElem, Root, Stmt, Value};
-use crate::sema::types::Ty;
+use crate::ir::types::Ty;
+use crate::ir::{Expr, Op, PathElem, Root, Stmt, Value};
 
 /// Deeper nesting than this falls back to the dispatcher (rustc recurses
 /// on nested blocks, and each level indents every line inside it).
@@ -196,7 +196,7 @@ const RUNGS_PER_FENCE: usize = 4;
 /// [`FENCED_RUNGS`] such starts with no FB call between them; of those,
 /// every [`RUNGS_PER_FENCE`]th.
 fn fenced_rungs(
-    pou: &crate::sema::ir::CheckedPou,
+    pou: &crate::ir::CheckedPou,
     stmts: &[Stmt],
     cached: impl Fn(usize) -> bool,
 ) -> Vec<usize> {
@@ -446,7 +446,7 @@ impl PouEmitter<'_> {
         }
     }
 
-    fn cond(&self, c: &Option<(crate::sema::ir::Value, bool)>, line: u32, body: String) -> String {
+    fn cond(&self, c: &Option<(crate::ir::Value, bool)>, line: u32, body: String) -> String {
         match c {
             None => body,
             Some((v, true)) => {
@@ -525,14 +525,8 @@ impl PouEmitter<'_> {
                     (Some((lo, hi)), Some(e)) => {
                         let ty = e.rust();
                         let (lo, hi) = (
-                            crate::emit::values::constant(&crate::sema::ir::Const::Int(
-                                (*lo).into(),
-                                e,
-                            )),
-                            crate::emit::values::constant(&crate::sema::ir::Const::Int(
-                                (*hi).into(),
-                                e,
-                            )),
+                            crate::emit::values::constant(&crate::ir::Const::Int((*lo).into(), e)),
+                            crate::emit::values::constant(&crate::ir::Const::Int((*hi).into(), e)),
                         );
                         let w = self.write(place, "__r".to_string(), line);
                         let fault = self.fault("SubrangeViolation", line);
@@ -552,7 +546,7 @@ impl PouEmitter<'_> {
             Op::CallFb(c) => {
                 // `inouts_in_instance` needs no code of its own: an in-out
                 // under the instance is copied in after the inputs are set.
-                let crate::sema::ir::FbCall {
+                let crate::ir::FbCall {
                     inst,
                     inputs,
                     outputs,
@@ -630,7 +624,7 @@ impl PouEmitter<'_> {
                     .iter()
                     .map(|(n, target, neg, w)| {
                         let mut src = inst.clone();
-                        src.path.push(crate::sema::ir::PathElem::Field(n.clone()));
+                        src.path.push(crate::ir::PathElem::Field(n.clone()));
                         let v = self.read(&src, line);
                         let v = super::values::widened(if *neg { format!("!{v}") } else { v }, w);
                         let v = self.fit_output(v, None, target, line);

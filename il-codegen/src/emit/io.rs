@@ -9,8 +9,8 @@
 use super::rust_ident;
 use super::text::{doc, str_lit};
 use super::values::{io_read, io_write};
-use crate::sema::ir::{CheckedPou, Loc, Var};
-use crate::sema::types::Elem;
+use crate::ir::types::Elem;
+use crate::ir::{CheckedPou, Loc, Var};
 
 /// The `il_std::Located` entries of a POU: its located variables, then the
 /// direct addresses its code uses.

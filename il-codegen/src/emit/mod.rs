@@ -20,8 +20,8 @@ mod visit;
 mod writeback;
 
 use crate::ast::{PouKind, VarKind};
-use crate::sema::ir::{CheckedPou, Program, Storage};
-use crate::sema::types::Ty;
+use crate::ir::types::Ty;
+use crate::ir::{CheckedPou, Program, Storage};
 use text::{Out, doc, each, str_lit, tail};
 
 pub use names::{item_ident, local_ident, rust_ident};
@@ -60,9 +60,9 @@ pub(crate) fn serde_field(t: &Ty, opts: Options) -> String {
 
 /// The Rust type of a field: a heap field (an array over 64 KiB, see
 /// `sema/heap_arrays.rs`) is `Box<[Row]>`.
-pub(crate) fn field_ty(v: &crate::sema::ir::Var) -> String {
+pub(crate) fn field_ty(v: &crate::ir::Var) -> String {
     if v.heap {
-        let row = rust_ty(&crate::sema::heap_arrays::row(&v.ty));
+        let row = rust_ty(&v.ty.row());
         format!("::il_std::heap::Box<[{row}]>")
     } else {
         rust_ty(&v.ty)
@@ -71,7 +71,7 @@ pub(crate) fn field_ty(v: &crate::sema::ir::Var) -> String {
 
 /// [`serde_field`] for a field: a heap field is a sequence of exactly its
 /// declared length.
-pub(crate) fn serde_var(v: &crate::sema::ir::Var, opts: Options) -> String {
+pub(crate) fn serde_var(v: &crate::ir::Var, opts: Options) -> String {
     match &v.ty {
         Ty::Array(a) if v.heap && opts.serde => {
             let n = a.dims.first().map_or(0, |(lo, hi)| hi - lo + 1);
@@ -121,7 +121,7 @@ pub(crate) fn rust_ty(t: &Ty) -> String {
 }
 
 fn is_std_fb(name: &str) -> bool {
-    crate::sema::is_std_fb(name)
+    il_std::signature::lookup_fb(name).is_some()
 }
 
 /// Emits one checked POU (the checked IR's `CheckedPou`; not the AST's
@@ -358,7 +358,7 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
 
 /// The RETAIN snapshot type of an FB/PROGRAM, with `retain()` and `restore()`.
 fn retain_items(o: &mut Out, pou: &CheckedPou, opts: Options) {
-    use crate::sema::ir::Retained;
+    use crate::ir::Retained;
     if pou.retained.is_empty() {
         return;
     }
@@ -389,7 +389,7 @@ fn retain_items(o: &mut Out, pou: &CheckedPou, opts: Options) {
                 // The snapshot of each instance, arrays mapped element-wise.
                 let snap = |t: &Ty| t.rust(&names::retain_ident);
                 let ty = if v.heap {
-                    let row = snap(&crate::sema::heap_arrays::row(&v.ty));
+                    let row = snap(&v.ty.row());
                     format!("::il_std::heap::Box<[{row}]>")
                 } else {
                     snap(&v.ty)
@@ -490,7 +490,7 @@ fn fn_ret_ty(pou: &CheckedPou) -> String {
 /// A FUNCTION's parameters after `__ctx`, each with its Rust type: the
 /// inputs by value, then the in-outs and the outputs as `&mut`, each in
 /// declaration order (generated FUNCTIONs and host functions alike).
-fn fn_params(pou: &CheckedPou) -> Vec<(&crate::sema::ir::Var, String)> {
+fn fn_params(pou: &CheckedPou) -> Vec<(&crate::ir::Var, String)> {
     let of = |k: VarKind| pou.vars.iter().filter(move |v| v.kind == k);
     of(VarKind::Input)
         .map(|v| (v, rust_ty(&v.ty)))
@@ -511,9 +511,9 @@ fn inout_params(pou: &CheckedPou) -> Vec<String> {
 }
 
 /// A user STRUCT or enumeration as a Rust item the host can use directly.
-fn emit_type(o: &mut Out, t: &crate::sema::ir::TypeDef, opts: Options) {
+fn emit_type(o: &mut Out, t: &crate::ir::TypeDef, opts: Options) {
     let serde = serde_derive(opts);
-    use crate::sema::ir::TypeDef;
+    use crate::ir::TypeDef;
     match t {
         TypeDef::Struct { name, fields } => {
             let id = item_ident(name);

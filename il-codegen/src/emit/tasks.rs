@@ -4,7 +4,7 @@
 
 use super::text::str_lit;
 use super::values;
-use crate::sema::ir::{GlobalRef, TaskSource};
+use crate::ir::{GlobalRef, TaskSource};
 
 /// The `Option<bool>` SINGLE argument of `TaskState::due`.
 pub(super) fn single(

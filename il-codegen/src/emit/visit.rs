@@ -4,8 +4,8 @@
 
 use super::text::{Out, join, str_lit};
 use super::{item_ident, rust_ident};
-use crate::sema::ir::{Field, Var};
-use crate::sema::types::Ty;
+use crate::ir::types::Ty;
+use crate::ir::{Field, Var};
 
 /// Offer the value at place `expr` (an lvalue of type `ty`) named `name`.
 fn offer(name: &str, ty: &Ty, expr: &str) -> String {

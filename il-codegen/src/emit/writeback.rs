@@ -13,7 +13,7 @@
 
 use super::text::Out;
 use super::{PouEmitter, names, rust_ident};
-use crate::sema::ir::{Expr, Op, Place, Root, Stmt};
+use crate::ir::{Expr, Op, Place, Root, Stmt};
 
 /// The body's write-backs: `at[p]` are the variables written back before
 /// statement `p` of the body (`p == len`: at the end, after `'__body`).
@@ -30,7 +30,7 @@ impl WriteBacks {
 
 /// The variables `s` stores to (in any way: a store, S/R, an FB output, an
 /// in-out binding, a function's `=>` output): `written(i)` is called for each.
-pub(crate) fn stores(pou: &crate::sema::ir::CheckedPou, s: &Stmt, written: &mut impl FnMut(usize)) {
+pub(crate) fn stores(pou: &crate::ir::CheckedPou, s: &Stmt, written: &mut impl FnMut(usize)) {
     let mut place = |p: &Place| {
         if let Root::Var(i) = p.root {
             written(i)

@@ -88,6 +88,23 @@ impl From<Elem> for il_std::signature::Elem {
 }
 
 impl Ty {
+    /// The rows of an array: the array without its first dimension (the
+    /// element type for one dimension); a large array on the heap is a
+    /// boxed slice of its rows.
+    pub fn row(&self) -> Ty {
+        match self {
+            Ty::Array(a) if a.dims.len() > 1 => Ty::Array(Box::new(ArrayTy {
+                dims: a.dims[1..].to_vec(),
+                elem: a.elem.clone(),
+                range: a.range,
+            })),
+            Ty::Array(a) => a.elem.clone(),
+            _ => self.clone(),
+        }
+    }
+}
+
+impl Ty {
     /// The type il-std's tables name: strings are [`Ty::Str`] of the
     /// default capacity, the others elementary.
     pub fn of_std(e: il_std::signature::Elem) -> Ty {

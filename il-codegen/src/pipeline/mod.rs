@@ -83,7 +83,7 @@ impl Program {
     /// ([`CheckedPou::cr_steps`], for tools such as the language server's
     /// hover); off by default: the compiler does not read them.
     ///
-    /// [`CheckedPou::cr_steps`]: crate::sema::ir::CheckedPou::cr_steps
+    /// [`CheckedPou::cr_steps`]: crate::ir::CheckedPou::cr_steps
     pub fn cr_steps(mut self, record: bool) -> Self {
         self.cr_steps = record;
         self

@@ -130,20 +130,6 @@ pub(crate) fn is_large(env: &Env, t: &Ty) -> bool {
     matches!(t, Ty::Array { .. }) && bytes(env, t) > LARGE_ARRAY_BYTES
 }
 
-/// The rows of an array: the array without its first dimension (the
-/// element type for one dimension).
-pub(crate) fn row(t: &Ty) -> Ty {
-    match t {
-        Ty::Array(a) if a.dims.len() > 1 => Ty::Array(Box::new(super::types::ArrayTy {
-            dims: a.dims[1..].to_vec(),
-            elem: a.elem.clone(),
-            range: a.range,
-        })),
-        Ty::Array(a) => a.elem.clone(),
-        _ => t.clone(),
-    }
-}
-
 /// Compute every named type's size, mark the large array fields of FBs and
 /// PROGRAMs as heap fields, and refuse large arrays where they would be stack
 /// values: FUNCTION variables and results, VAR_TEMP, VAR_IN_OUT, VAR_EXTERNAL,
@@ -196,7 +182,7 @@ pub(crate) fn mark_heap(cxs: &mut [Cx], env: &mut Env, units: &[&ast::Compilatio
                             if bytes <= LARGE_ARRAY_BYTES {
                                 continue;
                             }
-                            let row_bytes = size(env, &row(&v.ty), &mut memo, 0);
+                            let row_bytes = size(env, &v.ty.row(), &mut memo, 0);
                             if !is_field(sig.kind, v) {
                                 let why = match (sig.kind, v.kind) {
                                     (PouKind::Function, _) => {

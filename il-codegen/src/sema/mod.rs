@@ -172,9 +172,4 @@ impl Cx<'_> {
     }
 }
 
-/// Whether `name` is a standard function block of il-std.
-pub(crate) fn is_std_fb(name: &str) -> bool {
-    stdfb::lookup(name).is_some()
-}
-
 pub use flow::default_const;

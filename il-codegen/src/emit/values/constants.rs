@@ -57,7 +57,7 @@ pub(crate) fn default_value(t: &Ty) -> String {
     match t {
         Ty::Array(a) => {
             // An array of a subrange starts at its lower limit.
-            let mut v = match crate::sema::ir::element_start(t) {
+            let mut v = match crate::ir::element_start(t) {
                 Some(c) => constant(&c),
                 None => default_value(&a.elem),
             };
@@ -66,7 +66,7 @@ pub(crate) fn default_value(t: &Ty) -> String {
             }
             v
         }
-        Ty::Elem(_) | Ty::Str { .. } => constant(&crate::sema::default_const(t)),
+        Ty::Elem(_) | Ty::Str { .. } => constant(&crate::ir::default_const(t)),
         Ty::Fb(_) | Ty::Struct(_) | Ty::Enum(_) => {
             "::core::default::Default::default()".to_string()
         }
@@ -89,9 +89,9 @@ pub(crate) fn heap_init_value(t: &Ty, init: Option<&Init>) -> String {
             let n = dims.first().map_or(0, |(lo, hi)| (hi - lo + 1) as usize);
             // One dimension: the row is the element, which may start at a
             // subrange's lower limit.
-            let d = match (dims.len(), crate::sema::ir::element_start(t)) {
+            let d = match (dims.len(), crate::ir::element_start(t)) {
                 (1, Some(c)) => constant(&c),
-                _ => default_value(&crate::sema::heap_arrays::row(t)),
+                _ => default_value(&t.row()),
             };
             format!("::il_std::heap::from_fn({n}, |_| {d})")
         }
@@ -127,7 +127,7 @@ pub(super) fn array_init(t: &Ty, init: Option<&Init>, heap: bool) -> String {
                 start += n;
                 k += 1;
             }
-            let d = match crate::sema::ir::element_start(t) {
+            let d = match crate::ir::element_start(t) {
                 Some(c) => constant(&c),
                 None => default_value(elem),
             };

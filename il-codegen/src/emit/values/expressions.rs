@@ -60,7 +60,7 @@ impl PouEmitter<'_> {
                 }
             }
             Expr::CallUser(c) => {
-                let crate::sema::ir::UserCall {
+                let crate::ir::UserCall {
                     name,
                     args,
                     inouts,
@@ -87,7 +87,7 @@ impl PouEmitter<'_> {
                 format!("if {en} {{ {call} }} else {{ {eno_false} {d} }}")
             }
             Expr::CallStd(c) => {
-                let crate::sema::ir::StdFnCall {
+                let crate::ir::StdFnCall {
                     sig,
                     en,
                     call,

@@ -5,10 +5,10 @@
 use super::text::{join, str_lit, tail};
 use super::{PouEmitter, item_ident, local_ident, rust_ident, rust_ty};
 use crate::ast::Area;
-use crate::sema::ir::{
+use crate::ir::types::{Elem, Ty};
+use crate::ir::{
     BinOp, Const, Expr, Init, Loc, PathElem, Place, Root, StdCall, Storage, Value, Widen,
 };
-use crate::sema::types::{Elem, Ty};
 use il_std::FaultKind;
 
 mod calls;
