@@ -144,7 +144,7 @@ impl Machine {
         } = &**c;
         let mut ins = Vec::with_capacity(inputs.len());
         for (n, v) in inputs {
-            ins.push((n.clone(), self.value(f, v, ctx, line)?));
+            ins.push((n.index as usize, self.value(f, v, ctx, line)?));
         }
         // In-outs and the globals the block uses: copied in, and out after the call.
         let mut places: Vec<Place> = inouts.clone();
@@ -201,7 +201,7 @@ impl Machine {
         &mut self,
         f: &mut Frame,
         inst: &Place,
-        ins: Vec<(String, Value)>,
+        ins: Vec<(usize, Value)>,
         (refs, inouts_in_instance): (&[(String, &Place)], bool),
         ctx: &mut Cycle,
         line: u32,
@@ -218,18 +218,20 @@ impl Machine {
         };
         match &mut b {
             Value::StdFb(fb) => {
-                for (n, v) in &ins {
-                    if !fb.set(n, v) {
-                        return Err(format!("internal: cannot set input {n}"));
+                for (k, v) in &ins {
+                    if !fb.set_input(*k, v) {
+                        return Err(format!("internal: cannot set input {k}"));
                     }
                 }
                 fb.call(ctx);
             }
             Value::Fb(i) => {
-                for (n, v) in ins {
-                    let k = find_var(&self.prog.pous[i.pou], &n)
-                        .ok_or_else(|| format!("internal: no input {n}"))?;
-                    i.vars[k] = v;
+                for (k, v) in ins {
+                    let slot = i
+                        .vars
+                        .get_mut(k)
+                        .ok_or_else(|| format!("internal: no input {k}"))?;
+                    *slot = v;
                 }
                 // The in-outs are read with the inputs set: one bound to a
                 // member of the instance itself sees the input, so the

@@ -369,6 +369,22 @@ macro_rules! std_fbs {
                 }
             }
 
+            /// Set input `k` (in the order of il-std's table); false if there is no such
+            /// input or the value is of another kind.
+            pub fn set_input(&mut self, k: usize, v: &Value) -> bool {
+                match self {
+                    $(StdFb::$name(_b) => {
+                        // The fields in the table's order, counted.
+                        let mut _n = 0usize;
+                        $(if _n == k {
+                            return set(&mut _b.$i, v);
+                        }
+                        _n += 1;)*
+                        false
+                    })*
+                }
+            }
+
             /// Set an input (or output) by name (case-insensitive); false if there is no such
             /// field or the value is of another kind.
             pub fn set(&mut self, field: &str, v: &Value) -> bool {

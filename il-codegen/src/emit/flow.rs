@@ -583,7 +583,7 @@ impl PouEmitter<'_> {
                 {
                     let path = self.simple_path(inst);
                     let sets = inputs.iter().map(|(n, v)| {
-                        let f = super::rust_ident(n);
+                        let f = super::rust_ident(&n.name);
                         let v = self.value(v, line);
                         format!("{path}.{f} = {v};")
                     });
@@ -613,7 +613,7 @@ impl PouEmitter<'_> {
                 let sets: String = inputs
                     .iter()
                     .enumerate()
-                    .map(|(k, (n, _))| format!("__fb.{} = __in{k};", super::rust_ident(n)))
+                    .map(|(k, (n, _))| format!("__fb.{} = __in{k};", super::rust_ident(&n.name)))
                     .collect();
                 let call = self.with_fb(
                     inst,

@@ -57,8 +57,8 @@ pub struct StdFnCall {
 pub struct FbCall {
     /// The instance.
     pub inst: Place,
-    /// Inputs set before the call: (input name, value).
-    pub inputs: Vec<(String, Value)>,
+    /// Inputs set before the call, with their values.
+    pub inputs: Vec<(Member, Value)>,
     /// Outputs copied after the call: (output name, target, complemented,
     /// widened to the target's type).
     pub outputs: Vec<(String, Place, bool, Option<Widen>)>,
@@ -74,4 +74,16 @@ pub struct FbCall {
     pub externals: Vec<(String, bool)>,
     /// `CALC` / `CALCN`: call only when the condition holds.
     pub cond: Condition,
+}
+
+/// An input of a function block, as the checker resolved it: the name the
+/// emitter prints (the block's field) and the index a tool sets it by (the
+/// position among a standard block's inputs in il-std's table, or the
+/// index into the user FB's [`super::CheckedPou::vars`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Member {
+    /// As declared.
+    pub name: String,
+    /// As above.
+    pub index: u32,
 }

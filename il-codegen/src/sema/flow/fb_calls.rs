@@ -86,9 +86,10 @@ impl Walk<'_, '_> {
             );
             return cr;
         }
+        let input = self.input_member(&fb, name);
         self.push(Op::CallFb(Box::new(crate::sema::ir::FbCall {
             inst,
-            inputs: vec![(name, value)],
+            inputs: vec![(input, value)],
             outputs: Vec::new(),
             inouts: Vec::new(),
             inouts_in_instance: false,
@@ -96,6 +97,28 @@ impl Walk<'_, '_> {
             cond: None,
         })));
         cr
+    }
+
+    /// The input `name` (as declared) of FB type `fb` with its index: the
+    /// position among a standard block's inputs, or the user FB's variable.
+    pub(super) fn input_member(&self, fb: &str, name: String) -> ir::Member {
+        let index = match stdfb::lookup(fb) {
+            Some(s) => s
+                .inputs
+                .iter()
+                .position(|(n, _)| n.eq_ignore_ascii_case(&name)),
+            None => self
+                .env
+                .pou(fb)
+                .and_then(|sig| sig.var(&name))
+                .map(|(i, _)| i),
+        };
+        // Always found (the checker resolved the name); MAX would make a
+        // consumer's lookup fail loudly, never pick another input.
+        ir::Member {
+            index: index.map_or(u32::MAX, |i| i as u32),
+            name,
+        }
     }
 
     /// A user FB's VAR_IN_OUTs (name, type) and the names of its VAR_EXTERNALs

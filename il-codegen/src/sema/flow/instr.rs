@@ -417,6 +417,10 @@ impl Walk<'_, '_> {
                     })
                     .collect();
                 let inouts_in_instance = inouts.iter().any(|p: &Place| p.root == inst.root);
+                let inputs = inputs
+                    .into_iter()
+                    .map(|(n, v)| (self.input_member(&fb, n), v))
+                    .collect();
                 self.push(Op::CallFb(Box::new(crate::sema::ir::FbCall {
                     inouts_in_instance,
                     inst,
