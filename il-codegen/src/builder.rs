@@ -29,6 +29,8 @@ pub struct Builder {
     cargo_directives: Option<bool>,
     serde: bool,
     standard: crate::Standard,
+    /// [`Builder::encoding`]'s label, checked by `compile`.
+    encoding: Option<String>,
 }
 
 /// A failed build: every diagnostic of every file, rendered like rustc.
@@ -117,6 +119,17 @@ impl Builder {
         self
     }
 
+    /// The encoding of the sources that are not UTF-8: a WHATWG label such
+    /// as `"windows-1251"` (Cyrillic), `"windows-1250"`, `"iso-8859-15"`;
+    /// PLC IDEs on Windows export in the machine's code page. A file that is
+    /// valid UTF-8 (or has a byte order mark) is read as such all the same.
+    /// Without it such a file is read as Windows-1252 with a warning
+    /// (IL0039); an unknown label fails [`Builder::compile`].
+    pub fn encoding(mut self, label: impl Into<String>) -> Self {
+        self.encoding = Some(label.into());
+        self
+    }
+
     /// `strict(true)` is [`Builder::standard`]`(Standard::Iec2003)`;
     /// `strict(false)` the default, `Standard::Iec2013`.
     pub fn strict(self, on: bool) -> Self {
@@ -157,13 +170,19 @@ impl Builder {
         // that nothing already written is lost or replaced by half a program.
         let out_paths = output_paths(&out_dir, self.files.iter().map(|(p, _)| p.as_path()))
             .map_err(|rendered| Error { rendered })?;
+        let encoding = match &self.encoding {
+            Some(label) => crate::read::Encoding::from_label(label).map_err(|e| Error {
+                rendered: format!("error: {e}\n"),
+            })?,
+            None => crate::read::Encoding::default(),
+        };
         let mut sources = Vec::new();
         let mut failed = String::new();
         for (path, xml) in &self.files {
             if cargo {
                 println!("cargo:rerun-if-changed={}", path.display());
             }
-            match crate::read::read_source(path, &path.display().to_string()) {
+            match crate::read::read_source(path, &path.display().to_string(), encoding) {
                 Ok(file) => {
                     sources.push(if *xml {
                         Input::plcopen(file)

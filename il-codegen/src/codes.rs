@@ -6,8 +6,9 @@ pub use crate::diag::codes::CodeInfo;
 
 /// Every code of every stage, in the order of the stages.
 pub fn all() -> impl Iterator<Item = &'static CodeInfo> {
-    crate::syntax::CODES
+    crate::read::CODES
         .iter()
+        .chain(crate::syntax::CODES)
         .chain(crate::diag::codes::CODES)
         .chain(crate::sema::CODES)
         .chain(crate::plcopen::CODES)
