@@ -34,11 +34,11 @@ pub fn use_color(when: &str) -> bool {
 
 /// Read one source. `-` is standard input. The error names the path.
 /// (`il_codegen::read`: the same rules as the build script and `il!`.)
-pub fn read_source(path: &str) -> Result<SourceFile, String> {
+pub fn read_source(path: &str, encoding: il_codegen::read::Encoding) -> Result<SourceFile, String> {
     let read = if path == "-" {
-        il_codegen::read::read_stream(io::stdin().lock(), "<stdin>")
+        il_codegen::read::read_stream(io::stdin().lock(), "<stdin>", encoding)
     } else {
-        il_codegen::read::read_source(Path::new(path), path)
+        il_codegen::read::read_source(Path::new(path), path, encoding)
     };
     read.map_err(|e| e.to_string())
 }
@@ -59,7 +59,7 @@ pub fn run(
     let mut bar = crate::progress::Progress::new(progress, paths.len());
     for (k, path) in paths.iter().enumerate() {
         bar.reading(k + 1, err);
-        match read_source(path) {
+        match front.read(path) {
             Ok(f) => files.push(f),
             Err(msg) => {
                 bar.clear(err);
@@ -194,14 +194,14 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let p = dir.join("bom.il");
         std::fs::write(&p, "\u{feff}PROGRAM p\nEND_PROGRAM\n").unwrap();
-        let f = read_source(p.to_str().unwrap()).unwrap();
+        let f = read_source(p.to_str().unwrap(), Default::default()).unwrap();
         assert!(f.text.starts_with("PROGRAM"));
         let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]
     fn missing_file_names_the_path() {
-        let e = read_source("/nonexistent/dir/x.il").unwrap_err();
+        let e = read_source("/nonexistent/dir/x.il", Default::default()).unwrap_err();
         assert!(e.contains("`/nonexistent/dir/x.il`"), "{e}");
         assert!(e.contains("no such file"), "{e}");
     }

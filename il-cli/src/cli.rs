@@ -94,9 +94,30 @@ fn snippet_arg() -> Arg {
         )
 }
 
-/// How the sources become a program: `--std` and `--snippet`.
+/// `--encoding`: on every subcommand that reads files (`lsp` too).
+fn encoding_arg() -> Arg {
+    Arg::new("encoding")
+        .long("encoding")
+        .value_name("ENCODING")
+        .global(true)
+        .help("Encoding of the sources that are not UTF-8 (windows-1251, iso-8859-15 ...)")
+        .long_help(
+            "Encoding of the sources that are not UTF-8, a WHATWG label: `windows-1252` \
+             (Western Europe), `windows-1251` (Cyrillic), `windows-1250` (Central Europe), \
+             `iso-8859-15`, `koi8-r`, `shift_jis`, `gbk`, `utf-16le` ... PLC IDEs on Windows \
+             (CODESYS V2.3 `.EXP` exports) write the machine's code page. A file that is valid \
+             UTF-8, or has a byte order mark, is read as such all the same. Without it, a file \
+             that is not UTF-8 is read as Windows-1252 with a warning (IL0039)",
+        )
+        .value_parser(|s: &str| il_codegen::read::Encoding::from_label(s))
+}
+
+/// How the sources are read and become a program: `--encoding`, `--std`
+/// and `--snippet`.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Front {
+    /// `--encoding`: how files that are not UTF-8 are read.
+    pub encoding: il_codegen::read::Encoding,
     /// `--std`: the edition the program is checked against.
     pub standard: il_codegen::Standard,
     /// `--snippet`: each file is the body of a PROGRAM.
@@ -104,15 +125,24 @@ pub struct Front {
 }
 
 impl Front {
-    /// `--std` and `--snippet` as given.
+    /// `--encoding`, `--std` and `--snippet` as given.
     pub fn of(m: &clap::ArgMatches) -> Front {
         Front {
+            encoding: m
+                .get_one::<il_codegen::read::Encoding>("encoding")
+                .copied()
+                .unwrap_or_default(),
             standard: m
                 .get_one::<String>("std")
                 .and_then(|s| il_codegen::Standard::from_name(s))
                 .unwrap_or_default(),
             snippet: m.get_flag("snippet"),
         }
+    }
+
+    /// Read one source (`-`: standard input) in `--encoding`.
+    pub fn read(self, path: &str) -> Result<il_codegen::SourceFile, String> {
+        crate::check::read_source(path, self.encoding)
     }
 
     /// A program of `files`, each read as these options say.
@@ -141,6 +171,7 @@ pub fn command() -> Command {
         .after_long_help(EXAMPLES)
         .subcommand_required(true)
         .arg_required_else_help(true)
+        .arg(encoding_arg())
         .subcommand(
             Command::new("check")
                 .about("Parse and check IL files; print diagnostics")

@@ -8,8 +8,9 @@
 //! 2. UTF-16 without a mark when its start is ASCII with every other byte 0;
 //! 3. UTF-8 when it is valid UTF-8;
 //! 4. otherwise the [`Encoding`] the project names (`ilc --encoding`,
-//!    `Builder::encoding`, `il!(..., encoding = "...")`), or, when it names
-//!    none, Windows-1252 with a warning (IL0039) that says so.
+//!    `Builder::encoding`, `il!(..., encoding = "...")`), or the one an XML
+//!    declaration names (`<?xml ... encoding="ISO-8859-1"?>`), or, when
+//!    none is named, Windows-1252 with a warning (IL0039) that says so.
 //!
 //! A byte sequence that the chosen encoding does not define becomes U+FFFD
 //! and an error (IL0040) at its line and column; the first one is reported.
@@ -168,7 +169,7 @@ pub fn decode(name: &str, mut bytes: Vec<u8>, encoding: Encoding) -> SourceFile 
             bad
         }
     };
-    if let Some(enc) = encoding.0 {
+    if let Some(enc) = encoding.0.or_else(|| xml_declared(&bytes)) {
         return decode_in(name, &bytes, enc);
     }
     let mut file = decode_in(name, &bytes, WINDOWS_1252);
@@ -197,6 +198,22 @@ pub fn decode(name: &str, mut bytes: Vec<u8>, encoding: Encoding) -> SourceFile 
         .with_help("if the file is in another code page, name it: `--encoding windows-1251` (Cyrillic), `windows-1250` (Central European), `iso-8859-15` ..."),
     );
     file
+}
+
+/// The encoding an XML declaration names (`<?xml version="1.0"
+/// encoding="ISO-8859-1"?>`), for an XML file that is not UTF-8 and whose
+/// project names none: the file says what it is.
+fn xml_declared(bytes: &[u8]) -> Option<&'static encoding_rs::Encoding> {
+    let decl = bytes.strip_prefix(b"<?xml")?;
+    let decl = &decl[..decl.windows(2).position(|w| w == b"?>")?];
+    let at = decl.windows(8).position(|w| w == b"encoding")?;
+    let rest = decl[at + 8..]
+        .trim_ascii_start()
+        .strip_prefix(b"=")?
+        .trim_ascii_start();
+    let (&quote, rest) = rest.split_first()?;
+    let label = &rest[..rest.iter().position(|&b| b == quote)?];
+    encoding_rs::Encoding::for_label(label).filter(|&e| e != encoding_rs::REPLACEMENT)
 }
 
 /// `bytes` decoded in `enc`, an error (IL0040) at the first sequence that is
@@ -382,6 +399,17 @@ mod tests {
             Encoding::default(),
         );
         assert_eq!(codes(&f), [INVALID_BYTES]);
+    }
+
+    #[test]
+    fn an_xml_declaration_names_the_encoding_of_a_file_that_is_not_utf8() {
+        let xml = b"<?xml version=\"1.0\" encoding='ISO-8859-15'?>\n<project>\xA4</project>";
+        let f = decode("p.xml", xml.to_vec(), Encoding::default());
+        assert!(f.text.ends_with("<project>€</project>"), "{}", f.text);
+        assert!(f.read_diagnostics.is_empty());
+        // The project's setting comes first.
+        let f = decode("p.xml", xml.to_vec(), named("windows-1251"));
+        assert!(f.text.ends_with("<project>¤</project>"), "{}", f.text);
     }
 
     #[test]
