@@ -29,9 +29,9 @@ pub const MAX_SOURCE_BYTES: u64 = 256 << 20;
 
 crate::diag::codes::codes! {
     GUESSED_ENCODING = "IL0039", "a source that is not UTF-8, read as Windows-1252",
-        "The file is not UTF-8 text and the project names no encoding, so it was read as Windows-1252, the code page of Western European Windows, in which PLC IDEs such as CODESYS V2.3 export (`.EXP`). The warning points at the first byte that is not UTF-8.\n\n    (* Drehzahl erh\\xF6hen *)      <- byte 0xF6: `ö` in Windows-1252\n\nIf the file is in another code page (Russian comments read as Windows-1252 look like `Ïóñê íàñîñà`), name it: `ilc --encoding windows-1251 check x.exp`, `Builder::new().encoding(\"windows-1251\")` in build.rs, `il!(file = \"x.exp\", encoding = \"windows-1251\")`, or the language server's initialization option `{\"encoding\": \"windows-1251\"}`. Naming `windows-1252` silences the warning. Any WHATWG encoding label is accepted: `windows-1250` ... `windows-1258`, `iso-8859-2` ... `iso-8859-16`, `koi8-r`, `shift_jis`, `gbk`, `utf-16le`; `iso-8859-1` and `latin1` are read as Windows-1252, which extends them. A file that is valid UTF-8 is always read as UTF-8, and one with a byte order mark as the mark says.\n\nOr convert the file once: `iconv -f windows-1252 -t utf-8 x.exp > x.il`.";
+        "The file is not UTF-8 text and the project names no encoding, so it was read as Windows-1252, the code page of Western European Windows, in which PLC IDEs such as CODESYS V2.3 export (`.EXP`). The warning points at the first byte that is not UTF-8.\n\n    $ ilc check motor.exp\n    warning[IL0039]: `motor.exp` is not UTF-8; read as Windows-1252 (set the encoding with `--encoding`, `Builder::encoding` or `il!(…, encoding = …)`)\n     --> motor.exp:3:25\n      |\n    3 |     LD n (* Drehzahl erhöhen *)\n      |                         ^ byte 0xF6, read as `ö`\n\nIf the file is in another code page (Russian comments read as Windows-1252 look like `Ïóñê íàñîñà`), name it: `ilc --encoding windows-1251 check x.exp`, `Builder::new().encoding(\"windows-1251\")` in build.rs, `il!(file = \"x.exp\", encoding = \"windows-1251\")`, or the language server's initialization option `{\"encoding\": \"windows-1251\"}`. Naming `windows-1252` silences the warning. Any WHATWG encoding label is accepted: `windows-1250` ... `windows-1258`, `iso-8859-2` ... `iso-8859-16`, `koi8-r`, `shift_jis`, `gbk`, `utf-16le`; `iso-8859-1` and `latin1` are read as Windows-1252, which extends them. A file that is valid UTF-8 is always read as UTF-8, and one with a byte order mark as the mark says.\n\nOr convert the file once: `iconv -f windows-1252 -t utf-8 x.exp > x.il`.";
     INVALID_BYTES = "IL0040", "bytes that are not text in the source's encoding",
-        "The file holds a byte sequence that its encoding does not define: a file read as UTF-8 (it has a UTF-8 byte order mark, or the project names `utf-8`) with a byte that is no UTF-8, an odd byte or a lone surrogate in UTF-16, or a byte that the named code page leaves undefined (0xAA in Windows-1253). The error points at the first such sequence, which is read as U+FFFD (`\u{FFFD}`); nothing is generated.\n\n    $ ilc --encoding utf-8 check x.exp\n    error[IL0040]: `x.exp` is not valid utf-8: byte 0xF6 at line 2 is no text in it\n\nName the encoding the file is really in (`--encoding windows-1252`), or repair the bytes.";
+        "The file holds a byte sequence that its encoding does not define: a file read as UTF-8 (it has a UTF-8 byte order mark, or the project names `utf-8`) with a byte that is no UTF-8, an odd byte or a lone surrogate in UTF-16, or a byte that the named code page leaves undefined (0xAA in Windows-1253). The error points at the first such sequence, which is read as U+FFFD (`\u{FFFD}`); nothing is generated.\n\n    $ ilc --encoding utf-8 check x.exp\n    error[IL0040]: `x.exp` is not valid UTF-8: byte 0xF6 at line 2 is no text in it\n\nName the encoding the file is really in (`--encoding windows-1252`), or repair the bytes.";
 }
 
 /// Why a source file could not be read.
@@ -410,6 +410,18 @@ mod tests {
         // The project's setting comes first.
         let f = decode("p.xml", xml.to_vec(), named("windows-1251"));
         assert!(f.text.ends_with("<project>¤</project>"), "{}", f.text);
+    }
+
+    #[test]
+    fn windows_1252_reads_its_unassigned_bytes_as_c1_controls() {
+        // As the WHATWG standard says (the docs promise it): no error.
+        let f = decode(
+            "a.il",
+            b"\x81\x8D\x8F\x90\x9D\x80".to_vec(),
+            named("windows-1252"),
+        );
+        assert_eq!(f.text, "\u{81}\u{8D}\u{8F}\u{90}\u{9D}€");
+        assert!(f.read_diagnostics.is_empty());
     }
 
     #[test]

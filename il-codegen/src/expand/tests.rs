@@ -287,6 +287,10 @@ fn files_in_a_named_encoding() {
     assert_eq!(out.errors[0].1, 5, "the error is at the name");
     let out = call("utf-8");
     assert!(out.errors[0].0.contains("IL0040"), "{}", text(&out));
-    assert!(out.errors[0].0.contains("(at line 2, column 20)"), "{}", text(&out));
+    assert!(
+        out.errors[0].0.contains("(at line 2, column 20)"),
+        "{}",
+        text(&out)
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
