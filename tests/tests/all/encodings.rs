@@ -10,13 +10,17 @@ use il_tests::{encodings_build, encodings_macro};
 #[test]
 fn windows_1251_strings_through_build_rs_and_il() {
     let mut ctx = Cycle::new();
-    let mut b = encodings_build::Nasos::default();
-    b.pusk = true;
+    let mut b = encodings_build::Nasos {
+        pusk: true,
+        ..Default::default()
+    };
     b.call(&mut ctx);
     assert!(b.nasos);
     assert_eq!(b.soobshchenie.as_str(), Some("Насос"));
-    let mut m = encodings_macro::Nasos::default();
-    m.pusk = true;
+    let mut m = encodings_macro::Nasos {
+        pusk: true,
+        ..Default::default()
+    };
     m.call(&mut ctx);
     assert!(m.nasos);
     assert_eq!(m.soobshchenie.as_str(), Some("Насос"));
@@ -35,7 +39,10 @@ fn windows_1252_without_a_setting_through_il() {
 #[test]
 fn the_sources_are_not_utf8() {
     // What the tests above are about: the files hold the code pages' bytes.
-    for f in ["plc-encodings/nasos_1251.exp", "plc-encodings/anzeige_1252.exp"] {
+    for f in [
+        "plc-encodings/nasos_1251.exp",
+        "plc-encodings/anzeige_1252.exp",
+    ] {
         let bytes = std::fs::read(f).unwrap();
         assert!(std::str::from_utf8(&bytes).is_err(), "{f}");
     }
