@@ -104,7 +104,12 @@ impl Settings {
     pub fn update(&mut self, v: &serde_json::Value) -> Result<(), String> {
         let v = v.get("ilc").unwrap_or(v);
         let mut bad = Ok(());
-        if let Some(label) = v.get("encoding").and_then(serde_json::Value::as_str) {
+        // An empty name (an editor's unset setting) leaves the encoding as it is.
+        if let Some(label) = v
+            .get("encoding")
+            .and_then(serde_json::Value::as_str)
+            .filter(|l| !l.trim().is_empty())
+        {
             match il_codegen::read::Encoding::from_label(label) {
                 Ok(e) => self.encoding = e,
                 Err(e) => bad = Err(e),
