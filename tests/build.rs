@@ -57,6 +57,16 @@ fn main() {
         .compile()
         .unwrap_or_else(|e| panic!("\n{e}"));
 
+    // A CODESYS V2.3 export in Windows-1251 (Russian comments and a STRING
+    // literal): read in the encoding the build names.
+    println!("cargo:rerun-if-changed=plc-encodings");
+    il_codegen::Builder::new()
+        .file("plc-encodings/nasos_1251.exp")
+        .encoding("windows-1251")
+        .out_dir(out.join("encodings"))
+        .compile()
+        .unwrap_or_else(|e| panic!("\n{e}"));
+
     let corpus = Path::new("../../shared/corpus");
     let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));
     if corpus.join("beremiz_matiec_cmd_monitor_il.txt").exists() {

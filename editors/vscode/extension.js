@@ -21,9 +21,13 @@ function activate(context) {
     { run: server, debug: server },
     {
       documentSelector,
-      // Read by the server at start (`inlayHints.crType`) and sent again
+      // Read by the server at start (`inlayHints.crType`, `encoding`: how
+      // the workspace files that are not UTF-8 are read) and sent again
       // whenever the `ilc` settings change.
-      initializationOptions: { inlayHints: { crType: config.get("inlayHints.crType", true) } },
+      initializationOptions: {
+        inlayHints: { crType: config.get("inlayHints.crType", true) },
+        ...(config.get("encoding") ? { encoding: config.get("encoding") } : {}),
+      },
       synchronize: { configurationSection: "ilc" },
     },
   );

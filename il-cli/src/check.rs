@@ -47,7 +47,7 @@ pub fn run(
     let mut bar = crate::progress::Progress::new(progress, paths.len());
     for (k, path) in paths.iter().enumerate() {
         bar.reading(k + 1, err);
-        match crate::input::read_source(path) {
+        match front.read(path) {
             Ok(f) => files.push(f),
             Err(msg) => {
                 bar.clear(err);

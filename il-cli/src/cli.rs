@@ -2,7 +2,7 @@
 
 use clap::{Arg, ArgAction, Command, builder::PossibleValuesParser};
 
-use crate::input::{snippet_arg, std_arg};
+use crate::input::{encoding_arg, snippet_arg, std_arg};
 
 const ABOUT: &str = "Check IEC 61131-3 Instruction List (IL) sources and compile them to Rust";
 
@@ -23,6 +23,9 @@ Examples:
   cat a.il | ilc check -                 Read the source from standard input
   ilc run main.il --cycles 5 --watch q   Simulate 5 scans without compiling
   ilc check --snippet table51.il         A bare instruction list, no POU around it
+  ilc --encoding windows-1251 check x.exp
+                                         Read files that are not UTF-8 as Windows-1251
+                                         (without it: Windows-1252, with a warning)
   ilc explain IL0003                     What a diagnostic code means
   ilc lsp                                Serve an editor (Language Server Protocol on stdio)
 
@@ -58,7 +61,9 @@ Examples:
 The editor sends the IL (.il) and PLCopen (.xml) documents it opens, each read
 as XML when its text starts with `<` and as IL otherwise, whatever its name;
 the .il files of its workspace folders are read too, and all of them are checked as
-one program, as `ilc check a.il b.il` does. The server publishes the same
+one program, as `ilc check a.il b.il` does. Files read from disk that are not
+UTF-8 are decoded in `--encoding`, or in the initialization option
+`{\"encoding\": \"windows-1251\"}`. The server publishes the same
 diagnostics as `ilc check`, and answers hover (the CR type before and after
 an instruction, declarations, standard signatures), inlay hints (the CR type
 at the end of each instruction line; off with the client setting
@@ -74,6 +79,7 @@ pub fn command() -> Command {
         .after_long_help(EXAMPLES)
         .subcommand_required(true)
         .arg_required_else_help(true)
+        .arg(encoding_arg())
         .subcommand(
             Command::new("check")
                 .about("Parse and check IL files; print diagnostics")

@@ -39,7 +39,7 @@ pub fn run(
     let mut bar = crate::progress::Progress::new(progress, files.len());
     for (k, f) in files.iter().enumerate() {
         bar.reading(k + 1, err);
-        match crate::input::read_source(f) {
+        match front.read(f) {
             Ok(src) => sources.push(src),
             Err(e) => {
                 bar.clear(err);

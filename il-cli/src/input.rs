@@ -1,6 +1,6 @@
 //! What every command reads: its sources (a path, or `-` for standard
-//! input) and how they become a program (`--std` and `--snippet`: the
-//! arguments and their values).
+//! input) and how they are read and become a program (`--encoding`,
+//! `--std` and `--snippet`: the arguments and their values).
 
 use std::io;
 use std::path::Path;
@@ -10,11 +10,11 @@ use il_codegen::SourceFile;
 
 /// Read one source. `-` is standard input. The error names the path.
 /// (`il_codegen::read`: the same rules as the build script and `il!`.)
-pub fn read_source(path: &str) -> Result<SourceFile, String> {
+pub fn read_source(path: &str, encoding: il_codegen::read::Encoding) -> Result<SourceFile, String> {
     let read = if path == "-" {
-        il_codegen::read::read_stream(io::stdin().lock(), "<stdin>")
+        il_codegen::read::read_stream(io::stdin().lock(), "<stdin>", encoding)
     } else {
-        il_codegen::read::read_source(Path::new(path), path)
+        il_codegen::read::read_source(Path::new(path), path, encoding)
     };
     read.map_err(|e| e.to_string())
 }
@@ -50,9 +50,30 @@ pub fn snippet_arg() -> Arg {
         )
 }
 
-/// How the sources become a program: `--std` and `--snippet`.
+/// `--encoding`: on every subcommand that reads files (`lsp` too).
+pub fn encoding_arg() -> Arg {
+    Arg::new("encoding")
+        .long("encoding")
+        .value_name("ENCODING")
+        .global(true)
+        .help("Encoding of the sources that are not UTF-8 (windows-1251, iso-8859-15 ...)")
+        .long_help(
+            "Encoding of the sources that are not UTF-8, a WHATWG label: `windows-1252` \
+             (Western Europe), `windows-1251` (Cyrillic), `windows-1250` (Central Europe), \
+             `iso-8859-15`, `koi8-r`, `shift_jis`, `gbk`, `utf-16le` ... PLC IDEs on Windows \
+             (CODESYS V2.3 `.EXP` exports) write the machine's code page. A file that is valid \
+             UTF-8, or has a byte order mark, is read as such all the same. Without it, a file \
+             that is not UTF-8 is read as Windows-1252 with a warning (IL0039)",
+        )
+        .value_parser(|s: &str| il_codegen::read::Encoding::from_label(s))
+}
+
+/// How the sources are read and become a program: `--encoding`, `--std`
+/// and `--snippet`.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Front {
+    /// `--encoding`: how files that are not UTF-8 are read.
+    pub encoding: il_codegen::read::Encoding,
     /// `--std`: the edition the program is checked against.
     pub standard: il_codegen::Standard,
     /// `--snippet`: each file is the body of a PROGRAM.
@@ -60,15 +81,24 @@ pub struct Front {
 }
 
 impl Front {
-    /// `--std` and `--snippet` as given.
+    /// `--encoding`, `--std` and `--snippet` as given.
     pub fn of(m: &clap::ArgMatches) -> Front {
         Front {
+            encoding: m
+                .get_one::<il_codegen::read::Encoding>("encoding")
+                .copied()
+                .unwrap_or_default(),
             standard: m
                 .get_one::<String>("std")
                 .and_then(|s| il_codegen::Standard::from_name(s))
                 .unwrap_or_default(),
             snippet: m.get_flag("snippet"),
         }
+    }
+
+    /// Read one source (`-`: standard input) in `--encoding`.
+    pub fn read(self, path: &str) -> Result<il_codegen::SourceFile, String> {
+        read_source(path, self.encoding)
     }
 
     /// A program of `files`, each read as these options say.
@@ -98,14 +128,14 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let p = dir.join("bom.il");
         std::fs::write(&p, "\u{feff}PROGRAM p\nEND_PROGRAM\n").unwrap();
-        let f = read_source(p.to_str().unwrap()).unwrap();
+        let f = read_source(p.to_str().unwrap(), Default::default()).unwrap();
         assert!(f.text.starts_with("PROGRAM"));
         let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]
     fn missing_file_names_the_path() {
-        let e = read_source("/nonexistent/dir/x.il").unwrap_err();
+        let e = read_source("/nonexistent/dir/x.il", Default::default()).unwrap_err();
         assert!(e.contains("`/nonexistent/dir/x.il`"), "{e}");
         assert!(e.contains("no such file"), "{e}");
     }

@@ -103,7 +103,11 @@ fn main() -> ExitCode {
             let code = run::run(&opts, &mut io::stdout().lock(), &mut io::stderr().lock());
             ExitCode::from(code)
         }
-        Some(("lsp", _)) => ExitCode::from(lsp::run()),
+        Some(("lsp", m)) => ExitCode::from(lsp::run(
+            m.get_one::<il_codegen::read::Encoding>("encoding")
+                .copied()
+                .unwrap_or_default(),
+        )),
         Some(("explain", m)) => {
             let code = m.get_one::<String>("code").map_or("", String::as_str);
             match il_codegen::codes::lookup(code) {

@@ -156,7 +156,7 @@ pub fn run(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> u8 {
 fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), String> {
     // An XML file (by its text or a `.xml` name) is a PLCopen project: its
     // IL POUs are run.
-    let program = o.front.program(vec![crate::input::read_source(&o.file)?]);
+    let program = o.front.program(vec![o.front.read(&o.file)?]);
     let checked = program.check();
     let _ = write!(err, "{}", checked.render(o.color));
     let Some([prog]) = checked.ir() else {

@@ -29,6 +29,8 @@ pub struct Builder {
     cargo_directives: Option<bool>,
     serde: bool,
     standard: crate::Standard,
+    /// [`Builder::encoding`]'s label, checked by `compile`.
+    encoding: Option<String>,
 }
 
 /// A failed build: every diagnostic of every file, rendered like rustc.
@@ -117,6 +119,17 @@ impl Builder {
         self
     }
 
+    /// The encoding of the sources that are not UTF-8: a WHATWG label such
+    /// as `"windows-1251"` (Cyrillic), `"windows-1250"`, `"iso-8859-15"`;
+    /// PLC IDEs on Windows export in the machine's code page. A file that is
+    /// valid UTF-8 (or has a byte order mark) is read as such all the same.
+    /// Without it such a file is read as Windows-1252 with a warning
+    /// (IL0039); an unknown label fails [`Builder::compile`].
+    pub fn encoding(mut self, label: impl Into<String>) -> Self {
+        self.encoding = Some(label.into());
+        self
+    }
+
     /// `strict(true)` is [`Builder::standard`]`(Standard::Iec2003)`;
     /// `strict(false)` the default, `Standard::Iec2013`.
     pub fn strict(self, on: bool) -> Self {
@@ -157,13 +170,19 @@ impl Builder {
         // that nothing already written is lost or replaced by half a program.
         let out_paths = output_paths(&out_dir, self.files.iter().map(|(p, _)| p.as_path()))
             .map_err(|rendered| Error { rendered })?;
+        let encoding = match &self.encoding {
+            Some(label) => crate::read::Encoding::from_label(label).map_err(|e| Error {
+                rendered: format!("error: {e}\n"),
+            })?,
+            None => crate::read::Encoding::default(),
+        };
         let mut sources = Vec::new();
         let mut failed = String::new();
         for (path, xml) in &self.files {
             if cargo {
                 println!("cargo:rerun-if-changed={}", path.display());
             }
-            match crate::read::read_source(path, &path.display().to_string()) {
+            match crate::read::read_source(path, &path.display().to_string(), encoding) {
                 Ok(file) => {
                     sources.push(if *xml {
                         Input::plcopen(file)
@@ -412,31 +431,41 @@ mod tests {
     }
 
     #[test]
-    fn unreadable_text_names_its_position_and_encoding() {
+    fn text_in_other_encodings_is_read_and_bad_bytes_are_located() {
         let dir = std::env::temp_dir().join(format!("il-builder-enc-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let latin1 = dir.join("latin1.il");
         std::fs::write(&latin1, b"PROGRAM p\n(* Gr\xF6\xDFe *)\nEND_PROGRAM\n").unwrap();
         let utf16 = dir.join("utf16.il");
         let mut bytes = vec![0xFF, 0xFE];
-        bytes.extend("PROGRAM p\n".encode_utf16().flat_map(u16::to_le_bytes));
+        bytes.extend(
+            "PROGRAM q\n(* Größe *)\nEND_PROGRAM\n"
+                .encode_utf16()
+                .flat_map(u16::to_le_bytes),
+        );
         std::fs::write(&utf16, bytes).unwrap();
-        for (file, want) in [
-            (&latin1, "invalid byte 0xF6 at line 2, byte 6 of the line"),
-            (
-                &utf16,
-                "UTF-16 text (little-endian, with a byte order mark)",
-            ),
-        ] {
-            let e = Builder::new()
+        // Windows-1252 (guessed) and UTF-16 (by its byte order mark).
+        for file in [&latin1, &utf16] {
+            let out = Builder::new()
                 .file(file)
                 .out_dir(&dir)
                 .cargo_directives(false)
                 .compile()
-                .unwrap_err();
-            assert!(e.to_string().contains(want), "{e}");
-            assert!(e.to_string().contains(&file.display().to_string()), "{e}");
+                .unwrap();
+            let rs = std::fs::read_to_string(&out[0]).unwrap();
+            assert!(rs.contains("pub struct"), "{rs}");
         }
+        // Named UTF-8, the bad byte is an error at its line and column.
+        let e = Builder::new()
+            .file(&latin1)
+            .out_dir(&dir)
+            .cargo_directives(false)
+            .encoding("utf-8")
+            .compile()
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("error[IL0040]"), "{e}");
+        assert!(e.contains(&format!("{}:2:6", latin1.display())), "{e}");
         let _ = std::fs::remove_dir_all(&dir);
     }
 

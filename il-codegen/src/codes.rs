@@ -6,8 +6,10 @@ pub use crate::diag::codes::CodeInfo;
 
 /// Every code of every stage, in the order of the stages.
 pub fn all() -> impl Iterator<Item = &'static CodeInfo> {
+    // Reading's codes follow the syntax codes they are numbered after.
     crate::syntax::CODES
         .iter()
+        .chain(crate::read::CODES)
         .chain(crate::diag::codes::CODES)
         .chain(crate::sema::CODES)
         .chain(crate::plcopen::CODES)

@@ -37,6 +37,11 @@
 //! - `, serde` after the input derives `serde::Serialize` and `Deserialize`
 //!   on the generated types (the crate depends on `serde` and enables
 //!   `il-std`'s `serde` feature).
+//! - `, encoding = "windows-1251"`: the encoding of the files that are not
+//!   UTF-8 (a WHATWG label: `windows-1252`, `windows-1250`, `iso-8859-15`
+//!   ...), as PLC IDEs on Windows export them. Without it such a file is
+//!   read as Windows-1252 (the warning the other front ends show, IL0039,
+//!   is not shown here). An unknown label is an error at it.
 //!
 //! # One program per call
 //! Each `il!` is a program of its own: its POUs see the TYPEs and

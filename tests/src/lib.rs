@@ -57,6 +57,22 @@ pub mod host_macro {
     il_macros::il!(file = "plc-host/host.il");
 }
 
+/// `plc-encodings`: CODESYS V2.3 exports in Windows code pages, through
+/// build.rs (`Builder::encoding`) and `il!(..., encoding = ...)`; the
+/// Windows-1252 one without a setting (read as Windows-1252 by default).
+pub mod encodings_build {
+    include!(concat!(env!("OUT_DIR"), "/encodings/nasos_1251.rs"));
+}
+
+/// The same through `il!`.
+pub mod encodings_macro {
+    il_macros::il!(
+        file = "plc-encodings/nasos_1251.exp",
+        encoding = "windows-1251"
+    );
+    il_macros::il!(file = "plc-encodings/anzeige_1252.exp");
+}
+
 /// The tank controller of the new-user test (`new-user/plc`): two files,
 /// one program, through one `il!(files = [...])`.
 pub mod tank_macro {

@@ -36,9 +36,11 @@ type Fallible<T> = Result<T, Box<dyn Error + Send + Sync>>;
 
 /// Serve on stdin/stdout until the client says `exit`. Returns the exit
 /// status (0 after `shutdown` then `exit`).
-pub fn run() -> u8 {
+/// `encoding`: `ilc --encoding`, which the client's initialization option
+/// `encoding` overrides.
+pub fn run(encoding: il_codegen::read::Encoding) -> u8 {
     let (conn, io) = Connection::stdio();
-    let status = match serve(&conn) {
+    let status = match serve(&conn, encoding) {
         Ok(()) => 0,
         Err(e) => {
             eprintln!("ilc lsp: {e}");
@@ -74,11 +76,15 @@ fn capabilities() -> ServerCapabilities {
     }
 }
 
-fn serve(conn: &Connection) -> Fallible<()> {
+fn serve(conn: &Connection, encoding: il_codegen::read::Encoding) -> Fallible<()> {
     let init = conn.initialize(serde_json::to_value(capabilities())?)?;
     let mut ws = Workspace::default();
-    if let Some(opts) = init.get("initializationOptions") {
-        ws.settings.update(opts);
+    ws.settings.encoding = encoding;
+    if let Some(opts) = init.get("initializationOptions")
+        && let Err(e) = ws.settings.update(opts)
+    {
+        // The editor shows the server's stderr in its log.
+        eprintln!("ilc lsp: initializationOptions: {e}");
     }
     ws.settings.hint_refresh = init
         .pointer("/capabilities/workspace/inlayHint/refreshSupport")
@@ -236,7 +242,9 @@ fn notification(conn: &Connection, ws: &mut Workspace, n: Notification) -> Falli
             let p: lsp_types::DidChangeConfigurationParams =
                 n.extract(note::DidChangeConfiguration::METHOD)?;
             let was = ws.settings.cr_type_hints;
-            ws.settings.update(&p.settings);
+            if let Err(e) = ws.settings.update(&p.settings) {
+                eprintln!("ilc lsp: settings: {e}");
+            }
             if ws.settings.hint_refresh && was != ws.settings.cr_type_hints {
                 // The client's answer is ignored (see `serve`).
                 conn.sender.send(Message::Request(Request::new(

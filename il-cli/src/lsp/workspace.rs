@@ -27,6 +27,9 @@ pub struct Doc {
     pub open: bool,
     /// Found in a workspace folder (kept when the editor closes it).
     pub on_disk: bool,
+    /// What reading the text from disk reported (an encoding guessed, bad
+    /// bytes); none for the editor's text, which comes as UTF-8.
+    pub read_diagnostics: Vec<il_codegen::diag::Diagnostic>,
 }
 
 /// The result of one check of every document.
@@ -79,6 +82,9 @@ pub struct Settings {
     pub cr_type_hints: bool,
     /// The client re-asks for inlay hints when told (`workspace/inlayHint/refresh`).
     pub hint_refresh: bool,
+    /// How the files read from disk that are not UTF-8 are decoded
+    /// (`ilc --encoding`, or the option `{"encoding": "windows-1251"}`).
+    pub encoding: il_codegen::read::Encoding,
 }
 
 impl Default for Settings {
@@ -86,15 +92,29 @@ impl Default for Settings {
         Settings {
             cr_type_hints: true,
             hint_refresh: false,
+            encoding: Default::default(),
         }
     }
 }
 
 impl Settings {
-    /// Read `{"inlayHints": {"crType": false}}`, also under an `ilc` key
-    /// (as VS Code sends its configuration section).
-    pub fn update(&mut self, v: &serde_json::Value) {
+    /// Read `{"inlayHints": {"crType": false}, "encoding": "windows-1251"}`,
+    /// also under an `ilc` key (as VS Code sends its configuration section).
+    /// An unknown encoding is kept out, with the reason (for the log).
+    pub fn update(&mut self, v: &serde_json::Value) -> Result<(), String> {
         let v = v.get("ilc").unwrap_or(v);
+        let mut bad = Ok(());
+        // An empty name (an editor's unset setting) leaves the encoding as it is.
+        if let Some(label) = v
+            .get("encoding")
+            .and_then(serde_json::Value::as_str)
+            .filter(|l| !l.trim().is_empty())
+        {
+            match il_codegen::read::Encoding::from_label(label) {
+                Ok(e) => self.encoding = e,
+                Err(e) => bad = Err(e),
+            }
+        }
         if let Some(b) = v
             .pointer("/inlayHints/crType")
             .or_else(|| v.get("inlayHints.crType"))
@@ -102,6 +122,7 @@ impl Settings {
         {
             self.cr_type_hints = b;
         }
+        bad
     }
 }
 
@@ -183,9 +204,11 @@ impl Workspace {
                     && self.docs.len() < MAX_FILES
                     && let Some(uri) = path_to_uri(&p)
                     && self.doc(&uri).is_none()
-                    && let Ok(f) = crate::input::read_source(&p.to_string_lossy())
+                    && let Ok(f) =
+                        crate::input::read_source(&p.to_string_lossy(), self.settings.encoding)
                 {
-                    self.insert(uri, f.text, false, true);
+                    let k = self.insert(uri, f.text, false, true);
+                    self.docs[k].read_diagnostics = f.read_diagnostics;
                 }
             }
         }
@@ -201,6 +224,7 @@ impl Workspace {
             text,
             open,
             on_disk,
+            read_diagnostics: Vec::new(),
         });
         k
     }
@@ -217,6 +241,7 @@ impl Workspace {
                 }
                 self.docs[k].text = text;
                 self.docs[k].open = true;
+                self.docs[k].read_diagnostics.clear();
             }
             None => {
                 self.insert(uri, text, true, false);
@@ -226,7 +251,10 @@ impl Workspace {
 
     pub fn change(&mut self, uri: &Uri, text: String) {
         match self.doc(uri) {
-            Some(k) => self.docs[k].text = text,
+            Some(k) => {
+                self.docs[k].text = text;
+                self.docs[k].read_diagnostics.clear();
+            }
             None => {
                 self.insert(uri.clone(), text, true, false);
             }
@@ -240,8 +268,9 @@ impl Workspace {
         let k = self.doc(uri)?;
         if self.docs[k].on_disk {
             self.docs[k].open = false;
-            if let Ok(f) = crate::input::read_source(&self.docs[k].name) {
+            if let Ok(f) = crate::input::read_source(&self.docs[k].name, self.settings.encoding) {
                 self.docs[k].text = f.text;
+                self.docs[k].read_diagnostics = f.read_diagnostics;
             }
             return None;
         }
@@ -271,7 +300,9 @@ impl Workspace {
                     .iter()
                     .fold(Program::new().cr_steps(true).resolutions(true), |p, &k| {
                         let d = &self.docs[k];
-                        p.source(SourceFile::new(d.name.clone(), d.text.clone()))
+                        let mut f = SourceFile::new(d.name.clone(), d.text.clone());
+                        f.read_diagnostics.clone_from(&d.read_diagnostics);
+                        p.source(f)
                     });
             let checked = program.check();
             for (&k, ds) in group.iter().zip(checked.diagnostics()) {

@@ -100,8 +100,12 @@ fn source_text(marker: &Marker) -> Result<String, String> {
         Marker::Emitted(paths) => {
             let mut program = il_codegen::Program::new();
             for path in paths {
-                let file = il_codegen::read::read_source(&workspace().join(path), path)
-                    .map_err(|e| e.to_string())?;
+                let file = il_codegen::read::read_source(
+                    &workspace().join(path),
+                    path,
+                    Default::default(),
+                )
+                .map_err(|e| e.to_string())?;
                 program = program.source(file);
             }
             let checked = program.check();

@@ -683,3 +683,32 @@ fn hover_on_a_standard_function() {
     c.finish();
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A workspace file in Windows-1251 (Russian comments): read as
+/// Windows-1252 with a warning when no encoding is set, as Windows-1251
+/// without one when the initialization option names it.
+#[test]
+fn workspace_files_are_read_in_the_encoding_of_the_options() {
+    let src: &[u8] = b"(* \xCF\xF3\xF1\xEA *)\nPROGRAM Nasos\nVAR pusk : BOOL; END_VAR\n    LD pusk\n    ST pusk\nEND_PROGRAM\n";
+    for (options, warned) in [
+        (json!({}), true),
+        (json!({"encoding": "windows-1251"}), false),
+    ] {
+        let dir = temp_dir(if warned { "enc-guess" } else { "enc-1251" });
+        std::fs::write(dir.join("nasos.il"), src).unwrap();
+        let nasos = uri(&dir.join("nasos.il"));
+        let mut c = Client::start(&[]);
+        c.initialize(&dir, options);
+        let d = c.diagnostics_for(&nasos);
+        if warned {
+            assert_eq!(d.len(), 1, "{d:?}");
+            assert_eq!(d[0]["code"], "IL0039");
+            assert_eq!(d[0]["severity"], 2);
+            assert_eq!(d[0]["range"]["start"], json!({"line": 0, "character": 3}));
+        } else {
+            assert_eq!(d, Vec::<Value>::new());
+        }
+        c.finish();
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}

@@ -6,6 +6,7 @@ mod cli;
 mod corpus;
 mod dialect;
 mod docs;
+mod encodings;
 mod explain;
 mod lsp;
 mod plcopen;

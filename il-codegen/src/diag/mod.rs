@@ -51,6 +51,11 @@ pub struct SourceFile {
     /// is then counted from the nearest block, not from the line start, so
     /// many diagnostics on one long line stay linear in total.
     block_chars: Vec<u32>,
+    /// What reading the file from its bytes reported ([`crate::read`]: an
+    /// encoding guessed, bytes invalid in its encoding), in positions of
+    /// `text`: the pipeline adds them to the file's diagnostics, so every
+    /// front end shows them with the rest.
+    pub read_diagnostics: Vec<Diagnostic>,
 }
 
 /// Bytes per entry of [`SourceFile::block_chars`].
@@ -90,6 +95,7 @@ impl SourceFile {
             text,
             line_starts,
             block_chars,
+            read_diagnostics: Vec::new(),
         }
     }
 

@@ -75,11 +75,14 @@ pub(super) enum Input {
     Files(Vec<Lit>),
 }
 
-/// What may follow the IL: `, serde` and `, std = "iec2003"`.
+/// What may follow the IL: `, serde`, `, std = "iec2003"` and
+/// `, encoding = "windows-1251"`.
 #[derive(Clone, Copy, Default)]
 pub(super) struct Flags {
     pub serde: bool,
     pub standard: Standard,
+    /// The encoding of files that are not UTF-8.
+    pub encoding: crate::read::Encoding,
 }
 
 /// Why the input is refused, and where.
@@ -88,7 +91,7 @@ pub(super) struct Refusal {
     pub span: SpanId,
 }
 
-pub(super) const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or files relative to the crate, `il!(file = \"plc/motor.il\")` or `il!(files = [\"plc/types.il\", \"plc/tank.il\"])` (one program: a POU may use the TYPEs and FBs of every file), optionally followed by `, serde` and `, std = \"iec2003\"`";
+pub(super) const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or files relative to the crate, `il!(file = \"plc/motor.il\")` or `il!(files = [\"plc/types.il\", \"plc/tank.il\"])` (one program: a POU may use the TYPEs and FBs of every file), optionally followed by `, serde`, `, std = \"iec2003\"` and (for files that are not UTF-8) `, encoding = \"windows-1251\"`";
 
 fn usage(span: SpanId) -> Refusal {
     Refusal {
@@ -206,7 +209,8 @@ fn file_list(c: &mut Cursor, kw: SpanId) -> Result<Vec<Lit>, Refusal> {
     Ok(lits)
 }
 
-/// `, serde`, `, std = "iec2003"`, in any order, a trailing comma allowed.
+/// `, serde`, `, std = "iec2003"`, `, encoding = "windows-1251"`, in any
+/// order, a trailing comma allowed.
 fn flags(c: &mut Cursor) -> Result<Flags, Refusal> {
     let mut flags = Flags::default();
     while !c.done() {
@@ -224,6 +228,15 @@ fn flags(c: &mut Cursor) -> Result<Flags, Refusal> {
                     ),
                     span: name.span,
                 })?;
+            }
+            Some(Tok::Ident(f, _)) if f == "encoding" => {
+                c.punct('=')?;
+                let name = c.string()?;
+                flags.encoding =
+                    crate::read::Encoding::from_label(&name.value).map_err(|msg| Refusal {
+                        msg,
+                        span: name.span,
+                    })?;
             }
             Some(t) => return Err(usage(t.span())),
         }

@@ -96,7 +96,7 @@ fn expand_inner(tokens: &[Tok]) -> Expansion {
             let mut unreadable = Expansion::default();
             for lit in lits {
                 let path = base.join(&lit.value);
-                match crate::read::read_source(&path, &lit.value) {
+                match crate::read::read_source(&path, &lit.value, flags.encoding) {
                     Ok(file) => {
                         // include_bytes! makes cargo rebuild when the file changes.
                         let abs = path.display().to_string();

@@ -235,3 +235,62 @@ fn a_file_is_xml_by_its_text() {
         }
     }
 }
+
+/// `encoding = "..."` reads a file that is not UTF-8 in that encoding; an
+/// unknown name is refused at its literal, and bytes invalid in the named
+/// encoding are an error with the IL line and column.
+#[test]
+fn files_in_a_named_encoding() {
+    let dir = std::env::temp_dir().join(format!("il-expand-enc-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("nasos.exp");
+    // "Пуск" in Windows-1251, in a comment and a STRING literal.
+    std::fs::write(
+        &path,
+        b"PROGRAM Nasos\nVAR t : STRING := '\xCF\xF3\xF1\xEA'; END_VAR\n    LD t (* \xCF\xF3\xF1\xEA *)\n    ST t\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let file = path.display().to_string();
+    let call = |enc: &str| {
+        expand(&[
+            id("file"),
+            p('='),
+            s(&file),
+            p(','),
+            id("encoding"),
+            p('='),
+            Tok::string(enc, 5),
+        ])
+    };
+    let out = call("windows-1251");
+    assert!(out.errors.is_empty(), "{}", text(&out));
+    assert!(
+        out.code.contains(r#"from_str_truncating("Пуск")"#),
+        "{}",
+        out.code
+    );
+    // Without a name it is read as Windows-1252 (il! shows no warnings).
+    let out = expand(&[id("file"), p('='), s(&file)]);
+    assert!(out.errors.is_empty(), "{}", text(&out));
+    assert!(
+        out.code.contains(r#"from_str_truncating("Ïóñê")"#),
+        "{}",
+        out.code
+    );
+    let out = call("cp-1251");
+    assert_eq!(out.errors.len(), 1, "{}", text(&out));
+    assert!(
+        out.errors[0].0.starts_with("unknown encoding `cp-1251`"),
+        "{}",
+        text(&out)
+    );
+    assert_eq!(out.errors[0].1, 5, "the error is at the name");
+    let out = call("utf-8");
+    assert!(out.errors[0].0.contains("IL0040"), "{}", text(&out));
+    assert!(
+        out.errors[0].0.contains("(at line 2, column 20)"),
+        "{}",
+        text(&out)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -84,6 +84,7 @@ impl Input {
             }
             Input::Snippet(s) => s.finish(diags),
         };
+        out.extend(self.source().read_diagnostics.iter().cloned());
         out.sort_by_key(|d| (d.span.lo, d.span.hi));
         crate::diag::limit(&mut out);
         out

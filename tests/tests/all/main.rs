@@ -13,6 +13,7 @@ mod dialect;
 mod differential;
 mod edge_cases;
 mod edges_strings;
+mod encodings;
 mod fb_calls;
 mod functions;
 mod fuzz_replay;
