@@ -9,7 +9,7 @@
 //! dividend's sign).
 
 use super::types::Ty;
-use super::{Program, Storage, TypeDef, Var};
+use super::{BinOp, Program, Storage, TypeDef, Var};
 
 /// A parsed path: its first name and the steps after it.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -31,6 +31,21 @@ pub enum PathPart {
 
 fn is_ident(c: char) -> bool {
     c.is_ascii_alphanumeric() || c == '_'
+}
+
+/// `a op b` of a constant subscript (`+ - * / MOD`), exactly: division
+/// truncates toward zero and MOD takes the dividend's sign. `None` on
+/// overflow or a zero divisor. The one rule for the checker's folding of
+/// literal subscripts, configuration paths and host paths alike.
+pub fn fold(op: BinOp, a: i128, b: i128) -> Option<i128> {
+    match op {
+        BinOp::Add => a.checked_add(b),
+        BinOp::Sub => a.checked_sub(b),
+        BinOp::Mul => a.checked_mul(b),
+        BinOp::Div => a.checked_div(b),
+        BinOp::Mod => a.checked_rem(b),
+        _ => None,
+    }
 }
 
 /// Parse `a.b[1, 2 + k].c`-style text (no direct addresses: the caller
@@ -275,12 +290,8 @@ impl Parser {
         while let Some(Tok::Op(c @ ('+' | '-'))) = self.peek().cloned() {
             self.at += 1;
             let r = self.term()?;
-            v = if c == '+' {
-                v.checked_add(r)
-            } else {
-                v.checked_sub(r)
-            }
-            .ok_or("overflows")?;
+            let op = if c == '+' { BinOp::Add } else { BinOp::Sub };
+            v = fold(op, v, r).ok_or("overflows")?;
         }
         Ok(v)
     }
@@ -289,21 +300,17 @@ impl Parser {
         let mut v = self.unary()?;
         loop {
             let op = match self.peek() {
-                Some(Tok::Op(c @ ('*' | '/'))) => *c,
-                Some(Tok::Mod) => '%',
+                Some(Tok::Op('*')) => BinOp::Mul,
+                Some(Tok::Op('/')) => BinOp::Div,
+                Some(Tok::Mod) => BinOp::Mod,
                 _ => return Ok(v),
             };
             self.at += 1;
             let r = self.unary()?;
-            if r == 0 && op != '*' {
+            if r == 0 && op != BinOp::Mul {
                 return Err("divides by zero".into());
             }
-            v = match op {
-                '*' => v.checked_mul(r),
-                '/' => v.checked_div(r),
-                _ => v.checked_rem(r),
-            }
-            .ok_or("overflows")?;
+            v = fold(op, v, r).ok_or("overflows")?;
         }
     }
 

@@ -507,13 +507,7 @@ fn constant_subscript(cx: &mut Cx, s: &Subscript) -> Option<(i128, Span)> {
                 cx.err(BAD_INDEX, *span, "the subscript divides by zero");
                 return None;
             }
-            let v = match op {
-                ExprOp::Add => l.checked_add(r),
-                ExprOp::Sub => l.checked_sub(r),
-                ExprOp::Mul => l.checked_mul(r),
-                ExprOp::Div => l.checked_div(r),
-                _ => l.checked_rem(r),
-            };
+            let v = crate::ir::path::fold(*op, l, r);
             let Some(v) = v.filter(|v| i64::try_from(*v).is_ok()) else {
                 cx.err(BAD_INDEX, *span, "the subscript overflows LINT");
                 return None;

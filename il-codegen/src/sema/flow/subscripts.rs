@@ -99,7 +99,8 @@ impl Walk<'_, '_> {
                 }
                 match (l, r) {
                     (Sub::Lit(a, _), Sub::Lit(b, _)) => {
-                        let n = fold(*op, a, b).filter(|n| i64::try_from(*n).is_ok());
+                        let n =
+                            crate::ir::path::fold(*op, a, b).filter(|n| i64::try_from(*n).is_ok());
                         let Some(n) = n else {
                             self.err(BAD_INDEX, *span, "the subscript overflows LINT");
                             return None;
@@ -153,18 +154,6 @@ impl Walk<'_, '_> {
                 None
             }
         }
-    }
-}
-
-/// `a op b` of literals, exactly (`None`: overflow).
-fn fold(op: BinOp, a: i128, b: i128) -> Option<i128> {
-    match op {
-        BinOp::Add => a.checked_add(b),
-        BinOp::Sub => a.checked_sub(b),
-        BinOp::Mul => a.checked_mul(b),
-        // Truncating toward zero; MOD takes the dividend's sign (as i128's).
-        BinOp::Div => a.checked_div(b),
-        _ => a.checked_rem(b),
     }
 }
 
