@@ -2,46 +2,58 @@
 //! (S1, CLK, PT ...), in-outs and the externals an instance passes down.
 
 use super::*;
+use crate::sema::types::Name;
 
 impl Walk<'_, '_> {
     /// If the operand is an FB instance (a variable, a member or an array
-    /// element: `ctr`, `line.t1`, `cnt[i]`) of a standard block that has
-    /// the input `input`, its place: then `S`/`R`/`LD` are that block's
-    /// input operators (Table 54), not the BOOL or load instructions.
-    pub(super) fn fb_operand(&mut self, o: &Operand, input: &str) -> Option<Place> {
+    /// element: `ctr`, `line.t1`, `cnt[i]`), its block type, and its place
+    /// when that is a standard block with the input `input`: then
+    /// `S`/`R`/`LD` are that block's input operators (Table 54), not the
+    /// BOOL or load instructions.
+    pub(super) fn fb_operand(&mut self, o: &Operand, input: &str) -> Option<(Name, Option<Place>)> {
         let Operand::Var(v) = o else { return None };
-        let Ty::Fb(t) = self.ref_ty(v)? else {
-            return None;
-        };
+        let t = self.instance_type(v)?;
         let has = |s: &stdfb::StdFb| s.inputs.iter().any(|(n, _)| n.eq_ignore_ascii_case(input));
         if !stdfb::lookup(&t).is_some_and(has) {
-            return None;
+            return Some((t, None));
         }
         let saved = self.final_pass;
         let p = self.place(v, false);
         self.final_pass = saved;
-        p
+        Some((t, p))
     }
 
-    /// Whether the operand names an FB instance (of any block type).
-    pub(super) fn is_fb_instance(&self, o: &Operand) -> bool {
-        matches!(o, Operand::Var(v) if matches!(self.ref_ty(v), Some(Ty::Fb(_))))
-    }
-
-    /// The type a variable reference names, from the declarations alone:
-    /// no subscript is evaluated and nothing is reported (the caller
-    /// resolves the place itself when it needs it).
-    fn ref_ty(&self, v: &VarRef) -> Option<Ty> {
+    /// The block type of the instance a variable reference names, from the
+    /// declarations alone: no subscript is evaluated and nothing is
+    /// reported (the caller resolves the place itself when it needs it).
+    /// Every operand of `LD` comes here: a plain name or an element is
+    /// looked at in place, and a member of a standard block (`t.Q`, never
+    /// an instance) stops at once.
+    fn instance_type(&self, v: &VarRef) -> Option<Name> {
         let (_, var) = self.sig.var(&v.base.name)?;
-        let mut ty = var.ty.clone();
+        let mut ty = std::borrow::Cow::Borrowed(&var.ty);
         for acc in &v.path {
-            ty = match (acc, &ty) {
-                (Accessor::Field(f), Ty::Fb(t) | Ty::Struct(t)) => self.find_member(t, &f.name)?.1,
-                (Accessor::Index(..), Ty::Array(a)) => a.elem.clone(),
+            ty = match (acc, ty) {
+                (Accessor::Index(..), std::borrow::Cow::Borrowed(Ty::Array(a))) => {
+                    std::borrow::Cow::Borrowed(&a.elem)
+                }
+                (Accessor::Index(..), std::borrow::Cow::Owned(Ty::Array(a))) => {
+                    std::borrow::Cow::Owned(a.elem)
+                }
+                (Accessor::Field(f), t) => match &*t {
+                    Ty::Fb(b) if stdfb::lookup(b).is_some() => return None,
+                    Ty::Fb(b) | Ty::Struct(b) => {
+                        std::borrow::Cow::Owned(self.find_member(b, &f.name)?.1)
+                    }
+                    _ => return None,
+                },
                 _ => return None,
             };
         }
-        Some(ty)
+        match &*ty {
+            Ty::Fb(t) => Some(t.clone()),
+            _ => None,
+        }
     }
 
     /// Table 54: set one input from the CR and call the instance.

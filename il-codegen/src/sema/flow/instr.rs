@@ -122,7 +122,7 @@ impl Walk<'_, '_> {
         let span = i.span;
         match &i.kind {
             InstrKind::Load { negate, operand } => {
-                if !negate && let Some(inst) = self.fb_operand(operand, "LD") {
+                if !negate && let Some((_, Some(inst))) = self.fb_operand(operand, "LD") {
                     return self.fb_input(inst, "LD", cr, span);
                 }
                 self.load(*negate, operand, span)
@@ -174,23 +174,20 @@ impl Walk<'_, '_> {
             InstrKind::Set { target } | InstrKind::Reset { target } => {
                 let set = matches!(i.kind, InstrKind::Set { .. });
                 let which = if set { "S" } else { "R" };
-                if let Some(inst) = self.fb_operand(target, which) {
-                    return self.fb_input(inst, which, cr, span);
-                }
-                if self.is_fb_instance(target) {
-                    let Some(inst) = self.place_of(target, false) else {
+                match self.fb_operand(target, which) {
+                    Some((_, Some(inst))) => return self.fb_input(inst, which, cr, span),
+                    Some((fb, None)) => {
+                        self.err(
+                            BAD_INPUT_OP,
+                            target.span(),
+                            format!(
+                                "`{which}` is not an input operator of {} (an instance of {fb})",
+                                self.cx.file.snippet(target.span()),
+                            ),
+                        );
                         return cr;
-                    };
-                    self.err(
-                        BAD_INPUT_OP,
-                        target.span(),
-                        format!(
-                            "`{which}` is not an input operator of {} (an instance of {})",
-                            self.cx.file.snippet(target.span()),
-                            inst.ty
-                        ),
-                    );
-                    return cr;
+                    }
+                    None => {}
                 }
                 let Some(place) = self.place_of(target, true) else {
                     return cr;
