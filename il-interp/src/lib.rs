@@ -42,7 +42,7 @@ pub use values::{Instance, Struct, Value, fmt_dur};
 use il_codegen::diag::SourceFile;
 use il_codegen::ir::PouKind;
 use il_codegen::ir::types::{Elem, Ty};
-use il_codegen::ir::{CheckedPou, Program, Var};
+use il_codegen::ir::{CheckedPou, Program};
 use il_std::Cycle;
 use values::wrap;
 
@@ -141,14 +141,8 @@ fn find_var(pou: &CheckedPou, name: &str) -> Option<usize> {
     })
 }
 
-/// Whether the instance holds `v` between calls: its memory
-/// ([`Storage::Instance`](il_codegen::ir::Storage::Instance)) and, unlike generated code, its VAR_EXTERNALs
-/// ([`Storage::External`](il_codegen::ir::Storage::External) says why). A VAR_IN_OUT is the caller's: a
-/// [`ConfigMachine`] copies the bound global in and out around each run of
-/// a PROGRAM (and a PROGRAM run alone keeps it, unseen, at its default).
-fn held(v: &Var) -> bool {
-    il_codegen::ir::path::held(v)
-}
+// What an instance holds between calls (the IR's rule for paths too).
+use il_codegen::ir::path::held;
 
 impl Machine {
     /// An instance of the PROGRAM or FUNCTION_BLOCK `name` (case-insensitive)

@@ -15,13 +15,8 @@ pub(crate) enum Step {
     Index(Option<usize>),
 }
 
-/// The IR names the areas with il-std's type.
-pub(crate) fn io_area(l: &Loc) -> il_std::Area {
-    l.area
-}
-
 pub(crate) fn io_read(ctx: &Cycle, l: &Loc) -> Value {
-    let (a, b) = (io_area(l), l.byte);
+    let (a, b) = (l.area, l.byte);
     if let Some(bit) = l.bit {
         return Value::Bool(ctx.io.bit(a, b, bit));
     }
@@ -41,7 +36,7 @@ pub(crate) fn io_read(ctx: &Cycle, l: &Loc) -> Value {
 }
 
 pub(crate) fn io_write(ctx: &mut Cycle, l: &Loc, v: &Value) {
-    let (a, b) = (io_area(l), l.byte);
+    let (a, b) = (l.area, l.byte);
     if let Some(bit) = l.bit {
         ctx.io.set_bit(a, b, bit, v.as_bool());
         return;

@@ -173,7 +173,10 @@ pub fn resolve(
     Ok(Resolved { steps, ty, range })
 }
 
-/// Whether a variable of a POU lives in its instance (what a path can name).
+/// Whether an instance holds `v` between calls, so that a path can name
+/// it: its memory ([`Storage::Instance`]) and its VAR_EXTERNALs
+/// ([`Storage::External`]: an interpreter keeps them in the instance, as
+/// generated code keeps a reference). A VAR_IN_OUT is the caller's.
 pub fn held(v: &Var) -> bool {
     matches!(v.storage, Storage::Instance | Storage::External)
 }
