@@ -69,13 +69,19 @@ impl Walk<'_, '_> {
             );
             return cr;
         };
-        let mut all: Vec<(String, Ty)> = Vec::new();
-        if let Some(s) = stdfb::lookup(&fb) {
-            all.extend(s.inputs.iter().map(|(n, e)| (n.to_string(), Ty::Elem(*e))));
-        } else if let Some(sig) = self.env.pou(&fb) {
-            all.extend(sig.inputs().map(|(_, v)| (v.name.clone(), v.ty.clone())));
-        }
-        let Some((name, ty)) = all.into_iter().find(|(n, _)| n.eq_ignore_ascii_case(input)) else {
+        // The input with its index (a list of every input, cloned, was
+        // built for each input operator to find one).
+        let found = match stdfb::lookup(&fb) {
+            Some(s) => (s.inputs.iter().enumerate())
+                .find(|(_, (n, _))| n.eq_ignore_ascii_case(input))
+                .map(|(k, (n, e))| (n.to_string(), Ty::Elem(*e), k)),
+            None => self.env.pou(&fb).and_then(|sig| {
+                sig.inputs()
+                    .find(|(_, v)| v.name.eq_ignore_ascii_case(input))
+                    .map(|(k, v)| (v.name.clone(), v.ty.clone(), k))
+            }),
+        };
+        let Some((name, ty, index)) = found else {
             self.err(
                 BAD_INPUT_OP,
                 span,
@@ -98,7 +104,10 @@ impl Walk<'_, '_> {
             );
             return cr;
         }
-        let input = self.input_member(&fb, name);
+        let input = ir::Member {
+            name,
+            index: index as u32,
+        };
         self.push(Op::CallFb(Box::new(crate::sema::ir::FbCall {
             inst,
             inputs: vec![(input, value)],
