@@ -431,6 +431,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "encodings")]
     fn text_in_other_encodings_is_read_and_bad_bytes_are_located() {
         let dir = std::env::temp_dir().join(format!("il-builder-enc-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();

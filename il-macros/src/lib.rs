@@ -41,7 +41,11 @@
 //!   UTF-8 (a WHATWG label: `windows-1252`, `windows-1250`, `iso-8859-15`
 //!   ...), as PLC IDEs on Windows export them. Without it such a file is
 //!   read as Windows-1252 (the warning the other front ends show, IL0039,
-//!   is not shown here). An unknown label is an error at it.
+//!   is not shown here). An unknown label is an error at it. Code pages
+//!   need the `encodings` feature (`features = ["encodings"]`), off by
+//!   default because its tables are about 1.7 s of a cold build: without
+//!   it a file must be UTF-8 or UTF-16 (with or without a byte order mark),
+//!   and one that is not fails with IL0040, which names the feature.
 //!
 //! # One program per call
 //! Each `il!` is a program of its own: its POUs see the TYPEs and

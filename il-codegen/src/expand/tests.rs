@@ -240,6 +240,7 @@ fn a_file_is_xml_by_its_text() {
 /// unknown name is refused at its literal, and bytes invalid in the named
 /// encoding are an error with the IL line and column.
 #[test]
+#[cfg(feature = "encodings")]
 fn files_in_a_named_encoding() {
     let dir = std::env::temp_dir().join(format!("il-expand-enc-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
@@ -292,5 +293,44 @@ fn files_in_a_named_encoding() {
         "{}",
         text(&out)
     );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `il!` as users get it by default, without code pages: a file in one is an
+/// error that names the feature, and so is naming one.
+#[test]
+#[cfg(not(feature = "encodings"))]
+fn without_code_pages_a_file_in_one_is_an_error_naming_the_feature() {
+    let dir = std::env::temp_dir().join(format!("il-expand-noenc-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("nasos.exp");
+    std::fs::write(
+        &path,
+        b"PROGRAM Nasos\nVAR t : BOOL; END_VAR\n    LD t (* \xCF\xF3\xF1\xEA *)\n    ST t\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let file = path.display().to_string();
+    let out = expand(&[id("file"), p('='), s(&file)]);
+    assert_eq!(out.errors.len(), 1, "{}", text(&out));
+    let msg = &out.errors[0].0;
+    assert!(msg.contains("IL0040"), "{msg}");
+    assert!(msg.contains("(at line 3, column 13)"), "{msg}");
+    assert!(msg.contains("`encodings` feature"), "{msg}");
+    let out = expand(&[
+        id("file"),
+        p('='),
+        s(&file),
+        p(','),
+        id("encoding"),
+        p('='),
+        Tok::string("windows-1251", 5),
+    ]);
+    assert_eq!(out.errors.len(), 1, "{}", text(&out));
+    assert!(
+        out.errors[0].0.contains("`encodings` feature"),
+        "{}",
+        text(&out)
+    );
+    assert_eq!(out.errors[0].1, 5, "the error is at the name");
     let _ = std::fs::remove_dir_all(&dir);
 }

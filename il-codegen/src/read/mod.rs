@@ -22,6 +22,13 @@ use std::path::Path;
 use crate::ast::Span;
 use crate::diag::{Diagnostic, SourceFile};
 
+#[cfg(feature = "encodings")]
+#[path = "codec_rs.rs"]
+mod codec;
+#[cfg(not(feature = "encodings"))]
+#[path = "codec_std.rs"]
+mod codec;
+
 /// The largest source file read (256 MiB): far above any real IL program or
 /// PLCopen project (a million IL lines is about 30 MB), and refused before
 /// the compiler spends memory proportional to it.
@@ -31,7 +38,7 @@ crate::diag::codes::codes! {
     GUESSED_ENCODING = "IL0039", "a source that is not UTF-8, read as Windows-1252",
         "The file is not UTF-8 text and the project names no encoding, so it was read as Windows-1252, the code page of Western European Windows, in which PLC IDEs such as CODESYS V2.3 export (`.EXP`). The warning points at the first byte that is not UTF-8.\n\n    $ ilc check motor.exp\n    warning[IL0039]: `motor.exp` is not UTF-8; read as Windows-1252 (set the encoding with `--encoding`, `Builder::encoding` or `il!(…, encoding = …)`)\n     --> motor.exp:3:25\n      |\n    3 |     LD n (* Drehzahl erhöhen *)\n      |                         ^ byte 0xF6, read as `ö`\n\nIf the file is in another code page (Russian comments read as Windows-1252 look like `Ïóñê íàñîñà`), name it: `ilc --encoding windows-1251 check x.exp`, `Builder::new().encoding(\"windows-1251\")` in build.rs, `il!(file = \"x.exp\", encoding = \"windows-1251\")`, or the language server's initialization option `{\"encoding\": \"windows-1251\"}`. Naming `windows-1252` silences the warning. Any WHATWG encoding label is accepted: `windows-1250` ... `windows-1258`, `iso-8859-2` ... `iso-8859-16`, `koi8-r`, `shift_jis`, `gbk`, `utf-16le`; `iso-8859-1` and `latin1` are read as Windows-1252, which extends them. A file that is valid UTF-8 is always read as UTF-8, and one with a byte order mark as the mark says.\n\nOr convert the file once: `iconv -f windows-1252 -t utf-8 x.exp > x.il`.";
     INVALID_BYTES = "IL0040", "bytes that are not text in the source's encoding",
-        "The file holds a byte sequence that its encoding does not define: a file read as UTF-8 (it has a UTF-8 byte order mark, or the project names `utf-8`) with a byte that is no UTF-8, an odd byte or a lone surrogate in UTF-16, or a byte that the named code page leaves undefined (0xAA in Windows-1253). The error points at the first such sequence, which is read as U+FFFD (`\u{FFFD}`); nothing is generated.\n\n    $ ilc --encoding utf-8 check x.exp\n    error[IL0040]: `x.exp` is not valid UTF-8: byte 0xF6 at line 2 is no text in it\n\nName the encoding the file is really in (`--encoding windows-1252`), or repair the bytes.";
+        "The file holds a byte sequence that its encoding does not define: a file read as UTF-8 (it has a UTF-8 byte order mark, or the project names `utf-8`) with a byte that is no UTF-8, an odd byte or a lone surrogate in UTF-16, or a byte that the named code page leaves undefined (0xAA in Windows-1253). The error points at the first such sequence, which is read as U+FFFD (`\u{FFFD}`); nothing is generated.\n\n    $ ilc --encoding utf-8 check x.exp\n    error[IL0040]: `x.exp` is not valid UTF-8: byte 0xF6 at line 2 is no text in it\n\nName the encoding the file is really in (`--encoding windows-1252`), or repair the bytes.\n\nA build without il-codegen's `encodings` feature (`il!` unless `il-macros` is given `features = [\"encodings\"]`) reads UTF-8 and UTF-16 only: there a file in a Windows or ISO code page is this error, whose help names the feature.";
 }
 
 /// Why a source file could not be read.
@@ -56,20 +63,24 @@ impl std::error::Error for ReadError {}
 /// none ([`Encoding::default`]): then such a file is read as Windows-1252
 /// with a warning (IL0039).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Encoding(Option<&'static encoding_rs::Encoding>);
+pub struct Encoding(Option<codec::Codec>);
 
 /// A few names for messages that list what is valid.
+/// How to read code pages where a build leaves them out.
+const NEEDS_FEATURE: &str = "Windows and ISO code pages need il-codegen's `encodings` feature (on by default; for `il!`: `il-macros = { version = \"0.1\", features = [\"encodings\"] }`)";
+
 const SOME_NAMES: &str = "utf-8, windows-1252, windows-1251, windows-1250, iso-8859-15, iso-8859-2, koi8-r, shift_jis, gbk, utf-16le";
 
 impl Encoding {
     /// The encoding a label names (WHATWG labels, any case: `windows-1251`,
     /// `cp1251`, `latin1`), or an error that lists valid names.
     pub fn from_label(label: &str) -> Result<Encoding, String> {
-        match encoding_rs::Encoding::for_label(label.trim().as_bytes()) {
-            // "replacement" (the label of ISO-2022-KR and a few others)
-            // decodes any file to one U+FFFD: no way to read IL.
-            Some(e) if e != encoding_rs::REPLACEMENT => Ok(Encoding(Some(e))),
-            _ => Err(format!(
+        match codec::for_label(label.trim().as_bytes()) {
+            Some(e) => Ok(Encoding(Some(e))),
+            None if cfg!(not(feature = "encodings")) => Err(format!(
+                "encoding `{label}` is not read by this build, which reads UTF-8 and UTF-16 only: {NEEDS_FEATURE}"
+            )),
+            None => Err(format!(
                 "unknown encoding `{label}`: use a WHATWG encoding label, such as {SOME_NAMES}"
             )),
         }
@@ -78,7 +89,7 @@ impl Encoding {
     /// The encoding's canonical name (`windows-1251`), or `None` when none
     /// is named.
     pub fn name(&self) -> Option<&'static str> {
-        self.0.map(encoding_rs::Encoding::name)
+        self.0.map(codec::name)
     }
 }
 
@@ -154,12 +165,16 @@ fn too_large(len: u64) -> String {
 /// read it, with a warning when the encoding was guessed and an error at the
 /// first byte sequence that is no text in the encoding used.
 pub fn decode(name: &str, mut bytes: Vec<u8>, encoding: Encoding) -> SourceFile {
-    use encoding_rs::{UTF_16BE, UTF_16LE, WINDOWS_1252};
-    if let Some((enc, bom)) = encoding_rs::Encoding::for_bom(&bytes) {
+    if let Some((enc, bom)) = for_bom(&bytes) {
         return decode_in(name, &bytes[bom..], enc);
     }
     if let Some(big) = utf16(&bytes) {
-        return decode_in(name, &bytes, if big { UTF_16BE } else { UTF_16LE });
+        let enc = if big {
+            codec::UTF_16BE
+        } else {
+            codec::UTF_16LE
+        };
+        return decode_in(name, &bytes, enc);
     }
     let bad = match String::from_utf8(bytes) {
         Ok(text) => return SourceFile::new(name, text),
@@ -172,13 +187,22 @@ pub fn decode(name: &str, mut bytes: Vec<u8>, encoding: Encoding) -> SourceFile 
     if let Some(enc) = encoding.0.or_else(|| xml_declared(&bytes)) {
         return decode_in(name, &bytes, enc);
     }
-    let mut file = decode_in(name, &bytes, WINDOWS_1252);
-    // Windows-1252 reads each byte as one character, so the text of the
-    // bytes before the first bad one ends where that byte's character starts.
-    let at = WINDOWS_1252
-        .decode_without_bom_handling(&bytes[..bad])
-        .0
-        .len();
+    let Some(guess) = codec::GUESS else {
+        // A build without code pages: the file is read as UTF-8, and the
+        // error says how to read it otherwise.
+        let mut file = decode_in(name, &bytes, codec::UTF_8);
+        if let Some(d) = file.read_diagnostics.last_mut() {
+            d.help = Some(format!(
+                "name the encoding the file is in (`encoding = \"windows-1252\"`); {NEEDS_FEATURE}"
+            ));
+        }
+        return file;
+    };
+    let mut file = decode_in(name, &bytes, guess);
+    // A single-byte code page reads each byte as one character, so the text
+    // of the bytes before the first bad one ends where that byte's character
+    // starts.
+    let at = codec::decode(&bytes[..bad], guess).0.len();
     let shown = file
         .text
         .get(at..)
@@ -200,10 +224,20 @@ pub fn decode(name: &str, mut bytes: Vec<u8>, encoding: Encoding) -> SourceFile 
     file
 }
 
+/// The encoding a byte order mark names, and the mark's length.
+fn for_bom(bytes: &[u8]) -> Option<(codec::Codec, usize)> {
+    match bytes {
+        [0xEF, 0xBB, 0xBF, ..] => Some((codec::UTF_8, 3)),
+        [0xFF, 0xFE, ..] => Some((codec::UTF_16LE, 2)),
+        [0xFE, 0xFF, ..] => Some((codec::UTF_16BE, 2)),
+        _ => None,
+    }
+}
+
 /// The encoding an XML declaration names (`<?xml version="1.0"
 /// encoding="ISO-8859-1"?>`), for an XML file that is not UTF-8 and whose
 /// project names none: the file says what it is.
-fn xml_declared(bytes: &[u8]) -> Option<&'static encoding_rs::Encoding> {
+fn xml_declared(bytes: &[u8]) -> Option<codec::Codec> {
     let decl = bytes.strip_prefix(b"<?xml")?;
     let decl = &decl[..decl.windows(2).position(|w| w == b"?>")?];
     let at = decl.windows(8).position(|w| w == b"encoding")?;
@@ -213,41 +247,18 @@ fn xml_declared(bytes: &[u8]) -> Option<&'static encoding_rs::Encoding> {
         .trim_ascii_start();
     let (&quote, rest) = rest.split_first()?;
     let label = &rest[..rest.iter().position(|&b| b == quote)?];
-    encoding_rs::Encoding::for_label(label).filter(|&e| e != encoding_rs::REPLACEMENT)
+    codec::for_label(label)
 }
 
 /// `bytes` decoded in `enc`, an error (IL0040) at the first sequence that is
 /// no text in it (read as U+FFFD, as every later one).
-fn decode_in(name: &str, bytes: &[u8], enc: &'static encoding_rs::Encoding) -> SourceFile {
-    use encoding_rs::DecoderResult;
-    let mut decoder = enc.new_decoder_without_bom_handling();
-    let mut text = String::with_capacity(
-        decoder
-            .max_utf8_buffer_length_without_replacement(bytes.len())
-            .unwrap_or(bytes.len()),
-    );
-    let (mut at, mut first) = (0, None);
-    loop {
-        let (result, read) =
-            decoder.decode_to_string_without_replacement(&bytes[at..], &mut text, true);
-        at += read;
-        match result {
-            DecoderResult::InputEmpty => break,
-            DecoderResult::OutputFull => text.reserve(bytes.len() - at + 16),
-            DecoderResult::Malformed(len, after) => {
-                // The bad sequence ends `after` bytes before `at`.
-                let end = at - after as usize;
-                let start = end.saturating_sub(len as usize);
-                first.get_or_insert((text.len(), bytes[start..end].to_vec()));
-                text.push('\u{FFFD}');
-            }
-        }
-    }
+fn decode_in(name: &str, bytes: &[u8], enc: codec::Codec) -> SourceFile {
+    let (text, first) = codec::decode(bytes, enc);
     let mut file = SourceFile::new(name, text);
     if let Some((lo, seq)) = first {
         let hex: Vec<String> = seq.iter().map(|b| format!("0x{b:02X}")).collect();
         let (line, _) = file.line_col(lo as u32);
-        let enc_name = enc.name();
+        let enc_name = codec::name(enc);
         file.read_diagnostics.push(
             Diagnostic::error(
                 INVALID_BYTES,
@@ -294,10 +305,104 @@ fn io_reason(e: &std::io::Error) -> String {
     }
 }
 
+// The standard library's codec, checked against encoding_rs's.
+#[cfg(all(test, feature = "encodings"))]
+#[path = "codec_std.rs"]
+mod codec_std;
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    #[test]
+    #[cfg(feature = "encodings")]
+    fn the_standard_librarys_utf_codecs_agree_with_encoding_rs() {
+        // Every sequence kind: ASCII, 2-4 byte UTF-8, stray continuation
+        // bytes, truncated sequences, overlong forms, surrogates, odd UTF-16
+        // lengths and lone surrogates; plus pseudo-random bytes.
+        let mut cases: Vec<Vec<u8>> = vec![
+            b"LD x (* \xC3\xA4 \xE2\x82\xAC \xF0\x9F\x98\x80 *)".to_vec(),
+            b"\x80 \xC3 \xE2\x82 \xF0\x9F\x98 \xC0\xAF \xED\xA0\x80 \xFF".to_vec(),
+            vec![
+                0x41, 0x00, 0x00, 0xD8, 0x42, 0x00, 0x00, 0xDC, 0x00, 0xD8, 0x00, 0xDC, 0x43,
+            ],
+        ];
+        let mut x: u32 = 0x2545_F491;
+        for len in 0..200 {
+            cases.push(
+                (0..len)
+                    .map(|_| {
+                        x ^= x << 13;
+                        x ^= x >> 17;
+                        x ^= x << 5;
+                        x as u8
+                    })
+                    .collect(),
+            );
+        }
+        for bytes in &cases {
+            for (ours, theirs) in [
+                (codec_std::UTF_8, codec::UTF_8),
+                (codec_std::UTF_16LE, codec::UTF_16LE),
+                (codec_std::UTF_16BE, codec::UTF_16BE),
+            ] {
+                let (a, b) = (codec_std::decode(bytes, ours), codec::decode(bytes, theirs));
+                assert_eq!(a.0, b.0, "{bytes:02X?} in {}", codec::name(theirs));
+                // Where the first bad sequence is; its bytes as encoding_rs
+                // cuts it (it may take a valid prefix's byte into it).
+                assert_eq!(
+                    a.1.map(|f| f.0),
+                    b.1.map(|f| f.0),
+                    "{bytes:02X?} in {}",
+                    codec::name(theirs)
+                );
+                assert_eq!(codec_std::name(ours), codec::name(theirs));
+            }
+        }
+        // It guesses nothing: a build without code pages refuses the file.
+        assert_eq!(codec_std::GUESS, None);
+        for label in ["utf-8", "UTF8", "utf-16", "utf-16be", "UnicodeFFFE"] {
+            let (a, b) = (
+                codec_std::for_label(label.as_bytes()).map(codec_std::name),
+                codec::for_label(label.as_bytes()).map(codec::name),
+            );
+            assert_eq!(a, b, "{label}");
+        }
+    }
+
+    #[test]
+    #[cfg(not(feature = "encodings"))]
+    fn without_code_pages_a_file_that_is_not_utf8_is_an_error_that_names_the_feature() {
+        let f = decode(
+            "a.il",
+            b"PROGRAM p\n(* Gr\xF6\xDFe *)\n".to_vec(),
+            Encoding::default(),
+        );
+        assert_eq!(f.text, "PROGRAM p\n(* Gr\u{FFFD}\u{FFFD}e *)\n");
+        assert_eq!(codes(&f), [INVALID_BYTES]);
+        let d = &f.read_diagnostics[0];
+        assert_eq!(f.line_col(d.span.lo), (2, 6));
+        assert!(
+            d.help.as_deref().unwrap().contains("`encodings` feature"),
+            "{d:?}"
+        );
+        let e = Encoding::from_label("windows-1251").unwrap_err();
+        assert!(e.contains("`encodings` feature"), "{e}");
+        assert_eq!(
+            Encoding::from_label("utf-16le").unwrap().name(),
+            Some("UTF-16LE")
+        );
+        // UTF-16 with a mark, and a lone surrogate in it.
+        let f = decode(
+            "a.il",
+            vec![0xFF, 0xFE, 0x41, 0x00, 0x00, 0xD8, 0x42, 0x00],
+            Encoding::default(),
+        );
+        assert_eq!(f.text, "A\u{FFFD}B");
+        assert_eq!(codes(&f), [INVALID_BYTES]);
+    }
+
+    #[cfg(feature = "encodings")]
     fn named(label: &str) -> Encoding {
         Encoding::from_label(label).unwrap()
     }
@@ -337,6 +442,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "encodings")]
     fn not_utf8_is_read_as_windows_1252_with_a_warning_at_the_first_bad_byte() {
         let f = decode(
             "a.il",
@@ -358,6 +464,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "encodings")]
     fn a_named_encoding_reads_what_is_not_utf8_silently() {
         let f = decode(
             "a.il",
@@ -374,6 +481,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "encodings")]
     fn bytes_invalid_in_the_named_encoding_are_an_error_where_they_are() {
         let f = decode(
             "a.il",
@@ -402,6 +510,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "encodings")]
     fn an_xml_declaration_names_the_encoding_of_a_file_that_is_not_utf8() {
         let xml = b"<?xml version=\"1.0\" encoding='ISO-8859-15'?>\n<project>\xA4</project>";
         let f = decode("p.xml", xml.to_vec(), Encoding::default());
@@ -413,6 +522,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "encodings")]
     fn windows_1252_reads_its_unassigned_bytes_as_c1_controls() {
         // As the WHATWG standard says (the docs promise it): no error.
         let f = decode(
@@ -425,6 +535,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "encodings")]
     fn encoding_names() {
         assert_eq!(named("CP1251").name(), Some("windows-1251"));
         // WHATWG: Latin-1 is read as Windows-1252, its superset.
