@@ -60,7 +60,7 @@ impl Machine {
         if negate {
             r = stdfn::not(&r);
         }
-        stdfn::operator(op.name(), &l, &r)
+        stdfn::operator(op.func(), &l, &r)
     }
 
     pub(crate) fn expr(

@@ -1,4 +1,5 @@
-//! Standard functions, dispatched by name on runtime values. Each computes
+//! Standard functions on runtime values, dispatched on il-std's own table
+//! ([`Func`], [`Signature::conversion`]), never on a name. Each computes
 //! what the il-std function the emitter calls computes (most call it).
 
 use crate::values::{Value, wrap};
@@ -6,7 +7,7 @@ use il_codegen::ir::StdCall;
 use il_codegen::ir::types::{Elem, Ty};
 use il_std::FaultKind;
 use il_std::func as f;
-use il_std::signature::{ConvKind, Conversion, Rounding, Signature};
+use il_std::signature::{ConvKind, Conversion, Func, Rounding, Signature};
 use std::cmp::Ordering;
 
 /// Evaluates `$body` with the type alias `$t` naming the Rust type of the
@@ -72,15 +73,15 @@ pub fn compare(a: &Value, b: &Value) -> Option<Ordering> {
     }
 }
 
-pub fn cmp_op(name: &str, a: &Value, b: &Value) -> Option<bool> {
+fn cmp_op(func: Func, a: &Value, b: &Value) -> Option<bool> {
     let o = compare(a, b);
-    Some(match name {
-        "GT" => o == Some(Ordering::Greater),
-        "GE" => matches!(o, Some(Ordering::Greater | Ordering::Equal)),
-        "EQ" => o == Some(Ordering::Equal),
-        "NE" => o != Some(Ordering::Equal),
-        "LE" => matches!(o, Some(Ordering::Less | Ordering::Equal)),
-        "LT" => o == Some(Ordering::Less),
+    Some(match func {
+        Func::GT => o == Some(Ordering::Greater),
+        Func::GE => matches!(o, Some(Ordering::Greater | Ordering::Equal)),
+        Func::EQ => o == Some(Ordering::Equal),
+        Func::NE => o != Some(Ordering::Equal),
+        Func::LE => matches!(o, Some(Ordering::Less | Ordering::Equal)),
+        Func::LT => o == Some(Ordering::Less),
         _ => return None,
     })
 }
@@ -95,37 +96,37 @@ pub fn not(v: &Value) -> Value {
 }
 
 /// `ADD SUB MUL` with wrapping integers, IEEE reals, wrapping durations.
-pub fn arith(name: &str, a: &Value, b: &Value) -> Option<Value> {
+fn arith(func: Func, a: &Value, b: &Value) -> Option<Value> {
     Some(match (a, b) {
         (Value::Int(x, e), Value::Int(y, _)) => {
-            let r = match name {
-                "ADD" => x.wrapping_add(*y),
-                "SUB" => x.wrapping_sub(*y),
-                "MUL" => x.wrapping_mul(*y),
+            let r = match func {
+                Func::ADD => x.wrapping_add(*y),
+                Func::SUB => x.wrapping_sub(*y),
+                Func::MUL => x.wrapping_mul(*y),
                 _ => return None,
             };
             Value::Int(wrap(r, *e), *e)
         }
-        (Value::Real(x), Value::Real(y)) => Value::Real(match name {
-            "ADD" => x + y,
-            "SUB" => x - y,
-            "MUL" => x * y,
-            "DIV" => x / y,
-            "MOD" => x % y,
+        (Value::Real(x), Value::Real(y)) => Value::Real(match func {
+            Func::ADD => x + y,
+            Func::SUB => x - y,
+            Func::MUL => x * y,
+            Func::DIV => x / y,
+            Func::MOD => x % y,
             _ => return None,
         }),
-        (Value::LReal(x), Value::LReal(y)) => Value::LReal(match name {
-            "ADD" => x + y,
-            "SUB" => x - y,
-            "MUL" => x * y,
-            "DIV" => x / y,
-            "MOD" => x % y,
+        (Value::LReal(x), Value::LReal(y)) => Value::LReal(match func {
+            Func::ADD => x + y,
+            Func::SUB => x - y,
+            Func::MUL => x * y,
+            Func::DIV => x / y,
+            Func::MOD => x % y,
             _ => return None,
         }),
         (Value::Time(x, e), Value::Time(y, _)) => Value::Time(
-            match name {
-                "ADD" => x.wrapping_add(*y),
-                "SUB" => x.wrapping_sub(*y),
+            match func {
+                Func::ADD => x.wrapping_add(*y),
+                Func::SUB => x.wrapping_sub(*y),
                 _ => return None,
             },
             *e,
@@ -142,19 +143,19 @@ pub fn int_divmod(div: bool, x: i128, y: i128, e: Elem) -> Option<i128> {
     Some(wrap(if div { x / y } else { x % y }, e))
 }
 
-fn bitop(name: &str, a: &Value, b: &Value) -> Option<Value> {
+fn bitop(func: Func, a: &Value, b: &Value) -> Option<Value> {
     Some(match (a, b) {
-        (Value::Bool(x), Value::Bool(y)) => Value::Bool(match name {
-            "AND" => x & y,
-            "OR" => x | y,
-            "XOR" => x ^ y,
+        (Value::Bool(x), Value::Bool(y)) => Value::Bool(match func {
+            Func::AND => x & y,
+            Func::OR => x | y,
+            Func::XOR => x ^ y,
             _ => return None,
         }),
         (Value::Int(x, e), Value::Int(y, _)) => Value::Int(
-            match name {
-                "AND" => x & y,
-                "OR" => x | y,
-                "XOR" => x ^ y,
+            match func {
+                Func::AND => x & y,
+                Func::OR => x | y,
+                Func::XOR => x ^ y,
                 _ => return None,
             },
             *e,
@@ -174,20 +175,20 @@ fn max_min(max: bool, a: Value, b: Value) -> Value {
     if take_b || nan_a { b } else { a }
 }
 
-fn real_unary(name: &str, v: &Value) -> Option<Value> {
+fn real_unary(func: Func, v: &Value) -> Option<Value> {
     macro_rules! un {
         ($x:expr) => {
-            match name {
-                "SQRT" => f::SQRT($x),
-                "LN" => f::LN($x),
-                "LOG" => f::LOG($x),
-                "EXP" => f::EXP($x),
-                "SIN" => f::SIN($x),
-                "COS" => f::COS($x),
-                "TAN" => f::TAN($x),
-                "ASIN" => f::ASIN($x),
-                "ACOS" => f::ACOS($x),
-                "ATAN" => f::ATAN($x),
+            match func {
+                Func::SQRT => f::SQRT($x),
+                Func::LN => f::LN($x),
+                Func::LOG => f::LOG($x),
+                Func::EXP => f::EXP($x),
+                Func::SIN => f::SIN($x),
+                Func::COS => f::COS($x),
+                Func::TAN => f::TAN($x),
+                Func::ASIN => f::ASIN($x),
+                Func::ACOS => f::ACOS($x),
+                Func::ATAN => f::ATAN($x),
                 _ => return None,
             }
         };
@@ -199,18 +200,18 @@ fn real_unary(name: &str, v: &Value) -> Option<Value> {
     })
 }
 
-fn shift(name: &str, v: &Value, n: &Value) -> Option<Value> {
+fn shift(func: Func, v: &Value, n: &Value) -> Option<Value> {
     let Value::Int(x, e) = v else { return None };
     let Value::Int(n, _) = n else { return None };
     let e = *e;
     // The count's type only matters through its value.
     macro_rules! op {
         ($y:expr, $c:expr) => {
-            match name {
-                "SHL" => f::SHL($y, $c),
-                "SHR" => f::SHR($y, $c),
-                "ROL" => f::ROL($y, $c),
-                "ROR" => f::ROR($y, $c),
+            match func {
+                Func::SHL => f::SHL($y, $c),
+                Func::SHR => f::SHR($y, $c),
+                Func::ROL => f::ROL($y, $c),
+                Func::ROR => f::ROR($y, $c),
                 _ => return None,
             } as i128
         };
@@ -235,58 +236,84 @@ fn shift(name: &str, v: &Value, n: &Value) -> Option<Value> {
     })
 }
 
-fn two<'a>(args: &'a [Value], name: &str) -> Result<(&'a Value, &'a Value), String> {
+fn two(args: &[Value], func: Func) -> Result<(&Value, &Value), String> {
     match args {
         [a, b, ..] => Ok((a, b)),
-        _ => Err(format!("{name}: missing arguments")),
+        _ => Err(format!("{func:?}: missing arguments")),
     }
 }
 
-/// The IL operator `name` (ADD, DIV, AND, GT ...) on `a` and `b`, as the
-/// standard function of that name: none of them needs the result type.
-pub fn operator(name: &str, a: &Value, b: &Value) -> Result<Value, String> {
-    let bad = || format!("{name}: unexpected argument types in the interpreter");
-    match name {
-        "ADD" | "SUB" | "MUL" => arith(name, a, b).ok_or_else(bad),
-        "DIV" | "MOD" => match (a, b) {
+fn bad_args(func: Func) -> String {
+    format!("{func:?}: unexpected argument types in the interpreter")
+}
+
+/// The IL operator computing `func` (ADD, DIV, AND, GT ...: see
+/// [`il_codegen::ir::BinOp::func`]) on `a` and `b`, as the standard
+/// function: none of them needs the result type.
+pub fn operator(func: Func, a: &Value, b: &Value) -> Result<Value, String> {
+    let bad = || bad_args(func);
+    match func {
+        Func::ADD | Func::SUB | Func::MUL => arith(func, a, b).ok_or_else(bad),
+        Func::DIV | Func::MOD => match (a, b) {
             // A zero divisor gives 0 (il_std::func::DIV); `call` records
             // the fault the checked call carries.
             (Value::Int(x, e), Value::Int(y, _)) => Ok(Value::Int(
-                int_divmod(name == "DIV", *x, *y, *e).unwrap_or(0),
+                int_divmod(func == Func::DIV, *x, *y, *e).unwrap_or(0),
                 *e,
             )),
-            _ => arith(name, a, b).ok_or_else(bad),
+            _ => arith(func, a, b).ok_or_else(bad),
         },
-        "AND" | "OR" | "XOR" => bitop(name, a, b).ok_or_else(bad),
-        "GT" | "GE" | "EQ" | "NE" | "LE" | "LT" => {
-            Ok(Value::Bool(cmp_op(name, a, b).ok_or_else(bad)?))
+        Func::AND | Func::OR | Func::XOR => bitop(func, a, b).ok_or_else(bad),
+        Func::GT | Func::GE | Func::EQ | Func::NE | Func::LE | Func::LT => {
+            Ok(Value::Bool(cmp_op(func, a, b).ok_or_else(bad)?))
         }
-        _ => Err(format!("{name}: not an operator")),
+        _ => Err(format!("{func:?}: not an operator")),
     }
 }
 
-/// One call of the two-argument (or fixed) form of the function `name`.
-pub fn plain(name: &str, args: &[Value], ret: &Ty) -> Result<Value, String> {
-    let bad = || format!("{name}: unexpected argument types in the interpreter");
-    match name {
-        "ADD" | "SUB" | "MUL" | "DIV" | "MOD" | "AND" | "OR" | "XOR" | "GT" | "GE" | "EQ"
-        | "NE" | "LE" | "LT" => {
-            let (a, b) = two(args, name)?;
-            operator(name, a, b)
+/// One call of the two-argument (or fixed) form of the function `func`
+/// (every one but the conversions, which [`conversion`] evaluates).
+fn plain(func: Func, args: &[Value], ret: &Ty) -> Result<Value, String> {
+    let bad = || bad_args(func);
+    let first = || args.first().ok_or_else(bad);
+    match func {
+        Func::ADD
+        | Func::SUB
+        | Func::MUL
+        | Func::DIV
+        | Func::MOD
+        | Func::AND
+        | Func::OR
+        | Func::XOR
+        | Func::GT
+        | Func::GE
+        | Func::EQ
+        | Func::NE
+        | Func::LE
+        | Func::LT => {
+            let (a, b) = two(args, func)?;
+            operator(func, a, b)
         }
-        "NOT" => Ok(not(args.first().ok_or_else(bad)?)),
-        "MOVE" => args.first().cloned().ok_or_else(bad),
-        "ABS" => Ok(match args.first().ok_or_else(bad)? {
+        Func::NOT => Ok(not(first()?)),
+        Func::MOVE => first().cloned(),
+        Func::ABS => Ok(match first()? {
             Value::Int(x, e) => Value::Int(wrap(x.abs(), *e), *e),
             Value::Real(x) => Value::Real(f::ABS(*x)),
             Value::LReal(x) => Value::LReal(f::ABS(*x)),
             _ => return Err(bad()),
         }),
-        "SQRT" | "LN" | "LOG" | "EXP" | "SIN" | "COS" | "TAN" | "ASIN" | "ACOS" | "ATAN" => {
-            real_unary(name, args.first().ok_or_else(bad)?).ok_or_else(bad)
-        }
-        "EXPT" => {
-            let (a, b) = two(args, name)?;
+        Func::SQRT
+        | Func::LN
+        | Func::LOG
+        | Func::EXP
+        | Func::SIN
+        | Func::COS
+        | Func::TAN
+        | Func::ASIN
+        | Func::ACOS
+        | Func::ATAN => real_unary(func, first()?).ok_or_else(bad),
+        Func::EXPT => {
+            let (a, b) = two(args, func)?;
             let e = b.as_f64();
             Ok(match a {
                 Value::Real(x) => Value::Real(f::EXPT(*x, e)),
@@ -294,24 +321,24 @@ pub fn plain(name: &str, args: &[Value], ret: &Ty) -> Result<Value, String> {
                 _ => return Err(bad()),
             })
         }
-        "TRUNC" => Ok(match args.first().ok_or_else(bad)? {
+        Func::TRUNC => Ok(match first()? {
             Value::Real(x) => Value::Int(f::TRUNC(*x) as i128, Elem::DINT),
             Value::LReal(x) => Value::Int(f::TRUNC(*x) as i128, Elem::DINT),
             _ => return Err(bad()),
         }),
-        "SHL" | "SHR" | "ROL" | "ROR" => {
-            let (a, b) = two(args, name)?;
-            shift(name, a, b).ok_or_else(bad)
+        Func::SHL | Func::SHR | Func::ROL | Func::ROR => {
+            let (a, b) = two(args, func)?;
+            shift(func, a, b).ok_or_else(bad)
         }
-        "SEL" => match args {
+        Func::SEL => match args {
             [g, a, b] => Ok(if g.as_bool() { b.clone() } else { a.clone() }),
             _ => Err(bad()),
         },
-        "MAX" | "MIN" => {
-            let (a, b) = two(args, name)?;
-            Ok(max_min(name == "MAX", a.clone(), b.clone()))
+        Func::MAX | Func::MIN => {
+            let (a, b) = two(args, func)?;
+            Ok(max_min(func == Func::MAX, a.clone(), b.clone()))
         }
-        "LIMIT" => match args {
+        Func::LIMIT => match args {
             [mn, x, mx] => Ok(max_min(
                 false,
                 max_min(true, x.clone(), mn.clone()),
@@ -319,17 +346,22 @@ pub fn plain(name: &str, args: &[Value], ret: &Ty) -> Result<Value, String> {
             )),
             _ => Err(bad()),
         },
-        "ADD_TIME" | "SUB_TIME" => {
-            let (a, b) = two(args, name)?;
-            arith(&name[..3], a, b).ok_or_else(bad)
+        Func::ADD_TIME | Func::SUB_TIME => {
+            let (a, b) = two(args, func)?;
+            let op = if func == Func::ADD_TIME {
+                Func::ADD
+            } else {
+                Func::SUB
+            };
+            arith(op, a, b).ok_or_else(bad)
         }
-        "MUL_TIME" | "DIV_TIME" => {
-            let (a, b) = two(args, name)?;
+        Func::MUL_TIME | Func::DIV_TIME => {
+            let (a, b) = two(args, func)?;
             let Value::Time(t, _) = a else {
                 return Err(bad());
             };
             let t = il_std::TIME(*t);
-            let mul = name == "MUL_TIME";
+            let mul = func == Func::MUL_TIME;
             let r = match b {
                 Value::Int(n, e) => by_type!(*e, T => {
                     let n = *n as T;
@@ -353,33 +385,50 @@ pub fn plain(name: &str, args: &[Value], ret: &Ty) -> Result<Value, String> {
             };
             Ok(Value::Time(r.0, Elem::TIME))
         }
-        "ADD_TOD_TIME" | "SUB_TOD_TIME" | "ADD_DT_TIME" | "SUB_DT_TIME" | "SUB_DATE_DATE"
-        | "SUB_TOD_TOD" | "SUB_DT_DT" | "CONCAT_DATE_TOD" => {
-            let (a, b) = two(args, name)?;
+        Func::ADD_TOD_TIME
+        | Func::SUB_TOD_TIME
+        | Func::ADD_DT_TIME
+        | Func::SUB_DT_TIME
+        | Func::SUB_DATE_DATE
+        | Func::SUB_TOD_TOD
+        | Func::SUB_DT_DT
+        | Func::CONCAT_DATE_TOD => {
+            let (a, b) = two(args, func)?;
             let (Value::Time(x, _), Value::Time(y, _)) = (a, b) else {
                 return Err(bad());
             };
             let (x, y) = (*x, *y);
             use il_std::{DATE, DT, TIME, TOD};
-            Ok(match name {
-                "ADD_TOD_TIME" => Value::Time(f::ADD_TOD_TIME(TOD(x), TIME(y)).0, Elem::TOD),
-                "SUB_TOD_TIME" => Value::Time(f::SUB_TOD_TIME(TOD(x), TIME(y)).0, Elem::TOD),
-                "ADD_DT_TIME" => Value::Time(f::ADD_DT_TIME(DT(x), TIME(y)).0, Elem::DT),
-                "SUB_DT_TIME" => Value::Time(f::SUB_DT_TIME(DT(x), TIME(y)).0, Elem::DT),
-                "SUB_DATE_DATE" => Value::Time(f::SUB_DATE_DATE(DATE(x), DATE(y)).0, Elem::TIME),
-                "SUB_TOD_TOD" => Value::Time(f::SUB_TOD_TOD(TOD(x), TOD(y)).0, Elem::TIME),
-                "SUB_DT_DT" => Value::Time(f::SUB_DT_DT(DT(x), DT(y)).0, Elem::TIME),
+            Ok(match func {
+                Func::ADD_TOD_TIME => Value::Time(f::ADD_TOD_TIME(TOD(x), TIME(y)).0, Elem::TOD),
+                Func::SUB_TOD_TIME => Value::Time(f::SUB_TOD_TIME(TOD(x), TIME(y)).0, Elem::TOD),
+                Func::ADD_DT_TIME => Value::Time(f::ADD_DT_TIME(DT(x), TIME(y)).0, Elem::DT),
+                Func::SUB_DT_TIME => Value::Time(f::SUB_DT_TIME(DT(x), TIME(y)).0, Elem::DT),
+                Func::SUB_DATE_DATE => {
+                    Value::Time(f::SUB_DATE_DATE(DATE(x), DATE(y)).0, Elem::TIME)
+                }
+                Func::SUB_TOD_TOD => Value::Time(f::SUB_TOD_TOD(TOD(x), TOD(y)).0, Elem::TIME),
+                Func::SUB_DT_DT => Value::Time(f::SUB_DT_DT(DT(x), DT(y)).0, Elem::TIME),
                 _ => Value::Time(f::CONCAT_DATE_TOD(DATE(x), TOD(y)).0, Elem::DT),
             })
         }
-        "LEN" => match args.first() {
+        Func::LEN => match args.first() {
             Some(Value::Str { units, .. }) => Ok(Value::Int(units.len() as i128, Elem::INT)),
             _ => Err(bad()),
         },
-        "LEFT" | "RIGHT" | "MID" | "CONCAT" | "INSERT" | "DELETE" | "REPLACE" | "FIND" => {
-            string_fn(name, args, ret).map(|(v, _)| v).ok_or_else(bad)
+        Func::LEFT
+        | Func::RIGHT
+        | Func::MID
+        | Func::CONCAT
+        | Func::INSERT
+        | Func::DELETE
+        | Func::REPLACE
+        | Func::FIND => string_fn(func, args, ret).map(|(v, _)| v).ok_or_else(bad),
+        // MUX is a call form of its own ([`StdCall::Mux`]); conversions are
+        // evaluated from their table entry.
+        Func::MUX | Func::Conversion => {
+            Err(format!("internal: {func:?} evaluated as a plain function"))
         }
-        _ => Err(unsupported(name)),
     }
 }
 
@@ -449,7 +498,7 @@ macro_rules! with_capacity {
 /// arguments together, so il-std never truncates; the result is then cut to
 /// the capacity of the result type `ret` (the first argument's, as in il-std)
 /// and the flag says whether that cut something off.
-fn string_fn(name: &str, args: &[Value], ret: &Ty) -> Option<(Value, bool)> {
+fn string_fn(func: Func, args: &[Value], ret: &Ty) -> Option<(Value, bool)> {
     let mut strs: Vec<&[u16]> = Vec::new();
     let mut ints: Vec<i64> = Vec::new();
     let mut wide = false;
@@ -467,7 +516,7 @@ fn string_fn(name: &str, args: &[Value], ret: &Ty) -> Option<(Value, bool)> {
         use il_std::WSTRING;
         with_capacity!(total, N => {
             let st = |i: usize| strs.get(i).map(|u| WSTRING::<N>::from_units_truncating(u).0);
-            string_op::<WSTRING<N>>(name, st(0)?, st(1), &ints)?
+            string_op::<WSTRING<N>>(func, st(0)?, st(1), &ints)?
         })
     } else {
         use il_std::STRING;
@@ -478,10 +527,10 @@ fn string_fn(name: &str, args: &[Value], ret: &Ty) -> Option<(Value, bool)> {
                     STRING::<N>::from_units_truncating(&bytes).0
                 })
             };
-            string_op::<STRING<N>>(name, st(0)?, st(1), &ints)?
+            string_op::<STRING<N>>(func, st(0)?, st(1), &ints)?
         })
     };
-    if name == "FIND" {
+    if func == Func::FIND {
         return Some((
             Value::Int(units.first().copied()? as i16 as i128, Elem::INT),
             false,
@@ -499,22 +548,22 @@ fn string_fn(name: &str, args: &[Value], ret: &Ty) -> Option<(Value, bool)> {
 
 /// One il-std string function on il-std strings; the result's units (FIND:
 /// the position as the only unit).
-fn string_op<S>(name: &str, a: S, b: Option<S>, ints: &[i64]) -> Option<Vec<u16>>
+fn string_op<S>(func: Func, a: S, b: Option<S>, ints: &[i64]) -> Option<Vec<u16>>
 where
     S: il_std::num::AnyString,
     S::Unit: Into<u16>,
 {
     use il_std::func as f;
     let int = |i: usize| ints.get(i).copied();
-    let r: S = match name {
-        "LEFT" => f::LEFT(a, int(0)?),
-        "RIGHT" => f::RIGHT(a, int(0)?),
-        "MID" => f::MID(a, int(0)?, int(1)?),
-        "CONCAT" => f::CONCAT(a, b?),
-        "INSERT" => f::INSERT(a, b?, int(0)?),
-        "DELETE" => f::DELETE(a, int(0)?, int(1)?),
-        "REPLACE" => f::REPLACE(a, b?, int(0)?, int(1)?),
-        "FIND" => return Some(vec![f::FIND(a, b?) as u16]),
+    let r: S = match func {
+        Func::LEFT => f::LEFT(a, int(0)?),
+        Func::RIGHT => f::RIGHT(a, int(0)?),
+        Func::MID => f::MID(a, int(0)?, int(1)?),
+        Func::CONCAT => f::CONCAT(a, b?),
+        Func::INSERT => f::INSERT(a, b?, int(0)?),
+        Func::DELETE => f::DELETE(a, int(0)?, int(1)?),
+        Func::REPLACE => f::REPLACE(a, b?, int(0)?, int(1)?),
+        Func::FIND => return Some(vec![f::FIND(a, b?) as u16]),
         _ => return None,
     };
     Some(r.units().iter().map(|&u| u.into()).collect())
@@ -571,9 +620,9 @@ pub fn convert(from: Elem, to: Elem, v: &Value) -> Option<Value> {
     })
 }
 
-/// A standard function call as the emitter generates it. `kind` is the
-/// fault the checked call carries (from the signature table); `fault`
-/// records it when its condition holds.
+/// A standard function call. `kind` is the fault the checked call carries
+/// (from the signature table); `fault` records it when its condition holds,
+/// as the il-std function the generated code calls does.
 pub fn call(
     call: &StdCall,
     args: &[Value],
@@ -581,27 +630,27 @@ pub fn call(
     (kind, sig): (Option<FaultKind>, &Signature),
     fault: &mut dyn FnMut(FaultKind),
 ) -> Result<Value, String> {
-    let rounding = sig.rounding;
-    // A conversion is evaluated from its table entry; the others by name.
-    let plain = |n: &str, args: &[Value], ret: &Ty| match &sig.conversion {
-        Some(c) => conversion(c, n, args),
-        None => plain(n, args, ret),
+    let name = sig.name;
+    // A conversion is evaluated from its table entry, the others by the
+    // table's `func`.
+    let plain = |args: &[Value]| match &sig.conversion {
+        Some(c) => conversion(c, name, args),
+        None => plain(sig.func, args, ret),
     };
     match (call, kind) {
-        // As the emitter: DIV, MOD and DIV_TIME by an integer zero give 0
-        // (T#0s) and record the fault.
-        (StdCall::Plain(n), Some(k @ FaultKind::DivisionByZero)) => {
+        // DIV, MOD and DIV_TIME by an integer zero give 0 (T#0s) and record
+        // the fault.
+        (StdCall::Plain(_), Some(k @ FaultKind::DivisionByZero)) => {
             if let Some(Value::Int(0, _)) = args.get(1) {
                 fault(k);
             }
-            plain(n, args, ret)
+            plain(args)
         }
-        // As the emitter: REAL → integer conversions out of range (or NaN)
-        // saturate and record the fault.
-        (StdCall::Plain(n), Some(k @ FaultKind::ConversionOutOfRange)) => {
+        // REAL → integer conversions out of range (or NaN) saturate and
+        // record the fault; the rounding is the table's.
+        (StdCall::Plain(_), Some(k @ FaultKind::ConversionOutOfRange)) => {
             let x = args.first().map(Value::as_f64).unwrap_or(0.0);
-            // The fault and the rounding are the table's.
-            let r = match rounding {
+            let r = match sig.rounding {
                 Some(Rounding::TowardZero) => x.trunc(),
                 _ => x.round_ties_even(),
             };
@@ -609,28 +658,27 @@ pub fn call(
             if !r.is_finite() || r < lo as f64 || r > hi as f64 {
                 fault(k);
             }
-            plain(n, args, ret)
+            plain(args)
         }
-        // As the emitter: INSERT and REPLACE cut to the capacity record it.
-        (StdCall::Plain(n), Some(k @ FaultKind::StringOverflow)) => {
-            let (v, cut) = string_fn(n, args, ret)
-                .ok_or_else(|| format!("{n}: unexpected argument types in the interpreter"))?;
+        // INSERT and REPLACE cut to the capacity record it.
+        (StdCall::Plain(_), Some(k @ FaultKind::StringOverflow)) => {
+            let (v, cut) = string_fn(sig.func, args, ret).ok_or_else(|| bad_args(sig.func))?;
             if cut {
                 fault(k);
             }
             Ok(v)
         }
-        (StdCall::Plain(n), _) => plain(n, args, ret),
-        // As the emitter: each step of CONCAT that truncates records a fault.
-        (StdCall::Fold(n), Some(k @ FaultKind::StringOverflow)) => {
+        (StdCall::Plain(_), _) => plain(args),
+        // Each step of CONCAT that truncates records a fault.
+        (StdCall::Fold(_), Some(k @ FaultKind::StringOverflow)) => {
             let mut it = args.iter();
             let mut acc = it
                 .next()
                 .cloned()
-                .ok_or_else(|| format!("{n}: no arguments"))?;
+                .ok_or_else(|| format!("{name}: no arguments"))?;
             for a in it {
-                let (v, cut) = string_fn(n, &[acc, a.clone()], ret)
-                    .ok_or_else(|| format!("{n}: unexpected argument types in the interpreter"))?;
+                let (v, cut) = string_fn(sig.func, &[acc, a.clone()], ret)
+                    .ok_or_else(|| bad_args(sig.func))?;
                 if cut {
                     fault(k);
                 }
@@ -638,21 +686,21 @@ pub fn call(
             }
             Ok(acc)
         }
-        (StdCall::Fold(n), _) => {
+        (StdCall::Fold(_), _) => {
             let mut it = args.iter();
             let mut acc = it
                 .next()
                 .cloned()
-                .ok_or_else(|| format!("{n}: no arguments"))?;
+                .ok_or_else(|| format!("{name}: no arguments"))?;
             for a in it {
-                acc = plain(n, &[acc, a.clone()], ret)?;
+                acc = plain(&[acc, a.clone()])?;
             }
             Ok(acc)
         }
-        (StdCall::Chain(n), _) => {
+        (StdCall::Chain(_), _) => {
             let mut all = true;
             for w in args.windows(2) {
-                all &= plain(n, w, ret)?.as_bool();
+                all &= plain(w)?.as_bool();
             }
             Ok(Value::Bool(all))
         }

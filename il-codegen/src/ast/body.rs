@@ -98,6 +98,27 @@ impl ExprOp {
             ExprOp::Lt => "LT",
         }
     }
+    /// The standard function the operator computes (IL's `ADD x` is
+    /// `ADD(CR, x)`): what an evaluator dispatches on.
+    pub fn func(self) -> il_std::signature::Func {
+        use il_std::signature::Func;
+        match self {
+            ExprOp::And => Func::AND,
+            ExprOp::Or => Func::OR,
+            ExprOp::Xor => Func::XOR,
+            ExprOp::Add => Func::ADD,
+            ExprOp::Sub => Func::SUB,
+            ExprOp::Mul => Func::MUL,
+            ExprOp::Div => Func::DIV,
+            ExprOp::Mod => Func::MOD,
+            ExprOp::Gt => Func::GT,
+            ExprOp::Ge => Func::GE,
+            ExprOp::Eq => Func::EQ,
+            ExprOp::Ne => Func::NE,
+            ExprOp::Le => Func::LE,
+            ExprOp::Lt => Func::LT,
+        }
+    }
     /// `AND`, `OR`, `XOR`: BOOL or bit-string operands.
     pub fn is_logic(self) -> bool {
         matches!(self, ExprOp::And | ExprOp::Or | ExprOp::Xor)

@@ -15,6 +15,7 @@ mod dialect;
 mod encodings;
 mod front_end_robustness;
 mod golden_emit;
+mod ir_operators;
 mod ir_size;
 mod pipeline_snippet;
 #[cfg(feature = "plcopen")]

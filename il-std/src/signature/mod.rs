@@ -254,6 +254,9 @@ pub struct Signature {
     /// what it converts from and to, and how ([`Conversion`]); `None` for
     /// the other functions.
     pub conversion: Option<Conversion>,
+    /// Which function it is: what a tool that evaluates calls (an
+    /// interpreter) dispatches on, rather than on [`name`](Signature::name).
+    pub func: Func,
     /// One line saying what the function does.
     pub doc: &'static str,
 }
@@ -387,6 +390,21 @@ macro_rules! rounding {
 macro_rules! build_table {
     ([ $( $name:ident $ext:ident ( $( $p:ident : $pk:ident $pc:ident ),* ) -> $rk:ident $rc:ident $( ! $fault:ident )? $( ~ $round:ident )? , $doc:literal ; )* ]
      $( $cname:ident : $src:ident => $dst:ident, $kind:ident ; )*) => {
+        /// Which standard function a [`Signature`] describes, one variant per
+        /// hand-written function of [`func`](crate::func) (named as it), and
+        /// [`Func::Conversion`] for every type conversion (what it converts is
+        /// [`Signature::conversion`]).
+        #[allow(non_camel_case_types)]
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        pub enum Func {
+            $(
+                #[doc = $doc]
+                $name,
+            )*
+            /// A type conversion (`INT_TO_REAL`, `REAL_TRUNC_INT`, `INT_TO_BCD` ...).
+            Conversion,
+        }
+
         /// Every standard function of [`func`](crate::func): the hand-written overloaded ones
         /// first, then the type conversions.
         pub static SIGNATURES: &[Signature] = &[
@@ -398,6 +416,7 @@ macro_rules! build_table {
                 fault: fault!($($fault)?),
                 rounding: rounding!($($round)?),
                 conversion: None,
+                func: Func::$name,
                 doc: $doc,
             }, )*
             $( Signature {
@@ -412,6 +431,7 @@ macro_rules! build_table {
                     to: Elem::$dst,
                     kind: conv_kind!($kind),
                 }),
+                func: Func::Conversion,
                 doc: concat!("Converts ", stringify!($src), " to ", stringify!($dst), "."),
             }, )*
         ];

@@ -237,3 +237,16 @@ fn elem() {
     assert_eq!(Elem::WORD.bits(), Some(16));
     assert_eq!(Elem::STRING.bits(), None);
 }
+
+#[test]
+fn each_entry_is_the_function_its_func_says() {
+    for s in SIGNATURES {
+        match s.func {
+            Func::Conversion => assert!(s.conversion.is_some(), "{}", s.name),
+            f => {
+                assert!(s.conversion.is_none(), "{}", s.name);
+                assert_eq!(std::format!("{f:?}"), s.name);
+            }
+        }
+    }
+}
