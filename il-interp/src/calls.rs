@@ -71,7 +71,7 @@ impl Machine {
             refs.push(self.read(f, place, ctx, line)?);
         }
         let (r, outs, back) = self.call_function(p, vals, refs, ctx)?;
-        // VAR_IN_OUT: copy-in/copy-out, as the emitter does for places it cannot borrow.
+        // VAR_IN_OUT: copy-in/copy-out (`UserCall::inouts`).
         for (place, v) in inouts.iter().zip(back) {
             self.write(f, place, v, ctx, line)?;
         }

@@ -74,7 +74,7 @@ impl Machine {
             Ty::Array(a) => {
                 let (dims, elem) = (&a.dims, &a.elem);
                 let n: i64 = dims.iter().map(|(lo, hi)| hi - lo + 1).product();
-                // As the emitter: an array of a subrange starts at its lower limit.
+                // An array of a subrange starts at its lower limit (`ir::element_start`).
                 let d = match il_codegen::ir::element_start(t) {
                     Some(c) => Value::from_const(&c),
                     None => self.default_of(elem)?,
@@ -119,7 +119,7 @@ impl Machine {
                 }
                 Ok(v)
             }
-            // As the emitter: the type's default, then each given field.
+            // The type's default, then each given field (`Init::Struct`).
             (Some(Init::Struct(fields)), Ty::Struct(_)) => {
                 let mut v = self.default_of(t)?;
                 for (n, fty, init) in fields {

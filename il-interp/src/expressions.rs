@@ -94,7 +94,7 @@ impl Machine {
                     _ => return Err("internal: TIME operand".into()),
                 };
                 if *time == Elem::TIME {
-                    // As the emitter: the operator is MUL_TIME / DIV_TIME.
+                    // TIME: il-std's MUL_TIME / DIV_TIME (`Expr::TimeScale`).
                     let (v, bad) = time_scale(*div, t, &r, *num);
                     if bad {
                         self.fault(ctx, f, FaultKind::DivisionByZero, line);

@@ -74,8 +74,8 @@ impl Machine {
                 value,
                 negate,
             } => {
-                // As the emitter: STN complements in the CR's type, before a
-                // widening.
+                // STN complements in the CR's type, before a widening
+                // (`Op::Store::negate`).
                 let v = match (negate, value) {
                     (true, IrValue::Widen(b)) => {
                         let (inner, w) = &**b;
@@ -87,8 +87,8 @@ impl Machine {
                     (false, v) => self.value(f, v, ctx, line)?,
                 };
                 let place = self.prog.pous[f.pou].place(*place);
-                // As the emitter: a store outside a subrange (an inline
-                // `INT (0..100)`) is skipped and recorded.
+                // A store outside a subrange (an inline `INT (0..100)`) does
+                // not happen and is recorded (`Place::range`).
                 if let (Some(&(lo, hi)), Value::Int(x, _)) = (place.range.as_deref(), &v)
                     && !(lo..=hi).contains(x)
                 {

@@ -162,7 +162,7 @@ impl Machine {
         })
     }
 
-    /// Resolve a place's path, evaluating every subscript first (as the emitter does).
+    /// Resolve a place's path, evaluating every subscript first (`PathElem::Index`).
     pub(crate) fn steps(
         &self,
         f: &mut Frame,
@@ -254,7 +254,7 @@ impl Machine {
         line: u32,
     ) -> Result<(), String> {
         if let Some((whole_place, whole, part, index)) = p.split_part() {
-            // As the emitter: read the whole, replace the part, write it back.
+            // Read the whole, replace the part, write it back (`Place::split_part`).
             let w = self.read(f, &whole_place, ctx, line)?;
             let new = part_write(&w, &v, whole, part, index);
             return self.write(f, &whole_place, new, ctx, line);

@@ -11,7 +11,10 @@ use super::{Condition, Place, StdCall, Value, Widen};
 pub struct UserCall {
     /// EN := value: run only when TRUE.
     pub en: Option<Value>,
-    /// Places bound to the VAR_IN_OUTs, in their declaration order.
+    /// Places bound to the VAR_IN_OUTs, in their declaration order: each
+    /// is read before the call and written back after it, in this order
+    /// (the same as passing it by reference: a FUNCTION has no other way
+    /// to reach the place).
     pub inouts: Vec<Place>,
     /// Index of the implicit ENO among the outputs, if the function sets ENO.
     pub eno: Option<usize>,

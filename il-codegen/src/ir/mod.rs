@@ -320,7 +320,8 @@ pub enum Init {
     Array(Vec<(usize, Init)>),
     /// Inputs of an FB instance: `t : TON := (PT := T#1s)`.
     Fields(Vec<(String, Const)>),
-    /// A structure: `(x := 1, inner := (y := 2))`, with each field's type.
+    /// A structure: `(x := 1, inner := (y := 2))`, with each field's type:
+    /// the type's default value, then each given field in turn.
     Struct(Vec<(String, Ty, Init)>),
 }
 
@@ -405,8 +406,10 @@ pub struct Place {
     pub path: Vec<PathElem>,
     /// The type of the place itself (after the path).
     pub ty: Ty,
-    /// Subrange bounds to check on stores. Boxed: rare, and inline the pair
-    /// of `i128` would more than double every place (and every value).
+    /// Subrange bounds to check on stores: a store of a value outside them
+    /// does not happen and records [`il_std::FaultKind::SubrangeViolation`].
+    /// Boxed: rare, and inline the pair of `i128` would more than double
+    /// every place (and every value).
     pub range: Option<Box<(i128, i128)>>,
 }
 
@@ -446,7 +449,10 @@ pub enum PathElem {
     Index {
         /// `(lo, hi)` per dimension, inclusive.
         dims: Vec<(i64, i64)>,
-        /// One subscript per dimension; the emitter checks them against `dims`.
+        /// One subscript per dimension, checked against `dims`. Every
+        /// subscript of a place is evaluated first, in path order; when one
+        /// is out of bounds, `IndexOutOfRange` is recorded and a read gives
+        /// the place type's default, a write does nothing.
         subs: Vec<Value>,
     },
     /// A part of an integer or bit string (3rd edition: `v.3`, `v.%B1`):
@@ -492,7 +498,8 @@ impl PathElem {
 
 impl Place {
     /// A place ending in a partial access: the place of the whole and the
-    /// part (`None` for any other place).
+    /// part (`None` for any other place). A partial access is written by
+    /// reading the whole, replacing the part and writing the whole back.
     pub fn split_part(&self) -> Option<(Place, Elem, Elem, u32)> {
         let Some(PathElem::Part { whole, part, index }) = self.path.last() else {
             return None;
@@ -602,6 +609,11 @@ pub enum Expr {
         negate_rhs: bool,
     },
     /// TIME/LTIME scaled by a number: `MUL`/`DIV` with a numeric operand.
+    /// TIME: il-std's `MUL_TIME` / `DIV_TIME` (a divisor of integer 0 gives
+    /// `T#0s` and records `DivisionByZero`). LTIME, in nanoseconds: an
+    /// integer factor wraps, a real one goes through `f64` (saturating to
+    /// the range), an integer divisor truncates and 0 gives `LTIME#0s` and
+    /// records `DivisionByZero`.
     TimeScale {
         /// `DIV` rather than `MUL`.
         div: bool,
