@@ -68,7 +68,7 @@ diagnostics as `ilc check`, and answers hover (the CR type before and after
 an instruction, declarations, standard signatures), inlay hints (the CR type
 at the end of each instruction line; off with the client setting
 `inlayHints.crType: false`), go to definition, references, rename, document
-and workspace symbols and completion. editors/vscode holds a VS Code client.";
+and workspace symbols, completion and formatting (as `ilc fmt`). editors/vscode holds a VS Code client.";
 
 /// The whole command line.
 pub fn command() -> Command {
@@ -223,6 +223,40 @@ pub fn command() -> Command {
             Command::new("lsp")
                 .about("Run the language server for editors (LSP over stdio)")
                 .after_long_help(LSP_EXAMPLES),
+        )
+        .subcommand(
+            Command::new("fmt")
+                .about("Lay out IL files as PLC IDEs show them (in place, or --check)")
+                .long_about(
+                    "Lay out IL files as PLC IDEs show them: the operator at column 4 after a \
+                     label column, operands after the widest operator, declarations aligned by \
+                     their `:`, trailing comments aligned, keywords in the case the file mostly \
+                     uses. Only blanks and the case of keywords change; line breaks, comments \
+                     and pragmas stay. A file with syntax errors is left as it is. Files are \
+                     rewritten in place (`-` reads standard input and writes standard output).",
+                )
+                .arg(
+                    Arg::new("files")
+                        .value_name("FILE")
+                        .help("IL files to format (`-`: standard input to standard output)")
+                        .required(true)
+                        .num_args(1..)
+                        .action(ArgAction::Append),
+                )
+                .arg(
+                    Arg::new("check")
+                        .long("check")
+                        .help("Change nothing; list the files that are not formatted and exit with 1 if any")
+                        .action(ArgAction::SetTrue),
+                )
+                .arg(
+                    Arg::new("keywords")
+                        .long("keywords")
+                        .value_name("CASE")
+                        .help("The case of keywords")
+                        .value_parser(PossibleValuesParser::new(["file", "upper", "lower", "preserve"]))
+                        .default_value("file"),
+                ),
         )
         .subcommand(
             Command::new("explain")

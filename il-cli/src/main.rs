@@ -3,6 +3,7 @@
 mod check;
 mod cli;
 mod emit;
+mod fmt;
 mod input;
 mod lsp;
 mod plot;
@@ -69,6 +70,35 @@ fn main() -> ExitCode {
                 ExitCode::SUCCESS
             } else {
                 ExitCode::from(1)
+            }
+        }
+        Some(("fmt", m)) => {
+            use il_codegen::format::{FormatOptions, KeywordCase};
+            let files: Vec<String> = m
+                .get_many::<String>("files")
+                .into_iter()
+                .flatten()
+                .cloned()
+                .collect();
+            let keywords = match m.get_one::<String>("keywords").map(String::as_str) {
+                Some("upper") => KeywordCase::Upper,
+                Some("lower") => KeywordCase::Lower,
+                Some("preserve") => KeywordCase::Preserve,
+                _ => KeywordCase::AsTheFile,
+            };
+            let check = m.get_flag("check");
+            let t = fmt::run(
+                &files,
+                check,
+                FormatOptions { keywords },
+                check::use_color("auto"),
+                &mut io::stdout().lock(),
+                &mut io::stderr().lock(),
+            );
+            if t.failed > 0 || (check && t.changed > 0) {
+                ExitCode::from(1)
+            } else {
+                ExitCode::SUCCESS
             }
         }
         Some(("run", m)) => {

@@ -10,6 +10,7 @@
 mod completion;
 mod convert;
 mod diagnostics;
+mod formatting;
 mod hover;
 mod index;
 mod inlay;
@@ -72,6 +73,8 @@ fn capabilities() -> ServerCapabilities {
             ..Default::default()
         }),
         inlay_hint_provider: Some(OneOf::Left(true)),
+        document_formatting_provider: Some(OneOf::Left(true)),
+        document_range_formatting_provider: Some(OneOf::Left(true)),
         ..Default::default()
     }
 }
@@ -333,6 +336,12 @@ fn request(ws: &Workspace, r: Request) -> Response {
         }),
         req::InlayHintRequest::METHOD => answer::<req::InlayHintRequest>(r, |p| {
             Ok(Some(inlay::hints(ws, &p.text_document.uri, p.range)))
+        }),
+        req::Formatting::METHOD => {
+            answer::<req::Formatting>(r, |p| Ok(formatting::edits(ws, &p.text_document.uri, None)))
+        }
+        req::RangeFormatting::METHOD => answer::<req::RangeFormatting>(r, |p| {
+            Ok(formatting::edits(ws, &p.text_document.uri, Some(p.range)))
         }),
         // For the tests of the panic guard only: refused unless asked for.
         "ilc/testPanic" if std::env::var_os("ILC_LSP_TEST_PANIC").is_some() => {

@@ -12,6 +12,7 @@ use serde_json::{Value, json};
 
 /// Programs per folder.
 mod folders;
+mod formatting;
 mod table;
 
 const LIB: &str = "\

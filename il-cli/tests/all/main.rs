@@ -8,6 +8,7 @@ mod dialect;
 mod docs;
 mod encodings;
 mod explain;
+mod fmt;
 mod lsp;
 mod plcopen;
 mod run;

@@ -33,7 +33,7 @@ pub struct InnerOpen {
 }
 
 /// A comment read from its `(*` at `start`.
-pub(super) struct Comment {
+pub(crate) struct Comment {
     /// Just after its closing `*)`; `None` when it is never closed.
     pub end: Option<usize>,
     /// The first `(*` inside it (only where comments do not nest).
@@ -42,7 +42,7 @@ pub(super) struct Comment {
 
 /// Read the comment that starts at `start` (at its `(*`). Where comments
 /// nest (`nests`), each inner `(*` needs its own `*)`.
-pub(super) fn scan(src: &str, start: usize, nests: bool) -> Comment {
+pub(crate) fn scan(src: &str, start: usize, nests: bool) -> Comment {
     let b = src.as_bytes();
     let mut depth = 1usize;
     let mut inner = None;
