@@ -74,6 +74,7 @@ fn capabilities() -> ServerCapabilities {
         }),
         inlay_hint_provider: Some(OneOf::Left(true)),
         document_formatting_provider: Some(OneOf::Left(true)),
+        code_action_provider: Some(lsp_types::CodeActionProviderCapability::Simple(true)),
         document_range_formatting_provider: Some(OneOf::Left(true)),
         ..Default::default()
     }
@@ -337,6 +338,9 @@ fn request(ws: &Workspace, r: Request) -> Response {
         req::InlayHintRequest::METHOD => answer::<req::InlayHintRequest>(r, |p| {
             Ok(Some(inlay::hints(ws, &p.text_document.uri, p.range)))
         }),
+        req::CodeActionRequest::METHOD => answer::<req::CodeActionRequest>(r, |p| {
+            Ok(Some(code_actions(ws, &p.text_document.uri, p.range)))
+        }),
         req::Formatting::METHOD => {
             answer::<req::Formatting>(r, |p| Ok(formatting::edits(ws, &p.text_document.uri, None)))
         }
@@ -353,4 +357,48 @@ fn request(ws: &Workspace, r: Request) -> Response {
         Ok(v) => Response::new_ok(id, v),
         Err((code, msg)) => Response::new_err(id, code as i32, msg),
     }
+}
+
+/// The quick fixes of the diagnostics that touch `range` (the checker's
+/// fixes: did-you-mean renames, a conversion before an instruction, `T#`
+/// before a duration).
+fn code_actions(
+    ws: &Workspace,
+    uri: &lsp_types::Uri,
+    range: lsp_types::Range,
+) -> lsp_types::CodeActionResponse {
+    let Some(k) = ws.doc(uri) else {
+        return Vec::new();
+    };
+    let touches = |r: &lsp_types::Range| r.start <= range.end && range.start <= r.end;
+    let fixes = ws.analysis.fixes.get(k).map_or(&[][..], Vec::as_slice);
+    let diags = ws
+        .analysis
+        .diagnostics
+        .get(k)
+        .map_or(&[][..], Vec::as_slice);
+    fixes
+        .iter()
+        .filter(|f| touches(&f.range))
+        .map(|f| {
+            let changes = std::iter::once((uri.clone(), f.edits.clone())).collect();
+            lsp_types::CodeActionOrCommand::CodeAction(lsp_types::CodeAction {
+                title: f.title.clone(),
+                kind: Some(lsp_types::CodeActionKind::QUICKFIX),
+                diagnostics: Some(
+                    diags
+                        .iter()
+                        .filter(|d| d.range == f.range)
+                        .cloned()
+                        .collect(),
+                ),
+                edit: Some(lsp_types::WorkspaceEdit {
+                    changes: Some(changes),
+                    ..Default::default()
+                }),
+                is_preferred: Some(true),
+                ..Default::default()
+            })
+        })
+        .collect()
 }

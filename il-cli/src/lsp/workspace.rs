@@ -32,6 +32,14 @@ pub struct Doc {
     pub read_diagnostics: Vec<il_codegen::diag::Diagnostic>,
 }
 
+/// A fix the checker offers for one diagnostic, in the document's terms.
+#[derive(Debug, Clone)]
+pub struct QuickFix {
+    pub range: lsp_types::Range,
+    pub title: String,
+    pub edits: Vec<lsp_types::TextEdit>,
+}
+
 /// The result of one check of every document.
 #[derive(Debug, Default)]
 pub struct Analysis {
@@ -39,6 +47,9 @@ pub struct Analysis {
     pub lines: Vec<LineIndex>,
     /// Each document's diagnostics, converted.
     pub diagnostics: Vec<Vec<lsp_types::Diagnostic>>,
+    /// Each document's quick fixes: the range of the diagnostic they fix,
+    /// and the fix's title and edits (the checker's `Diagnostic::fixes`).
+    pub fixes: Vec<Vec<QuickFix>>,
     /// One index per program (see [`programs`]).
     pub indexes: Vec<Index>,
     /// Each document's program: an index into `indexes`.
@@ -292,6 +303,7 @@ impl Workspace {
     pub fn check(&mut self) {
         let lines: Vec<LineIndex> = self.docs.iter().map(|d| LineIndex::new(&d.text)).collect();
         let mut diagnostics = vec![Vec::new(); self.docs.len()];
+        let mut fixes = vec![Vec::new(); self.docs.len()];
         let mut indexes = Vec::new();
         let mut program_of = vec![0; self.docs.len()];
         for group in programs(&self.docs) {
@@ -308,6 +320,21 @@ impl Workspace {
             for (&k, ds) in group.iter().zip(checked.diagnostics()) {
                 let d = &self.docs[k];
                 diagnostics[k] = diagnostics::convert(&d.uri, &d.text, &lines[k], ds);
+                fixes[k] = ds
+                    .iter()
+                    .flat_map(|diag| diag.fixes.iter().map(move |f| (diag.span, f)))
+                    .map(|(span, f)| QuickFix {
+                        range: lines[k].range(&d.text, span),
+                        title: f.title.clone(),
+                        edits: f
+                            .edits
+                            .iter()
+                            .map(|(s, t)| {
+                                lsp_types::TextEdit::new(lines[k].range(&d.text, *s), t.clone())
+                            })
+                            .collect(),
+                    })
+                    .collect();
                 program_of[k] = indexes.len();
             }
             let mut index = Index::build(&checked);
@@ -317,6 +344,7 @@ impl Workspace {
         self.analysis = Analysis {
             lines,
             diagnostics,
+            fixes,
             indexes,
             program_of,
         };

@@ -215,6 +215,16 @@ impl Severity {
     }
 }
 
+/// A change to the source that resolves a diagnostic: edits that replace
+/// each span's text (an empty span inserts).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Fix {
+    /// What it does, as a command: "Change to `count`".
+    pub title: String,
+    /// The edits, in the order of their spans, none overlapping.
+    pub edits: Vec<(Span, String)>,
+}
+
 /// One message about one place in the source.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagnostic {
@@ -234,6 +244,9 @@ pub struct Diagnostic {
     pub notes: Vec<String>,
     /// `= help: ...` (a suggestion).
     pub help: Option<String>,
+    /// Changes to the source that resolve it, as an editor offers them
+    /// (quick fixes): the help of a "did you mean", a conversion to insert.
+    pub fixes: Vec<Fix>,
     /// For `IL0032` only: how many diagnostics (and errors) it stands for.
     cut: (usize, usize),
 }
@@ -250,6 +263,7 @@ impl Diagnostic {
             secondary: Vec::new(),
             notes: Vec::new(),
             help: None,
+            fixes: Vec::new(),
             cut: (0, 0),
         }
     }
@@ -278,6 +292,16 @@ impl Diagnostic {
     /// With a `= help:` suggestion.
     pub fn with_help(mut self, help: impl Into<String>) -> Self {
         self.help = Some(help.into());
+        self
+    }
+    /// "did you mean `name`?": the help, and the fix that writes `name`
+    /// at `span` (the misspelled name).
+    pub fn did_you_mean(&mut self, span: Span, name: &str) -> &mut Self {
+        self.help = Some(format!("did you mean `{name}`?"));
+        self.fixes.push(Fix {
+            title: format!("Change to `{name}`"),
+            edits: vec![(span, name.to_string())],
+        });
         self
     }
     /// In-place forms of the builders, for diagnostics already pushed.

@@ -114,6 +114,11 @@ impl Snippet {
                 continue;
             }
             d.span = self.to_file(d.span);
+            for f in &mut d.fixes {
+                for (s, _) in &mut f.edits {
+                    *s = self.to_file(*s);
+                }
+            }
             for (s, _) in &mut d.secondary {
                 *s = self.to_file(*s);
             }

@@ -322,6 +322,8 @@ impl Import {
             ));
         }
         d.span = self.map.to_xml(d.span);
+        // An edit of the translated IL is no edit of the XML.
+        d.fixes.clear();
         for (s, _) in &mut d.secondary {
             *s = self.map.to_xml(*s);
         }

@@ -187,7 +187,7 @@ pub(crate) fn resolve_type(cx: &mut Cx, fb_names: &Names, spec: &TypeSpec) -> Op
                 .err(UNKNOWN_TYPE, id.span, format!("unknown type `{id}`"))
                 .set_label("not an elementary type or function block");
             if let Some(s) = suggest(&id.name, names) {
-                d.help = Some(format!("did you mean `{s}`?"));
+                d.did_you_mean(id.span, s);
             }
             None
         }

@@ -437,8 +437,8 @@ impl Walk<'_, '_> {
             ]
             .map(String::from),
         );
-        let hint = suggest(&name.name, cands.iter().map(String::as_str))
-            .map(|s| format!("did you mean `{s}`?"));
+        let near = suggest(&name.name, cands.iter().map(String::as_str)).map(str::to_string);
+        let hint = near.as_ref().map(|s| format!("did you mean `{s}`?"));
         if let Some(d) = self.err(
             UNKNOWN_FUNCTION,
             name.span,
@@ -450,6 +450,9 @@ impl Walk<'_, '_> {
                 ));
             } else {
                 d.help = hint;
+                if let Some(s) = &near {
+                    d.did_you_mean(name.span, s);
+                }
                 d.notes.push("a word in the operator field that is not an IL operator must name a FUNCTION; vendor built-ins are not IEC 61131-3".into());
                 d.notes.push(format!("if the runtime provides `{name}`, declare it as a host function, whose body is the crate's Rust code: `{{extern}} FUNCTION {name} : BOOL VAR_INPUT ... END_VAR END_FUNCTION`"));
             }

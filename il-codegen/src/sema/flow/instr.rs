@@ -269,14 +269,15 @@ impl Walk<'_, '_> {
                     // In label order: `suggest` keeps the first of equally
                     // close names (fuzzing found a hash map's order making
                     // `l0` suggest `L2` or `L3` from run to run).
-                    let hint = suggest(&label.name, self.label_names.iter().map(String::as_str))
-                        .map(|s| format!("did you mean `{s}`?"));
+                    let near = suggest(&label.name, self.label_names.iter().map(String::as_str))
+                        .map(str::to_string);
                     if let Some(d) = self.err(
                         UNKNOWN_LABEL,
                         label.span,
                         format!("no label `{label}` in {}", self.sig.name),
-                    ) {
-                        d.help = hint;
+                    ) && let Some(s) = near
+                    {
+                        d.did_you_mean(label.span, &s);
                     }
                     return if *cond == Cond::Always { Cr::Dead } else { cr };
                 };

@@ -139,6 +139,7 @@ pub(crate) fn check_pou(
         cr_steps: Vec::new(),
         line: 0,
         col: 0,
+        instr_lo: 0,
         addresses: Vec::new(),
         places: Vec::new(),
         place_ids: Default::default(),
@@ -446,6 +447,9 @@ struct Walk<'a, 'c> {
     line: u32,
     /// Column (1-based) of the instruction being walked.
     col: u32,
+    /// Where the instruction being walked starts (its operator), for the
+    /// fixes that insert an instruction before it.
+    instr_lo: u32,
     addresses: Vec<ir::Loc>,
     /// The body's place table, and the index of each place without
     /// subscripts in it by a hash of its root and steps ([`place_table`]).
@@ -475,6 +479,7 @@ impl Walk<'_, '_> {
         // Only the final pass builds statements, which need the column.
         // Instructions come in order: the previous line is the best guess.
         let near = self.line as usize;
+        self.instr_lo = span.lo;
         if self.final_pass {
             let (line, col) = self.cx.file.line_col_near(span.lo, near);
             self.line = line as u32;

@@ -286,15 +286,21 @@ pub(super) fn fold(op: BinOp, negate: bool, a: &LitClass, b: &LitClass) -> Resul
     }
 }
 
-/// "use INT_TO_REAL" when a conversion function exists.
-pub(super) fn conversion_hint(from: &Ty, to: &Ty) -> Option<String> {
+/// The standard conversion from `from` to `to` (`INT_TO_REAL`), if there is one.
+pub(super) fn conversion_name(from: &Ty, to: &Ty) -> Option<String> {
     let (Ty::Elem(a), Ty::Elem(b)) = (from, to) else {
         return None;
     };
     let name = format!("{}_TO_{}", short(*a), short(*b));
-    if !stdfn::is_std(&name) {
+    stdfn::is_std(&name).then_some(name)
+}
+
+/// "use INT_TO_REAL" when a conversion function exists.
+pub(super) fn conversion_hint(from: &Ty, to: &Ty) -> Option<String> {
+    let name = conversion_name(from, to)?;
+    let (Ty::Elem(a), Ty::Elem(b)) = (from, to) else {
         return None;
-    }
+    };
     // A number where a BOOL is wanted is mostly a missing comparison.
     if *b == Elem::BOOL && (a.is_int() || a.is_real()) {
         return Some(format!(

@@ -98,7 +98,7 @@ impl Walk<'_, '_> {
             return None; // its declaration was already reported
         } else {
             let names: Vec<&str> = self.sig.vars.iter().map(|v| v.name.as_str()).collect();
-            let hint = suggest(&v.base.name, names).map(|s| format!("did you mean `{s}`?"));
+            let near = suggest(&v.base.name, names).map(str::to_string);
             let what = if self.is_function(&v.base.name) {
                 format!("`{}` is a function, not a variable", v.base)
             } else {
@@ -107,7 +107,9 @@ impl Walk<'_, '_> {
             let pou_name = self.sig.name.clone();
             if let Some(d) = self.err(UNKNOWN_NAME, v.base.span, what) {
                 d.label = format!("not declared in {pou_name}");
-                d.help = hint;
+                if let Some(s) = near {
+                    d.did_you_mean(v.base.span, &s);
+                }
             }
             return None;
         };
@@ -312,8 +314,7 @@ impl Walk<'_, '_> {
             return Some(m);
         }
         let all = self.members(fb);
-        let hint = suggest(name, all.iter().map(|(n, _, _)| n.as_str()))
-            .map(|s| format!("did you mean `{s}`?"));
+        let near = suggest(name, all.iter().map(|(n, _, _)| n.as_str())).map(str::to_string);
         let list: Vec<&str> = all.iter().map(|(n, _, _)| n.as_str()).collect();
         if let Some(d) = self.err(
             UNKNOWN_MEMBER,
@@ -321,7 +322,9 @@ impl Walk<'_, '_> {
             format!("{fb} has no input or output `{name}`"),
         ) {
             d.notes.push(format!("{fb} has: {}", list.join(", ")));
-            d.help = hint;
+            if let Some(s) = near {
+                d.did_you_mean(span, &s);
+            }
         }
         None
     }

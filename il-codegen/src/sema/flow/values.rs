@@ -4,6 +4,30 @@
 use super::*;
 
 impl Walk<'_, '_> {
+    /// The fix that converts the CR before the instruction being walked:
+    /// the conversion as an instruction of its own, after the line's label
+    /// (a jump to the label converts too), the instruction moved to the next
+    /// line at its column.
+    fn insert_conversion(&self, from: &Ty, to: &Ty) -> Option<crate::diag::Fix> {
+        let name = super::operators::conversion_name(from, to)?;
+        let text = &self.cx.file.text;
+        let lo = (self.instr_lo as usize).min(text.len());
+        let start = text[..lo].rfind('\n').map_or(0, |i| i + 1);
+        let indent: String = text[start..lo]
+            .chars()
+            .map(|c| if c.is_whitespace() { c } else { ' ' })
+            .collect();
+        let nl = if text[lo..].split('\n').next()?.ends_with('\r') {
+            "\r\n"
+        } else {
+            "\n"
+        };
+        Some(crate::diag::Fix {
+            title: format!("Convert the current result with `{name}`"),
+            edits: vec![(Span::new(lo, lo), format!("{name}{nl}{indent}"))],
+        })
+    }
+
     /// The CR as an argument, or a diagnostic saying why there is none.
     pub(super) fn use_cr(&mut self, cr: &Cr, span: Span) -> Option<Arg> {
         match cr {
@@ -118,8 +142,12 @@ impl Walk<'_, '_> {
                 "the value"
             };
             let msg = format!("{} is {ty}, but {src} is {t}{}", dest(), narrowing(t, ty));
+            let fix = matches!(v, Value::Cr(_))
+                .then(|| self.insert_conversion(t, ty))
+                .flatten();
             if let Some(d) = self.err(TYPE_MISMATCH, span, msg) {
                 d.help = conversion_hint(t, ty);
+                d.fixes.extend(fix);
             }
             return None;
         }

@@ -68,6 +68,10 @@ impl<'a> Lexer<'a> {
             );
             if duration {
                 d.help = Some(format!("a duration is written `T#{text}`"));
+                d.fixes.push(crate::diag::Fix {
+                    title: format!("Write `T#{text}`"),
+                    edits: vec![(span(start, start), "T#".into())],
+                });
             }
             LitKind::Int(IntValue::new(0))
         } else if real {
