@@ -381,6 +381,8 @@ fn code_actions(
         .iter()
         .filter(|f| touches(&f.range))
         .map(|f| {
+            // lsp_types' own map type: `Uri` is a key by its text.
+            #[allow(clippy::mutable_key_type)]
             let changes = std::iter::once((uri.clone(), f.edits.clone())).collect();
             lsp_types::CodeActionOrCommand::CodeAction(lsp_types::CodeAction {
                 title: f.title.clone(),
