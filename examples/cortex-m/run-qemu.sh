@@ -11,7 +11,7 @@ target=thumbv7m-none-eabi
 
 if ! command -v qemu-system-arm >/dev/null; then
     echo "run-qemu.sh: qemu-system-arm is not installed." >&2
-    echo "  Debian/Ubuntu: sudo apt-get install qemu-system-arm" >&2
+    echo "  Debian/Ubuntu: sudo apt-get install --no-install-recommends qemu-system-arm" >&2
     echo "  Fedora: sudo dnf install qemu-system-arm; macOS: brew install qemu" >&2
     exit 2
 fi
@@ -51,8 +51,11 @@ read -r _cycle _time watch <<<"$(head -n 1 "$work/qemu.trace")"
 cycles="$(awk '$1 == "cycles" { print $2 }' "$here/scans.txt")"
 step="$(awk '$1 == "step" { print $2 }' "$here/scans.txt")"
 mapfile -t sets < <(awk '$1 ~ /^[0-9]+$/ { print "--set=" $2 "@" $1 }' "$here/scans.txt")
+# ILC names an ilc binary to use (CI passes the one its tests built, which
+# `cargo run -p il-cli` would rebuild with other features); else cargo runs it.
+if [ -n "${ILC:-}" ]; then ilc=("$ILC"); else ilc=(cargo run --quiet -p il-cli --); fi
 echo "== ilc run (the reference interpreter)"
-(cd "$root" && cargo run --quiet -p il-cli -- run examples/cortex-m/plc/pump.il \
+(cd "$root" && "${ilc[@]}" run examples/cortex-m/plc/pump.il \
     --program Pump --cycles "$cycles" --step "$step" "${sets[@]}" \
     --watch "${watch// /,}") >"$work/ilc.out"
 # ilc's table, in the firmware's format: single spaces, the time as a TIME literal.
