@@ -26,7 +26,7 @@ trap 'rm -rf "$work"' EXIT
 
 echo "== build (release, $target)"
 (cd "$here" && cargo build --release --quiet)
-elf="$here/target/$target/release/il-cortex-m"
+elf="${CARGO_TARGET_DIR:-$here/target}/$target/release/il-cortex-m"
 
 echo "== run under QEMU"
 # -icount: virtual time counts instructions (1 instruction = 2^6 ns), so the

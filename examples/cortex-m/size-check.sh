@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The size check of BENCHMARKS.md: adds a generated IL program of about
+# LINES lines (default 2000, gen-big.sh) to the firmware, which must still
+# link into 64 KiB of flash and 16 KiB of RAM (memory.x) and still give the
+# interpreter's trace (run-qemu.sh); then prints where the flash goes.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+lines="${1:-2000}"
+export CARGO_TARGET_DIR="$here/target/size-check"
+mkdir -p "$CARGO_TARGET_DIR"
+big="$CARGO_TARGET_DIR/big.il"
+bash "$here/gen-big.sh" "$lines" >"$big"
+echo "== $(wc -l <"$big") lines of IL in $(grep -c '^FUNCTION_BLOCK' "$big") function blocks and PROGRAM Big"
+IL_EXTRA="$big" IL_EXTRA_PROGRAM=Big bash "$here/run-qemu.sh"
+
+elf="$CARGO_TARGET_DIR/thumbv7m-none-eabi/release/il-cortex-m"
+if command -v llvm-nm >/dev/null; then
+    # Functions (and constants) by whose code they are; LTO inlines most of
+    # the program and of il-std into main, which counts as the example's.
+    echo "== flash by owner, symbols not inlined (llvm-nm)"
+    llvm-nm -S -C --size-sort --radix=d "$elf" | awk 'NF >= 4 && $3 ~ /^[tTrR]$/ {
+        if ($0 ~ /il_cortex_m(::|\.\.)plc/) k = "generated code (plc)"
+        else if ($0 ~ /il_std/) k = "il-std"
+        else if ($0 ~ /il_cortex_m/) k = "example (main, I/O)"
+        else if ($0 ~ /compiler_builtins|__aeabi/) k = "compiler_builtins"
+        else if ($0 ~ /cortex_m|__INTERRUPTS|__RESET|Reset|Handler|HardFault/) k = "cortex-m crates"
+        else if ($0 ~ /core/) k = "core (fmt)"
+        else k = "vector table, constants"
+        sum[k] += $2 }
+        END { for (k in sum) printf "  %6d bytes  %s\n", sum[k], k }' | sort -n -r
+else
+    echo "(llvm-nm not found: no breakdown)"
+fi
