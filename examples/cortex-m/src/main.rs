@@ -120,7 +120,9 @@ fn run() -> bool {
             overruns += t - last - 1;
             last = t;
         }
-        ctx.set_now(TIME::from_ms(i64::from((last - first) * scans::STEP_MS)));
+        // The PLC's clock: SysTick periods since the first scan.
+        let periods = i64::from(last.wrapping_sub(first));
+        ctx.set_now(TIME::from_ms(periods * i64::from(scans::STEP_MS)));
         for (_, input) in scans::SETS.iter().filter(|(at, _)| *at == k) {
             field.apply(*input);
         }
