@@ -47,7 +47,11 @@ fi
 
 # The interpreter, with the names of the firmware's header line and the
 # inputs of scans.txt (`SCAN ADDRESS=VALUE` becomes --set ADDRESS=VALUE@SCAN).
-read -r _cycle _time watch <<<"$(head -n 1 "$work/qemu.trace")"
+read -r first second watch <<<"$(head -n 1 "$work/qemu.trace")"
+if [ "$first $second" != "cycle time" ] || [ -z "$watch" ]; then
+    echo "run-qemu.sh: FAILED: QEMU printed no trace header (exit status $status)" >&2
+    exit 1
+fi
 cycles="$(awk '$1 == "cycles" { print $2 }' "$here/scans.txt")"
 step="$(awk '$1 == "step" { print $2 }' "$here/scans.txt")"
 mapfile -t sets < <(awk '$1 ~ /^[0-9]+$/ { print "--set=" $2 "@" $1 }' "$here/scans.txt")
