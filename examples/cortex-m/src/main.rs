@@ -16,7 +16,6 @@ use cortex_m_semihosting::{debug, hprintln};
 use il_std::{Cycle, TIME};
 
 /// The generated program (and the size check's, with IL_EXTRA).
-#[allow(clippy::all)]
 mod plc {
     include!(concat!(env!("OUT_DIR"), "/pump.rs"));
     include!(concat!(env!("OUT_DIR"), "/extra.rs"));
