@@ -6,14 +6,16 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 lines="${1:-2000}"
-export CARGO_TARGET_DIR="$here/target/size-check"
-mkdir -p "$CARGO_TARGET_DIR"
-big="$CARGO_TARGET_DIR/big.il"
+# The example's own target directory: only the firmware is rebuilt (twice:
+# with the program, and by the next run-qemu.sh without it).
+target_dir="${CARGO_TARGET_DIR:-$here/target}"
+mkdir -p "$target_dir"
+big="$target_dir/big.il"
 bash "$here/gen-big.sh" "$lines" >"$big"
 echo "== $(wc -l <"$big") lines of IL in $(grep -c '^FUNCTION_BLOCK' "$big") function blocks and PROGRAM Big"
 IL_EXTRA="$big" IL_EXTRA_PROGRAM=Big bash "$here/run-qemu.sh"
 
-elf="$CARGO_TARGET_DIR/thumbv7m-none-eabi/release/il-cortex-m"
+elf="$target_dir/thumbv7m-none-eabi/release/il-cortex-m"
 if command -v llvm-nm >/dev/null; then
     # Functions (and constants) by whose code they are; LTO inlines most of
     # the program and of il-std into main, which counts as the example's.
