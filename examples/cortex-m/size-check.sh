@@ -20,14 +20,15 @@ if command -v llvm-nm >/dev/null; then
     # Functions (and constants) by whose code they are; LTO inlines most of
     # the program and of il-std into main, which counts as the example's.
     echo "== flash by owner, symbols not inlined (llvm-nm)"
-    llvm-nm -S -C --size-sort --radix=d "$elf" | awk 'NF >= 4 && $3 ~ /^[tTrR]$/ {
+    # Identical functions folded into one address count once.
+    llvm-nm -S -C --size-sort --radix=d "$elf" | awk 'NF >= 4 && $3 ~ /^[tTrR]$/ && $2 > 0 && !seen[$1]++ {
         if ($0 ~ /il_cortex_m(::|\.\.)plc/) k = "generated code (plc)"
         else if ($0 ~ /il_std/) k = "il-std"
         else if ($0 ~ /il_cortex_m/) k = "example (main, I/O)"
         else if ($0 ~ /compiler_builtins|__aeabi/) k = "compiler_builtins"
-        else if ($0 ~ /cortex_m|__INTERRUPTS|__RESET|Reset|Handler|HardFault/) k = "cortex-m crates"
+        else if ($0 ~ /cortex_m|__INTERRUPTS|__EXCEPTIONS|__RESET|Reset|Handler|HardFault/) k = "cortex-m crates, vector tables"
         else if ($0 ~ /core/) k = "core (fmt)"
-        else k = "vector table, constants"
+        else k = "constants"
         sum[k] += $2 }
         END { for (k in sum) printf "  %6d bytes  %s\n", sum[k], k }' | sort -n -r
 else
