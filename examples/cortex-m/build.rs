@@ -1,6 +1,7 @@
 //! Compiles the IL program with il-codegen's Builder, turns `scans.txt` into
-//! the firmware's input table, and puts `memory.x` where cortex-m-rt's
-//! `link.x` looks for it.
+//! the firmware's input table, and writes the `memory.x` that cortex-m-rt's
+//! `link.x` includes: `memory-budget.x`, the budget of a small part. (No
+//! `memory.x` beside Cargo.toml: the linker would find that one first.)
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -31,16 +32,29 @@ fn main() {
         println!("cargo:rustc-cfg=il_extra");
     }
     println!("cargo:rustc-check-cfg=cfg(il_extra)");
-    std::fs::write(out.join("extra.rs"), extra).expect("OUT_DIR is writable");
+    std::fs::write(out.join("extra.rs"), &extra).expect("OUT_DIR is writable");
 
     let table = std::fs::read_to_string("scans.txt").expect("scans.txt is beside build.rs");
     println!("cargo:rerun-if-changed=scans.txt");
     let rust = scans_rs(&table).unwrap_or_else(|e| panic!("scans.txt: {e}"));
     std::fs::write(out.join("scans.rs"), rust).expect("OUT_DIR is writable");
 
-    std::fs::copy("memory.x", out.join("memory.x")).expect("memory.x is beside build.rs");
+    // IL_EXTRA_TRACE: the extra program's variables are traced too, through
+    // its `visit`; that code (and float formatting) outgrows the budget of
+    // memory-budget.x, so that build links into the LM3S6965's whole memory.
+    println!("cargo:rerun-if-env-changed=IL_EXTRA_TRACE");
+    println!("cargo:rustc-check-cfg=cfg(il_extra_trace)");
+    let traced = !extra.is_empty() && std::env::var_os("IL_EXTRA_TRACE").is_some();
+    let memory = if traced {
+        println!("cargo:rustc-cfg=il_extra_trace");
+        "MEMORY\n{\n  FLASH : ORIGIN = 0x00000000, LENGTH = 256K\n  RAM : ORIGIN = 0x20000000, LENGTH = 64K\n}\n"
+            .to_string()
+    } else {
+        std::fs::read_to_string("memory-budget.x").expect("memory-budget.x is beside build.rs")
+    };
+    std::fs::write(out.join("memory.x"), memory).expect("OUT_DIR is writable");
     println!("cargo:rustc-link-search={}", out.display());
-    println!("cargo:rerun-if-changed=memory.x");
+    println!("cargo:rerun-if-changed=memory-budget.x");
 }
 
 /// `scans.txt` as Rust: `CYCLES`, `STEP_MS` and `SETS`, the changes of the

@@ -29,17 +29,21 @@ echo "== build (release, $target)"
 elf="${CARGO_TARGET_DIR:-$here/target}/$target/release/il-cortex-m"
 
 echo "== run under QEMU"
-# -icount: virtual time counts instructions (1 instruction = 2^6 ns), so the
-# run is deterministic and the SysTick measure of a scan is in instructions;
-# sleep=off jumps over the idle time between scans. The timeout ends a
+# -icount: virtual time counts instructions (1 instruction = 2^shift ns), so
+# the run is deterministic and the SysTick measure of a scan is in
+# instructions; sleep=off jumps over the idle time between scans. A scan
+# and its trace lines must fit the period: ICOUNT_SHIFT=3 gives a long trace
+# (size-check.sh's) eight times the instructions. The timeout ends a
 # firmware that hangs instead of exiting through semihosting.
 status=0
 timeout 60 qemu-system-arm -cpu cortex-m3 -machine lm3s6965evb -nographic \
     -monitor none -serial none -semihosting-config enable=on,target=native \
-    -icount shift=6,sleep=off -kernel "$elf" >"$work/qemu.out" \
+    -icount "shift=${ICOUNT_SHIFT:-6},sleep=off" -kernel "$elf" >"$work/qemu.out" \
     2> >(grep -v "^Timer with period zero" >&2) || status=$?
 grep '^#' "$work/qemu.out" || true
-grep -v '^#' "$work/qemu.out" >"$work/qemu.trace" || true
+grep -v '^[#x]' "$work/qemu.out" >"$work/qemu.trace" || true
+# IL_EXTRA_TRACE: the extra program's own trace, `x ` lines (src/visit.rs).
+sed -n 's/^x //p' "$work/qemu.out" >"$work/extra.trace"
 if [ "$status" -eq 124 ]; then
     echo "run-qemu.sh: QEMU did not finish within 60 s" >&2
     exit 1
@@ -69,8 +73,29 @@ if ! diff -u --label "ilc run" --label "QEMU" "$work/ilc.trace" "$work/qemu.trac
     echo "run-qemu.sh: FAILED: the trace under QEMU differs from the interpreter's (above)" >&2
     exit 1
 fi
+if [ -n "${IL_EXTRA_TRACE:-}" ]; then
+    # The extra program reads no inputs: the same scans and step, no --set.
+    read -r first second watch <<<"$(head -n 1 "$work/extra.trace")"
+    if [ "$first $second" != "cycle time" ] || [ -z "$watch" ]; then
+        echo "run-qemu.sh: FAILED: QEMU printed no trace of $IL_EXTRA_PROGRAM" >&2
+        exit 1
+    fi
+    echo "== ilc run of $IL_EXTRA_PROGRAM ($(wc -w <<<"$watch") variables)"
+    (cd "$root" && "${ilc[@]}" run "$IL_EXTRA" --program "$IL_EXTRA_PROGRAM" \
+        --cycles "$cycles" --step "$step" --watch "${watch// /,}") >"$work/ilc-extra.out"
+    awk '{ if (NR > 1) $2 = "T#" $2; $1 = $1; print }' "$work/ilc-extra.out" >"$work/ilc-extra.trace"
+    if ! diff -u --label "ilc run" --label "QEMU" "$work/ilc-extra.trace" "$work/extra.trace" >"$work/extra.diff"; then
+        # Lines of hundreds of values: the start of the diff is enough.
+        head -c 4000 "$work/extra.diff"
+        echo
+        echo "run-qemu.sh: FAILED: $IL_EXTRA_PROGRAM's trace under QEMU differs from the interpreter's (above)" >&2
+        exit 1
+    fi
+fi
 if [ "$status" -ne 0 ]; then
     echo "run-qemu.sh: FAILED: the firmware's check failed (QEMU exit status $status)" >&2
     exit 1
 fi
-echo "run-qemu.sh: ok: $(($(wc -l <"$work/qemu.trace") - 1)) scans under QEMU equal the interpreter's, check passed"
+traced=""
+[ -n "${IL_EXTRA_TRACE:-}" ] && traced=" (and $IL_EXTRA_PROGRAM's)"
+echo "run-qemu.sh: ok: $(($(wc -l <"$work/qemu.trace") - 1)) scans under QEMU equal the interpreter's$traced, check passed"

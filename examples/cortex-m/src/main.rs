@@ -8,6 +8,8 @@
 
 mod io;
 mod size;
+#[cfg(il_extra_trace)]
+mod visit;
 
 use core::sync::atomic::{AtomicU32, Ordering};
 use cortex_m::peripheral::{SYST, syst::SystClkSource};
@@ -108,6 +110,8 @@ fn run() -> bool {
     };
 
     hprintln!("{}", HEADER);
+    #[cfg(il_extra_trace)]
+    visit::header(&*extra);
     let (mut overruns, mut counts, mut max_counts) = (0u32, 0u32, 0u32);
     let first = wait_tick(TICKS.load(Ordering::Relaxed));
     let mut last = first;
@@ -133,7 +137,8 @@ fn run() -> bool {
         #[cfg(il_extra)]
         {
             extra.call(ctx);
-            // Nothing reads its state: keep the optimiser from dropping it.
+            // Without its trace nothing reads its state: keep the optimiser
+            // from dropping it.
             core::hint::black_box(&*extra);
         }
         // SysTick counts down; a scan is far shorter than a period, and it
@@ -143,6 +148,8 @@ fn run() -> bool {
         counts += spent;
         max_counts = max_counts.max(spent);
         trace(k, ctx, prg, &field);
+        #[cfg(il_extra_trace)]
+        visit::line(k, ctx.now(), &*extra);
     }
 
     // Under QEMU's -icount every instruction takes the same virtual time,
