@@ -7,8 +7,8 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 lines="${1:-2000}"
-# The example's own target directory: only the firmware is rebuilt (twice:
-# with the program, and by the next run-qemu.sh without it).
+# The example's own target directory: only the firmware is rebuilt, once
+# for each variant (and by the next run-qemu.sh, without the program).
 target_dir="${CARGO_TARGET_DIR:-$here/target}"
 mkdir -p "$target_dir"
 big="$target_dir/big.il"
