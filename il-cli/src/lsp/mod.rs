@@ -15,6 +15,7 @@ mod hover;
 mod index;
 mod inlay;
 mod navigation;
+mod semantic;
 mod symbols;
 mod workspace;
 
@@ -75,6 +76,16 @@ fn capabilities() -> ServerCapabilities {
         inlay_hint_provider: Some(OneOf::Left(true)),
         document_formatting_provider: Some(OneOf::Left(true)),
         code_action_provider: Some(lsp_types::CodeActionProviderCapability::Simple(true)),
+        semantic_tokens_provider: Some(
+            lsp_types::SemanticTokensServerCapabilities::SemanticTokensOptions(
+                lsp_types::SemanticTokensOptions {
+                    legend: semantic::legend(),
+                    full: Some(lsp_types::SemanticTokensFullOptions::Bool(true)),
+                    range: None,
+                    work_done_progress_options: Default::default(),
+                },
+            ),
+        ),
         document_range_formatting_provider: Some(OneOf::Left(true)),
         ..Default::default()
     }
@@ -338,6 +349,11 @@ fn request(ws: &Workspace, r: Request) -> Response {
         req::InlayHintRequest::METHOD => answer::<req::InlayHintRequest>(r, |p| {
             Ok(Some(inlay::hints(ws, &p.text_document.uri, p.range)))
         }),
+        req::SemanticTokensFullRequest::METHOD => {
+            answer::<req::SemanticTokensFullRequest>(r, |p| {
+                Ok(semantic::full(ws, &p.text_document.uri).map(Into::into))
+            })
+        }
         req::CodeActionRequest::METHOD => answer::<req::CodeActionRequest>(r, |p| {
             Ok(Some(code_actions(ws, &p.text_document.uri, p.range)))
         }),

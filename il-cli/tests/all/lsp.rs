@@ -14,6 +14,7 @@ use serde_json::{Value, json};
 mod code_actions;
 mod folders;
 mod formatting;
+mod semantic;
 mod table;
 
 const LIB: &str = "\
