@@ -12,7 +12,7 @@ use il_interp::il_std::signature as sig;
 
 /// The IL operators (IEC 61131-3 Table 68 and the FB input operators),
 /// with what each does.
-const OPERATORS: &[(&str, &str)] = &[
+pub(super) const OPERATORS: &[(&str, &str)] = &[
     ("LD", "load the operand into the CR"),
     ("LDN", "load the operand's complement"),
     ("ST", "store the CR"),

@@ -7,15 +7,28 @@ use lsp_types::{Hover, HoverContents, MarkupContent, MarkupKind, Position, Uri};
 
 use super::index::{Index, Kind, Step, fb_signature};
 use super::workspace::Workspace;
+use il_codegen::ast::{self, PouKind};
 use il_codegen::ir::{CrState, SymbolId, SymbolKind};
 use il_interp::il_std::signature::{self as sig, Class, Ext, ParamTy, Signature};
 
 pub fn hover(ws: &Workspace, uri: &Uri, pos: Position) -> Option<Hover> {
     let (k, off) = ws.locate(uri, pos)?;
     let ix = ws.analysis.index(k)?;
-    let named = ix
-        .name_at(k, off)
-        .and_then(|(span, s)| Some((span, symbol_text(ix, s)?)));
+    let named = ix.name_at(k, off).and_then(|(span, s)| {
+        let mut text = symbol_text(ix, s)?;
+        // A user FUNCTION called as an operator: the CR it takes and gives.
+        if matches!(ix.table.symbols[s].kind, SymbolKind::Pou(PouKind::Function))
+            && ix.table.symbols[s].decl.is_none_or(|d| d.span != span)
+            && let Some(step) = ix.step_at(k, off).filter(|st| !st.label)
+        {
+            text.push_str(&format!(
+                "\n\n---\n\nCalled here with the current result as its first input: CR before: {}, CR after (its result): {}",
+                cr(&step.before),
+                cr(&step.after)
+            ));
+        }
+        Some((span, text))
+    });
     let (span, text) = match named {
         Some(n) => n,
         None => {
@@ -51,6 +64,10 @@ fn symbol_text(ix: &Index, s: SymbolId) -> Option<String> {
                 fb.name
             )
         }
+        SymbolKind::Pou(PouKind::Function) => match ix.declared(s) {
+            Some(d) => function_text(ix, d),
+            None => other_text(ix, s),
+        },
         _ => match ix.declared(s) {
             Some(d) => declaration_text(ix, d),
             None => other_text(ix, s),
@@ -74,6 +91,57 @@ fn other_text(ix: &Index, s: SymbolId) -> String {
         k => format!("{k:?}"),
     };
     format!("```il\n{}\n```\n\n{what}", sym.name)
+}
+
+/// A user FUNCTION: its header, its inputs, in-outs and outputs in order
+/// (the first input is the CR when it is called as an operator).
+fn function_text(ix: &Index, f: super::index::SymId) -> String {
+    let sym = &ix.symbols[f];
+    let mut sections: Vec<(ast::VarKind, Vec<String>)> = Vec::new();
+    for &v in ix.members.get(&f).map_or(&[][..], Vec::as_slice) {
+        let Kind::Var(kind) = ix.symbols[v].kind else {
+            continue;
+        };
+        if !matches!(
+            kind,
+            ast::VarKind::Input | ast::VarKind::InOut | ast::VarKind::Output
+        ) {
+            continue;
+        }
+        // The declaration's own line: `VAR_INPUT / x : INT; / END_VAR`.
+        let line = ix.symbols[v]
+            .decl
+            .lines()
+            .nth(1)
+            .unwrap_or("")
+            .trim()
+            .to_string();
+        match sections.last_mut() {
+            Some((k, lines)) if *k == kind => lines.push(line),
+            _ => sections.push((kind, vec![line])),
+        }
+    }
+    let mut out = format!("```il\n{}", sym.decl);
+    for (kind, lines) in &sections {
+        out.push_str(&format!("\n{}", kind.keyword()));
+        for l in lines {
+            out.push_str(&format!("\n    {l}"));
+        }
+        out.push_str("\nEND_VAR");
+    }
+    out.push_str("\n```");
+    let first = sections
+        .iter()
+        .find(|(k, _)| *k == ast::VarKind::Input)
+        .and_then(|(_, l)| l.first());
+    if let Some(first) = first {
+        let name = first.split([':', ',', ' ']).next().unwrap_or("");
+        out.push_str(&format!(
+            "\n\nAs an operator (`{} ...`), the current result is its first input `{name}` and its result becomes the current result.",
+            ix.symbols[f].name
+        ));
+    }
+    out
 }
 
 /// A declared name: its declaration as written, and for a label the CR
@@ -130,6 +198,11 @@ fn class_name(c: Class) -> &'static str {
         Class::Any => "ANY",
         Class::Bool => "BOOL",
     }
+}
+
+/// A parameter's type as signatures show it (`T: ANY_NUM`).
+pub(super) fn param_ty_name(t: ParamTy) -> String {
+    param_ty(t)
 }
 
 fn param_ty(t: ParamTy) -> String {

@@ -16,6 +16,7 @@ mod index;
 mod inlay;
 mod navigation;
 mod semantic;
+mod signature;
 mod symbols;
 mod workspace;
 
@@ -76,6 +77,11 @@ fn capabilities() -> ServerCapabilities {
         inlay_hint_provider: Some(OneOf::Left(true)),
         document_formatting_provider: Some(OneOf::Left(true)),
         code_action_provider: Some(lsp_types::CodeActionProviderCapability::Simple(true)),
+        signature_help_provider: Some(lsp_types::SignatureHelpOptions {
+            trigger_characters: Some(vec!["(".into(), ",".into(), " ".into()]),
+            retrigger_characters: None,
+            work_done_progress_options: Default::default(),
+        }),
         semantic_tokens_provider: Some(
             lsp_types::SemanticTokensServerCapabilities::SemanticTokensOptions(
                 lsp_types::SemanticTokensOptions {
@@ -348,6 +354,10 @@ fn request(ws: &Workspace, r: Request) -> Response {
         }),
         req::InlayHintRequest::METHOD => answer::<req::InlayHintRequest>(r, |p| {
             Ok(Some(inlay::hints(ws, &p.text_document.uri, p.range)))
+        }),
+        req::SignatureHelpRequest::METHOD => answer::<req::SignatureHelpRequest>(r, |p| {
+            let tp = p.text_document_position_params;
+            Ok(signature::help(ws, &tp.text_document.uri, tp.position))
         }),
         req::SemanticTokensFullRequest::METHOD => {
             answer::<req::SemanticTokensFullRequest>(r, |p| {

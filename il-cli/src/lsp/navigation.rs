@@ -27,8 +27,55 @@ fn symbol_at<'w>(
 
 pub fn definition(ws: &Workspace, uri: &Uri, pos: Position) -> Option<Location> {
     let (_, _, s, ix) = symbol_at(ws, uri, pos)?;
-    let d = ix.table.symbols[s].decl?;
+    let sym = &ix.table.symbols[s];
+    match sym.kind {
+        SymbolKind::StdBlock => return std_block(&sym.name, None),
+        SymbolKind::StdMember { block, .. } => {
+            return std_block(&ix.table.symbols[block].name, Some(&sym.name));
+        }
+        _ => {}
+    }
+    let d = sym.decl?;
     ws.location(d.file, d.span)
+}
+
+/// A standard function block's declaration, rendered from il-std's table
+/// into a read-only file of its own (written once per version, and again
+/// only if it differs), at the line of `member` or of the block's name.
+fn std_block(name: &str, member: Option<&str>) -> Option<Location> {
+    let fb = il_interp::il_std::signature::lookup_fb(name)?;
+    let mut text = format!(
+        "(* il-std's standard function block {0}, as the compiler knows it: a rendering, not a source to edit. *)\nFUNCTION_BLOCK {0}\n",
+        fb.name
+    );
+    let mut at = (1, "FUNCTION_BLOCK ".len());
+    for (kw, params) in [("VAR_INPUT", fb.inputs), ("VAR_OUTPUT", fb.outputs)] {
+        text.push_str(kw);
+        text.push('\n');
+        for p in params {
+            if member.is_some_and(|m| m.eq_ignore_ascii_case(p.name)) {
+                at = (text.lines().count(), 4);
+            }
+            text.push_str(&format!("    {} : {};\n", p.name, p.ty.name()));
+        }
+        text.push_str("END_VAR\n");
+    }
+    text.push_str("END_FUNCTION_BLOCK\n");
+    let dir = std::env::temp_dir().join(format!("ilc-std-{}", env!("CARGO_PKG_VERSION")));
+    let path = dir.join(format!("{}.il", fb.name));
+    if std::fs::read_to_string(&path).ok().as_deref() != Some(text.as_str()) {
+        std::fs::create_dir_all(&dir).ok()?;
+        // Beside it, then renamed: two servers never read half a file.
+        let tmp = dir.join(format!(".{}.{}", fb.name, std::process::id()));
+        std::fs::write(&tmp, &text).ok()?;
+        std::fs::rename(&tmp, &path).ok()?;
+    }
+    let start = Position::new(at.0 as u32, at.1 as u32);
+    let len = member.unwrap_or(fb.name).len() as u32;
+    Some(Location {
+        uri: super::convert::path_to_uri(&path)?,
+        range: lsp_types::Range::new(start, Position::new(start.line, start.character + len)),
+    })
 }
 
 pub fn references(ws: &Workspace, uri: &Uri, pos: Position, with_decl: bool) -> Vec<Location> {

@@ -11,6 +11,7 @@ use std::time::Duration;
 use serde_json::{Value, json};
 
 /// Programs per folder.
+mod calls;
 mod code_actions;
 mod folders;
 mod formatting;
