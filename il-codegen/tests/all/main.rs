@@ -39,6 +39,7 @@ mod sema_config_forms;
 mod sema_config_paths;
 mod sema_corners;
 mod sema_declarations;
+mod sema_fixes;
 mod sema_hints;
 mod sema_host_functions;
 mod sema_hostile_names;

@@ -129,6 +129,7 @@ impl Walk<'_, '_> {
             }
             InstrKind::Store { negate, target } => {
                 let Some(place) = self.place_of(target, true) else {
+                    self.offer_declaration(target.span(), &cr);
                     return cr;
                 };
                 let Some(arg) = self.use_cr(&cr, span) else {

@@ -15,6 +15,7 @@ use crate::ast::{
     self, Accessor, CallArgs, Cond, ExprOp, InstrKind, Operand, ParamKind, PouKind, Span, VarRef,
 };
 
+mod declare_fix;
 mod fb_calls;
 mod fn_calls;
 mod instr;
@@ -120,6 +121,7 @@ pub(crate) fn check_pou(
         cx,
         env,
         sig,
+        pou,
         labels,
         label_names,
         label_in: vec![Cr::Dead; n],
@@ -416,6 +418,8 @@ struct Walk<'a, 'c> {
     cx: &'a mut Cx<'c>,
     env: &'a Env,
     sig: &'a PouSig,
+    /// The POU's syntax (where a fix may declare a variable).
+    pou: &'a ast::Pou,
     labels: rustc_hash::FxHashMap<String, usize>,
     /// Each label as declared (suggestions show the user's spelling).
     label_names: Vec<String>,
