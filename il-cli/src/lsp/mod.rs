@@ -15,6 +15,7 @@ mod hover;
 mod index;
 mod inlay;
 mod navigation;
+mod refactor;
 mod semantic;
 mod signature;
 mod symbols;
@@ -398,6 +399,8 @@ fn code_actions(
     };
     let touches = |r: &lsp_types::Range| r.start <= range.end && range.start <= r.end;
     let fixes = ws.analysis.fixes.get(k).map_or(&[][..], Vec::as_slice);
+    let rewrite =
+        refactor::formal_form(ws, uri, range).map(lsp_types::CodeActionOrCommand::CodeAction);
     let diags = ws
         .analysis
         .diagnostics
@@ -428,5 +431,6 @@ fn code_actions(
                 ..Default::default()
             })
         })
+        .chain(rewrite)
         .collect()
 }

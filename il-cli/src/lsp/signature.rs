@@ -280,3 +280,20 @@ fn params_of(ix: &Index, pou: usize, kinds: &[VarKind]) -> Vec<(String, String)>
         })
         .collect()
 }
+
+/// The VAR_INPUTs, in order, of the block of the instance named at byte
+/// `at` of document `k`: what a non-formal `CAL inst(a, b)` binds.
+pub(super) fn instance_inputs(ix: &Index, k: usize, at: usize) -> Option<Vec<String>> {
+    let (_, s) = ix.name_at(k, at)?;
+    let ty = ix.symbols[ix.declared(s)?].ty.clone()?;
+    if let Some(&p) = ix.pou_by_name.get(&ty) {
+        return Some(
+            params_of(ix, p, &[VarKind::Input])
+                .into_iter()
+                .map(|(n, _)| n)
+                .collect(),
+        );
+    }
+    let fb = sig::lookup_fb(&ty)?;
+    Some(fb.inputs.iter().map(|p| p.name.to_string()).collect())
+}

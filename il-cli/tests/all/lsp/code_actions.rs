@@ -110,3 +110,44 @@ fn quick_fixes_rename_convert_and_write_durations() {
     assert_eq!(apply(&broken, &m, &a[0]), all);
     c.finish();
 }
+
+#[test]
+fn a_positional_call_converts_to_the_formal_form() {
+    let dir = temp_dir("formal");
+    let path = dir.join("m.il");
+    let m = uri(&path);
+    let text = "FUNCTION_BLOCK Fb\nVAR_INPUT\n    a : INT;\n    b : BOOL;\nEND_VAR\nVAR_OUTPUT q : BOOL; END_VAR\n    LD b\n    ST q\nEND_FUNCTION_BLOCK\nPROGRAM Main\nVAR\n    t1 : TON;\n    f : Fb;\n    go : BOOL;\n    v : ARRAY[1..2] OF INT;\nEND_VAR\n    CAL t1(go, T#5s)\n    LD t1.Q\n    CALC f(v[1], t1.Q)\n    CAL t1(IN := go)\nEND_PROGRAM\n";
+    let mut c = Client::start(&[]);
+    c.initialize(&dir, json!({}));
+    c.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": m, "languageId": "il", "version": 1, "text": text}}),
+    );
+    assert_eq!(c.diagnostics_for(&m), Vec::<Value>::new());
+    let at = |c: &mut Client, line: u64| {
+        c.result(
+            "textDocument/codeAction",
+            json!({"textDocument": {"uri": m},
+                   "range": {"start": {"line": line, "character": 6}, "end": {"line": line, "character": 6}},
+                   "context": {"diagnostics": []}}),
+        )
+    };
+    let a = at(&mut c, 16);
+    assert_eq!(a[0]["title"], json!("Convert to the formal form"), "{a}");
+    assert_eq!(a[0]["kind"], json!("refactor.rewrite"));
+    assert!(apply(text, &m, &a[0]).contains("    CAL t1(IN := go, PT := T#5s)\n"));
+    let a = at(&mut c, 18);
+    let out = apply(text, &m, &a[0]);
+    assert!(out.contains("    CALC f(a := v[1], b := t1.Q)\n"), "{out}");
+    // Already formal: nothing to offer.
+    assert_eq!(at(&mut c, 19), json!([]));
+    // The converted text checks as before (opened in a folder of its own:
+    // another program).
+    let n = uri(&temp_dir("formal-out").join("n.il"));
+    c.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": n, "languageId": "il", "version": 1, "text": out}}),
+    );
+    assert_eq!(c.diagnostics_for(&n), Vec::<Value>::new());
+    c.finish();
+}
