@@ -38,6 +38,19 @@
 //! [`Checked`], with every [`Diagnostic`] and, when there is no error, the
 //! code ([`Checked::emit`], [`Checked::files`]). [`codes`] lists every
 //! diagnostic code with its explanation.
+//!
+//! # The modules, by who needs them
+//!
+//! | who | modules |
+//! | --- | --- |
+//! | a build script | [`Builder`] (re-exported at the root) |
+//! | a tool (editor, checker, interpreter) | [`pipeline`] ([`Program`] → [`Checked`]), [`ir`] (the checked program: the contract between the checker and every consumer), [`diag`], [`codes`], [`format`](mod@format) (`ilc fmt`'s layout), [`read`] (reading a source file in its encoding), [`ast`] (the syntax tree, for outlines), [`dialect`], [`plcopen`] |
+//! | the `il!` macro | [`expand`] (what `il-macros` calls: its input tokens to Rust tokens) |
+//! | this crate's own tests | [`step_counter`] (the front end's work, counted for the scaling tests) |
+//!
+//! The user guide, `docs/guide.md` in the repository (the crate's
+//! `README.md` links it), describes the language accepted, every item
+//! generated, and the tools around them.
 
 #![warn(missing_docs)]
 
