@@ -456,16 +456,19 @@ fn decl(line: &Line, indent: usize, width: Option<usize>, case: Option<bool>) ->
 }
 
 /// The width of the names before `:` for each declaration line that is
-/// aligned, the widest of its block (consecutive declaration lines).
+/// aligned: the widest of its block (consecutive declaration lines) at its
+/// indentation, so a STRUCT's members align among themselves.
 fn names_widths(lines: &[Line]) -> std::collections::HashMap<usize, usize> {
+    type Blocks = std::collections::BTreeMap<usize, Vec<(usize, usize)>>;
     let mut out = std::collections::HashMap::new();
     let mut state = State::default();
-    let mut block: Vec<(usize, usize)> = Vec::new();
-    let flush = |block: &mut Vec<(usize, usize)>,
-                 out: &mut std::collections::HashMap<usize, usize>| {
-        let w = block.iter().map(|b| b.1).max().unwrap_or(0);
-        for (i, _) in block.drain(..) {
-            out.insert(i, w);
+    let mut blocks: Blocks = Blocks::new();
+    let flush = |blocks: &mut Blocks, out: &mut std::collections::HashMap<usize, usize>| {
+        for block in blocks.values_mut() {
+            let w = block.iter().map(|b| b.1).max().unwrap_or(0);
+            for (i, _) in block.drain(..) {
+                out.insert(i, w);
+            }
         }
     };
     for (i, l) in lines.iter().enumerate() {
@@ -473,24 +476,25 @@ fn names_widths(lines: &[Line]) -> std::collections::HashMap<usize, usize> {
         if l.verbatim || toks.is_empty() {
             state.classify(&toks, l.ends_instruction);
             if l.items.is_empty() && !l.verbatim {
-                flush(&mut block, &mut out);
+                flush(&mut blocks, &mut out);
             }
             continue;
         }
         match state.classify(&toks, l.ends_instruction) {
-            Kind::Decl(_) => {
+            Kind::Decl(indent) => {
                 let colon = l
                     .items
                     .iter()
                     .position(|it| matches!(it, Item::Tok(Tok::Colon, ..)));
                 if let Some(c) = colon.filter(|&c| c > 0) {
-                    block.push((i, join(&l.items[..c], None).chars().count()));
+                    let w = join(&l.items[..c], None).chars().count();
+                    blocks.entry(indent).or_default().push((i, w));
                 }
             }
-            _ => flush(&mut block, &mut out),
+            _ => flush(&mut blocks, &mut out),
         }
     }
-    flush(&mut block, &mut out);
+    flush(&mut blocks, &mut out);
     out
 }
 
