@@ -1,0 +1,202 @@
+//! `lsp_latency [ILC] [--fbs N] [--lines L] [--edits E]`: the language
+//! server's latency as an editor sees it, on one generated file of N
+//! FUNCTION_BLOCKs of L lines (default 500 x 200: 100 000 lines). Starts
+//! `ILC lsp` (default `target/release/ilc`), opens the file, then edits one
+//! line in the middle POU E times, alternately making and fixing an error
+//! (so every edit changes the published diagnostics), and times each edit
+//! from `didChange` to its `publishDiagnostics`; then times E hovers on an
+//! instruction. Prints the medians and the spread, and the machine's load.
+
+use serde_json::{Value, json};
+use std::io::{BufRead, BufReader, Read, Write};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+fn program(fbs: usize, lines: usize) -> String {
+    let mut s = String::with_capacity(fbs * lines * 16);
+    for p in 0..fbs {
+        s.push_str(&format!(
+            "FUNCTION_BLOCK Fb{p}\nVAR_INPUT a, b : BOOL; x : INT; END_VAR\nVAR_OUTPUT q : BOOL; y : INT; END_VAR\nVAR t : TON; END_VAR\n"
+        ));
+        let body = lines.saturating_sub(5);
+        for i in 0..body {
+            s.push_str(match i % 8 {
+                0 => "    LD   a\n",
+                1 => "    AND  b\n",
+                2 => "    ST   q\n",
+                3 => "    LD   x\n",
+                4 => "    ADD  1\n",
+                5 => "    ST   y\n",
+                6 => "    LD   q\n",
+                _ => "    ST   t.IN\n",
+            });
+        }
+        s.push_str("END_FUNCTION_BLOCK\n");
+    }
+    s
+}
+
+struct Server {
+    stdin: std::process::ChildStdin,
+    out: BufReader<std::process::ChildStdout>,
+    next: i64,
+}
+
+impl Server {
+    fn send(&mut self, v: &Value) {
+        let body = v.to_string();
+        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).unwrap();
+        self.stdin.flush().unwrap();
+    }
+    fn read(&mut self) -> Value {
+        let mut len = 0;
+        loop {
+            let mut line = String::new();
+            if self.out.read_line(&mut line).unwrap() == 0 {
+                panic!("the server closed its output");
+            }
+            let line = line.trim();
+            if line.is_empty() {
+                break;
+            }
+            if let Some(n) = line.strip_prefix("Content-Length:") {
+                len = n.trim().parse().unwrap();
+            }
+        }
+        let mut buf = vec![0; len];
+        self.out.read_exact(&mut buf).unwrap();
+        serde_json::from_slice(&buf).unwrap()
+    }
+    fn request(&mut self, method: &str, params: Value) -> Value {
+        self.next += 1;
+        let id = self.next;
+        self.send(&json!({"jsonrpc": "2.0", "id": id, "method": method, "params": params}));
+        loop {
+            let v = self.read();
+            if v["id"] == json!(id) {
+                return v;
+            }
+        }
+    }
+    fn notify(&mut self, method: &str, params: Value) {
+        self.send(&json!({"jsonrpc": "2.0", "method": method, "params": params}));
+    }
+    fn diagnostics(&mut self, uri: &str) -> usize {
+        loop {
+            let v = self.read();
+            if v["method"] == json!("textDocument/publishDiagnostics")
+                && v["params"]["uri"] == json!(uri)
+            {
+                return v["params"]["diagnostics"].as_array().map_or(0, Vec::len);
+            }
+        }
+    }
+}
+
+fn stats(name: &str, mut v: Vec<Duration>) {
+    v.sort();
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    println!(
+        "{name}: median {:.1} ms (min {:.1}, max {:.1}, n = {})",
+        ms(v[v.len() / 2]),
+        ms(v[0]),
+        ms(v[v.len() - 1]),
+        v.len()
+    );
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let opt = |k: &str, d: usize| {
+        args.iter()
+            .position(|a| a == k)
+            .and_then(|i| args.get(i + 1))
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(d)
+    };
+    let (fbs, lines, edits) = (opt("--fbs", 500), opt("--lines", 200), opt("--edits", 20));
+    let ilc = args
+        .first()
+        .filter(|a| !a.starts_with("--"))
+        .cloned()
+        .unwrap_or_else(|| "target/release/ilc".into());
+    let dir = std::env::temp_dir().join(format!("il-lsp-latency-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("big.il");
+    let text = program(fbs, lines);
+    let uri = format!("file://{}", path.display());
+    let mut child = Command::new(&ilc)
+        .arg("lsp")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap_or_else(|e| panic!("cannot start `{ilc} lsp`: {e}"));
+    let mut s = Server {
+        stdin: child.stdin.take().unwrap(),
+        out: BufReader::new(child.stdout.take().unwrap()),
+        next: 0,
+    };
+    s.request(
+        "initialize",
+        json!({"processId": null, "rootUri": format!("file://{}", dir.display()), "capabilities": {}}),
+    );
+    s.notify("initialized", json!({}));
+    let t = Instant::now();
+    s.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": uri, "languageId": "il", "version": 1, "text": text}}),
+    );
+    assert_eq!(s.diagnostics(&uri), 0);
+    println!(
+        "{} lines ({fbs} FBs of {lines}): open to first diagnostics {:.0} ms",
+        text.lines().count(),
+        t.elapsed().as_secs_f64() * 1e3
+    );
+    // The `ADD  1` of the middle POU's first rung group.
+    let mid = text
+        .find(&format!("FUNCTION_BLOCK Fb{}\n", fbs / 2))
+        .unwrap();
+    let at = mid + text[mid..].find("    ADD  1\n").unwrap();
+    let mut times = Vec::new();
+    for i in 0..edits {
+        let new = if i % 2 == 0 {
+            format!("{}    ADD  nosuch\n{}", &text[..at], &text[at + 11..])
+        } else {
+            text.clone()
+        };
+        let t = Instant::now();
+        s.notify(
+            "textDocument/didChange",
+            json!({"textDocument": {"uri": uri, "version": i + 2}, "contentChanges": [{"text": new}]}),
+        );
+        let n = s.diagnostics(&uri);
+        times.push(t.elapsed());
+        assert_eq!(n, usize::from(i % 2 == 0));
+    }
+    stats("edit inside one POU to fresh diagnostics", times);
+    let line = text[..at].lines().count() as u64;
+    let mut times = Vec::new();
+    for _ in 0..edits {
+        let t = Instant::now();
+        let r = s.request(
+            "textDocument/hover",
+            json!({"textDocument": {"uri": uri}, "position": {"line": line, "character": 6}}),
+        );
+        times.push(t.elapsed());
+        assert!(r["result"].is_object(), "{r}");
+    }
+    stats("hover", times);
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    println!(
+        "load: {}",
+        load.split_whitespace()
+            .take(3)
+            .collect::<Vec<_>>()
+            .join(" ")
+    );
+    s.request("shutdown", Value::Null);
+    s.notify("exit", Value::Null);
+    let _ = child.wait();
+    let _ = std::fs::remove_dir_all(&dir);
+}
