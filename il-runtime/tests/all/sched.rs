@@ -1,0 +1,103 @@
+//! Task release, statistics, overruns and the watchdog, on `Bench`.
+
+use std::time::Duration;
+
+use il_runtime::{Error, Options, Runtime};
+use il_std::addr::{ix, md, mw};
+
+use crate::common::{bench::Bench, eventually, scans, task};
+
+fn opts() -> Options {
+    Options {
+        tick: Duration::from_millis(2),
+        ..Default::default()
+    }
+}
+
+#[test]
+fn periodic_tasks_keep_their_rates() {
+    let rt = Runtime::start(Bench::default(), opts()).unwrap();
+    eventually("ten Slower scans", || {
+        (task(&rt, "Slower").scans >= 10).then_some(())
+    });
+    let report = rt.stop().unwrap();
+    let (fast, slow) = (report.task("Fast").unwrap(), report.task("Slower").unwrap());
+    // Releases since the start, run or missed (missed ones under load): the
+    // same elapsed time holds five times as many 10 ms releases as 50 ms ones.
+    let (f, s) = (fast.scans + fast.missed, slow.scans + slow.missed);
+    assert!(f + 4 >= 5 * s && f <= 5 * s + 4, "fast {f}, slow {s}");
+    assert!(fast.min <= fast.mean() && fast.mean() <= fast.max);
+    assert_eq!(fast.interval, Duration::from_millis(10));
+}
+
+#[test]
+fn a_single_task_runs_once_per_rising_edge() {
+    let rt = Runtime::start(Bench::default(), opts()).unwrap();
+    let shots = || rt.image().get(mw(10).int());
+    scans(&rt, 5);
+    assert_eq!(shots(), 0);
+    rt.image().set(ix(0, 0), true).unwrap();
+    eventually("one shot", || (shots() == 1).then_some(()));
+    scans(&rt, 10);
+    assert_eq!(shots(), 1, "TRUE held: no more");
+    rt.image().set(ix(0, 0), false).unwrap();
+    scans(&rt, 3);
+    rt.image().set(ix(0, 0), true).unwrap();
+    eventually("a second shot", || (shots() == 2).then_some(()));
+    assert_eq!(rt.stop().unwrap().task("OnTrig").unwrap().scans, 2);
+}
+
+/// Makes `Heavy`'s scans longer (its loop runs `n` times, 4 times more each
+/// round) until `enough` says so: how long an iteration takes depends on the
+/// build and the machine, which a fixed count would guess.
+fn burn_until(rt: &mut Runtime, mut enough: impl FnMut(&mut Runtime) -> bool) {
+    let mut n: i32 = 1_000_000;
+    loop {
+        rt.image().set(md(8).dint(), n).unwrap();
+        let before = task(rt, "Heavy").scans;
+        eventually("two Heavy scans", || {
+            (rt.wait_timeout(Duration::ZERO) || task(rt, "Heavy").scans >= before + 2).then_some(())
+        });
+        if enough(rt) {
+            return;
+        }
+        n = n.saturating_mul(4);
+    }
+}
+
+#[test]
+fn a_scan_longer_than_its_interval_is_an_overrun() {
+    let mut rt = Runtime::start(Bench::default(), opts()).unwrap();
+    // Over two intervals, so that Fast, waiting behind it, misses a release.
+    burn_until(&mut rt, |rt| {
+        task(rt, "Heavy").max > Duration::from_millis(25)
+    });
+    rt.image().set(md(8).dint(), 0).unwrap();
+    let report = rt.stop().unwrap();
+    let heavy = report.task("Heavy").unwrap();
+    assert!(heavy.overruns >= 1, "{heavy}");
+    let fast = report.task("Fast").unwrap();
+    assert!(fast.missed >= 1, "Fast waited behind it: {fast}");
+    assert_eq!(fast.overruns, 0, "its own scans are short: {fast}");
+}
+
+#[test]
+fn the_watchdog_stops_the_runtime_with_a_clear_error() {
+    let mut rt = Runtime::start(
+        Bench::default(),
+        Options {
+            watchdog: Some(Duration::from_millis(100)),
+            ..opts()
+        },
+    )
+    .unwrap();
+    scans(&rt, 3);
+    burn_until(&mut rt, |rt| rt.wait_timeout(Duration::ZERO));
+    match rt.wait() {
+        Err(e @ Error::Watchdog { task: "Heavy", .. }) => {
+            let msg = e.to_string();
+            assert!(msg.contains("watchdog") && msg.contains("Heavy"), "{msg}");
+        }
+        other => panic!("expected the watchdog, got {other:?}"),
+    }
+}
