@@ -142,7 +142,18 @@ pub struct Runtime {
     watchdog: Option<JoinHandle<()>>,
     server: Option<Server>,
     load: RetainLoad,
-    signals: Vec<signal_hook::SigId>,
+    signals: Signals,
+}
+
+/// SIGINT/SIGTERM handlers that set the stop flag, removed on drop.
+struct Signals(Vec<signal_hook::SigId>);
+
+impl Drop for Signals {
+    fn drop(&mut self) {
+        for id in self.0.drain(..) {
+            signal_hook::low_level::unregister(id);
+        }
+    }
 }
 
 impl Runtime {
@@ -161,11 +172,13 @@ impl Runtime {
             },
         };
         let stop = Arc::new(AtomicBool::new(false));
-        let mut signals = Vec::new();
+        // Unregistered when the runtime ends, or right away if it fails to
+        // start: SIGINT must go back to ending the process.
+        let mut signals = Signals(Vec::new());
         if opts.signals {
             for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
                 let id = signal_hook::flag::register(sig, stop.clone()).map_err(Error::System)?;
-                signals.push(id);
+                signals.0.push(id);
             }
         }
         let image = Arc::new(SharedImage::new(&ctx.io));
@@ -310,9 +323,7 @@ impl Runtime {
     }
 
     fn finish(mut self) -> Result<Report, Error> {
-        for id in self.signals.drain(..) {
-            signal_hook::low_level::unregister(id);
-        }
+        drop(std::mem::replace(&mut self.signals, Signals(Vec::new())));
         if let Some(mut s) = self.server.take() {
             s.stop();
         }
@@ -357,9 +368,6 @@ impl Drop for Runtime {
     fn drop(&mut self) {
         // Dropped without wait/stop: at least stop the threads.
         self.request_stop();
-        for id in self.signals.drain(..) {
-            signal_hook::low_level::unregister(id);
-        }
     }
 }
 

@@ -32,8 +32,24 @@ pub struct TaskStats {
     pub overruns: u64,
     /// Periodic releases skipped because the previous scan (or the host) was late.
     pub missed: u64,
+    /// Periodic tasks: release latencies by powers of two of microseconds:
+    /// bucket 0 counts latencies under 1 µs, bucket k those in [2^(k-1), 2^k) µs,
+    /// the last one everything longer (see [`TaskStats::latency_percentile`]).
+    pub latency_histogram: [u64; BUCKETS],
     /// Start of the previous scan, for the jitter (ns since the runtime started).
     pub(crate) prev_start: Option<u64>,
+}
+
+/// Buckets of [`TaskStats::latency_histogram`]: up to 2^20 µs (about 1 s).
+pub const BUCKETS: usize = 22;
+
+fn bucket(d: Duration) -> usize {
+    let us = d.as_micros();
+    if us == 0 {
+        0
+    } else {
+        (128 - us.leading_zeros() as usize).min(BUCKETS - 1)
+    }
 }
 
 impl TaskStats {
@@ -56,6 +72,25 @@ impl TaskStats {
         }
     }
 
+    /// An upper bound of the `p`-th percentile (0–100) of the release latency:
+    /// the top of the histogram bucket it falls in (`None` before any release).
+    pub fn latency_percentile(&self, p: f64) -> Option<Duration> {
+        let total: u64 = self.latency_histogram.iter().sum();
+        let want = ((p / 100.0) * total as f64).ceil().max(1.0) as u64;
+        let mut seen = 0;
+        for (k, n) in self.latency_histogram.iter().enumerate() {
+            seen += n;
+            if total > 0 && seen >= want {
+                return Some(if k + 1 == BUCKETS {
+                    self.max_latency
+                } else {
+                    Duration::from_micros(1 << k)
+                });
+            }
+        }
+        None
+    }
+
     /// Records one scan that started at `start` (ns since the runtime started)
     /// and took `took`; `release` is its release time for a periodic task.
     pub(crate) fn record(&mut self, start: u64, took: Duration, release: Option<u64>) {
@@ -74,6 +109,7 @@ impl TaskStats {
         if let Some(r) = release {
             self.latency = Duration::from_nanos(start.saturating_sub(r));
             self.max_latency = self.max_latency.max(self.latency);
+            self.latency_histogram[bucket(self.latency)] += 1;
             if let Some(p) = self.prev_start {
                 let period = start.saturating_sub(p) as i128;
                 let dev = (period - self.interval.as_nanos() as i128).unsigned_abs();
@@ -107,9 +143,10 @@ impl fmt::Display for TaskStats {
         if !self.interval.is_zero() {
             write!(
                 f,
-                ", latency last/max {:.1}/{:.1} µs, jitter {:.1} µs, overruns {}, missed {}",
+                ", latency last/max {:.1}/{:.1} µs (99% under {:.0} µs), jitter {:.1} µs, overruns {}, missed {}",
                 us(self.latency),
                 us(self.max_latency),
+                us(self.latency_percentile(99.0).unwrap_or_default()),
                 us(self.jitter),
                 self.overruns,
                 self.missed
@@ -138,5 +175,13 @@ mod tests {
         assert_eq!(s.max_latency, Duration::from_micros(200));
         assert_eq!(s.jitter, Duration::from_micros(300)); // 9.7 ms between starts
         assert_eq!(s.overruns, 1);
+        // 0, 200 and 0 µs: buckets 0, 8 ([128, 256)) and 0.
+        assert_eq!((s.latency_histogram[0], s.latency_histogram[8]), (2, 1));
+        assert_eq!(s.latency_percentile(50.0), Some(Duration::from_micros(1)));
+        assert_eq!(
+            s.latency_percentile(100.0),
+            Some(Duration::from_micros(256))
+        );
+        assert_eq!(TaskStats::new("u", ms(1)).latency_percentile(99.0), None);
     }
 }

@@ -105,16 +105,22 @@ fn bad_requests_get_exception_responses_and_the_connection_stays_usable() {
 
 #[test]
 fn a_hung_client_does_not_stall_the_scan_or_other_clients() {
-    let rt = Runtime::start(Hmi::default(), modbus_opts()).unwrap();
+    let mut opts = modbus_opts();
+    // So that the server gives up on the deaf client below within the test.
+    opts.modbus_options.frame_timeout = Duration::from_millis(200);
+    let rt = Runtime::start(Hmi::default(), opts).unwrap();
     let addr = rt.modbus_addr().unwrap();
     // One connects and says nothing; one sends half a header and stops.
     let _silent = TcpStream::connect(addr).unwrap();
     let mut half = TcpStream::connect(addr).unwrap();
     half.write_all(&[0, 1, 0]).unwrap();
-    // One sends requests and never reads the answers.
+    // One sends requests and never reads the answers (1.3 MB of them, more
+    // than the socket buffers hold): the server's write to it times out.
     let mut deaf = TcpStream::connect(addr).unwrap();
+    deaf.set_write_timeout(Some(Duration::from_millis(50)))
+        .unwrap();
     let read = [0u8, 1, 0, 0, 0, 6, 1, 3, 0, 0, 0, 125];
-    for _ in 0..200 {
+    for _ in 0..5000 {
         if deaf.write_all(&read).is_err() {
             break;
         }
