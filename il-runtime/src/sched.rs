@@ -94,6 +94,7 @@ pub(crate) fn run<P: Plc>(mut plc: P, mut ctx: Cycle, plan: Plan, sh: Arc<Shared
     let mut next_tick = start;
     let mut last_save = start;
     let mut marks: Vec<(usize, u64)> = Vec::with_capacity(16);
+    let mut first = true;
     let mut release: Vec<Option<u64>> = vec![None; tasks.len()];
     let outcome = loop {
         let wake = intervals
@@ -107,7 +108,13 @@ pub(crate) fn run<P: Plc>(mut plc: P, mut ctx: Cycle, plan: Plan, sh: Arc<Shared
         if !sleep_until(&sh, wake) {
             break Ok(());
         }
-        let now = sh.elapsed_ns();
+        // The first call is at `start` exactly: the generated TaskStates take
+        // their phase from the time of the first call, and so must `next`.
+        let now = if std::mem::take(&mut first) {
+            start
+        } else {
+            sh.elapsed_ns()
+        };
         ctx.set_now(TIME(now as i64));
         if let Ok(d) = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH) {
             ctx.set_now_dt(DT(i64::try_from(d.as_nanos()).unwrap_or(i64::MAX)));

@@ -105,13 +105,23 @@ fn state_number(payload: &[u8]) -> u64 {
 
 const CHILD_ENV: &str = "IL_RUNTIME_RETAIN_CHILD";
 
-/// Not a test by itself: the child process of the next test (run with
-/// `--ignored --exact`), saving ever newer states until it is killed.
+/// The child process of the next test (run with `--ignored --exact` and
+/// [`CHILD_ENV`]), saving ever newer states until it is killed. Run by hand
+/// (`--include-ignored`), it saves 50 states to a file of its own and checks
+/// that the last one is what the file holds.
 #[test]
 #[ignore = "the child process of sigkill_during_saves_leaves_the_old_or_the_new_state"]
 fn retain_child_process() {
     let Some(path) = std::env::var_os(CHILD_ENV) else {
-        panic!("run by sigkill_during_saves_leaves_the_old_or_the_new_state only");
+        let dir = temp_dir("child-by-hand");
+        let path = dir.join("state.retain");
+        for n in 1..=50 {
+            retain::save(&path, &state(n)).expect("save");
+        }
+        let p = retain::load(&path).unwrap().unwrap();
+        assert_eq!(state_number(&p), 50);
+        std::fs::remove_dir_all(&dir).unwrap();
+        return;
     };
     let path = Path::new(&path);
     let mut n = match retain::load(path) {
