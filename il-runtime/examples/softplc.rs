@@ -7,7 +7,8 @@
 //!
 //! Options: `--modbus ADDR` (default 127.0.0.1:5020), `--retain PATH`, `--fifo PRIO`
 //! (ask for SCHED_FIFO; default 50), `--no-fifo`, `--watchdog MS`, `--seconds N`
-//! (stop after N seconds; default: until Ctrl-C / SIGTERM).
+//! (stop after N seconds; default: until Ctrl-C / SIGTERM), `--histogram` (print each
+//! task's release latency histogram at the end: how BENCHMARKS.md's figures were taken).
 
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
@@ -35,6 +36,7 @@ fn run() -> Result<(), String> {
         ..Default::default()
     };
     let mut seconds = None;
+    let mut histogram = false;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         let mut value = |what: &str| args.next().ok_or(format!("{a} needs {what}"));
@@ -50,6 +52,7 @@ fn run() -> Result<(), String> {
                 opts.watchdog = Some(Duration::from_millis(number(&value("milliseconds")?)?))
             }
             "--seconds" => seconds = Some(number(&value("a count")?)?),
+            "--histogram" => histogram = true,
             _ => {
                 return Err(format!(
                     "unknown argument {a} (see the example's documentation)"
@@ -92,11 +95,35 @@ fn run() -> Result<(), String> {
     );
     for t in &report.tasks {
         println!("{t}");
+        if histogram {
+            print_histogram(t);
+        }
     }
     if let Some(e) = report.retain_error {
         return Err(format!("retain: {e}"));
     }
     Ok(())
+}
+
+/// The non-empty buckets of a task's release latency histogram, and percentiles.
+fn print_histogram(t: &il_runtime::TaskStats) {
+    let mut line = format!("{} release latency:", t.name);
+    for (k, n) in t.latency_histogram.iter().enumerate() {
+        if *n > 0 {
+            let lo = if k == 0 { 0 } else { 1u64 << (k - 1) };
+            line.push_str(&format!(" [{lo}, {}) µs: {n};", 1u64 << k));
+        }
+    }
+    println!("{line}");
+    let p = |q: f64| t.latency_percentile(q).unwrap_or_default().as_micros();
+    println!(
+        "{} latency under (bucket bound): p50 {} µs, p99 {} µs, p99.9 {} µs; max {} µs",
+        t.name,
+        p(50.0),
+        p(99.0),
+        p(99.9),
+        t.max_latency.as_micros()
+    );
 }
 
 fn number(s: &str) -> Result<u64, String> {
