@@ -42,6 +42,7 @@ pub mod modbus;
 pub mod retain;
 mod runtime;
 mod sched;
+mod signals;
 mod stats;
 
 pub use image::SharedImage;

@@ -14,6 +14,7 @@ use il_std::Cycle;
 use crate::modbus::{Server, ServerOptions};
 use crate::retain::{self, RetainError};
 use crate::sched::{self, Plan, Shared};
+use crate::signals::Listener;
 use crate::{Plc, Realtime, SharedImage, TaskStats};
 
 /// How to run a configuration. `Options::default()` runs the tasks only.
@@ -142,18 +143,6 @@ pub struct Runtime {
     watchdog: Option<JoinHandle<()>>,
     server: Option<Server>,
     load: RetainLoad,
-    signals: Signals,
-}
-
-/// SIGINT/SIGTERM handlers that set the stop flag, removed on drop.
-struct Signals(Vec<signal_hook::SigId>);
-
-impl Drop for Signals {
-    fn drop(&mut self) {
-        for id in self.0.drain(..) {
-            signal_hook::low_level::unregister(id);
-        }
-    }
 }
 
 impl Runtime {
@@ -172,15 +161,11 @@ impl Runtime {
             },
         };
         let stop = Arc::new(AtomicBool::new(false));
-        // Unregistered when the runtime ends, or right away if it fails to
-        // start: SIGINT must go back to ending the process.
-        let mut signals = Signals(Vec::new());
-        if opts.signals {
-            for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
-                let id = signal_hook::flag::register(sig, stop.clone()).map_err(Error::System)?;
-                signals.0.push(id);
-            }
-        }
+        let signals = if opts.signals {
+            Some(Arc::new(Listener::new().map_err(Error::System)?))
+        } else {
+            None
+        };
         let image = Arc::new(SharedImage::new(&ctx.io));
         let server = match opts.modbus {
             Some(a) => Some(
@@ -201,6 +186,7 @@ impl Runtime {
             scan_task: AtomicUsize::new(usize::MAX),
             origin: Instant::now(),
             realtime: Mutex::new(Realtime::Off),
+            signals,
         });
         let saves = Arc::new(Saves::default());
         let (saver_tx, saver) = match &opts.retain {
@@ -247,7 +233,6 @@ impl Runtime {
             watchdog,
             server,
             load,
-            signals,
         })
     }
 
@@ -323,7 +308,6 @@ impl Runtime {
     }
 
     fn finish(mut self) -> Result<Report, Error> {
-        drop(std::mem::replace(&mut self.signals, Signals(Vec::new())));
         if let Some(mut s) = self.server.take() {
             s.stop();
         }
@@ -405,7 +389,7 @@ fn watch(
     name: impl Fn(usize) -> &'static str,
 ) {
     let poll = (limit / 4).clamp(Duration::from_millis(1), Duration::from_millis(100));
-    while !sh.stop.load(Ordering::SeqCst) {
+    while !sh.stopping() {
         std::thread::sleep(poll);
         let started = sh.scan_started.load(Ordering::SeqCst);
         if started == 0 {

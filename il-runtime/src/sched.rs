@@ -43,9 +43,16 @@ pub(crate) struct Shared {
     pub scan_task: AtomicUsize,
     pub origin: Instant,
     pub realtime: Mutex<Realtime>,
+    /// SIGINT/SIGTERM, when the runtime handles them.
+    pub signals: Option<Arc<crate::signals::Listener>>,
 }
 
 impl Shared {
+    /// Asked to stop (by the handle, the watchdog or a signal).
+    pub fn stopping(&self) -> bool {
+        self.stop.load(Ordering::SeqCst) || self.signals.as_ref().is_some_and(|s| s.signalled())
+    }
+
     pub fn elapsed_ns(&self) -> u64 {
         u64::try_from(self.origin.elapsed().as_nanos()).unwrap_or(u64::MAX)
     }
@@ -217,7 +224,7 @@ fn record(
 /// `false` when stopped.
 fn sleep_until(sh: &Shared, at: u64) -> bool {
     loop {
-        if sh.stop.load(Ordering::SeqCst) {
+        if sh.stopping() {
             return false;
         }
         let now = sh.elapsed_ns();

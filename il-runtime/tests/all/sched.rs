@@ -101,3 +101,35 @@ fn the_watchdog_stops_the_runtime_with_a_clear_error() {
         other => panic!("expected the watchdog, got {other:?}"),
     }
 }
+
+#[test]
+fn sigterm_stops_the_runtime_cleanly_and_the_last_state_is_saved() {
+    let dir = crate::common::temp_dir("sigterm");
+    let opts = Options {
+        retain: Some(dir.join("motor.retain")),
+        // Longer than the test: only the save on stop can write the 9.
+        retain_period: Duration::from_secs(3600),
+        signals: true,
+        ..opts()
+    };
+    let rt = Runtime::start(crate::common::hmi::Hmi::default(), opts.clone()).unwrap();
+    rt.image().set(mw(0).int(), 9).unwrap();
+    scans(&rt, 2);
+    // SAFETY: raise() delivers to this thread, whose handler (installed by
+    // `signals: true`) sets the runtime's flag; the process is not ended
+    // while a runtime listens.
+    assert_eq!(unsafe { libc::raise(libc::SIGTERM) }, 0);
+    let report = rt.wait().expect("a clean stop");
+    assert!(report.retain_saves >= 1);
+    let rt = Runtime::start(
+        crate::common::hmi::Hmi::default(),
+        Options {
+            signals: false,
+            ..opts
+        },
+    )
+    .unwrap();
+    assert_eq!(rt.image().get(mw(0).int()), 9);
+    rt.stop().unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+}
