@@ -71,6 +71,13 @@ pub enum Error {
         /// How long the scan had run.
         took: Duration,
     },
+    /// A scan panicked (in a host FUNCTION: generated code does not panic).
+    Panic {
+        /// The task whose program was running.
+        task: &'static str,
+        /// The panic's message.
+        message: String,
+    },
     /// The Modbus port could not be opened.
     Modbus(std::io::Error),
     /// A thread could not be started, or a signal handler installed.
@@ -84,6 +91,12 @@ impl fmt::Display for Error {
                 f,
                 "watchdog: a scan of task {task} ran {took:?}, longer than the {limit:?} allowed; the runtime stopped"
             ),
+            Error::Panic { task, message } => {
+                write!(
+                    f,
+                    "a scan of task {task} panicked: {message}; the runtime stopped"
+                )
+            }
             Error::Modbus(e) => write!(f, "modbus server: {e}"),
             Error::System(e) => write!(f, "runtime: {e}"),
         }
@@ -217,9 +230,14 @@ impl Runtime {
             Some(w) => {
                 let sh = shared.clone();
                 let tasks = P::tasks();
-                Some(spawn("il-watchdog", move || {
+                let h = spawn("il-watchdog", move || {
                     watch(&sh, w, done_tx, |i| tasks.get(i).map_or("", |t| t.name))
-                })?)
+                });
+                if h.is_err() {
+                    // No Runtime will exist to stop the scan thread: stop it here.
+                    shared.stop.store(true, Ordering::SeqCst);
+                }
+                Some(h?)
             }
             None => None,
         };

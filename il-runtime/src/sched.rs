@@ -144,15 +144,32 @@ pub(crate) fn run<P: Plc>(mut plc: P, mut ctx: Cycle, plan: Plan, sh: Arc<Shared
         sh.image.take_into(&mut ctx.io);
         marks.clear();
         sh.scan_started.store(now + 1, Ordering::SeqCst);
-        plc.run_traced(&mut ctx, &mut |task, _program| {
-            // "" (a program without a task) is kept as usize::MAX.
-            let i = tasks
-                .iter()
-                .position(|t| t.name == task)
-                .unwrap_or(usize::MAX);
-            sh.scan_task.store(i, Ordering::SeqCst);
-            marks.push((i, sh.elapsed_ns()));
-        });
+        // Generated code does not panic, but a host FUNCTION ({extern}) may:
+        // the runtime then stops with an error naming the task, not silently.
+        let scan = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            plc.run_traced(&mut ctx, &mut |task, _program| {
+                // "" (a program without a task) is kept as usize::MAX.
+                let i = tasks
+                    .iter()
+                    .position(|t| t.name == task)
+                    .unwrap_or(usize::MAX);
+                sh.scan_task.store(i, Ordering::SeqCst);
+                marks.push((i, sh.elapsed_ns()));
+            })
+        }));
+        if let Err(p) = scan {
+            let task = marks
+                .last()
+                .and_then(|m| tasks.get(m.0))
+                .map_or("", |t| t.name);
+            let message = p
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| p.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            sh.scan_started.store(0, Ordering::SeqCst);
+            break Err(Error::Panic { task, message });
+        }
         let end = sh.elapsed_ns();
         sh.scan_started.store(0, Ordering::SeqCst);
         sh.image.publish(&ctx.io);

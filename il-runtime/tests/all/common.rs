@@ -14,6 +14,13 @@ pub mod hmi {
 /// `Bench`: several tasks, RETAIN in a snapshot and in the image.
 pub mod bench {
     il_macros::il!(file = "tests/all/bench.il", serde);
+
+    /// `host_check` of bench.il: panics on 13.
+    pub fn host_check(_ctx: &mut il_std::Cycle, v: i16) -> bool {
+        assert_ne!(v, 13, "host_check: 13 is out of range");
+        true
+    }
+
     il_runtime::plc!(Bench, retain = Bench__Retain);
 }
 

@@ -133,3 +133,17 @@ fn sigterm_stops_the_runtime_cleanly_and_the_last_state_is_saved() {
     rt.stop().unwrap();
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn a_panicking_host_function_stops_the_runtime_with_an_error() {
+    let rt = Runtime::start(Bench::default(), opts()).unwrap();
+    scans(&rt, 2);
+    // (The scan thread's panic message shows on stderr: expected.)
+    rt.image().set(mw(12).int(), 13).unwrap();
+    match rt.wait() {
+        Err(e @ Error::Panic { task: "Fast", .. }) => {
+            assert!(e.to_string().contains("13 is out of range"), "{e}");
+        }
+        other => panic!("expected a panic error, got {other:?}"),
+    }
+}
