@@ -222,6 +222,16 @@ pub(crate) fn respond(req: &[u8], image: &SharedImage) -> Option<Vec<u8>> {
     let mut buf = [0u8; 300];
     buf.get_mut(..req.len())?.copy_from_slice(req);
     let unit = *req.get(6)?;
+    let f = *req.get(7)?;
+    // Answered here, before rmodbus: an unknown function whatever its length
+    // (rmodbus wants 6 bytes after the header, and computes `f + 0x80`,
+    // which overflows for f >= 0x80), and a known one cut short.
+    let Ok(func) = ModbusFunction::try_from(f) else {
+        return Some(exception(req, f, 1));
+    };
+    if !complete(req, func) {
+        return Some(exception(req, f, 3));
+    }
     let mut response = Vec::new();
     // Over TCP the unit id addresses a gateway's device, not us: answer any,
     // and never treat unit 0 as a broadcast (no reply) as a serial line would.
@@ -237,11 +247,7 @@ pub(crate) fn respond(req: &[u8], image: &SharedImage) -> Option<Vec<u8>> {
             ModbusFunction::GetInputs => Table::InputRegisters,
             _ => Table::HoldingRegisters,
         };
-        if !complete(req, frame.func) {
-            frame
-                .set_modbus_error_if_unset(&ErrorKind::IllegalDataValue)
-                .ok()?;
-        } else if frame.readonly {
+        if frame.readonly {
             let r = frame.get_external_read().ok()?;
             let result = image.read(|io| read(table, r, io));
             frame.process_external_read(result).ok()?;
@@ -261,6 +267,14 @@ pub(crate) fn respond(req: &[u8], image: &SharedImage) -> Option<Vec<u8>> {
     Some(response)
 }
 
+/// An exception response: the request's transaction id, its unit, the
+/// function with the high bit set, the code.
+fn exception(req: &[u8], f: u8, code: u8) -> Vec<u8> {
+    let mut r = req[..2].to_vec();
+    r.extend_from_slice(&[0, 0, 0, 3, req[6], f | 0x80, code]);
+    r
+}
+
 /// Whether the request holds all the bytes its function reads: the address
 /// and count or value (4 bytes after the function code), and for a bulk write
 /// exactly the data bytes its byte count announces, which must also match its
@@ -274,7 +288,7 @@ fn complete(req: &[u8], f: ModbusFunction) -> bool {
     let per = match f {
         ModbusFunction::SetCoilsBulk => count.div_ceil(8),
         ModbusFunction::SetHoldingsBulk => count * 2,
-        _ => return true,
+        _ => return req.len() == 12,
     };
     req.len() >= 13 && usize::from(req[12]) == per && req.len() == 13 + per && count > 0
 }
@@ -391,6 +405,13 @@ mod tests {
             (r[7], r[8])
         };
         assert_eq!(exc(&[0x2B, 0, 0, 0, 1]), (0xAB, 1));
+        // Unknown functions of any length, the high bit set or not.
+        assert_eq!(exc(&[0x07]), (0x87, 1));
+        assert_eq!(exc(&[0x81, 0, 0, 0, 1]), (0x81, 1));
+        assert_eq!(exc(&[0xFF]), (0xFF, 1));
+        // A known function cut short, or with bytes after its fields.
+        assert_eq!(exc(&[0x03, 0, 0]), (0x83, 3));
+        assert_eq!(exc(&[0x03, 0, 0, 0, 1, 9]), (0x83, 3));
         assert_eq!(exc(&[0x01, 0x08, 0x00, 0, 1]), (0x81, 2)); // coil 2048
         assert_eq!(exc(&[0x03, 0, 200, 0, 1]), (0x83, 2)); // the gap after %QW127
         assert_eq!(exc(&[0x03, 0, 127, 0, 2]), (0x83, 2)); // runs into the gap
