@@ -427,6 +427,32 @@ mod tests {
     }
 
     #[test]
+    fn random_requests_never_panic_and_known_functions_always_get_an_answer() {
+        let img = image();
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut next = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        for _ in 0..50_000 {
+            let len = (next() % 20) as usize + if next() % 8 == 0 { 240 } else { 1 };
+            let mut pdu: Vec<u8> = (0..len).map(|_| next() as u8).collect();
+            // Mostly the served functions, with addresses near the table's edges.
+            if next() % 4 != 0 {
+                pdu[0] = [1, 2, 3, 4, 5, 6, 15, 16][(next() % 8) as usize];
+            }
+            let r = respond(&frame(&pdu), &img);
+            if let Some(r) = &r {
+                assert_eq!(&r[..2], &[0, 7], "transaction id echoed");
+                assert_eq!(r[7] & 0x7F, pdu[0] & 0x7F);
+            }
+            assert!(r.is_some(), "no answer to {pdu:02x?}");
+        }
+    }
+
+    #[test]
     fn writes_then_reads_back() {
         let img = image();
         let ok = respond(&frame(&[0x10, 0x04, 0x00, 0, 2, 4, 0, 5, 0, 6]), &img).unwrap();
