@@ -56,7 +56,7 @@ use il_std::{Cycle, Located, TaskInfo};
 /// [`plc!`], which forwards to the generated items.
 pub trait Plc: Send + 'static {
     /// The RETAIN snapshot (`Name__Retain`), `()` for a configuration without one.
-    type Retain: serde::Serialize + serde::de::DeserializeOwned;
+    type Retain: serde::Serialize + serde::de::DeserializeOwned + Send + 'static;
     /// The generated `TASKS`.
     fn tasks() -> &'static [TaskInfo];
     /// The generated `ADDRESSES` (located globals).

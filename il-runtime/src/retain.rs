@@ -21,9 +21,11 @@
 //! fails the checks (a truncated copy, a disk error, another program's file)
 //! is reported as [`RetainError::Corrupt`] and the runtime starts from initial
 //! values: never from garbage. JSON keeps the format readable and the
-//! snapshot's field names checkable; its one gap is a REAL holding NaN or an
-//! infinity, which serde_json writes as `null` and then refuses to read back
-//! (reported as corrupt).
+//! snapshot's field names checkable (a program whose RETAIN variables changed
+//! does not load a file of the old one). Its one gap is a REAL holding NaN or
+//! an infinity, which JSON cannot hold: every state is read back before it is
+//! written, and one that does not read back is not saved (the file keeps the
+//! last state that did, and the runtime's report says why).
 
 use std::fmt;
 use std::fs::{self, File};
@@ -149,8 +151,9 @@ struct LocatedValue {
     bytes: Vec<u8>,
 }
 
+/// A state to save: the snapshot and the located RETAIN variables' bytes.
 #[derive(Serialize, Deserialize)]
-struct Stored<R> {
+pub(crate) struct Stored<R> {
     vars: R,
     located: Vec<LocatedValue>,
 }
@@ -182,9 +185,10 @@ fn read_located(l: &Located, io: &ProcessImage) -> Vec<u8> {
     }
 }
 
-/// The payload for the current state.
-pub(crate) fn capture<P: Plc>(plc: &P, io: &ProcessImage) -> Result<Vec<u8>, String> {
-    let stored = Stored {
+/// The current state: taken between scans, cheaply (the scan thread does
+/// this; serialising and writing are the retain thread's).
+pub(crate) fn capture<P: Plc>(plc: &P, io: &ProcessImage) -> Stored<P::Retain> {
+    Stored {
         vars: plc.retain(),
         located: retained(P::addresses())
             .map(|l| LocatedValue {
@@ -193,8 +197,22 @@ pub(crate) fn capture<P: Plc>(plc: &P, io: &ProcessImage) -> Result<Vec<u8>, Str
                 bytes: read_located(l, io),
             })
             .collect(),
-    };
-    serde_json::to_vec(&stored).map_err(|e| e.to_string())
+    }
+}
+
+/// The payload of a state, checked to read back: JSON has no NaN or
+/// infinity (serde_json writes `null`), and a file that cannot be loaded
+/// must not replace one that can.
+pub(crate) fn payload<R: Serialize + serde::de::DeserializeOwned>(
+    s: &Stored<R>,
+) -> Result<Vec<u8>, String> {
+    let p = serde_json::to_vec(s).map_err(|e| e.to_string())?;
+    serde_json::from_slice::<Stored<R>>(&p).map_err(|e| {
+        format!(
+            "the state does not read back ({e}): a REAL or LREAL RETAIN variable that is NaN or infinite? The file keeps the last state that did"
+        )
+    })?;
+    Ok(p)
 }
 
 /// Puts a payload back: the snapshot into `plc`, the located bytes into `io`.

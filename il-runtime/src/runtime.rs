@@ -206,7 +206,9 @@ impl Runtime {
             Some(path) => {
                 let (tx, rx) = mpsc::channel();
                 let (path, saves) = (path.clone(), saves.clone());
-                let h = spawn("il-retain", move || save_loop(rx, path, &saves))?;
+                let h = spawn("il-retain", move || {
+                    save_loop::<P::Retain>(rx, path, &saves)
+                })?;
                 (Some(tx), Some(h))
             }
             None => (None, None),
@@ -381,12 +383,17 @@ fn spawn(name: &str, f: impl FnOnce() + Send + 'static) -> Result<JoinHandle<()>
 }
 
 /// Writes each state it is sent; when several wait, only the newest.
-fn save_loop(rx: Receiver<Vec<u8>>, path: PathBuf, saves: &Saves) {
-    while let Ok(mut p) = rx.recv() {
+fn save_loop<R>(rx: Receiver<retain::Stored<R>>, path: PathBuf, saves: &Saves)
+where
+    R: serde::Serialize + serde::de::DeserializeOwned,
+{
+    while let Ok(mut state) = rx.recv() {
         while let Ok(newer) = rx.try_recv() {
-            p = newer;
+            state = newer;
         }
-        match retain::save(&path, &p) {
+        let saved = retain::payload(&state)
+            .and_then(|p| retain::save(&path, &p).map_err(|e| e.to_string()));
+        match saved {
             Ok(()) => {
                 saves.count.fetch_add(1, Ordering::SeqCst);
             }

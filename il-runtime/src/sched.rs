@@ -59,12 +59,12 @@ impl Shared {
 }
 
 /// What the scheduler needs besides the configuration.
-pub(crate) struct Plan {
+pub(crate) struct Plan<R> {
     pub tick: Duration,
     pub watchdog: Option<Duration>,
     pub realtime: Option<i32>,
     pub retain_period: Duration,
-    pub saver: Option<Sender<Vec<u8>>>,
+    pub saver: Option<Sender<retain::Stored<R>>>,
     pub done: Sender<Result<(), Error>>,
     /// Told what the real-time request gave, before the first scan.
     pub ready: Sender<Realtime>,
@@ -73,7 +73,7 @@ pub(crate) struct Plan {
 /// The longest single sleep: the stop flag is looked at least this often.
 const STOP_POLL: Duration = Duration::from_millis(50);
 
-pub(crate) fn run<P: Plc>(mut plc: P, mut ctx: Cycle, plan: Plan, sh: Arc<Shared>) {
+pub(crate) fn run<P: Plc>(mut plc: P, mut ctx: Cycle, plan: Plan<P::Retain>, sh: Arc<Shared>) {
     let rt = match plan.realtime {
         Some(p) => make_realtime(p),
         None => {
@@ -181,17 +181,13 @@ pub(crate) fn run<P: Plc>(mut plc: P, mut ctx: Cycle, plan: Plan, sh: Arc<Shared
             && end.saturating_sub(last_save) >= ns(plan.retain_period)
         {
             last_save = end;
-            if let Ok(p) = retain::capture(&plc, &ctx.io) {
-                let _ = s.send(p);
-            }
+            let _ = s.send(retain::capture(&plc, &ctx.io));
         }
     };
     // On stop (and after a watchdog trip, with the state the last scan left):
     // the last state goes to the retain file.
-    if let Some(s) = &plan.saver
-        && let Ok(p) = retain::capture(&plc, &ctx.io)
-    {
-        let _ = s.send(p);
+    if let Some(s) = &plan.saver {
+        let _ = s.send(retain::capture(&plc, &ctx.io));
     }
     drop(plan.saver);
     let _ = plan.done.send(outcome);

@@ -6,7 +6,7 @@ use std::time::Duration;
 
 use il_runtime::retain::{self, RetainError};
 use il_runtime::{Options, RetainLoad, Runtime};
-use il_std::addr::md;
+use il_std::addr::{md, qx};
 
 use crate::common::{bench::Bench, eventually, hmi::Hmi, temp_dir};
 
@@ -86,6 +86,45 @@ fn a_damaged_file_is_reported_and_the_program_starts_from_initial_values() {
         // And the next stop wrote a good file again.
         assert!(retain::load(&path).is_ok(), "{what}: rewritten");
     }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_state_that_cannot_be_read_back_is_not_saved_over_a_good_one() {
+    let dir = temp_dir("nan");
+    let opts = Options {
+        retain: Some(dir.join("bench.retain")),
+        retain_period: Duration::from_millis(20),
+        ..Default::default()
+    };
+    let level = |rt: &Runtime| rt.image().get(md(21).real());
+    let take = |rt: &Runtime, v: f32| {
+        rt.image().set(md(20).real(), v).unwrap();
+        rt.image().set(qx(1, 0), true).unwrap();
+        eventually("the level taken", || {
+            level(rt).to_bits().eq(&v.to_bits()).then_some(())
+        });
+        rt.image().set(qx(1, 0), false).unwrap();
+    };
+    let rt = Runtime::start(Bench::default(), opts.clone()).unwrap();
+    take(&rt, 1.5);
+    assert_eq!(rt.stop().unwrap().retain_error, None);
+
+    let rt = Runtime::start(Bench::default(), opts.clone()).unwrap();
+    eventually("a scan", || (level(&rt) == 1.5).then_some(()));
+    take(&rt, f32::NAN);
+    let report = rt.stop().unwrap();
+    let e = report.retain_error.expect("the NaN state was refused");
+    assert!(e.contains("NaN"), "{e}");
+
+    let rt = Runtime::start(Bench::default(), opts).unwrap();
+    assert!(
+        matches!(rt.retain_load(), RetainLoad::Restored),
+        "{:?}",
+        rt.retain_load()
+    );
+    eventually("the last good level", || (level(&rt) == 1.5).then_some(()));
+    rt.stop().unwrap();
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
