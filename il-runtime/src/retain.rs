@@ -21,8 +21,8 @@
 //! fails the checks (a truncated copy, a disk error, another program's file)
 //! is reported as [`RetainError::Corrupt`] and the runtime starts from initial
 //! values: never from garbage. JSON keeps the format readable and the
-//! snapshot's field names checkable (a program whose RETAIN variables changed
-//! does not load a file of the old one). Its one gap is a REAL holding NaN or
+//! snapshot's field names checkable (a program with a RETAIN variable that
+//! the file lacks does not load it). Its one gap is a REAL holding NaN or
 //! an infinity, which JSON cannot hold: every state is read back before it is
 //! written, and one that does not read back is not saved (the file keeps the
 //! last state that did, and the runtime's report says why).

@@ -79,7 +79,7 @@ impl Server {
         self.addr
     }
 
-    /// Stops accepting and closes every client (within [`POLL`]).
+    /// Stops accepting and closes every client (within 50 ms).
     pub fn stop(&mut self) {
         self.stop.store(true, Ordering::SeqCst);
         if let Some(t) = self.thread.take() {

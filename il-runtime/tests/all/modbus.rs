@@ -132,3 +132,26 @@ fn a_hung_client_does_not_stall_the_scan_or_other_clients() {
     let report = rt.stop().unwrap();
     assert!(report.scans >= 20, "{report:?}");
 }
+
+#[test]
+fn clients_past_the_limit_and_idle_ones_are_disconnected() {
+    let mut opts = modbus_opts();
+    opts.modbus_options.max_clients = 1;
+    opts.modbus_options.idle_timeout = Duration::from_millis(300);
+    let rt = Runtime::start(Hmi::default(), opts).unwrap();
+    let mut first = client(&rt);
+    assert_eq!(first.read_coils(0, 1).unwrap(), [false]);
+    // The second is accepted and closed at once: its request gets no answer.
+    let mut second = client(&rt);
+    assert!(matches!(second.read_coils(0, 1), Err(ClientError::Io(_))));
+    // The first, silent past the idle timeout, is closed too.
+    std::thread::sleep(Duration::from_millis(1200));
+    assert!(matches!(first.read_coils(0, 1), Err(ClientError::Io(_))));
+    // Which frees its place.
+    let mut third = eventually("a free place", || {
+        let mut c = client(&rt);
+        c.read_coils(0, 1).is_ok().then_some(c)
+    });
+    assert_eq!(third.read_holding(1024, 1).unwrap(), [0]);
+    rt.stop().unwrap();
+}
