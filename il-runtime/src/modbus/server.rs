@@ -461,6 +461,11 @@ mod tests {
         assert_eq!(&r[7..], &[0x03, 4, 0, 5, 0, 6]);
         respond(&frame(&[0x05, 0, 9, 0xFF, 0]), &img).unwrap();
         assert!(img.get(il_std::addr::qx(1, 1)));
+        // Coil n is bit n % 8 of data byte n / 8, least significant first.
+        respond(&frame(&[0x0F, 0, 0, 0, 3, 1, 0b101]), &img).unwrap();
+        let r = respond(&frame(&[0x01, 0, 0, 0, 10]), &img).unwrap();
+        assert_eq!(&r[7..], &[0x01, 2, 0b0000_0101, 0b0000_0010]);
+        assert!(img.get(il_std::addr::qx(0, 2)) && !img.get(il_std::addr::qx(0, 1)));
         // A single-coil value other than FF00/0000 is exception 3.
         let r = respond(&frame(&[0x05, 0, 9, 0x12, 0x34]), &img).unwrap();
         assert_eq!((r[7], r[8]), (0x85, 3));
