@@ -103,6 +103,8 @@ pub(crate) fn run<P: Plc>(mut plc: P, mut ctx: Cycle, plan: Plan<P::Retain>, sh:
     let mut marks: Vec<(usize, u64)> = Vec::with_capacity(16);
     let mut first = true;
     let mut release: Vec<Option<u64>> = vec![None; tasks.len()];
+    // Reused by `record`: no allocation in the loop once it runs.
+    let mut ran: Vec<Option<(u64, u64)>> = vec![None; tasks.len()];
     let outcome = loop {
         let wake = intervals
             .iter()
@@ -173,7 +175,7 @@ pub(crate) fn run<P: Plc>(mut plc: P, mut ctx: Cycle, plan: Plan<P::Retain>, sh:
         let end = sh.elapsed_ns();
         sh.scan_started.store(0, Ordering::SeqCst);
         sh.image.publish(&ctx.io);
-        if let Some(e) = record(&sh, &marks, end, &release, plan.watchdog) {
+        if let Some(e) = record(&sh, &marks, end, &release, &mut ran, plan.watchdog) {
             break Err(e);
         }
         polled |= marks.iter().any(|(i, _)| *i == usize::MAX);
@@ -185,8 +187,11 @@ pub(crate) fn run<P: Plc>(mut plc: P, mut ctx: Cycle, plan: Plan<P::Retain>, sh:
         }
     };
     // On stop (and after a watchdog trip, with the state the last scan left):
-    // the last state goes to the retain file.
-    if let Some(s) = &plan.saver {
+    // the last state goes to the retain file. Not after a panic: that scan
+    // stopped half way, and the file keeps the last whole state.
+    if let Some(s) = &plan.saver
+        && !matches!(outcome, Err(Error::Panic { .. }))
+    {
         let _ = s.send(retain::capture(&plc, &ctx.io));
     }
     drop(plan.saver);
@@ -199,12 +204,12 @@ fn record(
     marks: &[(usize, u64)],
     end: u64,
     release: &[Option<u64>],
+    ran: &mut [Option<(u64, u64)>],
     watchdog: Option<Duration>,
 ) -> Option<Error> {
     let mut stats = sh.stats.lock().unwrap_or_else(|e| e.into_inner());
-    let n = stats.len();
     // Per task: the start of its first program and the time all its programs took.
-    let mut ran: Vec<Option<(u64, u64)>> = vec![None; n];
+    ran.fill(None);
     for (k, &(i, t)) in marks.iter().enumerate() {
         let stop = marks.get(k + 1).map_or(end, |m| m.1);
         if let Some(slot) = ran.get_mut(i) {

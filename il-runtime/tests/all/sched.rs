@@ -136,7 +136,15 @@ fn sigterm_stops_the_runtime_cleanly_and_the_last_state_is_saved() {
 
 #[test]
 fn a_panicking_host_function_stops_the_runtime_with_an_error() {
-    let rt = Runtime::start(Bench::default(), opts()).unwrap();
+    let dir = crate::common::temp_dir("panic");
+    let path = dir.join("bench.retain");
+    let opts = Options {
+        retain: Some(path.clone()),
+        // Longer than the test: only a save on stop could write the file.
+        retain_period: Duration::from_secs(3600),
+        ..opts()
+    };
+    let rt = Runtime::start(Bench::default(), opts).unwrap();
     scans(&rt, 2);
     // (The scan thread's panic message shows on stderr: expected.)
     rt.image().set(mw(12).int(), 13).unwrap();
@@ -146,4 +154,7 @@ fn a_panicking_host_function_stops_the_runtime_with_an_error() {
         }
         other => panic!("expected a panic error, got {other:?}"),
     }
+    // The scan stopped half way: that state is not saved.
+    assert!(!path.exists());
+    std::fs::remove_dir_all(&dir).unwrap();
 }
