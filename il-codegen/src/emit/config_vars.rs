@@ -84,6 +84,12 @@ pub(super) fn copies(c: &ConfigDef, res: usize, prog: usize, before: bool) -> St
 pub(super) fn located(c: &ConfigDef) -> Vec<String> {
     c.var_config
         .iter()
-        .filter_map(|v| Some(super::io::located(&v.target.text, v.location.as_ref()?)))
+        .filter_map(|v| {
+            Some(super::io::located(
+                &v.target.text,
+                v.location.as_ref()?,
+                false,
+            ))
+        })
         .collect()
 }

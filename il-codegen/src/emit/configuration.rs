@@ -171,7 +171,11 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
         .globals
         .iter()
         .chain(c.resources.iter().flat_map(|r| &r.globals))
-        .filter_map(|v| v.location.as_ref().map(|l| super::io::located(&v.name, l)))
+        .filter_map(|v| {
+            v.location
+                .as_ref()
+                .map(|l| super::io::located(&v.name, l, v.retain))
+        })
         .chain(super::config_vars::located(c));
     let located = each(located, ", ");
     let mut io_accessors = String::new();

@@ -18,18 +18,20 @@ pub(super) fn addresses(pou: &CheckedPou) -> Vec<String> {
     let located = pou
         .vars
         .iter()
-        .filter_map(|v| v.location.as_ref().map(|l| (v.name.as_str(), l)));
-    let direct = pou.addresses.iter().map(|l| (l.text.as_str(), l));
+        .filter_map(|v| v.location.as_ref().map(|l| (v.name.as_str(), l, v.retain)));
+    let direct = pou.addresses.iter().map(|l| (l.text.as_str(), l, false));
     let mut out: Vec<String> = located
         .chain(direct)
-        .map(|(name, l)| self::located(name, l))
+        .map(|(name, l, retain)| self::located(name, l, retain))
         .collect();
     out.extend(unbound(&pou.vars));
     out
 }
 
-/// An `il_std::Located` entry of an `ADDRESSES` table.
-pub(super) fn located(name: &str, l: &Loc) -> String {
+/// An `il_std::Located` entry of an `ADDRESSES` table; `retain`: declared
+/// RETAIN, so a host keeps its bytes of the process image over a restart
+/// (located variables are not in the generated RETAIN snapshots).
+pub(super) fn located(name: &str, l: &Loc, retain: bool) -> String {
     let area = super::values::area(l);
     let (name, text, byte, ty) = (
         str_lit(name),
@@ -42,7 +44,7 @@ pub(super) fn located(name: &str, l: &Loc) -> String {
         None => "::core::option::Option::None".to_string(),
     };
     format!(
-        "::il_std::Located {{ name: {name}, address: {text}, area: {area}, byte: {byte}, bit: {bit}, ty: {ty}, bound: true, }}"
+        "::il_std::Located {{ name: {name}, address: {text}, area: {area}, byte: {byte}, bit: {bit}, ty: {ty}, bound: true, retain: {retain}, }}"
     )
 }
 
@@ -61,7 +63,7 @@ fn unbound(vars: &[Var]) -> Vec<String> {
             let a = super::values::area(&loc);
             let (name, text, ty) = (str_lit(&v.name), str_lit(text), str_lit(&v.ty.to_string()));
             Some(format!(
-                "::il_std::Located {{ name: {name}, address: {text}, area: {a}, byte: 0, bit: ::core::option::Option::None, ty: {ty}, bound: false, }}"
+                "::il_std::Located {{ name: {name}, address: {text}, area: {a}, byte: 0, bit: ::core::option::Option::None, ty: {ty}, bound: false, retain: false, }}"
             ))
         })
         .collect()

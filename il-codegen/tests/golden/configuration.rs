@@ -31,6 +31,7 @@ impl Fast {
             bit: ::core::option::Option::Some(1),
             ty: "BOOL",
             bound: true,
+            retain: false,
         },
     ];
     /// `lamp` (%QX0.1 BOOL) as the process image holds it now.
@@ -263,6 +264,7 @@ impl Plant {
             bit: ::core::option::Option::Some(1),
             ty: "BOOL",
             bound: true,
+            retain: false,
         },
     ];
     /// `lamp` (%QX0.1 BOOL) as the process image holds it now.

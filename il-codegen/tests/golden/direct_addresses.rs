@@ -28,6 +28,7 @@ impl Io {
             bit: ::core::option::Option::None,
             ty: "INT",
             bound: true,
+            retain: false,
         },
         ::il_std::Located {
             name: "count",
@@ -37,6 +38,7 @@ impl Io {
             bit: ::core::option::Option::None,
             ty: "INT",
             bound: true,
+            retain: false,
         },
         ::il_std::Located {
             name: "%IX0.3",
@@ -46,6 +48,7 @@ impl Io {
             bit: ::core::option::Option::Some(3),
             ty: "BOOL",
             bound: true,
+            retain: false,
         },
         ::il_std::Located {
             name: "%QX1.0",
@@ -55,6 +58,7 @@ impl Io {
             bit: ::core::option::Option::Some(0),
             ty: "BOOL",
             bound: true,
+            retain: false,
         },
         ::il_std::Located {
             name: "%IW2",
@@ -64,6 +68,7 @@ impl Io {
             bit: ::core::option::Option::None,
             ty: "WORD",
             bound: true,
+            retain: false,
         },
     ];
     /// `level` (%IW3 INT) as the process image holds it now.

@@ -40,6 +40,10 @@ pub struct Located {
     /// no VAR_CONFIG completed: `byte` and `bit` mean nothing, and the host
     /// binds the variable by reading or writing its field (`name`).
     pub bound: bool,
+    /// Declared RETAIN: a host that keeps RETAIN variables over a restart
+    /// saves these bytes of the process image too (located variables live
+    /// there, not in the generated RETAIN snapshots).
+    pub retain: bool,
 }
 
 /// The three byte areas.
