@@ -108,6 +108,16 @@ impl ConfigMachine {
         Ok(c)
     }
 
+    /// [`Machine::set_hook`]: a debugger for every program of the configuration.
+    pub fn set_hook(&mut self, hook: Option<Box<dyn crate::Hook>>) {
+        self.m.set_hook(hook);
+    }
+
+    /// [`Machine::hook_mut`].
+    pub fn hook_mut<T: crate::Hook>(&mut self) -> Option<&mut T> {
+        self.m.hook_mut()
+    }
+
     /// The configuration this machine runs.
     pub fn def(&self) -> &ConfigDef {
         &self.def
@@ -276,6 +286,9 @@ impl ConfigMachine {
         let mut inst = std::mem::take(&mut self.programs[r][p]);
         self.m.steps = 0;
         self.m.error_located = false;
+        if self.m.dbg.on() {
+            self.m.dbg_enter(pi.name.clone());
+        }
         let result = self.m.call_instance(&mut inst, ctx);
         for (n, g) in refs {
             let v = inst.vars[idx(&self.m, n)?].clone();
