@@ -28,6 +28,7 @@ Examples:
                                          (without it: Windows-1252, with a warning)
   ilc explain IL0003                     What a diagnostic code means
   ilc lsp                                Serve an editor (Language Server Protocol on stdio)
+  ilc debug                              Serve a debugger (Debug Adapter Protocol on stdio)
 
 Exit status:
   0  no errors (warnings may have been printed)
@@ -69,6 +70,17 @@ an instruction, declarations, standard signatures), inlay hints (the CR type
 at the end of each instruction line; off with the client setting
 `inlayHints.crType: false`), go to definition, references, rename, document
 and workspace symbols and completion. editors/vscode holds a VS Code client.";
+
+const DEBUG_EXAMPLES: &str = "\
+Examples:
+  ilc debug                   Started by the editor, which talks to it on stdin/stdout
+
+The editor's launch configuration names the program and how to run it:
+  { \"type\": \"ilc\", \"request\": \"launch\", \"program\": \"motor.il\", \"pou\": \"Motor\",
+    \"cycles\": 6, \"cycleTime\": \"10ms\", \"set\": [\"start=TRUE@3\"], \"stopOnEntry\": false }
+Breakpoints go on IL lines (with conditions such as `count > 5`, hit counts and
+log messages) and on POU names; every stop shows the current result (value and
+type), the scan number and the simulated time first. docs/guide.md: Debugging.";
 
 /// The whole command line.
 pub fn command() -> Command {
@@ -223,6 +235,11 @@ pub fn command() -> Command {
             Command::new("lsp")
                 .about("Run the language server for editors (LSP over stdio)")
                 .after_long_help(LSP_EXAMPLES),
+        )
+        .subcommand(
+            Command::new("debug")
+                .about("Run the debug adapter for editors (Debug Adapter Protocol over stdio)")
+                .after_long_help(DEBUG_EXAMPLES),
         )
         .subcommand(
             Command::new("explain")

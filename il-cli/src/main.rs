@@ -2,6 +2,7 @@
 
 mod check;
 mod cli;
+mod debug;
 mod emit;
 mod input;
 mod lsp;
@@ -108,6 +109,7 @@ fn main() -> ExitCode {
                 .copied()
                 .unwrap_or_default(),
         )),
+        Some(("debug", _)) => ExitCode::from(debug::run()),
         Some(("explain", m)) => {
             let code = m.get_one::<String>("code").map_or("", String::as_str);
             match il_codegen::codes::lookup(code) {

@@ -113,6 +113,11 @@ impl ConfigMachine {
         self.m.set_hook(hook);
     }
 
+    /// [`Machine::take_hook`].
+    pub fn take_hook<T: crate::Hook>(&mut self) -> Option<Box<T>> {
+        self.m.take_hook()
+    }
+
     /// [`Machine::hook_mut`].
     pub fn hook_mut<T: crate::Hook>(&mut self) -> Option<&mut T> {
         self.m.hook_mut()

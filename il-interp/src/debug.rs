@@ -424,6 +424,12 @@ impl Machine {
         }));
     }
 
+    /// Detach the hook and have it back, if it is a `T`.
+    pub fn take_hook<T: Hook>(&mut self) -> Option<Box<T>> {
+        let h = self.dbg.0.take()?.hook?;
+        (h as Box<dyn Any>).downcast::<T>().ok()
+    }
+
     /// The attached hook, if it is a `T`.
     pub fn hook_mut<T: Hook>(&mut self) -> Option<&mut T> {
         let h = self.dbg.0.as_mut()?.hook.as_mut()?;
