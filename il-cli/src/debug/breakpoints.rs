@@ -74,6 +74,8 @@ pub struct Breakpoints {
     pub lines: HashMap<u32, Vec<Bp>>,
     /// By POU name in upper case.
     pub functions: HashMap<String, Vec<Bp>>,
+    /// Scan breakpoints (a function breakpoint named `scan N`): id and scan.
+    pub scans: Vec<(i64, u64)>,
     /// Stop on runtime faults (the `faults` exception filter).
     pub faults: bool,
     next_id: i64,
@@ -195,9 +197,11 @@ impl Breakpoints {
         json!({ "breakpoints": out })
     }
 
-    /// `setFunctionBreakpoints`: stop at the first instruction of a POU.
+    /// `setFunctionBreakpoints`: stop at the first instruction of a POU,
+    /// or (named `scan N`) at the first instruction of scan N.
     pub fn set_functions(&mut self, prog: &Program, args: &Value) -> Value {
         self.functions.clear();
+        self.scans.clear();
         let asked = args
             .get("breakpoints")
             .and_then(Value::as_array)
@@ -206,6 +210,18 @@ impl Breakpoints {
         let mut out = Vec::new();
         for b in &asked {
             let name = b.get("name").and_then(Value::as_str).unwrap_or("").trim();
+            if let Some(n) = scan_number(name) {
+                let id = self.id();
+                match n {
+                    Some(n) => {
+                        self.scans.push((id, n));
+                        out.push(json!({ "id": id, "verified": true }));
+                    }
+                    None => out.push(json!({ "id": id, "verified": false,
+                        "message": format!("`{name}`: scans are numbered from 1") })),
+                }
+                continue;
+            }
             let pou = prog.pous.iter().find(|p| p.name.eq_ignore_ascii_case(name));
             let id = self.id();
             match (pou, self.bp(b)) {
@@ -233,6 +249,15 @@ impl Breakpoints {
         }
         json!({ "breakpoints": out })
     }
+}
+
+/// `scan 3` → `Some(Some(3))`; `scan 0`, `scan x` → `Some(None)`; a POU name → `None`.
+fn scan_number(name: &str) -> Option<Option<u64>> {
+    let (word, n) = name.split_once(char::is_whitespace)?;
+    if !word.eq_ignore_ascii_case("scan") {
+        return None;
+    }
+    Some(n.trim().parse::<u64>().ok().filter(|&n| n >= 1))
 }
 
 /// Whether a client's path names the launched file (both as given, or both

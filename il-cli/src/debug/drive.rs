@@ -74,6 +74,11 @@ pub fn drive<T: Target>(mut m: T, mut s: Session) -> Option<Session> {
         }
         force(&mut m, &mut ctx, &forces);
         let r = m.scan(&mut ctx);
+        // The forces as they are now: one released while stopped is not written back.
+        let forces = m
+            .hook_mut::<Session>()
+            .map(|s| s.forces.clone())
+            .unwrap_or_default();
         force(&mut m, &mut ctx, &forces);
         if let Err(e) = r {
             let Some(s) = m.hook_mut::<Session>() else {

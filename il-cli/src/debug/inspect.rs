@@ -100,6 +100,12 @@ impl Session {
                 }));
             }
         }
+        if !at.pou().addresses.is_empty() && depth == 0 {
+            let h = self.handle(Handle::Image(depth));
+            scopes.push(
+                json!({ "name": "Process image", "variablesReference": h, "expensive": false }),
+            );
+        }
         Ok(json!({ "scopes": scopes }))
     }
 
@@ -146,6 +152,14 @@ impl Session {
                     }
                     let ty = v.ty.to_string();
                     out.push(self.variable(&v.name, &x, &ty, depth, v.name.clone()));
+                }
+            }
+            Handle::Image(depth) => {
+                let addrs: Vec<String> =
+                    at.pou().addresses.iter().map(|l| l.text.clone()).collect();
+                for a in addrs {
+                    let (v, ty) = at.eval(depth, &a)?;
+                    out.push(self.variable(&a, &v, &ty.to_string(), depth, a.clone()));
                 }
             }
             Handle::Path(depth, path) => {
@@ -210,10 +224,10 @@ impl Session {
             .ok_or("setVariable needs `value`")?;
         let h = r.checked_sub(1).and_then(|i| self.handles.get(i)).cloned();
         let path = match h {
-            Some(Handle::Section(0, _)) => name.to_string(),
+            Some(Handle::Section(0, _) | Handle::Image(0)) => name.to_string(),
             Some(Handle::Path(0, p)) if name.starts_with('[') => format!("{p}{name}"),
             Some(Handle::Path(0, p)) => format!("{p}.{name}"),
-            Some(Handle::Section(..) | Handle::Path(..)) => {
+            Some(Handle::Section(..) | Handle::Path(..) | Handle::Image(..)) => {
                 return Err(
                     "only the innermost frame's variables can be set (the others are in a call)"
                         .into(),

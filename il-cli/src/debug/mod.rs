@@ -64,6 +64,8 @@ enum Handle {
     Path(usize, String),
     /// The CR after each line run so far in this scan.
     Flow,
+    /// The direct addresses the POU of frame `depth` uses (`%IX0.0` ...).
+    Image(usize),
 }
 
 pub struct Session {
@@ -84,7 +86,7 @@ pub struct Session {
     /// Pinned values: path and IL literal, written around every scan.
     forces: Vec<(String, String)>,
     /// The CR after each line run in this scan: POU, line, CR.
-    flow: Vec<(String, u32, String)>,
+    flow: std::collections::VecDeque<(String, u32, String)>,
     configured: bool,
     /// The fault the run stopped on (`exceptionInfo`).
     fault: Option<String>,
@@ -139,7 +141,7 @@ impl Session {
             now: il_interp::il_std::TIME(0),
             handles: Vec::new(),
             forces: Vec::new(),
-            flow: Vec::new(),
+            flow: Default::default(),
             configured: false,
             fault: None,
             quit: false,
@@ -309,6 +311,10 @@ impl Session {
                 .out
                 .ok(seq, command, json!({ "allThreadsContinued": true })),
             "force" => self.force(seq, args, None),
+            "flow" => {
+                let body = self.flow_lines();
+                self.out.ok(seq, command, body);
+            }
             "terminate" => {
                 self.quit = true;
                 self.out.ok(seq, command, Value::Null);
@@ -375,6 +381,24 @@ impl Session {
         self.forces.push((path.to_string(), value));
         self.out
             .ok(seq, "force", json!({ "forced": self.forced() }));
+    }
+
+    /// The custom `flow` request: the CR after each line run so far in
+    /// this scan, the last value of each line (what an editor shows next
+    /// to the lines: CODESYS's "flow control"), in the order first run.
+    fn flow_lines(&self) -> Value {
+        let mut lines: Vec<(&str, u32, &str)> = Vec::new();
+        for (pou, line, cr) in &self.flow {
+            match lines.iter_mut().find(|(p, l, _)| *p == pou && *l == *line) {
+                Some(x) => x.2 = cr,
+                None => lines.push((pou, *line, cr)),
+            }
+        }
+        let lines: Vec<Value> = lines
+            .into_iter()
+            .map(|(pou, line, cr)| json!({ "pou": pou, "line": line, "cr": cr }))
+            .collect();
+        json!({ "scan": self.scan, "lines": lines })
     }
 
     fn forced(&self) -> Value {

@@ -23,7 +23,21 @@ enum Resume {
 const ENDED: &str = "the debugger ended the session";
 
 impl Hook for Session {
+    // A panic of the debugger's own code ends the run with an error, not
+    // the adapter (the client gets `terminated`, and stderr says why).
     fn before(&mut self, at: &mut Here<'_>) -> Result<(), String> {
+        catch_unwind(AssertUnwindSafe(|| self.before_statement(at)))
+            .unwrap_or_else(|_| Err("internal error in ilc debug (before a statement)".into()))
+    }
+
+    fn after(&mut self, at: &mut Here<'_>) -> Result<(), String> {
+        catch_unwind(AssertUnwindSafe(|| self.after_statement(at)))
+            .unwrap_or_else(|_| Err("internal error in ilc debug (after a statement)".into()))
+    }
+}
+
+impl Session {
+    fn before_statement(&mut self, at: &mut Here<'_>) -> Result<(), String> {
         if self.attention() {
             self.drain();
         }
@@ -34,6 +48,7 @@ impl Hook for Session {
         // A line starts unless the previous statement was the one before
         // this in the same frame and on the same line.
         let starts = self.last != Some((depth, pc.wrapping_sub(1), line));
+        let scan_starts = self.last.is_none();
         self.last = Some((depth, pc, line));
         if !starts {
             return Ok(());
@@ -55,6 +70,10 @@ impl Hook for Session {
         };
         if let Some(reason) = step {
             return self.stop(at, reason, None, Vec::new());
+        }
+        if scan_starts && let Some(&(id, _)) = self.bps.scans.iter().find(|(_, n)| *n == self.scan)
+        {
+            return self.stop(at, "function breakpoint", None, vec![id]);
         }
         let mut hit = Vec::new();
         let mut errors = Vec::new();
@@ -107,22 +126,21 @@ impl Hook for Session {
         self.stop(at, reason, None, hit)
     }
 
-    fn after(&mut self, at: &mut Here<'_>) -> Result<(), String> {
+    fn after_statement(&mut self, at: &mut Here<'_>) -> Result<(), String> {
         let cr = match at.cr(0) {
             Some(Cr::Value(v, t)) => format!("{} : {t}", v.display()),
             Some(Cr::Undefined(why)) => format!("undefined ({why})"),
             None => String::new(),
         };
-        let pou = at.pou().name.clone();
         let line = at.line();
-        match self.flow.last_mut() {
+        match self.flow.back_mut() {
             // A line of several statements: the CR after its last one.
-            Some(last) if last.0 == pou && last.1 == line => last.2 = cr,
+            Some(last) if last.0 == at.pou().name && last.1 == line => last.2 = cr,
             _ => {
                 if self.flow.len() >= FLOW_MAX {
-                    self.flow.remove(0);
+                    self.flow.pop_front();
                 }
-                self.flow.push((pou, line, cr));
+                self.flow.push_back((at.pou().name.clone(), line, cr));
             }
         }
         if self.bps.faults
@@ -133,9 +151,7 @@ impl Hook for Session {
         }
         Ok(())
     }
-}
 
-impl Session {
     /// Stop here: send `stopped`, then answer requests until one resumes.
     fn stop(
         &mut self,

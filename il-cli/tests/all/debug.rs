@@ -13,6 +13,7 @@ use serde_json::{Value, json};
 mod breakpoints;
 mod config;
 mod faults;
+mod force;
 mod fuzz;
 
 pub const MOTOR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/motor.il");
