@@ -221,6 +221,12 @@ pub fn command() -> Command {
                         .help("Also draw a timing diagram of the watched variables as SVG"),
                 )
                 .arg(
+                    Arg::new("flow")
+                        .long("flow")
+                        .action(ArgAction::SetTrue)
+                        .help("Also print the current result after every IL line run in the last scan"),
+                )
+                .arg(
                     Arg::new("color")
                         .long("color")
                         .value_name("WHEN")

@@ -4,6 +4,7 @@ mod check;
 mod cli;
 mod debug;
 mod emit;
+mod flow;
 mod input;
 mod lsp;
 mod plot;
@@ -100,6 +101,7 @@ fn main() -> ExitCode {
                 front: input::Front::of(m),
                 vcd: m.get_one::<String>("vcd").map(std::path::PathBuf::from),
                 plot: m.get_one::<String>("plot").map(std::path::PathBuf::from),
+                flow: m.get_flag("flow"),
             };
             let code = run::run(&opts, &mut io::stdout().lock(), &mut io::stderr().lock());
             ExitCode::from(code)

@@ -18,6 +18,7 @@ Examples:
   ilc run tank.il --set valves[2].open=TRUE --set state=TankState#Filling --watch valves[2]
   ilc run motor.il --program Motor --cycles 8 --set start=TRUE@2 --set start=FALSE@3 --vcd motor.vcd
   ilc run motor.il --program Motor --cycles 8 --set start=TRUE@2 --watch start,run --plot motor.svg
+  ilc run motor.il --program Motor --cycles 3 --set start=TRUE@3 --flow
 
 A CONFIGURATION runs with --config NAME (or alone when the file has one and no
 single PROGRAM): each scan runs the programs whose TASK is released at that
@@ -41,6 +42,9 @@ $comment), with the timescale the coarsest of s/ms/us/ns that divides --step.
 --plot FILE draws a timing diagram (SVG): one lane per watched signal, BOOL as
 high/low, numbers as stepped values, time in ms or s. Both files are written
 whole at the end of the run, or not at all.
+--flow prints, after the table, the current result (value and type) after every
+IL line the last scan ran, in the order run (FB bodies included): the offline
+\"flow control\" of CODESYS and TwinCAT.
 
 Exit status: 0 ran, 1 the program has errors or a name/value is wrong,
 2 the command line itself is wrong.";
@@ -138,6 +142,8 @@ pub struct Options {
     pub vcd: Option<std::path::PathBuf>,
     /// `--plot FILE`.
     pub plot: Option<std::path::PathBuf>,
+    /// `--flow`: the CR after every line of the last scan.
+    pub flow: bool,
 }
 
 /// Run and print; the exit status (0 fine, 1 error).
@@ -285,6 +291,7 @@ fn scan_table<T: Target>(
     )?;
     let mut ctx = Cycle::new();
     let mut faults_seen = 0u64;
+    let mut flow = None;
     let mut fault_lines = Vec::new();
     for k in 1..=o.cycles {
         for (c, place, v) in &sets {
@@ -293,8 +300,16 @@ fn scan_table<T: Target>(
             }
         }
         let now = ctx.now();
+        // Only the last scan runs through the hook: the others keep the
+        // interpreter's speed.
+        if o.flow && k == o.cycles {
+            m.set_hook(Some(Box::new(crate::flow::Recorder::default())));
+        }
         m.scan(&mut ctx)
             .map_err(|e| format!("cycle {k} (time {}): {e}", fmt_dur(now.0)))?;
+        if let Some(rec) = m.take_hook::<crate::flow::Recorder>() {
+            flow = Some((k, fmt_dur(now.0), rec));
+        }
         let mut row = vec![k.to_string(), fmt_dur(now.0)];
         let values: Vec<Value> = watch.iter().map(|w| m.get_at(&ctx, w)).collect();
         row.extend(values.iter().map(Value::display));
@@ -351,6 +366,11 @@ fn scan_table<T: Target>(
     }
     out.write_all(text.as_bytes())
         .map_err(|e| format!("cannot write the table: {e}"))?;
+    if let Some((k, time, rec)) = flow {
+        let source = std::fs::read_to_string(&o.file).ok();
+        crate::flow::print(&rec, source.as_deref(), k, &time, out)
+            .map_err(|e| format!("cannot write the flow: {e}"))?;
+    }
     for f in &fault_lines {
         let _ = writeln!(err, "warning: {f}");
     }

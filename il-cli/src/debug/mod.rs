@@ -86,7 +86,7 @@ pub struct Session {
     /// Pinned values: path and IL literal, written around every scan.
     forces: Vec<(String, String)>,
     /// The CR after each line run in this scan: POU, line, CR.
-    flow: std::collections::VecDeque<(String, u32, String)>,
+    flow: crate::flow::Lines,
     configured: bool,
     /// The fault the run stopped on (`exceptionInfo`).
     fault: Option<String>,

@@ -9,7 +9,7 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use serde_json::{Value, json};
 
 use super::{FLOW_MAX, Mode, Session, cond};
-use il_interp::{Cr, Here, Hook};
+use il_interp::{Here, Hook};
 
 /// What a request answered while stopped does to the run.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -127,22 +127,7 @@ impl Session {
     }
 
     fn after_statement(&mut self, at: &mut Here<'_>) -> Result<(), String> {
-        let cr = match at.cr(0) {
-            Some(Cr::Value(v, t)) => format!("{} : {t}", v.display()),
-            Some(Cr::Undefined(why)) => format!("undefined ({why})"),
-            None => String::new(),
-        };
-        let line = at.line();
-        match self.flow.back_mut() {
-            // A line of several statements: the CR after its last one.
-            Some(last) if last.0 == at.pou().name && last.1 == line => last.2 = cr,
-            _ => {
-                if self.flow.len() >= FLOW_MAX {
-                    self.flow.pop_front();
-                }
-                self.flow.push_back((at.pou().name.clone(), line, cr));
-            }
-        }
+        crate::flow::record(&mut self.flow, at, FLOW_MAX);
         if self.bps.faults
             && let Some(f) = at.fault()
         {

@@ -412,3 +412,40 @@ END_PROGRAM
     d.event("terminated");
     d.finish();
 }
+
+/// `ilc run --flow`: the CR after every line of the last scan, FB bodies
+/// included, after the table; the earlier scans are not shown.
+#[test]
+fn run_flow_prints_the_current_result_of_each_line_of_the_last_scan() {
+    let o = crate::run::ilc(&[
+        "run",
+        MOTOR,
+        "--program",
+        "Motor",
+        "--cycles",
+        "3",
+        "--set",
+        "start=TRUE@3",
+        "--flow",
+    ]);
+    let out = crate::run::text(&o.stdout);
+    assert!(o.status.success(), "{out}{}", crate::run::text(&o.stderr));
+    let flow: Vec<&str> = out
+        .lines()
+        .skip_while(|l| !l.starts_with("flow of cycle 3 (time 20ms)"))
+        .skip(1)
+        .collect();
+    let cols = |l: &str| l.split_whitespace().map(str::to_string).collect::<Vec<_>>();
+    assert_eq!(flow.len(), 11, "{out}");
+    assert_eq!(
+        cols(flow[0]),
+        ["Motor", "14", "LD", "start", "TRUE", ":", "BOOL"]
+    );
+    assert!(
+        flow[4].ends_with("undefined (after CAL on line 18)"),
+        "{}",
+        flow[4]
+    );
+    assert_eq!(cols(flow[8]), ["Motor", "22", "ADD", "1", "1", ":", "INT"]);
+    assert_eq!(out.matches("flow of").count(), 1);
+}
