@@ -80,6 +80,7 @@ impl std::fmt::Debug for Dbg {
 }
 
 impl Dbg {
+    #[inline(always)]
     pub(crate) fn on(&self) -> bool {
         self.0.is_some()
     }
@@ -437,6 +438,8 @@ impl Machine {
     }
 
     /// The next body run is the frame at `path` (its instance path).
+    #[cold]
+    #[inline(never)]
     pub(crate) fn dbg_enter(&mut self, path: String) {
         if let Some(d) = &mut self.dbg.0 {
             d.next_path = Some(path);
@@ -446,6 +449,8 @@ impl Machine {
     /// Before frame `f` calls `inst` (an FB instance, its steps already
     /// evaluated) or a FUNCTION (`inst` `None`, named `func`): keep the
     /// caller's values for the stack view and name the callee's frame.
+    #[cold]
+    #[inline(never)]
     pub(crate) fn dbg_call(&mut self, f: &Frame, inst: Option<(&Place, &[Step])>, func: &str) {
         let Some(d) = &mut self.dbg.0 else { return };
         let Some(top) = d.stack.last_mut() else {
@@ -463,7 +468,10 @@ impl Machine {
         d.next_path = Some(path);
     }
 
-    /// Run a body statement by statement through the hook.
+    /// Run a body statement by statement through the hook (kept out of
+    /// the plain loop's code).
+    #[inline(never)]
+    #[cold]
     pub(crate) fn run_hooked(&mut self, f: &mut Frame, ctx: &mut Cycle) -> Result<(), String> {
         let pou = f.pou;
         let prog = self.prog.clone();
