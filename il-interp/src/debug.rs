@@ -53,6 +53,8 @@ struct Entry {
     /// until the call returns).
     vars: Vec<Value>,
     crs: Vec<Value>,
+    /// A FUNCTION's result so far, likewise.
+    ret: Value,
 }
 
 /// The hook and the call stack of a machine being debugged (`None`: not).
@@ -207,6 +209,16 @@ impl Here<'_> {
         })
     }
 
+    /// The result of a FUNCTION's frame so far (its name, value and type);
+    /// `None` for the frame of an instance.
+    pub fn result(&self, depth: usize) -> Option<(String, Value, Ty)> {
+        let e = self.stack.iter().rev().nth(depth)?;
+        let pou = &self.m.prog.pous[e.pou];
+        let ty = pou.ret.clone()?;
+        let v = if depth == 0 { &self.f.ret } else { &e.ret };
+        Some((pou.name.clone(), v.clone(), ty))
+    }
+
     /// The variables of frame `depth` in declaration order.
     pub fn vars(&self, depth: usize) -> Vec<(&Var, Value)> {
         let Some((e, vars, _)) = self.frame(depth) else {
@@ -226,6 +238,11 @@ impl Here<'_> {
     /// (`Main.pump.starts`), or a direct address (`%IX0.0`).
     pub fn eval(&self, depth: usize, text: &str) -> Result<(Value, Ty), String> {
         let (depth, rest) = self.frame_of(depth, text.trim());
+        if let Some((name, v, ty)) = self.result(depth)
+            && name.eq_ignore_ascii_case(rest)
+        {
+            return Ok((v, ty));
+        }
         let (target, ty) = self.resolve(depth, rest)?;
         let v = match target {
             Target::Addr(l) => io_read(self.ctx, &l),
@@ -458,6 +475,7 @@ impl Machine {
         };
         top.vars = f.vars.clone();
         top.crs = f.cr.clone();
+        top.ret = f.ret.clone();
         let path = match inst {
             Some((p, steps)) => {
                 let pou = &self.prog.pous[f.pou];
@@ -494,6 +512,7 @@ impl Machine {
                 cr: CrNow::Unset,
                 vars: Vec::new(),
                 crs: Vec::new(),
+                ret: Value::Bool(false),
             });
         }
         let r = self.hooked_body(f, ctx, body, &labels);

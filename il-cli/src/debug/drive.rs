@@ -15,7 +15,7 @@ pub fn drive<T: Target>(mut m: T, mut s: Session) -> Option<Session> {
     let Some(l) = s.launch.as_ref() else {
         return Some(s);
     };
-    let (cycles, step) = (l.cycles, l.cycle_time);
+    let (cycles, step, real_time) = (l.cycles, l.cycle_time, l.real_time);
     let mut sets: Vec<(u64, T::Place, V)> = Vec::new();
     for a in &l.sets {
         let r = m
@@ -73,6 +73,7 @@ pub fn drive<T: Target>(mut m: T, mut s: Session) -> Option<Session> {
             }
         }
         force(&mut m, &mut ctx, &forces);
+        let started = std::time::Instant::now();
         let r = m.scan(&mut ctx);
         // The forces as they are now: one released while stopped is not written back.
         let forces = m
@@ -90,9 +91,31 @@ pub fn drive<T: Target>(mut m: T, mut s: Session) -> Option<Session> {
             }
             break;
         }
+        if real_time {
+            pace(&mut m, started, step);
+        }
         ctx.advance(step);
     }
     m.take_hook::<Session>().map(|s| end(*s, code))
+}
+
+/// `realTime`: wait out the rest of the cycle since `started`, answering
+/// requests meanwhile (a stop inside the scan already took its time).
+fn pace<T: Target>(m: &mut T, started: std::time::Instant, step: il_interp::il_std::TIME) {
+    let cycle = std::time::Duration::from_nanos(step.0.max(0) as u64);
+    while started.elapsed() < cycle {
+        let Some(s) = m.hook_mut::<Session>() else {
+            return;
+        };
+        if s.attention() {
+            s.drain();
+        }
+        if s.quit {
+            return;
+        }
+        let left = cycle.saturating_sub(started.elapsed());
+        std::thread::sleep(left.min(std::time::Duration::from_millis(10)));
+    }
 }
 
 fn report<T: Target>(m: &mut T, msg: &str) {

@@ -85,6 +85,10 @@ impl Session {
             "name": "Current result", "variablesReference": cr, "expensive": false,
             "presentationHint": "registers",
         })];
+        if at.result(depth).is_some() {
+            let h = self.handle(Handle::Result(depth));
+            scopes.push(json!({ "name": "Result", "variablesReference": h, "expensive": false }));
+        }
         let vars = at.vars(depth);
         for &(kind, name) in SECTIONS {
             if vars.iter().any(|(v, _)| v.kind == kind && !hidden(&v.name)) {
@@ -152,6 +156,11 @@ impl Session {
                     }
                     let ty = v.ty.to_string();
                     out.push(self.variable(&v.name, &x, &ty, depth, v.name.clone()));
+                }
+            }
+            Handle::Result(depth) => {
+                if let Some((name, v, ty)) = at.result(depth) {
+                    out.push(self.variable(&name, &v, &ty.to_string(), depth, name.clone()));
                 }
             }
             Handle::Image(depth) => {
@@ -227,7 +236,9 @@ impl Session {
             Some(Handle::Section(0, _) | Handle::Image(0)) => name.to_string(),
             Some(Handle::Path(0, p)) if name.starts_with('[') => format!("{p}{name}"),
             Some(Handle::Path(0, p)) => format!("{p}.{name}"),
-            Some(Handle::Section(..) | Handle::Path(..) | Handle::Image(..)) => {
+            Some(
+                Handle::Section(..) | Handle::Path(..) | Handle::Image(..) | Handle::Result(..),
+            ) => {
                 return Err(
                     "only the innermost frame's variables can be set (the others are in a call)"
                         .into(),

@@ -24,6 +24,8 @@ pub struct Launch {
     /// `force`: `{ "path": "value" }`, pinned from the first scan on.
     pub forces: Vec<(String, String)>,
     pub stop_on_entry: bool,
+    /// Pace the scans by the wall clock (one per `cycleTime`).
+    pub real_time: bool,
     pub front: Front,
 }
 
@@ -37,6 +39,7 @@ const FIELDS: &[&str] = &[
     "set",
     "force",
     "stopOnEntry",
+    "realTime",
     "std",
     "snippet",
 ];
@@ -173,6 +176,7 @@ pub fn parse(args: &Value) -> Result<Launch, String> {
         sets,
         forces,
         stop_on_entry: boolean("stopOnEntry")?,
+        real_time: boolean("realTime")?,
         front: Front {
             standard,
             snippet: boolean("snippet")?,

@@ -66,6 +66,8 @@ enum Handle {
     Flow,
     /// The direct addresses the POU of frame `depth` uses (`%IX0.0` ...).
     Image(usize),
+    /// The result of the FUNCTION of frame `depth`.
+    Result(usize),
 }
 
 pub struct Session {
@@ -153,8 +155,14 @@ impl Session {
     /// run, then requests until the client disconnects.
     fn serve(mut self) {
         while !(self.configured && self.target.is_some()) {
-            if !self.next_request(Self::setup) {
+            if !self.next_request(Self::setup) || self.gone {
                 return;
+            }
+            if self.quit {
+                // `terminate` before the run: it never starts.
+                self.target = None;
+                self.out.event("terminated", Value::Null);
+                self.quit = false;
             }
         }
         let Some(target) = self.target.take() else {
@@ -325,7 +333,7 @@ impl Session {
                 self.out.ok(seq, command, Value::Null);
             }
             "stackTrace" | "scopes" | "variables" | "evaluate" | "setVariable" | "next"
-            | "stepIn" | "stepOut" | "exceptionInfo" => {
+            | "stepIn" | "stepOut" | "nextScan" | "exceptionInfo" => {
                 let why = if self.configured && self.target.is_none() && self.scan > 0 {
                     "the program is running (or has ended): pause it first"
                 } else {

@@ -222,6 +222,7 @@ impl Session {
             "next" => go(self, Mode::Next { depth, line, scan }),
             "stepIn" => go(self, Mode::In { depth, line, scan }),
             "stepOut" => go(self, Mode::Out { depth, scan }),
+            "nextScan" => go(self, Mode::Out { depth: 0, scan }),
             "pause" => {
                 self.out.ok(seq, command, Value::Null);
                 Resume::Stay

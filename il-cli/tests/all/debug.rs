@@ -14,6 +14,7 @@ mod breakpoints;
 mod config;
 mod faults;
 mod force;
+mod functions;
 mod fuzz;
 
 pub const MOTOR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/motor.il");
