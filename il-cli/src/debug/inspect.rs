@@ -204,7 +204,20 @@ impl Session {
             .get("expression")
             .and_then(Value::as_str)
             .ok_or("evaluate needs `expression`")?;
-        let (v, ty) = at.eval(depth, e)?;
+        let (v, ty) = match at.eval(depth, e) {
+            Ok(x) => x,
+            // A comparison (`count > 5`) as a breakpoint condition reads it.
+            Err(err) => match super::cond::parse(e) {
+                Ok(super::cond::Cond::Cmp(..)) if depth == 0 => {
+                    let b = super::cond::holds(at, e)?;
+                    (
+                        V::Bool(b),
+                        il_codegen::ir::types::Ty::Elem(il_codegen::ir::types::Elem::BOOL),
+                    )
+                }
+                _ => return Err(err),
+            },
+        };
         let ty = ty.to_string();
         let reference = if compound(&v) {
             self.handle(Handle::Path(depth, e.trim().to_string()))

@@ -301,8 +301,11 @@ impl Session {
                 None => self.out.error(seq, command, "launch a program first"),
             },
             "setExceptionBreakpoints" => {
+                // `filters`, or `filterOptions` (clients that support conditions send these).
                 let filters = args.get("filters").and_then(Value::as_array);
-                self.bps.faults = filters.is_some_and(|f| f.iter().any(|x| x == "faults"));
+                let options = args.get("filterOptions").and_then(Value::as_array);
+                self.bps.faults = filters.is_some_and(|f| f.iter().any(|x| x == "faults"))
+                    || options.is_some_and(|f| f.iter().any(|x| x["filterId"] == "faults"));
                 self.out.ok(seq, command, json!({}));
             }
             "configurationDone" => self.out.ok(seq, command, Value::Null),

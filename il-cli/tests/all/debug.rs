@@ -320,6 +320,9 @@ fn motor_line_22_stops_in_scan_3_with_the_current_result() {
         )
         .contains("X")
     );
+    // A comparison evaluates as a breakpoint condition would.
+    assert_eq!(d.eval(frame, "starts < 1")["result"], "TRUE");
+    assert_eq!(d.eval(frame, "starts <> 0")["result"], "FALSE");
 
     d.ok("next", json!({"threadId": 1}));
     assert_eq!(d.stopped()["reason"], "step");
