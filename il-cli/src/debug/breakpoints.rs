@@ -123,7 +123,8 @@ impl Breakpoints {
         self.next_id
     }
 
-    fn bp(&mut self, b: &Value) -> Result<Bp, String> {
+    /// The breakpoint `b` asks for, with the id the answer gives it.
+    fn bp(&mut self, id: i64, b: &Value) -> Result<Bp, String> {
         let text = |k: &str| {
             b.get(k)
                 .and_then(Value::as_str)
@@ -136,7 +137,7 @@ impl Breakpoints {
             super::cond::parse(&c)?;
         }
         Ok(Bp {
-            id: self.id(),
+            id,
             condition: text("condition"),
             hit,
             log: text("logMessage"),
@@ -180,9 +181,8 @@ impl Breakpoints {
                     continue;
                 }
             };
-            match self.bp(b) {
-                Ok(mut bp) => {
-                    bp.id = id;
+            match self.bp(id, b) {
+                Ok(bp) => {
                     self.lines.entry(at).or_default().push(bp);
                     let mut v = json!({ "id": id, "verified": true, "line": at });
                     if at != line32 {
@@ -224,9 +224,8 @@ impl Breakpoints {
             }
             let pou = prog.pous.iter().find(|p| p.name.eq_ignore_ascii_case(name));
             let id = self.id();
-            match (pou, self.bp(b)) {
-                (Some(p), Ok(mut bp)) if !p.body.is_empty() => {
-                    bp.id = id;
+            match (pou, self.bp(id, b)) {
+                (Some(p), Ok(bp)) if !p.body.is_empty() => {
                     let line = p.body[0].line;
                     self.functions
                         .entry(p.name.to_ascii_uppercase())

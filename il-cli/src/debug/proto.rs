@@ -112,6 +112,12 @@ impl Out {
     fn send(&mut self, mut msg: Value) {
         self.seq += 1;
         msg["seq"] = json!(self.seq);
+        // No body is no `body` field (the schema has it an object when present).
+        if let Some(m) = msg.as_object_mut()
+            && m.get("body").is_some_and(Value::is_null)
+        {
+            m.remove("body");
+        }
         let text = msg.to_string();
         // A client gone away is noticed by the reader (end of input).
         let _ = write!(self.w, "Content-Length: {}\r\n\r\n{text}", text.len());
