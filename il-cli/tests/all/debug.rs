@@ -30,6 +30,8 @@ pub struct Dap {
     seq: i64,
     /// Events received while waiting for a response.
     pub events: Vec<Value>,
+    /// What the adapter wrote on stderr (a caught panic says so there).
+    stderr: std::sync::Arc<std::sync::Mutex<String>>,
 }
 
 impl Dap {
@@ -38,10 +40,19 @@ impl Dap {
             .arg("debug")
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
-            .stderr(Stdio::inherit())
+            .stderr(Stdio::piped())
             .spawn()
             .expect("start ilc debug");
         let stdin = child.stdin.take();
+        let stderr = std::sync::Arc::new(std::sync::Mutex::new(String::new()));
+        let (mut err, into) = (child.stderr.take().unwrap(), stderr.clone());
+        std::thread::spawn(move || {
+            let mut text = String::new();
+            let _ = err.read_to_string(&mut text);
+            if let Ok(mut s) = into.lock() {
+                *s = text;
+            }
+        });
         let mut stdout = BufReader::new(child.stdout.take().unwrap());
         let (tx, incoming) = channel();
         std::thread::spawn(move || {
@@ -76,7 +87,13 @@ impl Dap {
             incoming,
             seq: 0,
             events: Vec::new(),
+            stderr,
         }
+    }
+
+    /// What the adapter wrote on stderr until it exited.
+    pub fn stderr(&self) -> String {
+        self.stderr.lock().map(|s| s.clone()).unwrap_or_default()
     }
 
     pub fn send_raw(&mut self, body: &str) {
@@ -217,15 +234,17 @@ impl Dap {
         )
     }
 
-    /// disconnect and wait for the adapter to exit (bounded).
-    pub fn finish(mut self) {
+    /// disconnect and wait for the adapter to exit (bounded); its stderr.
+    pub fn finish(mut self) -> String {
         let _ = self.request("disconnect", json!({}));
         drop(self.stdin.take());
         let t = std::time::Instant::now();
         loop {
             if let Ok(Some(status)) = self.child.try_wait() {
                 assert!(status.success(), "{status}");
-                return;
+                // The stderr reader ends with the process.
+                std::thread::sleep(Duration::from_millis(50));
+                return self.stderr();
             }
             assert!(t.elapsed() < PATIENCE, "ilc debug did not exit");
             std::thread::sleep(Duration::from_millis(10));

@@ -44,9 +44,18 @@ fn random_args(r: &mut Rng, program: &str) -> (String, Value) {
         "exceptionInfo",
         "terminate",
         "nonsense",
+        "flow",
+        "nextScan",
+        // The requests that read a stop, twice as likely.
+        "stackTrace",
+        "scopes",
+        "variables",
+        "evaluate",
+        "setVariable",
+        "variables",
     ];
     let c = r.pick(&commands).to_string();
-    let n = (r.next() % 40) as i64 - 5;
+    let n = (r.next() % 16) as i64 - 2;
     let exprs = [
         "starts",
         "edge.Q",
@@ -60,7 +69,7 @@ fn random_args(r: &mut Rng, program: &str) -> (String, Value) {
         "pump.n",
     ];
     let e = r.pick(&exprs).to_string();
-    let args = match r.next() % 6 {
+    let args = match r.next() % 8 {
         0 => Value::Null,
         1 => json!({}),
         2 => json!([1, 2]),
@@ -79,22 +88,36 @@ fn random_args(r: &mut Rng, program: &str) -> (String, Value) {
 fn random_request_sequences_never_panic_or_hang() {
     let looping = temp_file(
         "fuzzloop",
-        "PROGRAM L\nVAR n : INT; z : INT; END_VAR\nagain:\n    LD   n\n    DIV  z\n    ADD  1\n    ST   n\n    JMPC again\nEND_PROGRAM\n",
+        "PROGRAM L\nVAR n : INT; z : INT; END_VAR\nagain:\n    LD   n\n    DIV  z\n    ADD  1\n    ST   n\n    GT   0\n    JMPC again\nEND_PROGRAM\n",
     );
     let programs = [MOTOR.to_string(), looping, "/nonexistent/x.il".to_string()];
     let start = std::time::Instant::now();
     let mut rng = Rng(0x1b2c3d4e5f);
-    for session in 0..12 {
+    for session in 0..24 {
         let program = programs[session % programs.len()].clone();
         let mut d = Dap::start();
         d.ok("initialize", json!({"adapterID": "ilc"}));
-        for _ in 0..40 {
+        // Half the sessions start stopped, so that the requests that need
+        // a stop reach their handlers with the interpreter's state.
+        if session % 2 == 0 && !program.starts_with("/nonexistent") {
+            let pou = if program == MOTOR { "Motor" } else { "L" };
+            d.ok(
+                "launch",
+                json!({"program": program, "pou": pou, "cycles": 4, "stopOnEntry": true}),
+            );
+            d.event("initialized");
+            d.breakpoints(&program, json!([{"line": 14}, {"line": 21}, {"line": 5}]));
+            d.ok("configurationDone", json!({}));
+            d.stopped();
+        }
+        for _ in 0..80 {
             let (c, args) = random_args(&mut rng, &program);
             // Every request is answered (success or error), in bounded time.
             let r = d.request(&c, args);
             assert!(r["success"].is_boolean(), "{r}");
         }
-        d.finish();
+        let stderr = d.finish();
+        assert!(!stderr.contains("panicked"), "session {session}: {stderr}");
     }
     assert!(start.elapsed() < std::time::Duration::from_secs(120));
 }
