@@ -17,6 +17,45 @@ pub fn cr_text(at: &Here<'_>) -> String {
     }
 }
 
+/// The lines of the file the user wrote for the interpreter's IL lines:
+/// the same for an IL file; for a PLCopen XML project, the XML line each
+/// IL line came from; for a snippet, the line before the added header.
+/// It keeps the IL text of an input that is not IL (the text shown by `--flow`).
+#[derive(Clone, Debug, Default)]
+pub struct SourceLines(Option<Vec<u32>>, Option<String>);
+
+impl SourceLines {
+    /// The map of the (single) input of a checked program.
+    pub fn of(checked: &il_codegen::pipeline::Checked) -> SourceLines {
+        use il_codegen::pipeline::Input;
+        match checked.inputs().first() {
+            Some(Input::PlcOpen(i)) => SourceLines(
+                Some(i.xml_lines().into_iter().map(|l| l as u32).collect()),
+                Some(i.il.text.to_string()),
+            ),
+            Some(Input::Snippet(s)) => {
+                let n = s.il.text.lines().count() + 1;
+                SourceLines(
+                    Some((1..=n).map(|k| s.line_of(k) as u32).collect()),
+                    Some(s.il.text.to_string()),
+                )
+            }
+            _ => SourceLines(None, None),
+        }
+    }
+
+    /// The user's line of IL line `line`.
+    pub fn get(&self, line: u32) -> u32 {
+        match &self.0 {
+            None => line,
+            Some(m) => m
+                .get((line as usize).wrapping_sub(1))
+                .copied()
+                .unwrap_or(line),
+        }
+    }
+}
+
 /// The lines one scan ran, in order: POU, line, the CR after the line.
 pub type Lines = std::collections::VecDeque<(String, u32, String)>;
 
@@ -60,7 +99,7 @@ impl Hook for Recorder {
 /// source text when it is at hand.
 pub fn print(
     rec: &Recorder,
-    source: Option<&str>,
+    (source, lines): (Option<&str>, &SourceLines),
     cycle: u64,
     time: &str,
     out: &mut dyn Write,
@@ -69,19 +108,26 @@ pub fn print(
         out,
         "\nflow of cycle {cycle} (time {time}): the CR after each line run"
     )?;
-    let text: Vec<&str> = source.map(|s| s.lines().collect()).unwrap_or_default();
+    // The IL text: the file's, or the IL an XML project or a snippet became
+    // (then numbered by the interpreter's lines).
+    let (text, il): (Vec<&str>, bool) = match (&lines.1, source) {
+        (Some(il), _) => (il.lines().collect(), true),
+        (None, s) => (s.map(|s| s.lines().collect()).unwrap_or_default(), false),
+    };
+    let at = |l: u32| if il { l } else { lines.get(l) };
     let pw = rec.0.iter().map(|l| l.0.len()).max().unwrap_or(0);
     let sw = rec
         .0
         .iter()
-        .filter_map(|l| text.get((l.1 as usize).wrapping_sub(1)))
+        .filter_map(|l| text.get((at(l.1) as usize).wrapping_sub(1)))
         .map(|s| strip_comment(s.trim()).chars().count())
         .max()
         .unwrap_or(0)
         .min(40);
-    for (pou, line, cr) in &rec.0 {
+    for (pou, il_line, cr) in &rec.0 {
+        let line = lines.get(*il_line);
         let src = text
-            .get((*line as usize).wrapping_sub(1))
+            .get((at(*il_line) as usize).wrapping_sub(1))
             .map(|s| s.trim())
             .unwrap_or("");
         let src = strip_comment(src);

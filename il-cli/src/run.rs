@@ -168,6 +168,7 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
     let Some([prog]) = checked.ir() else {
         return Err(format!("`{}` has errors; nothing was run", o.file));
     };
+    let lines = crate::flow::SourceLines::of(&checked);
     if o.program.is_some() && o.config.is_some() {
         return Err("give --program or --config, not both".to_string());
     }
@@ -187,7 +188,7 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
     };
     if let Some(c) = config {
         let mut m = ConfigMachine::new(prog, &c)?;
-        return scan_table(o, prog, &mut m, out, err);
+        return scan_table(o, (prog, &lines), &mut m, out, err);
     }
     let name = match &o.program {
         Some(n) => n.clone(),
@@ -218,13 +219,13 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
         },
     };
     let mut m = Machine::new(prog, &name)?;
-    scan_table(o, prog, &mut m, out, err)
+    scan_table(o, (prog, &lines), &mut m, out, err)
 }
 
 /// Scan `m` `o.cycles` times and print the table (and the waves).
 fn scan_table<T: Target>(
     o: &Options,
-    prog: &il_codegen::ir::Program,
+    (prog, lines): (&il_codegen::ir::Program, &crate::flow::SourceLines),
     m: &mut T,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -368,7 +369,7 @@ fn scan_table<T: Target>(
         .map_err(|e| format!("cannot write the table: {e}"))?;
     if let Some((k, time, rec)) = flow {
         let source = std::fs::read_to_string(&o.file).ok();
-        crate::flow::print(&rec, source.as_deref(), k, &time, out)
+        crate::flow::print(&rec, (source.as_deref(), lines), k, &time, out)
             .map_err(|e| format!("cannot write the flow: {e}"))?;
     }
     for f in &fault_lines {

@@ -6,6 +6,7 @@ use std::collections::HashMap;
 
 use serde_json::{Value, json};
 
+use crate::flow::SourceLines;
 use il_codegen::ir::{Op, Program};
 
 /// `hitCondition`: `5` (from the 5th hit on), `>= 5`, `> 5`, `== 5`, `% 5`
@@ -70,7 +71,7 @@ pub struct Bp {
 
 #[derive(Default)]
 pub struct Breakpoints {
-    /// By IL line (verified: a line that holds an instruction).
+    /// By the user's line (verified: a line that holds an instruction).
     pub lines: HashMap<u32, Vec<Bp>>,
     /// By POU name in upper case.
     pub functions: HashMap<String, Vec<Bp>>,
@@ -82,7 +83,7 @@ pub struct Breakpoints {
 }
 
 /// The lines of each POU that hold an instruction, sorted, with the POU's name.
-fn instruction_lines(prog: &Program) -> Vec<(String, Vec<u32>)> {
+fn instruction_lines((prog, src): (&Program, &SourceLines)) -> Vec<(String, Vec<u32>)> {
     let mut pous: Vec<(String, Vec<u32>)> = prog
         .pous
         .iter()
@@ -91,7 +92,7 @@ fn instruction_lines(prog: &Program) -> Vec<(String, Vec<u32>)> {
                 .body
                 .iter()
                 .filter(|s| !matches!(s.op, Op::Label(_) | Op::Nop))
-                .map(|s| s.line)
+                .map(|s| src.get(s.line))
                 .collect();
             lines.sort_unstable();
             lines.dedup();
@@ -106,7 +107,7 @@ fn instruction_lines(prog: &Program) -> Vec<(String, Vec<u32>)> {
 /// Where a breakpoint asked for on `line` goes: the line itself when it
 /// holds an instruction, else the next one that does in the same POU (the
 /// first POU whose last instruction is not above `line`), or why none.
-pub fn place(prog: &Program, line: u32) -> Result<u32, String> {
+pub fn place(prog: (&Program, &SourceLines), line: u32) -> Result<u32, String> {
     for (_, lines) in instruction_lines(prog) {
         if let Some(&at) = lines.iter().find(|&&l| l >= line) {
             return Ok(at);
@@ -146,7 +147,12 @@ impl Breakpoints {
     }
 
     /// `setBreakpoints` for the launched file `launched`: the answer's body.
-    pub fn set_lines(&mut self, prog: &Program, launched: &str, args: &Value) -> Value {
+    pub fn set_lines(
+        &mut self,
+        prog: (&Program, &SourceLines),
+        launched: &str,
+        args: &Value,
+    ) -> Value {
         let path = args
             .pointer("/source/path")
             .and_then(Value::as_str)
@@ -199,7 +205,7 @@ impl Breakpoints {
 
     /// `setFunctionBreakpoints`: stop at the first instruction of a POU,
     /// or (named `scan N`) at the first instruction of scan N.
-    pub fn set_functions(&mut self, prog: &Program, args: &Value) -> Value {
+    pub fn set_functions(&mut self, (prog, src): (&Program, &SourceLines), args: &Value) -> Value {
         self.functions.clear();
         self.scans.clear();
         let asked = args
@@ -226,7 +232,7 @@ impl Breakpoints {
             let id = self.id();
             match (pou, self.bp(id, b)) {
                 (Some(p), Ok(bp)) if !p.body.is_empty() => {
-                    let line = p.body[0].line;
+                    let line = src.get(p.body[0].line);
                     self.functions
                         .entry(p.name.to_ascii_uppercase())
                         .or_default()

@@ -72,7 +72,8 @@ impl Session {
                 } else {
                     format!("{} ({})", f.path, f.pou)
                 };
-                json!({ "id": d + 1, "name": name, "source": source, "line": f.line, "column": 1 })
+                let line = self.src.get(f.line);
+                json!({ "id": d + 1, "name": name, "source": source, "line": line, "column": 1 })
             })
             .collect();
         Ok(json!({ "stackFrames": frames, "totalFrames": frames.len() }))
@@ -146,6 +147,7 @@ impl Session {
             }
             Handle::Flow => {
                 for (pou, line, cr) in &self.flow {
+                    let line = self.src.get(*line);
                     out.push(json!({ "name": format!("{pou} line {line}"), "value": cr, "variablesReference": 0 }));
                 }
             }

@@ -191,8 +191,17 @@ pub enum Target {
     Config(Box<ConfigMachine>),
 }
 
+/// What [`load`] makes: the checked program, the machine, the user's line
+/// of each IL line, and the warnings (rendered).
+pub struct Loaded {
+    pub prog: Program,
+    pub target: Target,
+    pub lines: crate::flow::SourceLines,
+    pub warnings: String,
+}
+
 /// The checked program, or the diagnostics that stop it (rendered).
-pub fn load(l: &Launch) -> Result<(Program, Target, String), String> {
+pub fn load(l: &Launch) -> Result<Loaded, String> {
     if std::path::Path::new(&l.program).is_dir() {
         return Err(format!(
             "`{}` is a folder: name one of its files in `program` (the debugger runs one file)",
@@ -232,7 +241,12 @@ pub fn load(l: &Launch) -> Result<(Program, Target, String), String> {
             }
         }
     };
-    Ok((prog.clone(), target, rendered))
+    Ok(Loaded {
+        prog: prog.clone(),
+        target,
+        lines: crate::flow::SourceLines::of(&checked),
+        warnings: rendered,
+    })
 }
 
 #[cfg(test)]

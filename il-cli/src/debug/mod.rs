@@ -77,6 +77,8 @@ pub struct Session {
     launch: Option<launch::Launch>,
     target: Option<launch::Target>,
     prog: Option<Arc<Program>>,
+    /// The user's line of each IL line the interpreter reports.
+    src: crate::flow::SourceLines,
     bps: Breakpoints,
     mode: Mode,
     /// The last statement the hook saw before it ran: depth, pc, line.
@@ -136,6 +138,7 @@ impl Session {
             launch: None,
             target: None,
             prog: None,
+            src: Default::default(),
             bps: Breakpoints::default(),
             mode: Mode::Run,
             last: None,
@@ -249,10 +252,16 @@ impl Session {
             Err(e) => return self.out.error(seq, "launch", &e),
         };
         match launch::load(&l) {
-            Ok((prog, target, warnings)) => {
+            Ok(launch::Loaded {
+                prog,
+                target,
+                lines,
+                warnings,
+            }) => {
                 if !warnings.is_empty() {
                     self.out.output("stderr", &warnings);
                 }
+                self.src = lines;
                 if l.stop_on_entry {
                     self.mode = Mode::Pause("entry");
                 }
@@ -288,14 +297,14 @@ impl Session {
             }
             "setBreakpoints" => match (&self.prog, &self.launch) {
                 (Some(p), Some(l)) => {
-                    let body = self.bps.set_lines(p, &l.program, args);
+                    let body = self.bps.set_lines((p, &self.src), &l.program, args);
                     self.out.ok(seq, command, body);
                 }
                 _ => self.out.error(seq, command, "launch a program first"),
             },
             "setFunctionBreakpoints" => match &self.prog {
                 Some(p) => {
-                    let body = self.bps.set_functions(p, args);
+                    let body = self.bps.set_functions((p, &self.src), args);
                     self.out.ok(seq, command, body);
                 }
                 None => self.out.error(seq, command, "launch a program first"),
@@ -400,9 +409,10 @@ impl Session {
     fn flow_lines(&self) -> Value {
         let mut lines: Vec<(&str, u32, &str)> = Vec::new();
         for (pou, line, cr) in &self.flow {
-            match lines.iter_mut().find(|(p, l, _)| *p == pou && *l == *line) {
+            let line = self.src.get(*line);
+            match lines.iter_mut().find(|(p, l, _)| *p == pou && *l == line) {
                 Some(x) => x.2 = cr,
-                None => lines.push((pou, *line, cr)),
+                None => lines.push((pou, line, cr)),
             }
         }
         let lines: Vec<Value> = lines

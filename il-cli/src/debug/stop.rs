@@ -79,7 +79,8 @@ impl Session {
         let mut errors = Vec::new();
         let mut logs = Vec::new();
         let pou = at.pou().name.to_ascii_uppercase();
-        let lines = self.bps.lines.get_mut(&line).into_iter().flatten();
+        let src_line = self.src.get(line);
+        let lines = self.bps.lines.get_mut(&src_line).into_iter().flatten();
         let funcs = self
             .bps
             .functions
@@ -131,7 +132,7 @@ impl Session {
         if self.bps.faults
             && let Some(f) = at.fault()
         {
-            let text = format!("{:?} in {} at line {}", f.kind, f.pou, f.line);
+            let text = format!("{:?} in {} at line {}", f.kind, f.pou, self.src.get(f.line));
             return self.stop(at, "exception", Some(text), Vec::new());
         }
         Ok(())
