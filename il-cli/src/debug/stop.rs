@@ -78,7 +78,12 @@ impl Session {
         let mut hit = Vec::new();
         let mut errors = Vec::new();
         let mut logs = Vec::new();
-        let pou = at.pou().name.to_ascii_uppercase();
+        // Function breakpoints only look at a body's first statement.
+        let pou = if pc == 0 && !self.bps.functions.is_empty() {
+            at.pou().name.to_ascii_uppercase()
+        } else {
+            String::new()
+        };
         let src_line = self.src.get(line);
         let lines = self.bps.lines.get_mut(&src_line).into_iter().flatten();
         let funcs = self
@@ -119,7 +124,7 @@ impl Session {
         if hit.is_empty() {
             return Ok(());
         }
-        let reason = if pc == 0 && self.bps.functions.contains_key(&pou) {
+        let reason = if !pou.is_empty() && self.bps.functions.contains_key(&pou) {
             "function breakpoint"
         } else {
             "breakpoint"
