@@ -64,6 +64,9 @@ pub(crate) struct Dbg(Option<Box<State>>);
 struct State {
     hook: Option<Box<dyn Hook>>,
     stack: Vec<Entry>,
+    /// A configuration's globals as the program running now started
+    /// (name, value, type); the ones it uses are its externals, live.
+    globals: Vec<(String, Value, Ty)>,
     /// The path of the frame the next body starts (set by the caller).
     next_path: Option<String>,
 }
@@ -132,6 +135,7 @@ pub struct Here<'a> {
     f: &'a mut Frame,
     ctx: &'a mut Cycle,
     stack: &'a [Entry],
+    globals: &'a [(String, Value, Ty)],
     stmt: &'a Stmt,
     pc: usize,
     fault: Option<Fault>,
@@ -219,6 +223,12 @@ impl Here<'_> {
         Some((pou.name.clone(), v.clone(), ty))
     }
 
+    /// A configuration's globals (`g`, `Resource.g`) with their values as
+    /// the running program started; empty for a single POU.
+    pub fn globals(&self) -> &[(String, Value, Ty)] {
+        self.globals
+    }
+
     /// The variables of frame `depth` in declaration order.
     pub fn vars(&self, depth: usize) -> Vec<(&Var, Value)> {
         let Some((e, vars, _)) = self.frame(depth) else {
@@ -237,6 +247,44 @@ impl Here<'_> {
     /// path resolver), the same prefixed with a frame's instance path
     /// (`Main.pump.starts`), or a direct address (`%IX0.0`).
     pub fn eval(&self, depth: usize, text: &str) -> Result<(Value, Ty), String> {
+        let r = self.eval_frame(depth, text);
+        if r.is_err()
+            && let Some(g) = self.eval_global(text.trim())
+        {
+            return g;
+        }
+        r
+    }
+
+    /// A path into a configuration's global (`g.x`, `Resource.g[2]`).
+    fn eval_global(&self, text: &str) -> Option<Result<(Value, Ty), String>> {
+        let (name, v, ty) = self.globals.iter().find(|(n, ..)| {
+            text.len() >= n.len()
+                && text.is_char_boundary(n.len())
+                && text[..n.len()].eq_ignore_ascii_case(n)
+                && matches!(text.as_bytes().get(n.len()), None | Some(b'.' | b'['))
+        })?;
+        let rest = &text[name.len()..];
+        if rest.is_empty() {
+            return Some(Ok((v.clone(), ty.clone())));
+        }
+        let parts = match il_codegen::ir::path::parse(&format!("x{rest}")) {
+            Ok(p) => p.parts,
+            Err(e) => return Some(Err(e)),
+        };
+        Some(
+            self.m
+                .resolve_parts(ty.clone(), None, &parts, text)
+                .and_then(|(steps, ty, _)| {
+                    self.m
+                        .read_at(v, &steps)
+                        .map(|v| (v, ty))
+                        .ok_or_else(|| format!("`{text}` has no value here"))
+                }),
+        )
+    }
+
+    fn eval_frame(&self, depth: usize, text: &str) -> Result<(Value, Ty), String> {
         let (depth, rest) = self.frame_of(depth, text.trim());
         if let Some((name, v, ty)) = self.result(depth)
             && name.eq_ignore_ascii_case(rest)
@@ -437,6 +485,7 @@ impl Machine {
             Box::new(State {
                 hook: Some(h),
                 stack: Vec::new(),
+                globals: Vec::new(),
                 next_path: None,
             })
         }));
@@ -452,6 +501,16 @@ impl Machine {
     pub fn hook_mut<T: Hook>(&mut self) -> Option<&mut T> {
         let h = self.dbg.0.as_mut()?.hook.as_mut()?;
         (h.as_mut() as &mut dyn Any).downcast_mut::<T>()
+    }
+
+    /// A configuration's globals, for [`Here::globals`] while its next
+    /// program runs.
+    #[cold]
+    #[inline(never)]
+    pub(crate) fn dbg_globals(&mut self, globals: Vec<(String, Value, Ty)>) {
+        if let Some(d) = &mut self.dbg.0 {
+            d.globals = globals;
+        }
     }
 
     /// The next body run is the frame at `path` (its instance path).
@@ -582,11 +641,13 @@ impl Machine {
         // The stack is moved out for the call, so that the hook sees the
         // machine (its program, its reads) and the stack together.
         let stack = std::mem::take(&mut d.stack);
+        let globals = std::mem::take(&mut d.globals);
         let mut here = Here {
             m: self,
             f,
             ctx,
             stack: &stack,
+            globals: &globals,
             stmt,
             pc,
             fault,
@@ -599,6 +660,7 @@ impl Machine {
         if let Some(d) = &mut self.dbg.0 {
             d.hook = Some(hook);
             d.stack = stack;
+            d.globals = globals;
         }
         // An error of the hook is the debugger's own: it is not located.
         if r.is_err() {

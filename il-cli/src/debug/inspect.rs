@@ -105,6 +105,10 @@ impl Session {
                 }));
             }
         }
+        if !at.globals().is_empty() {
+            let h = self.handle(Handle::Globals(depth));
+            scopes.push(json!({ "name": "Configuration globals", "variablesReference": h, "expensive": false }));
+        }
         if !at.pou().addresses.is_empty() && depth == 0 {
             let h = self.handle(Handle::Image(depth));
             scopes.push(
@@ -158,6 +162,11 @@ impl Session {
                     }
                     let ty = v.ty.to_string();
                     out.push(self.variable(&v.name, &x, &ty, depth, v.name.clone()));
+                }
+            }
+            Handle::Globals(depth) => {
+                for (name, v, ty) in at.globals() {
+                    out.push(self.variable(name, v, &ty.to_string(), depth, name.clone()));
                 }
             }
             Handle::Result(depth) => {
@@ -257,6 +266,11 @@ impl Session {
                 return Err(
                     "only the innermost frame's variables can be set (the others are in a call)"
                         .into(),
+                );
+            }
+            Some(Handle::Globals(_)) => {
+                return Err(
+                    "a global is set through a program's VAR_EXTERNAL (or with force)".into(),
                 );
             }
             _ => return Err(format!("`{name}` cannot be set here")),

@@ -68,6 +68,8 @@ enum Handle {
     Image(usize),
     /// The result of the FUNCTION of frame `depth`.
     Result(usize),
+    /// A configuration's globals (read only: written through the externals).
+    Globals(usize),
 }
 
 pub struct Session {

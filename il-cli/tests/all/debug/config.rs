@@ -19,7 +19,7 @@ VAR seen : INT; END_VAR
     ST   seen
 END_PROGRAM
 CONFIGURATION Plant
-VAR_GLOBAL n : INT; END_VAR
+VAR_GLOBAL n : INT; limit : INT := 7; END_VAR
 RESOURCE Cpu ON PLC
     TASK Quick (INTERVAL := T#10ms, PRIORITY := 1);
     TASK Lazy (INTERVAL := T#30ms, PRIORITY := 2);
@@ -44,6 +44,9 @@ fn two_tasks_stop_where_the_slow_task_runs() {
         assert_eq!((line, name.as_str()), (11, "Other (Slow)"));
         let cr = d.scope(frame, "Current result");
         let ext = d.scope(frame, "Externals (globals)");
+        let globals = d.scope(frame, "Configuration globals");
+        assert_eq!(var(&globals, "limit"), ("7", "INT"));
+        assert_eq!(d.eval(frame, "limit")["result"], "7");
         seen.push((
             var(&cr, "scan").0.to_string(),
             var(&cr, "time").0.to_string(),
