@@ -16,6 +16,7 @@ mod faults;
 mod force;
 mod functions;
 mod fuzz;
+mod picture;
 mod sources;
 
 pub const MOTOR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/motor.il");
