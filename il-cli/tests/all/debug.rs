@@ -261,6 +261,9 @@ impl Drop for Dap {
     }
 }
 
+/// Variables as the client lists them: name, value, type.
+pub type Vars = Vec<(String, String, String)>;
+
 /// `name → (value, type)` lookup in a list of variables.
 pub fn var<'a>(vars: &'a [(String, String, String)], name: &str) -> (&'a str, &'a str) {
     let v = vars

@@ -7,7 +7,7 @@
 
 use serde_json::json;
 
-use super::{Dap, MOTOR};
+use super::{Dap, MOTOR, Vars};
 
 const PICTURE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/debug-session.svg");
 
@@ -20,7 +20,7 @@ fn esc(s: &str) -> String {
 /// What the session shows, asked as an editor asks it.
 struct Seen {
     flow: Vec<(u64, String)>,
-    scopes: Vec<(String, Vec<(String, String, String)>)>,
+    scopes: Vec<(String, Vars)>,
 }
 
 fn session() -> Seen {
