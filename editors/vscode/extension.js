@@ -1,5 +1,8 @@
 // The VS Code client of `ilc lsp`: starts the server over stdio for IL
 // files (and PLCopen XML projects) and passes the `ilc.*` settings on.
+// It also starts `ilc debug` for launch configurations of type `ilc`, and
+// shows the debugger's flow control (the CR after each line the stopped
+// scan ran, from the adapter's custom `flow` request) as inline values.
 "use strict";
 
 const vscode = require("vscode");
@@ -32,7 +35,38 @@ function activate(context) {
     },
   );
   context.subscriptions.push(client);
+  context.subscriptions.push(
+    vscode.debug.registerDebugAdapterDescriptorFactory("ilc", {
+      createDebugAdapterDescriptor: () =>
+        new vscode.DebugAdapterExecutable(
+          vscode.workspace.getConfiguration("ilc").get("path", "ilc"),
+          ["debug"],
+        ),
+    }),
+    vscode.languages.registerInlineValuesProvider({ language: "iec-il" }, { provideInlineValues }),
+  );
   return client.start();
+}
+
+// The CR after each line of the stopped scan, at the end of the line.
+async function provideInlineValues(document, viewport) {
+  const session = vscode.debug.activeDebugSession;
+  if (!session || session.type !== "ilc") return [];
+  if (!vscode.workspace.getConfiguration("ilc").get("debug.flow", true)) return [];
+  let flow;
+  try {
+    flow = await session.customRequest("flow");
+  } catch (_) {
+    return [];
+  }
+  const values = [];
+  for (const { line, cr } of flow.lines || []) {
+    const l = line - 1;
+    if (l < viewport.start.line || l > viewport.end.line || l >= document.lineCount) continue;
+    const end = document.lineAt(l).range.end;
+    values.push(new vscode.InlineValueText(new vscode.Range(end, end), `CR = ${cr}`));
+  }
+  return values;
 }
 
 function deactivate() {

@@ -28,6 +28,7 @@ Examples:
                                          (without it: Windows-1252, with a warning)
   ilc explain IL0003                     What a diagnostic code means
   ilc lsp                                Serve an editor (Language Server Protocol on stdio)
+  ilc debug                              Serve a debugger (Debug Adapter Protocol on stdio)
 
 Exit status:
   0  no errors (warnings may have been printed)
@@ -69,6 +70,17 @@ an instruction, declarations, standard signatures), inlay hints (the CR type
 at the end of each instruction line; off with the client setting
 `inlayHints.crType: false`), go to definition, references, rename, document
 and workspace symbols, completion and formatting (as `ilc fmt`). editors/vscode holds a VS Code client.";
+
+const DEBUG_EXAMPLES: &str = "\
+Examples:
+  ilc debug                   Started by the editor, which talks to it on stdin/stdout
+
+The editor's launch configuration names the program and how to run it:
+  { \"type\": \"ilc\", \"request\": \"launch\", \"program\": \"motor.il\", \"pou\": \"Motor\",
+    \"cycles\": 6, \"cycleTime\": \"10ms\", \"set\": [\"start=TRUE@3\"], \"stopOnEntry\": false }
+Breakpoints go on IL lines (with conditions such as `count > 5`, hit counts and
+log messages) and on POU names; every stop shows the current result (value and
+type), the scan number and the simulated time first. docs/guide.md: Debugging.";
 
 /// The whole command line.
 pub fn command() -> Command {
@@ -209,6 +221,12 @@ pub fn command() -> Command {
                         .help("Also draw a timing diagram of the watched variables as SVG"),
                 )
                 .arg(
+                    Arg::new("flow")
+                        .long("flow")
+                        .action(ArgAction::SetTrue)
+                        .help("Also print the current result after every IL line run in the last scan"),
+                )
+                .arg(
                     Arg::new("color")
                         .long("color")
                         .value_name("WHEN")
@@ -257,6 +275,11 @@ pub fn command() -> Command {
                         .value_parser(PossibleValuesParser::new(["file", "upper", "lower", "preserve"]))
                         .default_value("file"),
                 ),
+        )
+        .subcommand(
+            Command::new("debug")
+                .about("Run the debug adapter for editors (Debug Adapter Protocol over stdio)")
+                .after_long_help(DEBUG_EXAMPLES),
         )
         .subcommand(
             Command::new("explain")

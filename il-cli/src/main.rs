@@ -2,7 +2,9 @@
 
 mod check;
 mod cli;
+mod debug;
 mod emit;
+mod flow;
 mod fmt;
 mod input;
 mod lsp;
@@ -129,6 +131,7 @@ fn main() -> ExitCode {
                 front: input::Front::of(m),
                 vcd: m.get_one::<String>("vcd").map(std::path::PathBuf::from),
                 plot: m.get_one::<String>("plot").map(std::path::PathBuf::from),
+                flow: m.get_flag("flow"),
             };
             let code = run::run(&opts, &mut io::stdout().lock(), &mut io::stderr().lock());
             ExitCode::from(code)
@@ -138,6 +141,7 @@ fn main() -> ExitCode {
                 .copied()
                 .unwrap_or_default(),
         )),
+        Some(("debug", _)) => ExitCode::from(debug::run()),
         Some(("explain", m)) => {
             let code = m.get_one::<String>("code").map_or("", String::as_str);
             match il_codegen::codes::lookup(code) {

@@ -18,6 +18,7 @@ Examples:
   ilc run tank.il --set valves[2].open=TRUE --set state=TankState#Filling --watch valves[2]
   ilc run motor.il --program Motor --cycles 8 --set start=TRUE@2 --set start=FALSE@3 --vcd motor.vcd
   ilc run motor.il --program Motor --cycles 8 --set start=TRUE@2 --watch start,run --plot motor.svg
+  ilc run motor.il --program Motor --cycles 3 --set start=TRUE@3 --flow
 
 A CONFIGURATION runs with --config NAME (or alone when the file has one and no
 single PROGRAM): each scan runs the programs whose TASK is released at that
@@ -41,6 +42,9 @@ $comment), with the timescale the coarsest of s/ms/us/ns that divides --step.
 --plot FILE draws a timing diagram (SVG): one lane per watched signal, BOOL as
 high/low, numbers as stepped values, time in ms or s. Both files are written
 whole at the end of the run, or not at all.
+--flow prints, after the table, the current result (value and type) after every
+IL line the last scan ran, in the order run (FB bodies included): the offline
+\"flow control\" of CODESYS and TwinCAT.
 
 Exit status: 0 ran, 1 the program has errors or a name/value is wrong,
 2 the command line itself is wrong.";
@@ -138,6 +142,8 @@ pub struct Options {
     pub vcd: Option<std::path::PathBuf>,
     /// `--plot FILE`.
     pub plot: Option<std::path::PathBuf>,
+    /// `--flow`: the CR after every line of the last scan.
+    pub flow: bool,
 }
 
 /// Run and print; the exit status (0 fine, 1 error).
@@ -162,6 +168,7 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
     let Some([prog]) = checked.ir() else {
         return Err(format!("`{}` has errors; nothing was run", o.file));
     };
+    let lines = crate::flow::SourceLines::of(&checked);
     if o.program.is_some() && o.config.is_some() {
         return Err("give --program or --config, not both".to_string());
     }
@@ -181,7 +188,7 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
     };
     if let Some(c) = config {
         let mut m = ConfigMachine::new(prog, &c)?;
-        return scan_table(o, prog, &mut m, out, err);
+        return scan_table(o, (prog, &lines), &mut m, out, err);
     }
     let name = match &o.program {
         Some(n) => n.clone(),
@@ -212,13 +219,13 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
         },
     };
     let mut m = Machine::new(prog, &name)?;
-    scan_table(o, prog, &mut m, out, err)
+    scan_table(o, (prog, &lines), &mut m, out, err)
 }
 
 /// Scan `m` `o.cycles` times and print the table (and the waves).
 fn scan_table<T: Target>(
     o: &Options,
-    prog: &il_codegen::ir::Program,
+    (prog, lines): (&il_codegen::ir::Program, &crate::flow::SourceLines),
     m: &mut T,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -285,6 +292,7 @@ fn scan_table<T: Target>(
     )?;
     let mut ctx = Cycle::new();
     let mut faults_seen = 0u64;
+    let mut flow = None;
     let mut fault_lines = Vec::new();
     for k in 1..=o.cycles {
         for (c, place, v) in &sets {
@@ -293,8 +301,16 @@ fn scan_table<T: Target>(
             }
         }
         let now = ctx.now();
+        // Only the last scan runs through the hook: the others keep the
+        // interpreter's speed.
+        if o.flow && k == o.cycles {
+            m.set_hook(Some(Box::new(crate::flow::Recorder::default())));
+        }
         m.scan(&mut ctx)
             .map_err(|e| format!("cycle {k} (time {}): {e}", fmt_dur(now.0)))?;
+        if let Some(rec) = m.take_hook::<crate::flow::Recorder>() {
+            flow = Some((k, fmt_dur(now.0), rec));
+        }
         let mut row = vec![k.to_string(), fmt_dur(now.0)];
         let values: Vec<Value> = watch.iter().map(|w| m.get_at(&ctx, w)).collect();
         row.extend(values.iter().map(Value::display));
@@ -351,6 +367,11 @@ fn scan_table<T: Target>(
     }
     out.write_all(text.as_bytes())
         .map_err(|e| format!("cannot write the table: {e}"))?;
+    if let Some((k, time, rec)) = flow {
+        let source = std::fs::read_to_string(&o.file).ok();
+        crate::flow::print(&rec, (source.as_deref(), lines), k, &time, out)
+            .map_err(|e| format!("cannot write the flow: {e}"))?;
+    }
     for f in &fault_lines {
         let _ = writeln!(err, "warning: {f}");
     }

@@ -4,7 +4,7 @@
 
 use il_codegen::ir::types::Ty;
 use il_interp::il_std::Cycle;
-use il_interp::{ConfigMachine, ConfigPlace, HostPlace, Machine, Value};
+use il_interp::{ConfigMachine, ConfigPlace, Hook, HostPlace, Machine, Value};
 
 /// A machine `ilc run` can scan.
 pub trait Target {
@@ -22,6 +22,12 @@ pub trait Target {
     fn watchable(&self) -> Vec<String>;
     /// One scan: the program once, or every task released now.
     fn scan(&mut self, ctx: &mut Cycle) -> Result<(), String>;
+    /// Attach a debugger hook to every program it runs (`ilc debug`, `--flow`).
+    fn set_hook(&mut self, hook: Option<Box<dyn Hook>>);
+    /// The attached hook, if it is a `H`.
+    fn hook_mut<H: Hook>(&mut self) -> Option<&mut H>;
+    /// Detach the hook and have it back, if it is a `H`.
+    fn take_hook<H: Hook>(&mut self) -> Option<Box<H>>;
 }
 
 impl Target for Machine {
@@ -50,6 +56,15 @@ impl Target for Machine {
     fn scan(&mut self, ctx: &mut Cycle) -> Result<(), String> {
         Machine::scan(self, ctx).map(|_| ())
     }
+    fn set_hook(&mut self, hook: Option<Box<dyn Hook>>) {
+        Machine::set_hook(self, hook)
+    }
+    fn hook_mut<H: Hook>(&mut self) -> Option<&mut H> {
+        Machine::hook_mut(self)
+    }
+    fn take_hook<H: Hook>(&mut self) -> Option<Box<H>> {
+        Machine::take_hook(self)
+    }
 }
 
 impl Target for ConfigMachine {
@@ -77,5 +92,14 @@ impl Target for ConfigMachine {
     }
     fn scan(&mut self, ctx: &mut Cycle) -> Result<(), String> {
         self.run(ctx).map(|_| ())
+    }
+    fn set_hook(&mut self, hook: Option<Box<dyn Hook>>) {
+        ConfigMachine::set_hook(self, hook)
+    }
+    fn hook_mut<H: Hook>(&mut self) -> Option<&mut H> {
+        ConfigMachine::hook_mut(self)
+    }
+    fn take_hook<H: Hook>(&mut self) -> Option<Box<H>> {
+        ConfigMachine::take_hook(self)
     }
 }

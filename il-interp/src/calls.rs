@@ -70,6 +70,9 @@ impl Machine {
         for place in inouts {
             refs.push(self.read(f, place, ctx, line)?);
         }
+        if self.dbg.on() {
+            self.dbg_call(f, None, name);
+        }
         let (r, outs, back) = self.call_function(p, vals, refs, ctx)?;
         // VAR_IN_OUT: copy-in/copy-out (`UserCall::inouts`).
         for (place, v) in inouts.iter().zip(back) {
@@ -251,6 +254,9 @@ impl Machine {
                         .ok_or_else(|| format!("internal: no in-out {n}"))?;
                     i.vars[k] = self.read(f, p, ctx, line)?;
                     ref_idx.push(k);
+                }
+                if self.dbg.on() {
+                    self.dbg_call(f, Some((inst, &steps)), "");
                 }
                 self.call_instance(i, ctx)?;
                 back.extend(ref_idx.iter().map(|&k| i.vars[k].clone()));

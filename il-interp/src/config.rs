@@ -108,6 +108,21 @@ impl ConfigMachine {
         Ok(c)
     }
 
+    /// [`Machine::set_hook`]: a debugger for every program of the configuration.
+    pub fn set_hook(&mut self, hook: Option<Box<dyn crate::Hook>>) {
+        self.m.set_hook(hook);
+    }
+
+    /// [`Machine::take_hook`].
+    pub fn take_hook<T: crate::Hook>(&mut self) -> Option<Box<T>> {
+        self.m.take_hook()
+    }
+
+    /// [`Machine::hook_mut`].
+    pub fn hook_mut<T: crate::Hook>(&mut self) -> Option<&mut T> {
+        self.m.hook_mut()
+    }
+
     /// The configuration this machine runs.
     pub fn def(&self) -> &ConfigDef {
         &self.def
@@ -276,6 +291,11 @@ impl ConfigMachine {
         let mut inst = std::mem::take(&mut self.programs[r][p]);
         self.m.steps = 0;
         self.m.error_located = false;
+        if self.m.dbg.on() {
+            self.m.dbg_enter(pi.name.clone());
+            let globals = self.debug_globals(ctx);
+            self.m.dbg_globals(globals);
+        }
         let result = self.m.call_instance(&mut inst, ctx);
         for (n, g) in refs {
             let v = inst.vars[idx(&self.m, n)?].clone();
@@ -366,6 +386,34 @@ impl ConfigMachine {
         } else {
             Err("internal: cannot write a global's path".into())
         }
+    }
+
+    /// Every global with its value, named as a host names it (`g`,
+    /// `Resource.g` for a named resource's), for a debugger.
+    #[cold]
+    fn debug_globals(&self, ctx: &Cycle) -> Vec<(String, Value, il_codegen::ir::types::Ty)> {
+        let mut out = Vec::new();
+        for (i, v) in self.def.globals.iter().enumerate() {
+            let g = GlobalRef {
+                resource: None,
+                index: i,
+            };
+            out.push((v.name.clone(), self.read(ctx, g), v.ty.clone()));
+        }
+        for (r, res) in self.def.resources.iter().enumerate() {
+            for (i, v) in res.globals.iter().enumerate() {
+                let g = GlobalRef {
+                    resource: Some(r),
+                    index: i,
+                };
+                let name = match &res.name {
+                    Some(rn) => format!("{rn}.{}", v.name),
+                    None => v.name.clone(),
+                };
+                out.push((name, self.read(ctx, g), v.ty.clone()));
+            }
+        }
+        out
     }
 
     pub(crate) fn var_of(&self, g: GlobalRef) -> &il_codegen::ir::Var {

@@ -21,6 +21,7 @@ mod calls;
 mod config;
 mod config_host;
 mod constants;
+mod debug;
 mod expressions;
 mod flow;
 mod host;
@@ -32,6 +33,7 @@ mod values;
 pub use config::ConfigMachine;
 pub use config_host::ConfigPlace;
 pub use constants::parse_literal;
+pub use debug::{Cr, FrameInfo, Here, Hook, Shown, type_of_value};
 pub use host::HostPlace;
 pub use host_fn::HostFn;
 /// The runtime the interpreter runs on (for front ends without their own dependency).
@@ -120,6 +122,8 @@ pub struct Machine {
     error_located: bool,
     /// Implementations of the program's host FUNCTIONs.
     hosts: host_fn::HostFns,
+    /// The debugger attached, if any ([`Machine::set_hook`]).
+    dbg: debug::Dbg,
 }
 
 /// The state of one call of a POU: its variables, current results and saves.
@@ -193,6 +197,7 @@ impl Machine {
             steps: 0,
             error_located: false,
             hosts: Default::default(),
+            dbg: Default::default(),
         }
     }
 
@@ -278,6 +283,9 @@ impl Machine {
         self.steps = 0;
         self.error_located = false;
         let mut inst = std::mem::take(&mut self.inst);
+        if self.dbg.on() {
+            self.dbg_enter(self.prog.pous[inst.pou].name.clone());
+        }
         let r = self.call_instance(&mut inst, ctx);
         self.inst = inst;
         r

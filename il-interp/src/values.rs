@@ -347,6 +347,23 @@ macro_rules! std_fbs {
                 }
             }
 
+            /// The block's name (`TON`).
+            pub fn name(&self) -> &'static str {
+                match self {
+                    $(StdFb::$name(_) => stringify!($name),)*
+                }
+            }
+
+            /// Its inputs, then its outputs, by name with their values (a debugger's view).
+            pub fn fields(&self) -> Vec<(&'static str, Value)> {
+                match self {
+                    $(StdFb::$name(_b) => vec![
+                        $((stringify!($i), _b.$i.to_value()),)*
+                        $((stringify!($o), _b.$o.to_value()),)*
+                    ],)*
+                }
+            }
+
             /// Run the block once (one `CAL`) with its current inputs; `ctx` supplies the time.
             pub fn call(&mut self, ctx: &mut Cycle) {
                 match self {

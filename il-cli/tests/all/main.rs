@@ -4,6 +4,7 @@
 
 mod cli;
 mod corpus;
+mod debug;
 mod dialect;
 mod docs;
 mod encodings;

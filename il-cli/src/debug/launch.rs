@@ -1,0 +1,278 @@
+//! The `launch` request: its arguments (the launch.json schema the VS Code
+//! extension contributes and the guide documents), and the program they
+//! name, checked and ready to scan.
+
+use serde_json::Value;
+
+use crate::input::Front;
+use crate::run::{SetArg, parse_set, parse_step};
+use il_codegen::ir::{PouKind, Program};
+use il_interp::il_std::TIME;
+use il_interp::{ConfigMachine, Machine};
+
+/// What `launch` asks for.
+#[derive(Debug)]
+pub struct Launch {
+    /// The IL or PLCopen XML file.
+    pub program: String,
+    pub pou: Option<String>,
+    pub configuration: Option<String>,
+    /// `None`: scan until the client stops the session.
+    pub cycles: Option<u64>,
+    pub cycle_time: TIME,
+    pub sets: Vec<SetArg>,
+    /// `force`: `{ "path": "value" }`, pinned from the first scan on.
+    pub forces: Vec<(String, String)>,
+    pub stop_on_entry: bool,
+    /// Pace the scans by the wall clock (one per `cycleTime`).
+    pub real_time: bool,
+    pub front: Front,
+}
+
+/// The fields of our launch configuration.
+const FIELDS: &[&str] = &[
+    "program",
+    "pou",
+    "configuration",
+    "cycles",
+    "cycleTime",
+    "set",
+    "force",
+    "stopOnEntry",
+    "realTime",
+    "std",
+    "snippet",
+];
+
+/// Fields every client adds to a launch configuration (VS Code's own,
+/// nvim-dap's): not ours, but no mistake of the user's either.
+const CLIENT_FIELDS: &[&str] = &[
+    "type",
+    "request",
+    "name",
+    "noDebug",
+    "cwd",
+    "preLaunchTask",
+    "postDebugTask",
+    "presentation",
+    "internalConsoleOptions",
+    "debugServer",
+];
+
+/// Parse the arguments of `launch`; an unknown field is an error that names it.
+pub fn parse(args: &Value) -> Result<Launch, String> {
+    let Some(obj) = args.as_object() else {
+        return Err("launch needs arguments: an object with at least `program`".into());
+    };
+    for k in obj.keys() {
+        if !FIELDS.contains(&k.as_str())
+            && !CLIENT_FIELDS.contains(&k.as_str())
+            && !k.starts_with("__")
+        {
+            let hint = il_codegen::diag::suggest(k, FIELDS.iter().copied())
+                .map(|s| format!("; did you mean `{s}`?"))
+                .unwrap_or_default();
+            return Err(format!(
+                "unknown launch field `{k}` (the fields are {}){hint}",
+                FIELDS.join(", ")
+            ));
+        }
+    }
+    let string = |k: &str| -> Result<Option<String>, String> {
+        match obj.get(k) {
+            None | Some(Value::Null) => Ok(None),
+            Some(Value::String(s)) => Ok(Some(s.clone())),
+            Some(_) => Err(format!("launch field `{k}` must be a string")),
+        }
+    };
+    let boolean = |k: &str| -> Result<bool, String> {
+        match obj.get(k) {
+            None | Some(Value::Null) => Ok(false),
+            Some(Value::Bool(b)) => Ok(*b),
+            Some(_) => Err(format!("launch field `{k}` must be true or false")),
+        }
+    };
+    let program =
+        string("program")?.ok_or("launch needs `program`: the IL or PLCopen file to run")?;
+    let cycles = match obj.get("cycles") {
+        None | Some(Value::Null) => None,
+        Some(v) => match v.as_u64() {
+            Some(n) if n >= 1 => Some(n),
+            _ => {
+                return Err(
+                    "launch field `cycles` must be a whole number of scans, at least 1".into(),
+                );
+            }
+        },
+    };
+    let cycle_time = match string("cycleTime")? {
+        Some(t) => parse_step(&t).map_err(|e| format!("launch field `cycleTime`: {e}"))?,
+        None => TIME::from_ms(10),
+    };
+    let mut sets = Vec::new();
+    match obj.get("set") {
+        None | Some(Value::Null) => {}
+        Some(Value::Array(items)) => {
+            for s in items {
+                let s = s
+                    .as_str()
+                    .ok_or("launch field `set` must be a list of strings like \"start=TRUE@3\"")?;
+                let s = parse_set(s).map_err(|e| format!("launch field `set`: {e}"))?;
+                if let Some(n) = cycles
+                    && s.cycle > n
+                {
+                    return Err(format!(
+                        "launch field `set`: {}={}@{}: the run has only {n} cycles",
+                        s.var, s.value, s.cycle
+                    ));
+                }
+                sets.push(s);
+            }
+        }
+        Some(_) => {
+            return Err(
+                "launch field `set` must be a list of strings like \"start=TRUE@3\"".into(),
+            );
+        }
+    }
+    let mut forces = Vec::new();
+    match obj.get("force") {
+        None | Some(Value::Null) => {}
+        Some(Value::Object(m)) => {
+            for (k, v) in m {
+                let v = match v {
+                    Value::String(s) => s.clone(),
+                    Value::Bool(b) => if *b { "TRUE" } else { "FALSE" }.to_string(),
+                    Value::Number(n) => n.to_string(),
+                    _ => {
+                        return Err(format!(
+                            "launch field `force`: the value of `{k}` must be an IL literal"
+                        ));
+                    }
+                };
+                forces.push((k.clone(), v));
+            }
+        }
+        Some(_) => {
+            return Err("launch field `force` must be an object: { \"path\": \"value\" }".into());
+        }
+    }
+    let standard = match string("std")?.as_deref() {
+        None => il_codegen::Standard::default(),
+        Some(s) => il_codegen::Standard::from_name(s)
+            .ok_or_else(|| format!("launch field `std`: `{s}` is not iec2013 or iec2003"))?,
+    };
+    let pou = string("pou")?;
+    let configuration = string("configuration")?;
+    if pou.is_some() && configuration.is_some() {
+        return Err("give `pou` or `configuration`, not both".into());
+    }
+    Ok(Launch {
+        program,
+        pou,
+        configuration,
+        cycles,
+        cycle_time,
+        sets,
+        forces,
+        stop_on_entry: boolean("stopOnEntry")?,
+        real_time: boolean("realTime")?,
+        front: Front {
+            standard,
+            snippet: boolean("snippet")?,
+            ..Front::default()
+        },
+    })
+}
+
+/// What a launch runs.
+pub enum Target {
+    Pou(Box<Machine>),
+    Config(Box<ConfigMachine>),
+}
+
+/// What [`load`] makes: the checked program, the machine, the user's line
+/// of each IL line, and the warnings (rendered).
+pub struct Loaded {
+    pub prog: Program,
+    pub target: Target,
+    pub lines: crate::flow::SourceLines,
+    pub warnings: String,
+}
+
+/// The checked program, or the diagnostics that stop it (rendered).
+pub fn load(l: &Launch) -> Result<Loaded, String> {
+    if std::path::Path::new(&l.program).is_dir() {
+        return Err(format!(
+            "`{}` is a folder: name one of its files in `program` (the debugger runs one file)",
+            l.program
+        ));
+    }
+    let file = l.front.read(&l.program)?;
+    let checked = l.front.program(vec![file]).check();
+    let rendered = checked.render(false);
+    let Some([prog]) = checked.ir() else {
+        return Err(format!(
+            "{rendered}`{}` has errors; nothing was run",
+            l.program
+        ));
+    };
+    let target = match (&l.pou, &l.configuration) {
+        (_, Some(c)) => Target::Config(Box::new(ConfigMachine::new(prog, c)?)),
+        (Some(p), None) => Target::Pou(Box::new(Machine::new(prog, p)?)),
+        (None, None) => {
+            let programs: Vec<&str> = prog
+                .pous
+                .iter()
+                .filter(|p| p.kind == PouKind::Program)
+                .map(|p| p.name.as_str())
+                .collect();
+            match (programs.as_slice(), prog.configs.as_slice()) {
+                (_, [one]) if programs.len() != 1 => {
+                    Target::Config(Box::new(ConfigMachine::new(prog, &one.name)?))
+                }
+                ([one], _) => Target::Pou(Box::new(Machine::new(prog, one)?)),
+                _ => {
+                    return Err(format!(
+                        "`{}` has no single PROGRAM or CONFIGURATION to run: name one with `pou` or `configuration`",
+                        l.program
+                    ));
+                }
+            }
+        }
+    };
+    Ok(Loaded {
+        prog: prog.clone(),
+        target,
+        lines: crate::flow::SourceLines::of(&checked),
+        warnings: rendered,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    #[test]
+    fn unknown_fields_and_bad_values_are_named() {
+        let e = parse(&json!({"program": "a.il", "cylces": 3})).unwrap_err();
+        assert!(
+            e.contains("`cylces`") && e.contains("did you mean `cycles`"),
+            "{e}"
+        );
+        assert!(parse(&json!({"program": "a.il", "cycles": 0})).is_err());
+        assert!(parse(&json!({"program": "a.il", "cycles": 2, "set": ["x=1@3"]})).is_err());
+        assert!(parse(&json!({"cycles": 2})).is_err());
+        assert!(parse(&json!(null)).is_err());
+        let l = parse(&json!({
+            "program": "a.il", "type": "ilc", "request": "launch", "name": "x",
+            "__sessionId": "1", "set": ["start=TRUE@3"], "cycleTime": "T#20ms",
+            "force": {"stop": false}
+        }))
+        .unwrap();
+        assert_eq!(l.sets[0].cycle, 3);
+        assert_eq!(l.cycle_time, TIME::from_ms(20));
+        assert_eq!(l.forces, [("stop".to_string(), "FALSE".to_string())]);
+    }
+}
