@@ -224,6 +224,16 @@ fn scan_table<T: Target>(
     err: &mut dyn Write,
 ) -> Result<(), String> {
     for p in prog.pous.iter().filter(|p| p.host) {
+        if p.kind != il_codegen::ast::PouKind::Function {
+            writeln!(
+                err,
+                "note: `{}` is a host {} (its body is the crate's Rust code, or not IL): `ilc run` runs its interface only; its outputs keep their values",
+                p.name,
+                p.kind.keyword()
+            )
+            .map_err(|e| e.to_string())?;
+            continue;
+        }
         let ret = p.ret.as_ref().map_or("BOOL".to_string(), |t| t.to_string());
         writeln!(
             err,

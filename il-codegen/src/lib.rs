@@ -46,6 +46,7 @@ mod builder;
 pub mod codes;
 pub mod diag;
 pub mod dialect;
+pub mod exp;
 pub mod ir;
 pub mod plcopen;
 pub mod read;

@@ -99,7 +99,20 @@ impl Program {
     }
 
     /// Parse and check every input.
-    pub fn check(self) -> Checked {
+    pub fn check(mut self) -> Checked {
+        // The CODESYS exports of the program are one project: their
+        // global lists and task configuration are read together.
+        let mut exps: Vec<&mut crate::exp::Import> = self
+            .inputs
+            .iter_mut()
+            .filter_map(|i| match i {
+                Input::Exp(e) => Some(&mut **e),
+                _ => None,
+            })
+            .collect();
+        if exps.len() > 1 {
+            crate::exp::assemble(&mut exps);
+        }
         let files: Vec<&SourceFile> = self.inputs.iter().map(Input::il_text).collect();
         let mut units = Vec::new();
         let mut diags: Vec<Vec<Diagnostic>> = Vec::new();
@@ -370,6 +383,13 @@ impl Emitted<'_> {
             Input::Snippet(s) => {
                 file::format_file_with(&s.file.name, &self.text, self.markers(), None, |n| {
                     (s.line_of(n), s.il.line_text(n))
+                })
+            }
+            Input::Exp(i) => {
+                let lines = i.exp_lines();
+                file::format_file_with(&i.exp.name, &self.text, None, Some("EXP"), |n| {
+                    let shown = lines.get(n.wrapping_sub(1)).copied().unwrap_or(0);
+                    (shown, i.il.line_text(n))
                 })
             }
             Input::PlcOpen(i) => {
