@@ -46,17 +46,21 @@ pub(super) fn language(text: &str, body: Range<usize>, nested: bool) -> Language
             return Language::Sfc;
         }
     }
-    let line_end = text[r.end..].find('\n').map_or(text.len(), |k| r.end + k);
-    let line = &text[r.end..line_end];
-    let line = line.split("(*").next().unwrap_or("");
-    if tok == Tok::Word && IL_OPERATORS.contains(&word.as_str()) && !line.contains(":=") {
+    if tok != Tok::Word {
+        return Language::St;
+    }
+    // `x := ...` is ST even when `x` is spelt like an operator (`S`, `IN`).
+    let next = toks.next();
+    let assigns = next.as_ref().is_some_and(|(t, c)| {
+        *t == Tok::Punct && &text[c.clone()] == ":" && text[c.end..].starts_with('=')
+    });
+    if IL_OPERATORS.contains(&word.as_str()) && !assigns {
         return Language::Il;
     }
     // A label: `name:` not followed by `=`.
-    if tok == Tok::Word
-        && let Some((Tok::Punct, c)) = toks.next()
+    if let Some((Tok::Punct, c)) = &next
         && &text[c.clone()] == ":"
-        && !text[c.end..].starts_with('=')
+        && !assigns
     {
         return Language::Il;
     }
