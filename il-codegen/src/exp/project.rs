@@ -102,7 +102,7 @@ impl Facts {
 
 /// The text of an object for comparing two of one name: its code, without
 /// headers and blank space at the ends.
-fn object_text<'a>(imp: &'a Import, k: usize) -> &'a str {
+fn object_text(imp: &Import, k: usize) -> &str {
     let o = &imp.objects[k];
     imp.exp.text[o.keyword.start..o.span.end.max(o.keyword.start)].trim()
 }

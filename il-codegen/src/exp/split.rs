@@ -241,7 +241,8 @@ impl Splitter<'_> {
                     return State::Pou { obj };
                 };
                 if let Some(other) = end_keyword(word) {
-                    if other != kind {
+                    let mismatched = other != kind;
+                    if mismatched {
                         self.err(
                             codes::MISMATCHED_END,
                             r.clone(),
@@ -254,7 +255,9 @@ impl Splitter<'_> {
                             &format!("expected `END_{}`", kind.keyword()),
                         );
                     }
-                    obj.end = Some(r.clone());
+                    // A POU ended by another END_ is left out of the IL
+                    // text (its error is said here): the others are checked.
+                    obj.end = (!mismatched).then(|| r.clone());
                     obj.span.end = next_line(text, r.end);
                     match &mut obj.body {
                         Some(b) => b.end = line_start(text, r.start).max(b.start),
