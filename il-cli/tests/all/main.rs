@@ -7,6 +7,7 @@ mod corpus;
 mod dialect;
 mod docs;
 mod encodings;
+mod exp;
 mod explain;
 mod lsp;
 mod plcopen;

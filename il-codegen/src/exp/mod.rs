@@ -26,6 +26,7 @@
 //! - libraries, visualisations, the PLC configuration and other objects
 //!   that are no code are skipped ([`Import::objects`] lists them).
 
+mod actions;
 mod decls;
 mod project;
 mod scan;
@@ -57,8 +58,8 @@ pub mod codes {
         "Two objects of the project (in one `.EXP` file or in two) have the same name but different text: two POUs, two TYPEs, or two global variables. The second is left out, with this error at its name; the first is compiled. An object exported twice with the same text (as a project's objects are when exported under two names) is read once.\n\n    a.EXP: FUNCTION_BLOCK Motor ... END_FUNCTION_BLOCK\n    b.EXP: FUNCTION_BLOCK Motor ... (another body) END_FUNCTION_BLOCK";
     NOT_IEC_ADDRESS = "IL0408", "address of a CODESYS global that is no IEC address",
         "A global of a CODESYS export is located at an address the compiler does not bind: one whose size letter IEC 61131-3 does not have (OWEN's targets write `%IR3.0` for a REAL input), or a hierarchical one (`%IX1.0.3`, `%QW9.1.0`: module, channel ...); the compiler binds `%IXbyte.bit`, `%IXbit`, `%IBn`, `%IWn`, `%IDn`, `%ILn` and the same for %Q and %M. The variable is compiled as a global without an address, with this warning: the host reads or writes it as a field of the configuration, and binds it to the target's I/O itself.\n\n    VAR_GLOBAL\n        AI_0 AT %IR3.0 : REAL;\n    END_VAR";
-    ACTION = "IL0407", "ACTION of a CODESYS POU not compiled",
-        "CODESYS 2.3 POUs can have actions (`ACTION name: ... END_ACTION` after the POU): code that runs on the POU's variables, called as `CAL inst.name`. The import reads them but does not compile them yet: each action is this error, at its `ACTION` keyword, and the rest of the project is still checked. Move the action's code into a FUNCTION_BLOCK of its own, or into the POU's body behind a mode input.\n\n    FUNCTION_BLOCK Pump ... END_FUNCTION_BLOCK\n    ACTION Reset:\n    LD FALSE\n    ST running\n    END_ACTION";
+    ACTION = "IL0407", "ACTION after a FUNCTION",
+        "CODESYS 2.3 FUNCTION_BLOCKs and PROGRAMs can have actions (`ACTION name: ... END_ACTION` after the POU): code that runs on the POU's variables, called as `CAL inst.name` or, inside the POU, `CAL name`. A FUNCTION has no variables that last, so no actions: an ACTION after a FUNCTION is this error, at its `ACTION` keyword, and the rest of the project is still checked.\n\n    FUNCTION Twice : INT ... END_FUNCTION\n    ACTION Reset:\n    LD 0\n    ST Twice\n    END_ACTION";
     }
 }
 pub use codes::CODES;

@@ -56,9 +56,19 @@ pub(super) struct Facts {
     tasks: Option<(usize, usize, Vec<Task>)>,
     /// Whether the project has a PROGRAM PLC_PRG.
     plc_prg: bool,
+    /// The IL actions of IL function blocks: upper-case block name →
+    /// upper-case action names.
+    actions: HashMap<String, Vec<String>>,
 }
 
 impl Facts {
+    /// Whether block `ty` (upper case) has an IL action named `action`.
+    pub(super) fn has_action(&self, ty: &str, action: &str) -> bool {
+        self.actions
+            .get(ty)
+            .is_some_and(|a| a.iter().any(|n| n.eq_ignore_ascii_case(action)))
+    }
+
     /// The value of an integer global constant (`MAX_PUMPS` → `3`).
     pub(super) fn constant_value(&self, name: &str) -> Option<&str> {
         self.constants
@@ -410,6 +420,17 @@ fn collect_needs(imports: &[&mut Import], facts: &mut Facts) {
             names_used(text, o.decl.clone(), o.nested, &mut used);
             if let Some(b) = &o.body {
                 names_used(text, b.clone(), o.nested, &mut used);
+            }
+            for a in super::actions::il_actions(o) {
+                names_used(text, a.body.clone(), o.nested, &mut used);
+            }
+            if kind == PouKind::FunctionBlock {
+                let names = super::actions::il_actions(o)
+                    .map(|a| a.name.to_ascii_uppercase())
+                    .collect::<Vec<_>>();
+                if !names.is_empty() {
+                    facts.actions.insert(o.name.to_ascii_uppercase(), names);
+                }
             }
             let mut locals = HashSet::new();
             let mut instances = Vec::new();

@@ -4,6 +4,7 @@
 
 use std::ops::Range;
 
+use super::actions;
 use super::decls::{self, Block};
 use super::project::Facts;
 use super::scan::{Scanner, Tok, for_lexer};
@@ -249,28 +250,77 @@ fn write_pou(
         return;
     }
     let mut edits = decl_edits(text, o.decl.clone(), o.nested, facts);
-    let implicit = facts.implicit_blocks(&o.name, kind);
+    let mut implicit = facts.implicit_blocks(&o.name, kind);
+    let acts: Vec<&super::Action> = match kind {
+        PouKind::Function => Vec::new(),
+        _ => actions::il_actions(o).collect(),
+    };
+    if !acts.is_empty() {
+        implicit.push_str(&actions::selector_block(o));
+    }
     if !implicit.is_empty() {
         edits.push((first_block..first_block, implicit));
     }
     copy_edited(w, text, o.decl.clone(), o.nested, true, edits);
+    let mut counter = 0;
     if let Some(body) = &o.body {
-        copy_edited(w, text, body.clone(), o.nested, false, Vec::new());
+        for a in &acts {
+            w.gen_at(
+                &format!("LD {0}\nJMPC {0}_ACTION\n", a.name),
+                a.keyword.clone(),
+            );
+        }
+        let edits = actions::call_edits(text, body.clone(), o, facts, &mut counter);
+        copy_edited(w, text, body.clone(), o.nested, false, edits);
+        if !acts.is_empty() {
+            w.gen_at("\nRET\n", end.start..end.start);
+        }
+        for a in &acts {
+            w.gen_at(
+                &format!("{0}_ACTION:\nLD FALSE\nST {0}\n", a.name),
+                a.keyword.clone(),
+            );
+            let mut edits = actions::label_edits(text, a.body.clone(), o.nested, &a.name);
+            edits.extend(actions::call_edits(
+                text,
+                a.body.clone(),
+                o,
+                facts,
+                &mut counter,
+            ));
+            copy_edited(w, text, a.body.clone(), o.nested, false, edits);
+            w.gen_at("\nRET\n", a.end.clone());
+        }
     }
     w.gen_at("\n", end.start..end.start);
     w.copy(&text[end.clone()], end.start);
     w.gen_at("\n", end.end..end.end);
     for a in &o.actions {
-        diags.push(
+        let d = if kind == PouKind::Function {
             Diagnostic::error(
                 codes::ACTION,
                 Span::new(a.keyword.start, a.keyword.end),
                 format!(
-                    "ACTION `{}` of `{}` is not compiled yet: actions of a CODESYS POU are not supported",
-                    a.name, o.name
+                    "FUNCTION `{}` has ACTION `{}`: a FUNCTION has no actions",
+                    o.name, a.name
                 ),
             )
-            .with_label("ACTION not supported"),
-        );
+            .with_label("ACTION of a FUNCTION")
+        } else if a.language != Language::Il {
+            Diagnostic::warning(
+                codes::NOT_IL,
+                Span::new(a.keyword.start, a.keyword.end),
+                format!(
+                    "ACTION `{}` of `{}` is in {}: it is not compiled",
+                    a.name,
+                    o.name,
+                    a.language.name()
+                ),
+            )
+            .with_label("action not in IL")
+        } else {
+            continue;
+        };
+        diags.push(d);
     }
 }

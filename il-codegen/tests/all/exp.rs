@@ -48,7 +48,7 @@ fn the_project_checks_with_one_warning_for_its_st_block() {
     assert!(matches!(c.inputs()[0], Input::Exp(_)));
     assert_eq!(
         located(&c, 0),
-        [("IL0401", Severity::Warning, 74, 1)],
+        [("IL0401", Severity::Warning, 80, 1)],
         "{}",
         c.render(false)
     );
@@ -69,8 +69,8 @@ fn the_project_checks_with_one_warning_for_its_st_block() {
     // PLC_PRG names the globals `total` (VAR_EXTERNAL) and `lamp` (at
     // %QX0.0), and the constants LIMIT_N and SLOTS (local constants).
     let prg = &ir[0].pous[3];
-    let slots = prg.vars.iter().find(|v| v.name == "slots").unwrap();
-    assert_eq!(slots.ty.to_string(), "ARRAY[1..4] OF INT");
+    let buffer = prg.vars.iter().find(|v| v.name == "buffer").unwrap();
+    assert_eq!(buffer.ty.to_string(), "ARRAY[1..4] OF INT");
     let cfg = &ir[0].configs[0];
     assert_eq!(cfg.name, "Project");
     let globals: Vec<&str> = cfg.globals.iter().map(|v| v.name.as_str()).collect();
