@@ -116,6 +116,13 @@ pub fn command() -> Command {
                         .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
                         .default_value("auto"),
                 )
+                .arg(
+                    Arg::new("verbose")
+                        .long("verbose")
+                        .short('v')
+                        .action(ArgAction::SetTrue)
+                        .help("Also list what was not compiled: the objects of a CODESYS export (.EXP) that are no code, one note each"),
+                )
                 .arg(std_arg())
                 .arg(snippet_arg()),
         )

@@ -30,6 +30,7 @@ fn main() -> ExitCode {
                 &files,
                 format,
                 color,
+                m.get_flag("verbose"),
                 input::Front::of(m),
                 io::stderr().is_terminal(),
                 &mut io::stdout().lock(),

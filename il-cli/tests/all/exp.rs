@@ -72,6 +72,8 @@ const FB: &str = "(* @NESTEDCOMMENTS := 'Yes' *)\r\n(* @PATH := '' *)\r\nFUNCTIO
 const PRG: &str = "(* @NESTEDCOMMENTS := 'Yes' *)\r\n(* @PATH := '' *)\r\nPROGRAM Main\r\nVAR\r\n\tinc : Inc;\r\nEND_VAR\r\n(* @END_DECLARATION := '0' *)\r\nCAL inc\r\nEND_PROGRAM\r\n";
 const TASKS: &str = "\r\nRESOURCE\r\n\r\nTASK Slow (PRIORITY := 1, INTERVAL := T#20ms);\r\nMain();\r\n{Additional_info : 1,0,0,0,1,4294967295}\r\nEND_TASK\r\nEND_RESOURCE\r\n";
 
+const LIBRARY: &str = "LIBRARY\r\nSTANDARD.LIB 4.10.05 10:14:46\r\n(* @LIBRARYSYMFILEINFO := '0' *)\r\nNumOfPOUs: 1\r\nTON: 0\r\nNumOfGVLs: 0\r\nEND_LIBRARY\r\n";
+
 #[test]
 fn a_folder_of_exports_is_one_project_and_its_tasks_run() {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("ilc_exp_folder");
@@ -82,6 +84,7 @@ fn a_folder_of_exports_is_one_project_and_its_tasks_run() {
         ("INC.EXP", FB),
         ("MAIN.EXP", PRG),
         ("TASK CONFIGURATION.EXP", TASKS),
+        ("STANDARD.LIB.EXP", LIBRARY),
     ] {
         std::fs::write(dir.join(name), t).unwrap();
     }
@@ -89,6 +92,14 @@ fn a_folder_of_exports_is_one_project_and_its_tasks_run() {
     let o = ilc(&["check", &d]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
     assert_eq!(text(&o.stderr), "");
+    // --verbose lists what was not compiled, one note each.
+    let o = ilc(&["check", "--verbose", &d]);
+    assert_eq!(
+        text(&o.stderr),
+        format!(
+            "note: {d}/STANDARD.LIB.EXP:1: skipped a library reference `STANDARD.LIB 4.10.05 10:14:46`\n"
+        )
+    );
     // The task runs Main every 20 ms: every other 10 ms scan.
     let o = ilc(&["run", &d, "--cycles", "4", "--watch", "count"]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));

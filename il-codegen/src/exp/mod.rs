@@ -183,6 +183,9 @@ pub struct Import {
     left_out: Vec<bool>,
     /// The diagnostics of reading the objects (before the project's).
     split_diags: Vec<Diagnostic>,
+    /// IL ranges of globals declared in another file, with a note saying
+    /// where (the generated CONFIGURATION holds the whole project's).
+    foreign: Vec<(Range<usize>, String)>,
 }
 
 /// Whether a source is a CODESYS export: its name ends in `.exp` (any
@@ -227,6 +230,7 @@ impl Import {
             objects,
             left_out,
             split_diags,
+            foreign: Vec::new(),
         };
         let mut one = [&mut i];
         assemble(&mut one);
@@ -244,9 +248,26 @@ impl Import {
         self.left_out.get(k).copied().unwrap_or(false)
     }
 
-    /// Move a diagnostic about the IL text into the `.EXP` text.
+    /// Move a diagnostic about the IL text into the `.EXP` text, with a
+    /// note naming the object's folder (`@PATH`), or the file that declares
+    /// a global of another file.
     pub fn to_exp(&self, mut d: Diagnostic) -> Diagnostic {
+        let lo = d.span.lo as usize;
+        if let Some((_, note)) = self.foreign.iter().find(|(r, _)| r.contains(&lo)) {
+            d.notes.push(note.clone());
+        }
         d.span = self.map.to_xml(d.span);
+        let at = d.span.lo as usize;
+        if let Some(o) = self
+            .objects
+            .iter()
+            .find(|o| o.span.contains(&at) && !o.path.is_empty())
+        {
+            d.notes.push(format!(
+                "in the project's folder `{}`",
+                o.path.replace("\\/", "/")
+            ));
+        }
         for (s, _) in &mut d.secondary {
             *s = self.map.to_xml(*s);
         }

@@ -28,9 +28,13 @@ struct Global {
     init: Option<String>,
     constant: bool,
     retain: bool,
-    /// Where it is declared: import and range in its `.EXP` text.
+    /// Where it is declared: import and range in its `.EXP` text, and
+    /// that file's name and line (for the note of a diagnostic about it
+    /// in the CONFIGURATION, which another file may hold).
     import: usize,
     range: Range<usize>,
+    file: String,
+    line: usize,
 }
 
 /// A `TASK` of the task configuration and the programs it calls.
@@ -138,7 +142,8 @@ pub(crate) fn assemble(imports: &mut [&mut Import]) {
         with_prg.or_else(|| facts.globals.first().map(|g| g.import))
     });
     for (me, imp) in imports.iter_mut().enumerate() {
-        let (w, diags) = super::write::write(imp, me, &facts);
+        let (w, diags, foreign) = super::write::write(imp, me, &facts);
+        imp.foreign = foreign;
         let (text, map) = w.finish();
         imp.il = crate::diag::SourceFile::new(imp.exp.name.clone(), text);
         imp.map = map;
@@ -314,6 +319,8 @@ fn collect_globals(imports: &mut [&mut Import], facts: &mut Facts) {
                                 retain: b.retain,
                                 import: i,
                                 range: d.range.clone(),
+                                file: imp.exp.name.clone(),
+                                line: imp.exp.line_of(d.range.start as u32),
                             });
                         }
                     }
@@ -484,7 +491,16 @@ fn collect_needs(imports: &[&mut Import], facts: &mut Facts) {
 
 /// The CONFIGURATION: the project's globals, its tasks and the programs
 /// they run (or `PLC_PRG` on every cycle).
-pub(super) fn write_config(w: &mut Writer, imp: &Import, me: usize, facts: &Facts) {
+///
+/// A global of another file is mapped to the configuration's anchor here;
+/// `foreign` gets its IL range and a note naming where it is declared.
+pub(super) fn write_config(
+    w: &mut Writer,
+    imp: &Import,
+    me: usize,
+    facts: &Facts,
+    foreign: &mut Vec<(Range<usize>, String)>,
+) {
     let tasks = facts.tasks.as_ref().filter(|t| t.0 == me);
     let anchor = tasks
         .map(|t| imp.objects[t.1].keyword.clone())
@@ -530,7 +546,17 @@ pub(super) fn write_config(w: &mut Writer, imp: &Import, me: usize, facts: &Fact
             line.push_str(&format!(" := {i}"));
         }
         line.push_str(";\n");
+        let start = w.text.len();
         w.gen_at(&line, at);
+        if g.import != me {
+            foreign.push((
+                start..w.text.len(),
+                format!(
+                    "`{}` is declared in `{}`, line {} (a global variable list of this project)",
+                    g.name, g.file, g.line
+                ),
+            ));
+        }
     }
     if open.is_some() {
         w.gen_at("END_VAR\n", anchor.clone());

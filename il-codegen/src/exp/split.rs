@@ -455,13 +455,15 @@ impl Splitter<'_> {
         };
         let mut obj = self.new_object(kind, r.start);
         obj.keyword = r.clone();
-        if matches!(obj.kind, ObjectKind::Skipped(_)) {
+        if obj.kind == ObjectKind::Skipped("a library reference") {
             // `LIBRARY` is followed by the library's file name on its line.
             let line = next_line(text, r.end);
             let nl = next_line(text, line);
             obj.name = text[line..nl].trim().to_string();
         } else if matches!(obj.kind, ObjectKind::Tasks) {
             obj.name = "Task configuration".to_string();
+        } else if obj.name.is_empty() {
+            obj.name = up.clone();
         }
         obj.decl = r.start..r.start;
         State::Until {

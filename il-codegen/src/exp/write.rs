@@ -155,9 +155,12 @@ fn top_level_comma(v: &str) -> bool {
     })
 }
 
+/// IL ranges of globals declared in another file, each with its note.
+pub(super) type Foreign = Vec<(Range<usize>, String)>;
+
 /// Write the IL text of `imp`'s objects (the import numbered `me` of the
 /// project).
-pub(super) fn write(imp: &Import, me: usize, facts: &Facts) -> (Writer, Vec<Diagnostic>) {
+pub(super) fn write(imp: &Import, me: usize, facts: &Facts) -> (Writer, Vec<Diagnostic>, Foreign) {
     let text = &imp.exp.text;
     let mut w = Writer::default();
     let mut diags = Vec::new();
@@ -178,10 +181,11 @@ pub(super) fn write(imp: &Import, me: usize, facts: &Facts) -> (Writer, Vec<Diag
             _ => {}
         }
     }
+    let mut foreign = Vec::new();
     if facts.holder == Some(me) {
-        super::project::write_config(&mut w, imp, me, facts);
+        super::project::write_config(&mut w, imp, me, facts, &mut foreign);
     }
-    (w, diags)
+    (w, diags, foreign)
 }
 
 /// A `;` after the last declaration of a TYPE where CODESYS leaves it out

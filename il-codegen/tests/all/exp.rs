@@ -307,3 +307,71 @@ fn the_owen_project_reads_as_one_project_without_a_false_error() {
         .count();
     assert!(skipped >= 15, "{skipped}");
 }
+
+#[test]
+fn a_diagnostic_names_the_folder_and_the_file_of_a_global() {
+    // A global of another file is declared in the CONFIGURATION, which the
+    // file of the task configuration holds: the note says where it is.
+    let gvl = GVL.replace("count : INT;", "count : NOSUCHTYPE;");
+    let c = check(vec![
+        SourceFile::new("G.EXP", gvl),
+        SourceFile::new("Task configuration.EXP", TASKS),
+        SourceFile::new("Main.EXP", PRG.replace("\tinc : Inc;\n", "")),
+    ]);
+    let d: Vec<&Diagnostic> = c.diagnostics().iter().flatten().collect();
+    let unknown = d.iter().find(|d| d.code == "IL0105").expect("unknown type");
+    assert!(
+        unknown
+            .notes
+            .iter()
+            .any(|n| n.contains("`count` is declared in `G.EXP`, line 5")),
+        "{:?}",
+        unknown.notes
+    );
+    // `@PATH := '\/Util'`: the folder is named.
+    let text = FB
+        .replace("(* @PATH := '' *)", "(* @PATH := '\\/Util' *)")
+        .replace("LD count", "LD nothing");
+    let c = check(vec![
+        SourceFile::new("Inc.EXP", text),
+        SourceFile::new("G.EXP", GVL),
+    ]);
+    let d = &c.diagnostics()[0][0];
+    assert_eq!(d.code, "IL0101", "{}", c.render(false));
+    assert!(
+        d.notes
+            .contains(&"in the project's folder `/Util`".to_string()),
+        "{:?}",
+        d.notes
+    );
+}
+
+#[test]
+fn actions_run_in_place_inside_their_own_pou() {
+    // `CAL Twice` inside the block runs the action's code where it stands;
+    // CALC behind a jump. Labels of the action are renamed per call.
+    let fb = "FUNCTION_BLOCK Acc\nVAR_INPUT go : BOOL; END_VAR\nVAR_OUTPUT n : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nCAL Bump\nLD go\nCALC Bump\nEND_FUNCTION_BLOCK\n\nACTION Bump:\nLD n\nADD 1\nST n\nJMP out\nout:\nEND_ACTION\n";
+    let prg = "PROGRAM Main\nVAR a : Acc; END_VAR\n(* @END_DECLARATION := '0' *)\nCAL a(go := TRUE)\nCAL a.Bump\nEND_PROGRAM\n";
+    let c = check(vec![
+        SourceFile::new("Acc.EXP", fb),
+        SourceFile::new("Main.EXP", prg),
+    ]);
+    assert!(!c.has_errors(), "{}", c.render(false));
+    let ir = c.ir().unwrap();
+    let acc = &ir[0].pous[0];
+    // The action's selector is an input of the block.
+    assert!(acc.vars.iter().any(|v| v.name == "Bump"));
+    let Input::Exp(e) = &c.inputs()[0] else {
+        panic!()
+    };
+    assert!(e.il.text.contains("out_Bump1:"), "{}", e.il.text);
+    assert!(e.il.text.contains("JMPCN Bump_skip2"), "{}", e.il.text);
+    let Input::Exp(m) = &c.inputs()[1] else {
+        panic!()
+    };
+    assert!(m.il.text.contains("CAL a(Bump := TRUE)"), "{}", m.il.text);
+    // An ACTION after a FUNCTION is an error at its keyword.
+    let f = "FUNCTION F : INT\nVAR_INPUT a : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nLD a\nST F\nEND_FUNCTION\nACTION A:\nLD 1\nEND_ACTION\n";
+    let c = check(vec![SourceFile::new("F.EXP", f)]);
+    assert_eq!(located(&c, 0), [("IL0407", Severity::Error, 7, 1)]);
+}
