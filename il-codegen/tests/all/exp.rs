@@ -375,3 +375,55 @@ fn actions_run_in_place_inside_their_own_pou() {
     let c = check(vec![SourceFile::new("F.EXP", f)]);
     assert_eq!(located(&c, 0), [("IL0407", Severity::Error, 7, 1)]);
 }
+
+#[test]
+fn a_build_of_a_damaged_export_writes_nothing() {
+    let dir = std::env::temp_dir().join(format!("il-exp-build-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(dir.join("out")).unwrap();
+    let good = dir.join("Inc.EXP");
+    let bad = dir.join("Main.EXP");
+    std::fs::write(&good, FB).unwrap();
+    std::fs::write(dir.join("G.EXP"), GVL).unwrap();
+    // Main is cut short: no END_PROGRAM.
+    std::fs::write(&bad, PRG.replace("END_PROGRAM\n", "")).unwrap();
+    let e = il_codegen::Builder::new()
+        .file(&good)
+        .file(dir.join("G.EXP"))
+        .file(&bad)
+        .out_dir(dir.join("out"))
+        .compile()
+        .unwrap_err();
+    assert!(e.to_string().contains("IL0404"), "{e}");
+    assert!(e.to_string().contains("Main.EXP:3:1"), "{e}");
+    let written: Vec<_> = std::fs::read_dir(dir.join("out")).unwrap().collect();
+    assert!(written.is_empty(), "{written:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn mangled_exports_never_panic() {
+    // Every cut of the test project, and bytes of other objects spliced
+    // in, go through the whole pipeline: diagnostics, never a panic.
+    let text = project_file().text;
+    let bounds: Vec<usize> = (0..=text.len())
+        .filter(|&k| text.is_char_boundary(k))
+        .step_by(13)
+        .collect();
+    for &k in &bounds {
+        let cut = &text[..k];
+        let c = check(vec![SourceFile::new("cut.EXP", cut)]);
+        let _ = c.diagnostics();
+        let spliced = format!("{}\nEND_ACTION\n(* @PATH := '' *)\n{}", cut, &text[k / 2..]);
+        let c = check(vec![
+            SourceFile::new("a.EXP", spliced),
+            SourceFile::new("b.EXP", &text[k..]),
+        ]);
+        for (input, diags) in c.reports() {
+            for d in diags {
+                // Every span is inside its file.
+                assert!(d.span.hi as usize <= input.source().text.len(), "{d:?}");
+            }
+        }
+    }
+}
