@@ -10,6 +10,7 @@
 mod addresses;
 mod corners;
 mod dialect;
+mod exp;
 mod plc;
 mod plcopen;
 mod smoke;
