@@ -377,7 +377,7 @@ mod tests {
         );
         ws.open(
             "file:///plc/PLC_PRG.EXP".parse().unwrap(),
-            "(* @NESTEDCOMMENTS := 'Yes' *)\n(* @PATH := '' *)\nPROGRAM PLC_PRG\nVAR x : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nLD count\nST x\nLD y\nEND_PROGRAM\n".into(),
+            "(* @NESTEDCOMMENTS := 'Yes' *)\n(* @PATH := '\\/Main' *)\nPROGRAM PLC_PRG\nVAR x : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nLD count\nST x\nLD y\nEND_PROGRAM\n".into(),
         );
         ws.check();
         assert_eq!(ws.analysis.diagnostics[0], []);
@@ -388,6 +388,11 @@ mod tests {
             Some(lsp_types::NumberOrString::String("IL0101".into()))
         );
         assert_eq!((d[0].range.start.line, d[0].range.start.character), (7, 3));
+        // The POU's symbol shows its project folder.
+        let syms =
+            super::super::symbols::document(&ws, &"file:///plc/PLC_PRG.EXP".parse().unwrap());
+        assert_eq!(syms[0].name, "PLC_PRG");
+        assert_eq!(syms[0].detail.as_deref(), Some("PROGRAM · /Main"));
     }
 
     /// The editor's name for a document does not decide its language: its

@@ -58,6 +58,8 @@ pub mod codes {
         "Two objects of the project (in one `.EXP` file or in two) have the same name but different text: two POUs, two TYPEs, or two global variables. The second is left out, with this error at its name; the first is compiled. An object exported twice with the same text (as a project's objects are when exported under two names) is read once.\n\n    a.EXP: FUNCTION_BLOCK Motor ... END_FUNCTION_BLOCK\n    b.EXP: FUNCTION_BLOCK Motor ... (another body) END_FUNCTION_BLOCK";
     NOT_IEC_ADDRESS = "IL0408", "address of a CODESYS global that is no IEC address",
         "A global of a CODESYS export is located at an address the compiler does not bind: one whose size letter IEC 61131-3 does not have (OWEN's targets write `%IR3.0` for a REAL input), or a hierarchical one (`%IX1.0.3`, `%QW9.1.0`: module, channel ...); the compiler binds `%IXbyte.bit`, `%IXbit`, `%IBn`, `%IWn`, `%IDn`, `%ILn` and the same for %Q and %M. The variable is compiled as a global without an address, with this warning: the host reads or writes it as a field of the configuration, and binds it to the target's I/O itself.\n\n    VAR_GLOBAL\n        AI_0 AT %IR3.0 : REAL;\n    END_VAR";
+    NOT_GLOBALS = "IL0409", "block of a CODESYS global variable list not compiled",
+        "A global variable list of a CODESYS export is compiled as the VAR_GLOBAL blocks of the generated CONFIGURATION. Another block in it (CODESYS writes `VAR_CONFIG` in the object `Variable_Configuration`, which gives addresses to variables of program and block instances) is left out with this warning.\n\n    (* @GLOBAL_VARIABLE_LIST := 'Variable_Configuration' *)\n    VAR_CONFIG\n        PLC_PRG.motor.q AT %QX0.0 : BOOL;\n    END_VAR";
     ACTION = "IL0407", "ACTION after a FUNCTION",
         "CODESYS 2.3 FUNCTION_BLOCKs and PROGRAMs can have actions (`ACTION name: ... END_ACTION` after the POU): code that runs on the POU's variables, called as `CAL inst.name` or, inside the POU, `CAL name`. A FUNCTION has no variables that last, so no actions: an ACTION after a FUNCTION is this error, at its `ACTION` keyword, and the rest of the project is still checked.\n\n    FUNCTION Twice : INT ... END_FUNCTION\n    ACTION Reset:\n    LD 0\n    ST Twice\n    END_ACTION";
     }
@@ -257,21 +259,23 @@ impl Import {
             d.notes.push(note.clone());
         }
         d.span = self.map.to_xml(d.span);
-        let at = d.span.lo as usize;
-        if let Some(o) = self
-            .objects
-            .iter()
-            .find(|o| o.span.contains(&at) && !o.path.is_empty())
-        {
-            d.notes.push(format!(
-                "in the project's folder `{}`",
-                o.path.replace("\\/", "/")
-            ));
+        if let Some(folder) = self.folder_at(d.span.lo) {
+            d.notes.push(format!("in the project's folder `{folder}`"));
         }
         for (s, _) in &mut d.secondary {
             *s = self.map.to_xml(*s);
         }
         d
+    }
+
+    /// The project folder (`@PATH`, as `/K14/Pumps`) of the object at byte
+    /// `at` of the `.EXP` text, when it is in one.
+    pub fn folder_at(&self, at: u32) -> Option<String> {
+        let at = at as usize;
+        self.objects
+            .iter()
+            .find(|o| o.span.contains(&at) && !o.path.is_empty())
+            .map(|o| o.path.replace("\\/", "/"))
     }
 
     /// For each IL line (index 0 is line 1), the `.EXP` line it came from.

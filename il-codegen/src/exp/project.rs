@@ -261,7 +261,24 @@ fn collect_globals(imports: &mut [&mut Import], facts: &mut Facts) {
                 }
                 let text = &imp.exp.text;
                 for b in decls::blocks(text, o.decl.clone(), o.nested) {
-                    if b.constant != pass || b.kind != "VAR_GLOBAL" {
+                    if b.kind != "VAR_GLOBAL" {
+                        if !pass {
+                            let r = b.range.start..b.range.start + b.kind.len();
+                            diags.push(
+                                Diagnostic::warning(
+                                    codes::NOT_GLOBALS,
+                                    Span::new(r.start, r.end),
+                                    format!(
+                                        "{} in global variable list `{}` is not compiled: only its VAR_GLOBAL blocks are",
+                                        b.kind, o.name
+                                    ),
+                                )
+                                .with_label("left out"),
+                            );
+                        }
+                        continue;
+                    }
+                    if b.constant != pass {
                         continue;
                     }
                     for d in &b.decls {

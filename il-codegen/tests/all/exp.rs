@@ -427,3 +427,10 @@ fn mangled_exports_never_panic() {
         }
     }
 }
+
+#[test]
+fn a_var_config_of_a_global_list_is_left_out_with_a_warning() {
+    let text = "(* @NESTEDCOMMENTS := 'Yes' *)\n(* @GLOBAL_VARIABLE_LIST := 'Variable_Configuration' *)\nVAR_CONFIG\n\tPLC_PRG.q AT %QX0.0 : BOOL;\nEND_VAR\n(* @OBJECT_END := 'Variable_Configuration' *)\n";
+    let c = check(vec![SourceFile::new("VC.EXP", text)]);
+    assert_eq!(located(&c, 0), [("IL0409", Severity::Warning, 3, 1)]);
+}
