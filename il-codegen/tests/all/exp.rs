@@ -434,3 +434,14 @@ fn a_var_config_of_a_global_list_is_left_out_with_a_warning() {
     let c = check(vec![SourceFile::new("VC.EXP", text)]);
     assert_eq!(located(&c, 0), [("IL0409", Severity::Warning, 3, 1)]);
 }
+
+#[test]
+fn a_syntax_error_in_one_object_leaves_the_others_checked() {
+    let text = "(* @NESTEDCOMMENTS := 'Yes' *)\nFUNCTION_BLOCK Broken\nVAR_INPUT a : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nLD a +\nEND_FUNCTION_BLOCK\n\
+(* @NESTEDCOMMENTS := 'Yes' *)\nPROGRAM Sound\nVAR x : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nLD y\nST x\nEND_PROGRAM\n";
+    let c = check(vec![SourceFile::new("two.EXP", text)]);
+    let codes: Vec<(&str, usize)> = located(&c, 0).iter().map(|(c, _, l, _)| (*c, *l)).collect();
+    assert_eq!(codes.len(), 2, "{}", c.render(false));
+    assert_eq!(codes[0].1, 5, "{}", c.render(false));
+    assert_eq!(codes[1], ("IL0101", 11), "{}", c.render(false));
+}
