@@ -27,6 +27,7 @@
 //!   that are no code are skipped ([`Import::objects`] lists them).
 
 mod actions;
+mod config;
 mod decls;
 mod project;
 mod scan;

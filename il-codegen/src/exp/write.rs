@@ -183,7 +183,7 @@ pub(super) fn write(imp: &Import, me: usize, facts: &Facts) -> (Writer, Vec<Diag
     }
     let mut foreign = Vec::new();
     if facts.holder == Some(me) {
-        super::project::write_config(&mut w, imp, me, facts, &mut foreign);
+        super::config::write_config(&mut w, imp, me, facts, &mut foreign);
     }
     (w, diags, foreign)
 }
