@@ -19,7 +19,7 @@ use std::ops::Range;
 
 use super::decls;
 use super::project::Facts;
-use super::scan::{Scanner, Tok, first_on_line, for_lexer};
+use super::scan::{Scanner, Tok, for_lexer, line_firsts};
 use super::{Language, Object};
 
 /// Text edits of a copied range: `(range, replacement)`.
@@ -58,9 +58,11 @@ fn instances(text: &str, o: &Object) -> HashMap<String, String> {
 
 /// Labels of `range` (defined or jumped to) renamed `label_suffix`.
 pub(super) fn label_edits(text: &str, range: Range<usize>, nested: bool, suffix: &str) -> Edits {
+    let from = range.start;
     let toks: Vec<(Tok, Range<usize>)> = Scanner::new(text, range, nested)
         .filter(|(t, _)| !matches!(t, Tok::Comment { .. } | Tok::Pragma))
         .collect();
+    let firsts = line_firsts(text, from, &toks);
     let mut out = Vec::new();
     for (k, (t, r)) in toks.iter().enumerate() {
         if *t != Tok::Word {
@@ -74,7 +76,7 @@ pub(super) fn label_edits(text: &str, range: Range<usize>, nested: bool, suffix:
             && text[toks[k - 1].1.clone()]
                 .to_ascii_uppercase()
                 .starts_with("JMP");
-        if (next_colon && first_on_line(text, r.start)) || after_jump {
+        if (next_colon && firsts[k]) || after_jump {
             out.push((r.clone(), format!("{}_{suffix}", &text[r.clone()])));
         }
     }
@@ -109,9 +111,11 @@ pub(super) fn call_edits(
     facts: &Facts,
     counter: &mut usize,
 ) -> Edits {
+    let from = range.start;
     let toks: Vec<(Tok, Range<usize>)> = Scanner::new(text, range, o.nested)
         .filter(|(t, _)| !matches!(t, Tok::Comment { .. } | Tok::Pragma))
         .collect();
+    let firsts = line_firsts(text, from, &toks);
     let insts = instances(text, o);
     let mut out = Vec::new();
     let word = |k: usize| {
@@ -127,9 +131,7 @@ pub(super) fn call_edits(
         let Some(op) = word(k).map(str::to_ascii_uppercase) else {
             continue;
         };
-        if !matches!(op.as_str(), "CAL" | "CALC" | "CALCN" | "CALNC")
-            || !first_on_line(text, toks[k].1.start)
-        {
+        if !matches!(op.as_str(), "CAL" | "CALC" | "CALCN" | "CALNC") || !firsts[k] {
             continue;
         }
         let Some(target) = word(k + 1) else { continue };

@@ -5,7 +5,7 @@
 use std::ops::Range;
 
 use super::project::Facts;
-use super::scan::{Scanner, Tok, first_on_line, for_lexer};
+use super::scan::{Scanner, Tok, for_lexer, line_firsts};
 use super::{Import, ObjectKind};
 use crate::ast::PouKind;
 use crate::plcopen::map::Writer;
@@ -40,6 +40,7 @@ pub(super) fn collect_tasks(imports: &[&mut Import], facts: &mut Facts) {
             let toks: Vec<(Tok, Range<usize>)> = Scanner::new(text, o.decl.clone(), o.nested)
                 .filter(|(t, _)| !matches!(t, Tok::Comment { .. } | Tok::Pragma))
                 .collect();
+            let firsts = line_firsts(text, o.decl.start, &toks);
             let mut tasks: Vec<Task> = Vec::new();
             let mut j = 0;
             while j < toks.len() {
@@ -47,8 +48,7 @@ pub(super) fn collect_tasks(imports: &[&mut Import], facts: &mut Facts) {
                 let w = &text[r.clone()];
                 let semi = (j..toks.len())
                     .find(|&n| toks[n].0 == Tok::Punct && &text[toks[n].1.clone()] == ";");
-                if *t == Tok::Word && w.eq_ignore_ascii_case("TASK") && first_on_line(text, r.start)
-                {
+                if *t == Tok::Word && w.eq_ignore_ascii_case("TASK") && firsts[j] {
                     let name = toks.get(j + 1).map(|t| text[t.1.clone()].to_string());
                     if let (Some(name), Some(s)) = (name, semi) {
                         tasks.push(Task {
@@ -62,7 +62,7 @@ pub(super) fn collect_tasks(imports: &[&mut Import], facts: &mut Facts) {
                 }
                 // `Prog();` or `Prog(a := b);` inside a TASK.
                 if *t == Tok::Word
-                    && first_on_line(text, r.start)
+                    && firsts[j]
                     && toks.get(j + 1).is_some_and(|n| &text[n.1.clone()] == "(")
                     && let (Some(task), Some(s)) = (tasks.last_mut(), semi)
                 {

@@ -216,10 +216,22 @@ fn is_string_kw(w: &str) -> bool {
     w.eq_ignore_ascii_case("STRING") || w.eq_ignore_ascii_case("WSTRING")
 }
 
-/// Whether the token at `at` is the first thing on its line.
-pub(super) fn first_on_line(text: &str, at: usize) -> bool {
-    let line_start = text[..at].rfind('\n').map_or(0, |k| k + 1);
-    text[line_start..at].trim().is_empty()
+/// For each token of `toks` (in order), whether it is the first on its
+/// line: a line break lies between it and the token before (whose end is
+/// `from` for the first). Linear in the text, where searching back to each
+/// token's line start grew with the square of a long line.
+pub(super) fn line_firsts(text: &str, from: usize, toks: &[(Tok, Range<usize>)]) -> Vec<bool> {
+    // Before the first token: its line from the start up to `from`.
+    let mut prev = line_start(text, from.min(text.len()));
+    toks.iter()
+        .enumerate()
+        .map(|(k, (_, r))| {
+            let gap = &text[prev.min(r.start)..r.start];
+            let first = gap.contains('\n') || k == 0 && gap.trim().is_empty();
+            prev = r.end;
+            first
+        })
+        .collect()
 }
 
 /// The end of the line holding `at`, after its line break.

@@ -13,7 +13,7 @@
 
 use std::ops::Range;
 
-use super::scan::{Scanner, Tok, first_on_line, line_start, next_line};
+use super::scan::{Scanner, Tok, line_start, next_line};
 use super::{Language, Object, ObjectKind, codes};
 use crate::ast::{PouKind, Span};
 use crate::diag::Diagnostic;
@@ -124,8 +124,17 @@ impl Splitter<'_> {
         let text = self.text;
         let mut state = State::Outside;
         let mut sc = Scanner::new(text, 0..text.len(), true);
+        // The end of the token before: a token is first on its line when a
+        // line break lies between (see `scan::line_firsts`).
+        let mut prev_end = 0usize;
         while let Some((tok, r)) = sc.next() {
-            if !first_on_line(text, r.start) {
+            let first = if prev_end == 0 {
+                text[..r.start].trim().is_empty() || text[..r.start].contains('\n')
+            } else {
+                text[prev_end.min(r.start)..r.start].contains('\n')
+            };
+            prev_end = r.end;
+            if !first {
                 continue;
             }
             let word = &text[r.clone()];
