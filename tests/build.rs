@@ -77,6 +77,13 @@ fn main() {
         .out_dir(out.join("exp"))
         .compile()
         .unwrap_or_else(|e| panic!("\n{e}"));
+    // Host blocks with an in-out and a host PROGRAM (CFC), bodies in
+    // src/lib.rs (exp_host_build).
+    il_codegen::Builder::new()
+        .file("exp/host_blocks.EXP")
+        .out_dir(out.join("exp_host"))
+        .compile()
+        .unwrap_or_else(|e| panic!("\n{e}"));
 
     let corpus = Path::new("../../shared/corpus");
     let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));

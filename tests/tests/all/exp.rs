@@ -47,3 +47,22 @@ fn the_project_runs_through_build_rs() {
 fn the_project_runs_through_il() {
     scans!(exp_macro);
 }
+
+#[test]
+fn host_blocks_with_in_outs_and_a_host_program() {
+    use il_tests::exp_host_build::{Logger, UsesAccumulate};
+    let mut ctx = Cycle::new();
+    let mut u = UsesAccumulate {
+        x: 5,
+        ..Default::default()
+    };
+    for k in 1..=3 {
+        u.call(&mut ctx);
+        assert_eq!(u.total, 5 * k);
+    }
+    assert_eq!(u.acc.calls, 3);
+    let mut l = Logger::default();
+    l.call(&mut ctx);
+    l.call(&mut ctx);
+    assert_eq!(l.lines, 2);
+}
