@@ -189,6 +189,10 @@ pub struct Import {
     /// IL ranges of globals declared in another file, with a note saying
     /// where (the generated CONFIGURATION holds the whole project's).
     foreign: Vec<(Range<usize>, String)>,
+    /// The upper-case names of the project's globals that are not
+    /// CONSTANT: a FUNCTION naming one gets a note (IEC FUNCTIONs have no
+    /// VAR_EXTERNAL; CODESYS lets them read globals).
+    globals: std::collections::HashSet<String>,
 }
 
 /// Whether a source is a CODESYS export: its name ends in `.exp` (any
@@ -234,6 +238,7 @@ impl Import {
             left_out,
             split_diags,
             foreign: Vec::new(),
+            globals: Default::default(),
         };
         let mut one = [&mut i];
         assemble(&mut one);
@@ -258,6 +263,12 @@ impl Import {
         let lo = d.span.lo as usize;
         if let Some((_, note)) = self.foreign.iter().find(|(r, _)| r.contains(&lo)) {
             d.notes.push(note.clone());
+        }
+        let word = self.il.snippet(d.span).trim();
+        if d.code == "IL0101" && self.globals.contains(&word.to_ascii_uppercase()) {
+            d.notes.push(format!(
+                "`{word}` is a global of this project: a PROGRAM or FUNCTION_BLOCK sees it, a FUNCTION does not (IEC FUNCTIONs have no VAR_EXTERNAL): pass it as an input"
+            ));
         }
         d.span = self.map.to_xml(d.span);
         if let Some(folder) = self.folder_at(d.span.lo) {

@@ -131,6 +131,12 @@ pub(crate) fn assemble(imports: &mut [&mut Import]) {
     for (me, imp) in imports.iter_mut().enumerate() {
         let (w, diags, foreign) = super::write::write(imp, me, &facts);
         imp.foreign = foreign;
+        imp.globals = facts
+            .globals
+            .iter()
+            .filter(|g| !g.constant)
+            .map(|g| g.name.to_ascii_uppercase())
+            .collect();
         let (text, map) = w.finish();
         imp.il = crate::diag::SourceFile::new(imp.exp.name.clone(), text);
         imp.map = map;

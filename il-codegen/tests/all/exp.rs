@@ -445,3 +445,23 @@ fn a_syntax_error_in_one_object_leaves_the_others_checked() {
     assert_eq!(codes[0].1, 5, "{}", c.render(false));
     assert_eq!(codes[1], ("IL0101", 11), "{}", c.render(false));
 }
+
+#[test]
+fn a_function_that_reads_a_global_gets_a_note() {
+    let f = "FUNCTION Get : INT\nVAR_INPUT a : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nLD count\nADD N\nST Get\nEND_FUNCTION\n";
+    let c = check(vec![
+        SourceFile::new("G.EXP", GVL),
+        SourceFile::new("F.EXP", f),
+    ]);
+    let d = &c.diagnostics()[1];
+    // N is CONSTANT: a local constant, fine in a FUNCTION; count is not.
+    assert_eq!(d.len(), 1, "{}", c.render(false));
+    assert_eq!(d[0].code, "IL0101");
+    assert!(
+        d[0].notes
+            .iter()
+            .any(|n| n.contains("`count` is a global of this project")),
+        "{:?}",
+        d[0].notes
+    );
+}
