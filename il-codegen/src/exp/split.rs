@@ -275,7 +275,9 @@ impl Splitter<'_> {
                     self.objects.push(obj);
                     return State::Outside;
                 }
-                if starts_object(word) {
+                // (An SFC body holds its step actions, `ACTION a: ...
+                // END_ACTION`, before the END_: no new object there.)
+                if starts_object(word) && !kw(word, "ACTION") {
                     // The next object begins before this one ended.
                     self.truncated(&obj, r.start);
                     return self.start(word, r, sc);
@@ -450,7 +452,10 @@ impl Splitter<'_> {
                 let base = w.trim_start_matches('_').to_string();
                 let mut obj = self.new_object(ObjectKind::Skipped(skipped_name(&base)), r.start);
                 obj.keyword = r.clone();
-                obj.name = base.clone();
+                // `VISUALISATION PLC_VISU ...` has a name; `_WORKSPACE` none.
+                if obj.name.is_empty() {
+                    obj.name = base.clone();
+                }
                 return State::Until {
                     obj,
                     ends: vec![format!("_END_{base}"), format!("END_{base}")],

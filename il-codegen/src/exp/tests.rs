@@ -40,3 +40,17 @@ fn st_bodies_are_interfaces() {
     assert!(!i.il.text.contains("BLINK"), "{}", i.il.text);
     assert!(!i.il.text.contains("IF a"), "{}", i.il.text);
 }
+
+#[test]
+fn sfc_bodies_and_visualisations() {
+    let i = import(
+        "(* @NESTEDCOMMENTS := 'Yes' *)\nPROGRAM Seq\nVAR_OUTPUT q : BOOL; END_VAR\n(* @END_DECLARATION := '0' *)\nINITIAL_STEP Init:\nEND_STEP\nACTION Init_active:\nq := TRUE;\nEND_ACTION\nTRANSITION FROM Init TO Init := TRUE;\nEND_TRANSITION\nEND_PROGRAM\n\n(* @NESTEDCOMMENTS := 'Yes' *)\n(* @PATH := '' *)\nVISUALISATION PLC_VISU _VISU_TYPES : 1,1\n_BG_BMP : ''\nEND_VISUALISATION\n",
+    );
+    let o = i.objects();
+    assert_eq!(o.len(), 2, "{o:?}");
+    assert_eq!(o[0].language, Language::Sfc);
+    assert_eq!(o[1].kind, ObjectKind::Skipped("a visualisation"));
+    assert_eq!(o[1].name, "PLC_VISU");
+    let codes: Vec<&str> = i.diagnostics.iter().map(|d| d.code).collect();
+    assert_eq!(codes, [codes::NOT_IL]);
+}
