@@ -67,6 +67,24 @@ fn main() {
         .compile()
         .unwrap_or_else(|e| panic!("\n{e}"));
 
+    // A CODESYS V2.3 project (.EXP, Windows-1252) whose FUNCTION_BLOCK
+    // `Scale` is in ST: host-provided, the crate supplies its body
+    // (src/lib.rs, exp_build).
+    println!("cargo:rerun-if-changed=exp");
+    il_codegen::Builder::new()
+        .file("exp/project.EXP")
+        .encoding("windows-1252")
+        .out_dir(out.join("exp"))
+        .compile()
+        .unwrap_or_else(|e| panic!("\n{e}"));
+    // Host blocks with an in-out and a host PROGRAM (CFC), bodies in
+    // src/lib.rs (exp_host_build).
+    il_codegen::Builder::new()
+        .file("exp/host_blocks.EXP")
+        .out_dir(out.join("exp_host"))
+        .compile()
+        .unwrap_or_else(|e| panic!("\n{e}"));
+
     let corpus = Path::new("../../shared/corpus");
     let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));
     if corpus.join("beremiz_matiec_cmd_monitor_il.txt").exists() {

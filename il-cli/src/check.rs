@@ -33,10 +33,12 @@ pub fn use_color(when: &str) -> bool {
 
 /// Run `ilc check` over `paths`, writing JSON to `out` and everything else to
 /// `err`. Returns the totals; the caller turns them into the exit status.
+#[allow(clippy::too_many_arguments)]
 pub fn run(
     paths: &[String],
     format: Format,
     color: bool,
+    verbose: bool,
     front: crate::input::Front,
     progress: bool,
     out: &mut dyn Write,
@@ -84,6 +86,9 @@ pub fn run(
             }
         }
     }
+    if verbose && format == Format::Human {
+        skipped(&checked, err);
+    }
     if format == Format::Human
         && let Some(s) = summary(&totals)
     {
@@ -102,6 +107,26 @@ pub fn run(
     // left to the operating system.
     std::mem::forget(checked);
     totals
+}
+
+/// `--verbose`: one note per object of a CODESYS export that was not
+/// compiled (libraries, the PLC configuration, visualisations ...; an
+/// object exported twice).
+fn skipped(checked: &il_codegen::Checked, err: &mut dyn Write) {
+    for input in checked.inputs() {
+        let il_codegen::Input::Exp(e) = input else {
+            continue;
+        };
+        for (k, o) in e.objects().iter().enumerate() {
+            let line = e.exp.line_of(o.keyword.start as u32);
+            let what = match &o.kind {
+                il_codegen::exp::ObjectKind::Skipped(what) => format!("{what} `{}`", o.name),
+                _ if e.is_left_out(k) => format!("`{}`, the same as an object read before", o.name),
+                _ => continue,
+            };
+            let _ = writeln!(err, "note: {}:{line}: skipped {what}", e.exp.name);
+        }
+    }
 }
 
 fn plural(n: usize, word: &str) -> String {

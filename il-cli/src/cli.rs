@@ -128,6 +128,13 @@ pub fn command() -> Command {
                         .value_parser(PossibleValuesParser::new(["auto", "always", "never"]))
                         .default_value("auto"),
                 )
+                .arg(
+                    Arg::new("verbose")
+                        .long("verbose")
+                        .short('v')
+                        .action(ArgAction::SetTrue)
+                        .help("Also list what was not compiled: the objects of a CODESYS export (.EXP) that are no code, one note each"),
+                )
                 .arg(std_arg())
                 .arg(snippet_arg()),
         )
@@ -166,10 +173,11 @@ pub fn command() -> Command {
                 .about("Simulate scans of a PROGRAM or CONFIGURATION with the interpreter and print a table")
                 .after_long_help(crate::run::EXAMPLES)
                 .arg(
-                    Arg::new("file")
+                    Arg::new("files")
                         .value_name("FILE")
                         .required(true)
-                        .help("IL source file, or a PLCopen XML project (known by its text)"),
+                        .num_args(1..)
+                        .help("IL source file, or a PLCopen XML project (known by its text), or the .EXP files (or folder) of a CODESYS project, read as one program"),
                 )
                 .arg(Arg::new("program").long("program").value_name("NAME").help(
                     "The PROGRAM (or FUNCTION_BLOCK) to run; default: the file's only CONFIGURATION, else its only PROGRAM",

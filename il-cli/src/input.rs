@@ -19,6 +19,38 @@ pub fn read_source(path: &str, encoding: il_codegen::read::Encoding) -> Result<S
     read.map_err(|e| e.to_string())
 }
 
+/// The paths given, with each folder replaced by its source files (`.exp`,
+/// `.il`, `.xml`, any case), sorted: a CODESYS project exported one object
+/// per file is given as its folder (`ilc check project/`).
+pub fn expand(paths: impl Iterator<Item = String>) -> Vec<String> {
+    let mut out = Vec::new();
+    for p in paths {
+        let Ok(entries) = std::fs::read_dir(&p) else {
+            out.push(p);
+            continue;
+        };
+        let mut inner: Vec<String> = entries
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|f| {
+                f.is_file()
+                    && f.extension().is_some_and(|e| {
+                        ["exp", "il", "xml"]
+                            .iter()
+                            .any(|x| e.eq_ignore_ascii_case(x))
+                    })
+            })
+            .map(|f| f.display().to_string())
+            .collect();
+        inner.sort();
+        if inner.is_empty() {
+            // Read as given: the error says it is a directory.
+            out.push(p);
+        }
+        out.extend(inner);
+    }
+    out
+}
+
 /// `--std=iec2003`: refuse the 3rd-edition and vendor forms (pragmas,
 /// implicit widening, partial access), each with an error naming it.
 pub fn std_arg() -> Arg {

@@ -22,12 +22,7 @@ fn main() -> ExitCode {
     let matches = cli::command().get_matches();
     match matches.subcommand() {
         Some(("check", m)) => {
-            let files: Vec<String> = m
-                .get_many::<String>("files")
-                .into_iter()
-                .flatten()
-                .cloned()
-                .collect();
+            let files = input::expand(m.get_many::<String>("files").into_iter().flatten().cloned());
             let format = match m.get_one::<String>("message-format").map(String::as_str) {
                 Some("json") => check::Format::Json,
                 _ => check::Format::Human,
@@ -38,6 +33,7 @@ fn main() -> ExitCode {
                 &files,
                 format,
                 color,
+                m.get_flag("verbose"),
                 input::Front::of(m),
                 io::stderr().is_terminal(),
                 &mut io::stdout().lock(),
@@ -50,12 +46,7 @@ fn main() -> ExitCode {
             }
         }
         Some(("emit", m)) => {
-            let files: Vec<String> = m
-                .get_many::<String>("files")
-                .into_iter()
-                .flatten()
-                .cloned()
-                .collect();
+            let files = input::expand(m.get_many::<String>("files").into_iter().flatten().cloned());
             let dir = m.get_one::<String>("out-dir").map(std::path::PathBuf::from);
             let color =
                 check::use_color(m.get_one::<String>("color").map_or("auto", String::as_str));
@@ -105,7 +96,7 @@ fn main() -> ExitCode {
         }
         Some(("run", m)) => {
             let opts = run::Options {
-                file: m.get_one::<String>("file").cloned().unwrap_or_default(),
+                files: input::expand(m.get_many::<String>("files").into_iter().flatten().cloned()),
                 program: m.get_one::<String>("program").cloned(),
                 config: m.get_one::<String>("config").cloned(),
                 cycles: m.get_one::<u64>("cycles").copied().unwrap_or(10),

@@ -126,7 +126,9 @@ pub fn parse_step(s: &str) -> Result<TIME, String> {
 }
 
 pub struct Options {
-    pub file: String,
+    /// The sources, read as one program (several `.EXP` files of one
+    /// CODESYS project, or a folder of them, expanded by the caller).
+    pub files: Vec<String>,
     pub program: Option<String>,
     /// `--config NAME`: run this CONFIGURATION.
     pub config: Option<String>,
@@ -146,6 +148,20 @@ pub struct Options {
     pub flow: bool,
 }
 
+/// The checked programs of several files as one.
+fn join(many: &[il_codegen::ir::Program]) -> il_codegen::ir::Program {
+    let mut out = il_codegen::ir::Program {
+        file: many.first().map(|p| p.file.clone()).unwrap_or_default(),
+        ..Default::default()
+    };
+    for p in many {
+        out.types.extend(p.types.iter().cloned());
+        out.pous.extend(p.pous.iter().cloned());
+        out.configs.extend(p.configs.iter().cloned());
+    }
+    out
+}
+
 /// Run and print; the exit status (0 fine, 1 error).
 pub fn run(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> u8 {
     match simulate(o, out, err) {
@@ -162,11 +178,27 @@ pub fn run(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> u8 {
 fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), String> {
     // An XML file (by its text or a `.xml` name) is a PLCopen project: its
     // IL POUs are run.
-    let program = o.front.program(vec![o.front.read(&o.file)?]);
+    let files = o
+        .files
+        .iter()
+        .map(|f| o.front.read(f))
+        .collect::<Result<Vec<_>, _>>()?;
+    let program = o.front.program(files);
     let checked = program.check();
     let _ = write!(err, "{}", checked.render(o.color));
-    let Some([prog]) = checked.ir() else {
-        return Err(format!("`{}` has errors; nothing was run", o.file));
+    let file = o.files.join("`, `");
+    let Some(progs) = checked.ir() else {
+        return Err(format!("`{file}` has errors; nothing was run"));
+    };
+    // Several files are one program: the interpreter finds POUs, types and
+    // configurations by name, so their checked programs are joined.
+    let joined;
+    let prog = match progs {
+        [one] => one,
+        many => {
+            joined = join(many);
+            &joined
+        }
     };
     let lines = crate::flow::SourceLines::of(&checked);
     if o.program.is_some() && o.config.is_some() {
@@ -181,9 +213,17 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
     // A CONFIGURATION is run when named, or when no --program is given and
     // the file's only CONFIGURATION is the one thing to run (a file with one
     // PROGRAM runs that program, as it did before configurations could run).
+    // A CODESYS project with a task configuration runs it, as the PLC does.
+    let exp_tasks = checked.inputs().iter().any(|i| match i {
+        il_codegen::Input::Exp(e) => e
+            .objects()
+            .iter()
+            .any(|ob| ob.kind == il_codegen::exp::ObjectKind::Tasks),
+        _ => false,
+    });
     let config = match (&o.config, &o.program, prog.configs.as_slice()) {
         (Some(c), _, _) => Some(c.clone()),
-        (None, None, [one]) if programs.len() != 1 => Some(one.name.clone()),
+        (None, None, [one]) if programs.len() != 1 || exp_tasks => Some(one.name.clone()),
         _ => None,
     };
     if let Some(c) = config {
@@ -196,8 +236,7 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
             [one] => one.to_string(),
             [] => {
                 return Err(format!(
-                    "`{}` has no PROGRAM; name a FUNCTION_BLOCK with --program",
-                    o.file
+                    "`{file}` has no PROGRAM; name a FUNCTION_BLOCK with --program"
                 ));
             }
             many => {
@@ -211,8 +250,7 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
                     )
                 };
                 return Err(format!(
-                    "`{}` has several PROGRAMs ({}); choose one with --program{also}",
-                    o.file,
+                    "`{file}` has several PROGRAMs ({}); choose one with --program{also}",
                     many.join(", ")
                 ));
             }
@@ -231,6 +269,16 @@ fn scan_table<T: Target>(
     err: &mut dyn Write,
 ) -> Result<(), String> {
     for p in prog.pous.iter().filter(|p| p.host) {
+        if p.kind != il_codegen::ast::PouKind::Function {
+            writeln!(
+                err,
+                "note: `{}` is a host {} (its body is the crate's Rust code, or not IL): `ilc run` runs its interface only; its outputs keep their values",
+                p.name,
+                p.kind.keyword()
+            )
+            .map_err(|e| e.to_string())?;
+            continue;
+        }
         let ret = p.ret.as_ref().map_or("BOOL".to_string(), |t| t.to_string());
         writeln!(
             err,
@@ -368,7 +416,12 @@ fn scan_table<T: Target>(
     out.write_all(text.as_bytes())
         .map_err(|e| format!("cannot write the table: {e}"))?;
     if let Some((k, time, rec)) = flow {
-        let source = std::fs::read_to_string(&o.file).ok();
+        // The lines' text when the program is one file (the recorded lines
+        // carry no file: with several, only their numbers are shown).
+        let source = match &o.files[..] {
+            [one] => std::fs::read_to_string(one).ok(),
+            _ => None,
+        };
         crate::flow::print(&rec, (source.as_deref(), lines), k, &time, out)
             .map_err(|e| format!("cannot write the flow: {e}"))?;
     }

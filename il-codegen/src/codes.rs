@@ -13,6 +13,7 @@ pub fn all() -> impl Iterator<Item = &'static CodeInfo> {
         .chain(crate::diag::codes::CODES)
         .chain(crate::sema::CODES)
         .chain(crate::plcopen::CODES)
+        .chain(crate::exp::CODES)
         .chain(crate::dialect::CODES)
 }
 

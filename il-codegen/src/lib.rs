@@ -59,6 +59,7 @@ mod builder;
 pub mod codes;
 pub mod diag;
 pub mod dialect;
+pub mod exp;
 pub mod format;
 pub mod ir;
 pub mod plcopen;

@@ -313,7 +313,17 @@ impl Machine {
             vars[i] = self.init_of(&v.ty, v.init.as_ref())?;
         }
         let mut f = self.frame(pou, vars, edges)?;
-        let r = self.run(&mut f, ctx);
+        // A host block (`{extern}`, or a CODESYS POU not in IL): the
+        // registered closure is its body (its result is no block's); without
+        // one it is its interface only, its outputs keep their values.
+        let r = if self.prog.pous[pou].host {
+            if let Some(h) = self.hosts.get(&self.prog.pous[pou].name).cloned() {
+                let _ = h(ctx, &mut f.vars);
+            }
+            Ok(())
+        } else {
+            self.run(&mut f, ctx)
+        };
         inst.vars = f.vars;
         r
     }

@@ -3,6 +3,11 @@
 //! of the same meaning. Without one, the call runs the declared interface
 //! only: the result is its type's default and outputs keep their initial
 //! values (what `ilc run` does, and says, for a program that calls one).
+//!
+//! A host FUNCTION_BLOCK or PROGRAM (`{extern}`, or a POU of a CODESYS
+//! export whose body is not IL) is registered the same way: the closure
+//! gets the instance's variables in declaration order, changes them, and
+//! its result is ignored; without one, a call changes nothing.
 
 use crate::values::Value;
 use il_std::Cycle;

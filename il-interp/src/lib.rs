@@ -205,6 +205,9 @@ impl Machine {
     /// FUNCTION: the generated code calls the crate's Rust function of that
     /// name, the interpreter this closure). Without one, a call returns the
     /// result type's default and leaves the outputs at their initial values.
+    /// A host FUNCTION_BLOCK or PROGRAM (`{extern}`, or a CODESYS POU whose
+    /// body is not IL) is registered the same way: `f` gets the instance's
+    /// variables in declaration order and its result is ignored.
     pub fn host_function(
         &mut self,
         name: &str,

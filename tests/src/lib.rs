@@ -73,6 +73,50 @@ pub mod encodings_macro {
     il_macros::il!(file = "plc-encodings/anzeige_1252.exp");
 }
 
+/// `exp/project.EXP`: a CODESYS V2.3 export (Windows-1252) through
+/// build.rs. Its FUNCTION_BLOCK `Scale` is in Structured Text, so its body
+/// is the crate's: `fn Scale` beside the generated struct.
+pub mod exp_build {
+    include!(concat!(env!("OUT_DIR"), "/exp/project.rs"));
+
+    /// `Scale`'s ST body, `o := i * 10;`, in Rust.
+    #[allow(non_snake_case)]
+    pub fn Scale(this: &mut Scale, _ctx: &mut il_std::Cycle) {
+        this.o = this.i.wrapping_mul(10);
+    }
+}
+
+/// `exp/host_blocks.EXP`: an ST block with a VAR_IN_OUT, called from IL,
+/// and a CFC PROGRAM, their bodies in Rust.
+pub mod exp_host_build {
+    include!(concat!(env!("OUT_DIR"), "/exp_host/host_blocks.rs"));
+
+    /// `sum := sum + x; calls := calls + 1;`: the in-out comes after the
+    /// context.
+    #[allow(non_snake_case)]
+    pub fn Accumulate(this: &mut Accumulate, _ctx: &mut il_std::Cycle, sum: &mut i32) {
+        *sum = sum.wrapping_add(i32::from(this.x));
+        this.calls = this.calls.wrapping_add(1);
+    }
+
+    /// The CFC program's body.
+    #[allow(non_snake_case)]
+    pub fn Logger(this: &mut Logger, _ctx: &mut il_std::Cycle) {
+        this.lines += 1;
+    }
+}
+
+/// The same project through `il!`.
+pub mod exp_macro {
+    il_macros::il!(file = "exp/project.EXP", encoding = "windows-1252");
+
+    /// `Scale`'s ST body, `o := i * 10;`, in Rust.
+    #[allow(non_snake_case)]
+    pub fn Scale(this: &mut Scale, _ctx: &mut il_std::Cycle) {
+        this.o = this.i.wrapping_mul(10);
+    }
+}
+
 /// The tank controller of the new-user test (`new-user/plc`): two files,
 /// one program, through one `il!(files = [...])`.
 pub mod tank_macro {

@@ -23,14 +23,20 @@ END_FUNCTION
 "#);
 }
 
-// Semantics: {extern} before a PROGRAM (it marks FUNCTIONs only).
-mod host_before_program { il_macros::il!(r#"
+// Semantics: {extern} before a TYPE (it marks POUs only).
+mod host_before_type { il_macros::il!(r#"
 {extern}
-PROGRAM P
-VAR x : INT; END_VAR
-    LD x
-    ST x
-END_PROGRAM
+TYPE t : INT; END_TYPE
+"#); }
+
+// A host FUNCTION_BLOCK whose body the crate does not provide: rustc names
+// it at the signature check.
+mod host_block_missing { il_macros::il!(r#"
+{extern}
+FUNCTION_BLOCK Scale
+VAR_INPUT i : INT; END_VAR
+VAR_OUTPUT o : INT; END_VAR
+END_FUNCTION_BLOCK
 "#); }
 
 // Semantics: a host FUNCTION with instructions (its body is Rust).

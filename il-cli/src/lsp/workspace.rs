@@ -191,7 +191,7 @@ impl Workspace {
         ))
     }
 
-    /// Add the `.il` files under a workspace folder (not its hidden folders,
+    /// Add the `.il` and `.exp` (CODESYS export) files under a workspace folder (not its hidden folders,
     /// `target` or `node_modules`).
     pub fn scan(&mut self, root: &Path) {
         let mut stack = vec![(root.to_path_buf(), 0)];
@@ -211,7 +211,9 @@ impl Workspace {
                     {
                         stack.push((p, depth + 1));
                     }
-                } else if p.extension().is_some_and(|e| e.eq_ignore_ascii_case("il"))
+                } else if p
+                    .extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case("il") || e.eq_ignore_ascii_case("exp"))
                     && self.docs.len() < MAX_FILES
                     && let Some(uri) = path_to_uri(&p)
                     && self.doc(&uri).is_none()
@@ -390,6 +392,35 @@ mod tests {
         assert_eq!(ws.docs.len(), 1);
         assert_eq!(ws.docs[0].uri, editor);
         assert_eq!(ws.docs[0].text, "b");
+    }
+
+    /// The `.EXP` files of one folder are one CODESYS project: a global of
+    /// one is known in another, and diagnostics are at the export's lines.
+    #[test]
+    fn exp_documents_of_a_folder_are_one_project() {
+        let mut ws = Workspace::default();
+        ws.open(
+            "file:///plc/G.EXP".parse().unwrap(),
+            "(* @NESTEDCOMMENTS := 'Yes' *)\n(* @GLOBAL_VARIABLE_LIST := 'G' *)\nVAR_GLOBAL\n\tcount : INT;\nEND_VAR\n(* @OBJECT_END := 'G' *)\n".into(),
+        );
+        ws.open(
+            "file:///plc/PLC_PRG.EXP".parse().unwrap(),
+            "(* @NESTEDCOMMENTS := 'Yes' *)\n(* @PATH := '\\/Main' *)\nPROGRAM PLC_PRG\nVAR x : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nLD count\nST x\nLD y\nEND_PROGRAM\n".into(),
+        );
+        ws.check();
+        assert_eq!(ws.analysis.diagnostics[0], []);
+        let d = &ws.analysis.diagnostics[1];
+        assert_eq!(d.len(), 1, "{d:?}");
+        assert_eq!(
+            d[0].code,
+            Some(lsp_types::NumberOrString::String("IL0101".into()))
+        );
+        assert_eq!((d[0].range.start.line, d[0].range.start.character), (7, 3));
+        // The POU's symbol shows its project folder.
+        let syms =
+            super::super::symbols::document(&ws, &"file:///plc/PLC_PRG.EXP".parse().unwrap());
+        assert_eq!(syms[0].name, "PLC_PRG");
+        assert_eq!(syms[0].detail.as_deref(), Some("PROGRAM · /Main"));
     }
 
     /// The editor's name for a document does not decide its language: its

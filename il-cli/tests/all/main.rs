@@ -8,6 +8,7 @@ mod debug;
 mod dialect;
 mod docs;
 mod encodings;
+mod exp;
 mod explain;
 mod fmt;
 mod lsp;

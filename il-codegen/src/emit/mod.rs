@@ -311,18 +311,34 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
                 let (id, l) = (rust_ident(&v.name), names::cache_ident(&v.name));
                 o.code(&format!("let mut {l}: {} = self.{id};", rust_ty(&v.ty)));
             }
-            p.complements(o);
-            p.locals(o);
-            // RET leaves the labelled block, so the values are written back.
-            if cached.is_empty() {
+            if pou.host {
+                // A host block (`{extern}`, or a CODESYS POU whose body is
+                // not IL): the crate's `fn Name(&mut Name, &mut Cycle,
+                // in-outs...)`, a value beside the struct of that name.
+                let args = tail(
+                    pou.vars
+                        .iter()
+                        .filter(|v| v.kind == VarKind::InOut)
+                        .map(|v| local_ident(&v.name)),
+                );
+                o.code(&format!("{name}(self, __ctx{args});"));
+            } else if cached.is_empty() {
+                p.complements(o);
+                p.locals(o);
                 p.body(o);
             } else {
+                p.complements(o);
+                p.locals(o);
+                // RET leaves the labelled block, so the values are written back.
                 o.code("'__body: {");
                 let at_end = p.body(o);
                 o.code("}");
                 p.write_back(o, &at_end);
             }
             o.code("} }");
+            if pou.host {
+                emit_host_block_check(o, pou);
+            }
             // The generic trait fits blocks called with the context alone.
             if inouts.is_empty() && externals.is_empty() {
                 o.code(&format!(
@@ -475,6 +491,28 @@ fn emit_host_check(o: &mut Out, pou: &CheckedPou) {
     ));
     o.code(&format!(
         "{d} const _: fn(&mut ::il_std::Cycle{types}) -> {ret_ty} = {name};"
+    ));
+}
+
+/// A host FUNCTION_BLOCK or PROGRAM: the crate provides `fn Name(&mut
+/// Name, &mut Cycle, in-outs...)`; this constant checks its signature, so
+/// a missing or mistyped one is a rustc error that names it here.
+fn emit_host_block_check(o: &mut Out, pou: &CheckedPou) {
+    let name = item_ident(&pou.name);
+    let inouts: Vec<String> = pou
+        .vars
+        .iter()
+        .filter(|v| v.kind == VarKind::InOut)
+        .map(|v| format!("&mut {}", rust_ty(&v.ty)))
+        .collect();
+    let types = tail(inouts.iter());
+    let d = doc(&format!(
+        " Host {} `{}`: its body is not generated. The crate provides `fn {name}(this: &mut {name}, ctx: &mut ::il_std::Cycle{types})` beside this code, which runs one call on the struct's fields; this constant checks that it exists with that signature.",
+        pou.kind.keyword(),
+        pou.name
+    ));
+    o.code(&format!(
+        "{d} const _: fn(&mut {name}, &mut ::il_std::Cycle{types}) = {name};"
     ));
 }
 

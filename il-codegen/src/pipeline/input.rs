@@ -4,6 +4,7 @@
 
 use super::snippet::Snippet;
 use crate::diag::{Diagnostic, SourceFile};
+use crate::exp::Import as ExpImport;
 use crate::plcopen::Import;
 
 /// One source file of a program.
@@ -15,6 +16,9 @@ pub enum Input {
     PlcOpen(Box<Import>),
     /// A bare instruction list, compiled as the body of a PROGRAM.
     Snippet(Box<Snippet>),
+    /// A CODESYS V2.3 / TwinCAT 2 export (`.EXP`), translated to IL with
+    /// the program's other exports.
+    Exp(Box<ExpImport>),
 }
 
 impl Input {
@@ -35,11 +39,21 @@ impl Input {
         Input::Snippet(Box::new(Snippet::new(file)))
     }
 
+    /// A CODESYS export (`.EXP`), cut into its objects now; the program
+    /// translates all its exports together when it is checked.
+    pub fn exp(file: SourceFile) -> Input {
+        Input::Exp(Box::new(ExpImport::new(file)))
+    }
+
     /// PLCopen XML when the file is XML ([`is_xml`]: its text starts with
-    /// `<`, or its name ends in `.xml`), IL otherwise.
+    /// `<`, or its name ends in `.xml`), a CODESYS export when it is one
+    /// ([`crate::exp::is_exp`]: a `.exp` name or an object header first),
+    /// IL otherwise.
     pub fn by_content(file: SourceFile) -> Input {
         if is_xml(&file.name, &file.text) {
             Input::plcopen(file)
+        } else if crate::exp::is_exp(&file.name, &file.text) {
+            Input::exp(file)
         } else {
             Input::il(file)
         }
@@ -51,6 +65,7 @@ impl Input {
             Input::Il(f) => f,
             Input::PlcOpen(i) => &i.xml,
             Input::Snippet(s) => &s.file,
+            Input::Exp(i) => &i.exp,
         }
     }
 
@@ -60,6 +75,7 @@ impl Input {
             Input::Il(f) => f,
             Input::PlcOpen(i) => &i.il,
             Input::Snippet(s) => &s.il,
+            Input::Exp(i) => &i.il,
         }
     }
 
@@ -69,6 +85,7 @@ impl Input {
             Input::Il(_) => span,
             Input::PlcOpen(i) => i.map.to_xml(span),
             Input::Snippet(s) => s.to_file(span),
+            Input::Exp(i) => i.map.to_xml(span),
         }
     }
 
@@ -83,6 +100,11 @@ impl Input {
                 out
             }
             Input::Snippet(s) => s.finish(diags),
+            Input::Exp(i) => {
+                let mut out = i.diagnostics.clone();
+                out.extend(diags.into_iter().map(|d| i.to_exp(d)));
+                out
+            }
         };
         out.extend(self.source().read_diagnostics.iter().cloned());
         out.sort_by_key(|d| (d.span.lo, d.span.hi));

@@ -99,7 +99,20 @@ impl Program {
     }
 
     /// Parse and check every input.
-    pub fn check(self) -> Checked {
+    pub fn check(mut self) -> Checked {
+        // The CODESYS exports of the program are one project: their
+        // global lists and task configuration are read together.
+        let mut exps: Vec<&mut crate::exp::Import> = self
+            .inputs
+            .iter_mut()
+            .filter_map(|i| match i {
+                Input::Exp(e) => Some(&mut **e),
+                _ => None,
+            })
+            .collect();
+        if exps.len() > 1 {
+            crate::exp::assemble(&mut exps);
+        }
         let files: Vec<&SourceFile> = self.inputs.iter().map(Input::il_text).collect();
         let mut units = Vec::new();
         let mut diags: Vec<Vec<Diagnostic>> = Vec::new();
@@ -114,14 +127,27 @@ impl Program {
         // mostly repeat them); the others are checked together. A pragma
         // refused by the strict standard is no damage to the syntax tree, so
         // such a file is still checked (and gets its other refusals too).
-        let clean: Vec<usize> = (0..files.len())
-            .filter(|&i| {
-                !diags[i]
-                    .iter()
-                    .any(|d| d.is_error() && d.code != crate::dialect::codes::PRAGMA)
+        // A CODESYS export holds many objects: one whose IL has a syntax
+        // error is left out of the check, and the export's other objects
+        // are checked (`pruned`).
+        let pruned: Vec<Option<crate::ast::CompilationUnit>> = (0..files.len())
+            .map(|i| match &self.inputs[i] {
+                Input::Exp(_) => without_broken_items(&units[i], &diags[i]),
+                _ => None,
             })
             .collect();
-        let pairs: Vec<_> = clean.iter().map(|&i| (files[i], &units[i])).collect();
+        let clean: Vec<usize> = (0..files.len())
+            .filter(|&i| {
+                pruned[i].is_some()
+                    || !diags[i]
+                        .iter()
+                        .any(|d| d.is_error() && d.code != crate::dialect::codes::PRAGMA)
+            })
+            .collect();
+        let pairs: Vec<_> = clean
+            .iter()
+            .map(|&i| (files[i], pruned[i].as_ref().unwrap_or(&units[i])))
+            .collect();
         let broken = clean.len() < files.len();
         let (programs, more, table) = sema::check_recorded(
             &pairs,
@@ -163,6 +189,46 @@ impl Program {
             resolutions,
         }
     }
+}
+
+/// `unit` without the items that hold a syntax error, when it has some and
+/// every one of them is inside an item (`None` otherwise: then the file is
+/// checked whole, or not at all).
+fn without_broken_items(
+    unit: &crate::ast::CompilationUnit,
+    diags: &[Diagnostic],
+) -> Option<crate::ast::CompilationUnit> {
+    use crate::ast::Item;
+    let errors: Vec<crate::ast::Span> = diags
+        .iter()
+        .filter(|d| d.is_error() && d.code != crate::dialect::codes::PRAGMA)
+        .map(|d| d.span)
+        .collect();
+    if errors.is_empty() {
+        return None;
+    }
+    let span = |it: &Item| match it {
+        Item::Pou(p) => Some(p.span),
+        Item::Configuration(c) => Some(c.span),
+        Item::Types(t) => Some(t.first()?.span.to(t.last()?.span)),
+    };
+    // An error starting in the item (or at its end: a missing END_).
+    let inside = |e: &crate::ast::Span, s: Option<crate::ast::Span>| {
+        s.is_some_and(|s| s.lo <= e.lo && e.lo <= s.hi)
+    };
+    if !errors
+        .iter()
+        .all(|e| unit.items.iter().any(|it| inside(e, span(it))))
+    {
+        return None;
+    }
+    let items = unit
+        .items
+        .iter()
+        .filter(|it| !errors.iter().any(|e| inside(e, span(it))))
+        .cloned()
+        .collect();
+    Some(crate::ast::CompilationUnit { items })
 }
 
 /// A checked program: every diagnostic of every input, and the checked IR.
@@ -370,6 +436,13 @@ impl Emitted<'_> {
             Input::Snippet(s) => {
                 file::format_file_with(&s.file.name, &self.text, self.markers(), None, |n| {
                     (s.line_of(n), s.il.line_text(n))
+                })
+            }
+            Input::Exp(i) => {
+                let lines = i.exp_lines();
+                file::format_file_with(&i.exp.name, &self.text, None, Some("EXP"), |n| {
+                    let shown = lines.get(n.wrapping_sub(1)).copied().unwrap_or(0);
+                    (shown, i.il.line_text(n))
                 })
             }
             Input::PlcOpen(i) => {

@@ -6,7 +6,6 @@
 //! stands for. [`SpanMap::to_xml`] turns a span in the IL text into a span in
 //! the XML text.
 
-#[cfg(feature = "plcopen")]
 use std::ops::Range;
 
 use crate::ast::Span;
@@ -22,21 +21,21 @@ struct Piece {
     linear: bool,
 }
 
-/// IL text under construction, with its map back into the XML (only the
-/// translation, the `plcopen` feature, writes one).
-#[cfg(feature = "plcopen")]
+/// IL text under construction, with its map back into the XML (or the
+/// `.EXP` file: the CODESYS import writes one too).
 #[derive(Debug, Default)]
 pub(crate) struct Writer {
     pub(crate) text: String,
     pieces: Vec<Piece>,
 }
 
-#[cfg(feature = "plcopen")]
 fn u(n: usize) -> u32 {
     u32::try_from(n).unwrap_or(u32::MAX)
 }
 
-#[cfg(feature = "plcopen")]
+// Without the `plcopen` feature only the EXP import writes, which never
+// rolls back.
+#[cfg_attr(not(feature = "plcopen"), allow(dead_code))]
 impl Writer {
     /// Append generated text standing for the XML range `at`.
     pub(crate) fn gen_at(&mut self, s: &str, at: Range<usize>) {

@@ -27,7 +27,7 @@
 
 #[cfg(feature = "plcopen")]
 mod limits;
-mod map;
+pub(crate) mod map;
 #[cfg(feature = "plcopen")]
 mod text;
 #[cfg(feature = "plcopen")]

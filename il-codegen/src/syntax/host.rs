@@ -1,11 +1,12 @@
-//! Host functions: an `{extern}` pragma right before a FUNCTION marks it as
-//! provided by the crate around the generated code (a runtime's print, an
-//! I/O driver, a vendor library). The pragma is the one place where a pragma
+//! Host POUs: an `{extern}` pragma right before a FUNCTION (or a
+//! FUNCTION_BLOCK or PROGRAM, whose body a CODESYS export holds in another
+//! language) marks it as provided by the crate around the generated code
+//! (a runtime's print, an I/O driver, a vendor library). The pragma is the one place where a pragma
 //! has a meaning, so the lexer reports where each stands and this pass ties
 //! it to the declaration that follows.
 
 use super::code;
-use crate::ast::{CompilationUnit, Item, PouKind, Span};
+use crate::ast::{CompilationUnit, Item, Span};
 use crate::diag::Diagnostic;
 
 /// The span an item covers, for placing a pragma before or inside it.
@@ -17,7 +18,7 @@ fn item_span(item: &Item) -> Option<Span> {
     }
 }
 
-/// Mark the FUNCTION after each `{extern}` pragma; a pragma anywhere else
+/// Mark the POU after each `{extern}` pragma; a pragma anywhere else
 /// is IL0037. `marks` are in source order, as the lexer found them.
 pub(super) fn mark(unit: &mut CompilationUnit, marks: &[Span], diags: &mut Vec<Diagnostic>) {
     if marks.is_empty() {
@@ -33,11 +34,8 @@ pub(super) fn mark(unit: &mut CompilationUnit, marks: &[Span], diags: &mut Vec<D
         }
         let target = match (unit.items.get_mut(next), spans.get(next)) {
             (Some(Item::Pou(p)), Some(Some(s))) if s.lo >= m.hi => {
-                if p.kind == PouKind::Function {
-                    p.host = Some(m);
-                    continue;
-                }
-                format!("before a {}", p.kind.keyword())
+                p.host = Some(m);
+                continue;
             }
             (Some(_), Some(Some(s))) if s.lo < m.hi => "inside a declaration".to_string(),
             (Some(Item::Types(_)), _) => "before a TYPE block".to_string(),
@@ -48,11 +46,11 @@ pub(super) fn mark(unit: &mut CompilationUnit, marks: &[Span], diags: &mut Vec<D
             Diagnostic::error(
                 code::HOST_MARK,
                 m,
-                format!("`{{extern}}` stands {target}: it marks a FUNCTION only"),
+                format!("`{{extern}}` stands {target}: it marks a POU only"),
             )
-            .with_label("not before a FUNCTION")
+            .with_label("not before a POU")
             .with_help(
-                "put `{extern}` right before a FUNCTION that the crate provides in Rust, or remove it",
+                "put `{extern}` right before a FUNCTION, FUNCTION_BLOCK or PROGRAM that the crate provides in Rust, or remove it",
             ),
         );
     }

@@ -13,6 +13,7 @@ mod syntax_common;
 mod corpus_configurations;
 mod dialect;
 mod encodings;
+mod exp;
 mod format;
 mod front_end_robustness;
 mod golden_emit;

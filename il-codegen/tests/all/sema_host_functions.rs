@@ -47,15 +47,27 @@ fn comments_and_other_pragmas_may_stand_between_extern_and_the_function() {
 }
 
 #[test]
-fn extern_stands_before_a_function_only() {
+fn extern_marks_a_function_block_or_program_too() {
+    // A CODESYS POU whose body is not IL is host-provided the same way.
+    let src = "{extern}\nFUNCTION_BLOCK F\nVAR_INPUT i : INT; END_VAR\nVAR_OUTPUT o : INT; END_VAR\nEND_FUNCTION_BLOCK\n{extern}\nPROGRAM P\nVAR_OUTPUT q : BOOL; END_VAR\nEND_PROGRAM\n";
+    assert_eq!(errors(src), []);
+    let pous = checked_pous(src);
+    assert!(pous.iter().all(|p| p.host), "{pous:?}");
+    // Locals would be dropped silently: IL0140, as for a FUNCTION.
+    let e = errors("{extern}\nFUNCTION_BLOCK F\nVAR t : INT; END_VAR\nEND_FUNCTION_BLOCK\n");
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert_eq!(e[0].0, "IL0140");
+    assert!(
+        e[0].3.contains("host FUNCTION_BLOCK `F` declares VAR"),
+        "{}",
+        e[0].3
+    );
+}
+
+#[test]
+fn extern_stands_before_a_pou_only() {
     let pou = "PROGRAM P\nVAR x : INT; END_VAR\n    LD x\n    ST x\nEND_PROGRAM\n";
     let cases = [
-        (format!("{{extern}}\n{pou}"), 1, "before a PROGRAM"),
-        (
-            format!("{{extern}}\nFUNCTION_BLOCK F\nEND_FUNCTION_BLOCK\n{pou}"),
-            1,
-            "before a FUNCTION_BLOCK",
-        ),
         (
             pou.replace("    LD x\n", "    {extern}\n    LD x\n"),
             3,

@@ -10,6 +10,7 @@
 mod addresses;
 mod corners;
 mod dialect;
+mod exp;
 mod hook;
 mod plc;
 mod plcopen;

@@ -14,6 +14,7 @@ mod differential;
 mod edge_cases;
 mod edges_strings;
 mod encodings;
+mod exp;
 mod fb_calls;
 mod functions;
 mod fuzz_replay;

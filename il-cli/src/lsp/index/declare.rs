@@ -108,9 +108,17 @@ impl Builder<'_> {
             }
         }
         ix.pou_labels.insert(id, labels);
+        // A POU of a CODESYS export shows its project folder (`@PATH`).
+        let folder = match self.input {
+            il_codegen::Input::Exp(e) => e
+                .folder_at(self.map(p.span).lo)
+                .map(|f| format!(" · {f}"))
+                .unwrap_or_default(),
+            _ => String::new(),
+        };
         ix.files[self.f].outline.push(Outline {
             name: p.name.name.to_string(),
-            detail: Some(format!("{}{ret}", p.kind.keyword())),
+            detail: Some(format!("{}{ret}{folder}", p.kind.keyword())),
             kind: pou_symbol_kind(p.kind),
             span: self.map(p.span),
             sel: self.map(p.name.span),

@@ -302,11 +302,7 @@ struct Builder<'a> {
 impl Builder<'_> {
     /// A span of the IL text in the user's file.
     fn map(&self, s: Span) -> Span {
-        match self.input {
-            Input::Il(_) => s,
-            Input::PlcOpen(i) => i.map.to_xml(s),
-            Input::Snippet(n) => n.to_file(s),
-        }
+        self.input.to_source(s)
     }
 
     fn text(&self, s: Span) -> &str {

@@ -247,7 +247,8 @@ fn host_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou, sig: &PouSig) -> CheckedPou 
             HOST_BODY,
             span,
             format!(
-                "host FUNCTION `{}` has instructions: its body is the crate's Rust function",
+                "host {} `{}` has instructions: its body is the crate's Rust function",
+                pou.kind.keyword(),
                 pou.name
             ),
         );
@@ -261,7 +262,8 @@ fn host_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou, sig: &PouSig) -> CheckedPou 
                 HOST_BODY,
                 b.span,
                 format!(
-                    "host FUNCTION `{}` declares {}: it has only inputs, outputs and in-outs",
+                    "host {} `{}` declares {}: it has only inputs, outputs and in-outs",
+                    pou.kind.keyword(),
                     pou.name,
                     b.kind.keyword()
                 ),

@@ -1,0 +1,56 @@
+//! The import's own unit tests (through the public API: `tests/all/exp.rs`).
+
+use super::*;
+
+fn import(text: &str) -> Import {
+    Import::new(SourceFile::new("t.EXP", text))
+}
+
+#[test]
+fn objects_and_their_headers() {
+    let i = import(
+        "(* @NESTEDCOMMENTS := 'Yes' *)\n(* @PATH := '\\/K14' *)\nFUNCTION f : INT\nVAR_INPUT a : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nLD a\nST f\nEND_FUNCTION\n\nLIBRARY\nStandard.lib 1.1.1\nEND_LIBRARY\n",
+    );
+    let o = i.objects();
+    assert_eq!(o.len(), 2);
+    assert_eq!(o[0].kind, ObjectKind::Pou(PouKind::Function));
+    assert_eq!(o[0].name, "f");
+    assert_eq!(o[0].path, "\\/K14");
+    assert_eq!(o[0].language, Language::Il);
+    assert_eq!(o[1].kind, ObjectKind::Skipped("a library reference"));
+    assert_eq!(o[1].name, "Standard.lib 1.1.1");
+    assert!(i.diagnostics.is_empty(), "{:?}", i.diagnostics);
+    assert!(i.il.text.contains("FUNCTION f : INT"), "{}", i.il.text);
+    assert!(!i.il.text.contains("@END_DECLARATION"));
+}
+
+#[test]
+fn st_bodies_are_interfaces() {
+    let i = import(
+        "FUNCTION_BLOCK fb\nVAR_INPUT a : INT; END_VAR\nVAR t : BLINK; END_VAR\n(* @END_DECLARATION := '0' *)\nIF a > 1 THEN a := 2; END_IF;\nEND_FUNCTION_BLOCK\n",
+    );
+    assert_eq!(i.objects()[0].language, Language::St);
+    assert_eq!(i.diagnostics.len(), 1);
+    assert_eq!(i.diagnostics[0].code, codes::NOT_IL);
+    assert!(
+        i.il.text.starts_with("{extern} FUNCTION_BLOCK fb"),
+        "{}",
+        i.il.text
+    );
+    assert!(!i.il.text.contains("BLINK"), "{}", i.il.text);
+    assert!(!i.il.text.contains("IF a"), "{}", i.il.text);
+}
+
+#[test]
+fn sfc_bodies_and_visualisations() {
+    let i = import(
+        "(* @NESTEDCOMMENTS := 'Yes' *)\nPROGRAM Seq\nVAR_OUTPUT q : BOOL; END_VAR\n(* @END_DECLARATION := '0' *)\nINITIAL_STEP Init:\nEND_STEP\nACTION Init_active:\nq := TRUE;\nEND_ACTION\nTRANSITION FROM Init TO Init := TRUE;\nEND_TRANSITION\nEND_PROGRAM\n\n(* @NESTEDCOMMENTS := 'Yes' *)\n(* @PATH := '' *)\nVISUALISATION PLC_VISU _VISU_TYPES : 1,1\n_BG_BMP : ''\nEND_VISUALISATION\n",
+    );
+    let o = i.objects();
+    assert_eq!(o.len(), 2, "{o:?}");
+    assert_eq!(o[0].language, Language::Sfc);
+    assert_eq!(o[1].kind, ObjectKind::Skipped("a visualisation"));
+    assert_eq!(o[1].name, "PLC_VISU");
+    let codes: Vec<&str> = i.diagnostics.iter().map(|d| d.code).collect();
+    assert_eq!(codes, [codes::NOT_IL]);
+}
