@@ -17,7 +17,8 @@ use super::workspace::Workspace;
 
 /// The token types, in the legend's order (`instance`: a variable holding a
 /// FUNCTION_BLOCK instance; `label`: a label or jump target; the VS Code
-/// extension declares both, as kinds of `variable` and `macro`).
+/// extension declares both in its package.json, as kinds of `variable` and
+/// `macro`).
 const TYPES: [&str; 10] = [
     "function",
     "class",
