@@ -4,6 +4,7 @@ mod check;
 mod cli;
 mod emit;
 mod fmt;
+mod gtkw;
 mod input;
 mod lsp;
 mod plot;

@@ -88,6 +88,10 @@ pub struct Waves<'p> {
     tys: Vec<Ty>,
     vcd: Option<(PathBuf, Recorder<AtomicFile>)>,
     plot: Option<(PathBuf, Lanes)>,
+    /// The length of a timescale tick in ns, and the last sample's time:
+    /// the `.gtkw` is zoomed to the run.
+    tick_ns: i64,
+    last: TIME,
 }
 
 impl<'p> Waves<'p> {
@@ -125,6 +129,8 @@ impl<'p> Waves<'p> {
             tys: watch.iter().map(|p| p.1.clone()).collect(),
             vcd,
             plot: plot.map(|p| (p.clone(), Lanes::new(step))),
+            tick_ns: il_trace::timescale(step).1.max(1),
+            last: TIME(0),
         }))
     }
 
@@ -140,6 +146,7 @@ impl<'p> Waves<'p> {
         if let Some((_, lanes)) = &mut self.plot {
             lanes.sample(now, offer);
         }
+        self.last = now;
         Ok(())
     }
 
@@ -149,6 +156,8 @@ impl<'p> Waves<'p> {
             let err = |e: std::io::Error| format!("--vcd {}: {e}", path.display());
             rec.finish().map_err(err)?;
             rec.get_mut().commit().map_err(err)?;
+            let end = u64::try_from(self.last.0 / self.tick_ns).unwrap_or(0);
+            write_save_files(&path, end)?;
         }
         if let Some((path, lanes)) = self.plot {
             Plot::new(&self.top, lanes)
@@ -157,6 +166,21 @@ impl<'p> Waves<'p> {
         }
         Ok(())
     }
+}
+
+/// `FILE.gtkw` (and the enumerations' translate files) beside the dump,
+/// from the dump as written.
+fn write_save_files(vcd: &std::path::Path, end: u64) -> Result<(), String> {
+    let err = |e: std::io::Error| format!("--vcd {}: {e}", vcd.display());
+    let file = std::fs::File::open(vcd).map_err(err)?;
+    let dump = il_trace::read::parse(std::io::BufReader::new(file)).map_err(err)?;
+    let files = crate::gtkw::save_files(vcd, &dump, end);
+    for (path, text) in files.filters.iter().chain([&files.save]) {
+        let mut f = AtomicFile::create(path).map_err(err)?;
+        std::io::Write::write_all(&mut f, text.as_bytes()).map_err(err)?;
+        f.commit().map_err(err)?;
+    }
+    Ok(())
 }
 
 fn offer_tree(v: &mut dyn Visitor, t: &Tree, values: &[Value], tys: &[Ty], prog: &Program) {

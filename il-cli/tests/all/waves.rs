@@ -527,3 +527,73 @@ fn an_element_of_a_2d_array_is_one_watched_name() {
     assert_eq!(&rows[0][2..], ["1", "1"], "{stdout}");
     assert_eq!(&rows[1][2..], ["0", "0"], "{stdout}");
 }
+
+/// `--vcd FILE.vcd` writes `FILE.gtkw` beside it: read back, it names the
+/// dump, adds every watched signal in order with integers as signed decimal
+/// (GTKWave's flags 0x424) and BOOL as binary, shows the enumeration through
+/// a translate file holding its value names, and is zoomed so that the run
+/// fits (GTKWave shows 2^-zoom ticks per 200 pixels).
+#[test]
+fn vcd_comes_with_a_gtkwave_save_file() {
+    let src = file(
+        "gtkw.il",
+        "TYPE Phase : (Idle, Filling, Full); END_TYPE\n\
+         PROGRAM Fill\nVAR go : BOOL; level : INT := -3; phase : Phase; END_VAR\n\
+         LD go\nJMPCN done\nLD level\nADD 10\nST level\nLD Phase#Filling\nST phase\n\
+         LD level\nGT 20\nJMPCN done\nLD Phase#Full\nST phase\ndone:\nEND_PROGRAM\n",
+    );
+    let vcd = dir().join("fill.vcd");
+    let out = ilc(&[
+        "run",
+        &src,
+        "--cycles",
+        "40",
+        "--step",
+        "100ms",
+        "--set",
+        "go=TRUE@3",
+        "--watch",
+        "go,level,phase",
+        "--vcd",
+        vcd.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let save = std::fs::read_to_string(dir().join("fill.gtkw")).expect("fill.gtkw");
+    assert!(
+        save.contains(&format!("[dumpfile] \"{}\"", vcd.display())),
+        "{save}"
+    );
+    let traces: Vec<&str> = save.lines().filter(|l| l.starts_with("Fill.")).collect();
+    assert_eq!(
+        traces,
+        ["Fill.go", "Fill.level[15:0]", "Fill.phase"],
+        "{save}"
+    );
+    let flags = |trace: &str| {
+        let lines: Vec<&str> = save.lines().collect();
+        let i = lines.iter().position(|l| *l == trace).unwrap();
+        lines[i - 1].to_string()
+    };
+    assert_eq!(flags("Fill.go"), "@28");
+    assert_eq!(flags("Fill.level[15:0]"), "@424");
+    assert_eq!(flags("Fill.phase"), "@2024");
+    let filter = save
+        .lines()
+        .find_map(|l| l.strip_prefix("^1 "))
+        .expect("a translate file for the enumeration");
+    let names = std::fs::read_to_string(filter).unwrap();
+    assert!(names.lines().any(|l| l == "1 Filling"), "{names}");
+    assert!(names.lines().any(|l| l == "2 Full"), "{names}");
+    // 40 scans of 100 ms end at 3900 ms: 2^-zoom * 550 / 200 must reach it.
+    let zoom: f64 = save
+        .lines()
+        .find_map(|l| l.strip_prefix('*'))
+        .and_then(|l| l.split(' ').next())
+        .and_then(|z| z.parse().ok())
+        .expect("a zoom line");
+    let shown = 2f64.powf(-zoom) * 550.0 / 200.0;
+    assert!(
+        (3900.0..7800.0).contains(&shown),
+        "zoom {zoom} shows {shown} ms"
+    );
+}
