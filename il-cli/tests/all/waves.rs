@@ -597,3 +597,50 @@ fn vcd_comes_with_a_gtkwave_save_file() {
         "zoom {zoom} shows {shown} ms"
     );
 }
+
+/// An integer lane of the plot has ticks at whole numbers only and each
+/// change's value written beside its step (room allowing): `n` going 3, 6
+/// and `w` going 137, 274 show those values (no tick falls on them), and `k`
+/// going 0 to 1 has no tick at 0.5.
+#[test]
+fn plot_integer_lanes_have_whole_ticks_and_labelled_changes() {
+    let src = file(
+        "count.il",
+        "PROGRAM Count\nVAR go : BOOL; n : INT; w : UINT; k : INT; END_VAR\n\
+         LD go\nJMPCN done\nLD n\nADD 3\nST n\nLD w\nADD 137\nST w\nLD 1\nST k\ndone:\nEND_PROGRAM\n",
+    );
+    let svg = dir().join("count.svg");
+    let out = ilc(&[
+        "run",
+        &src,
+        "--cycles",
+        "12",
+        "--step",
+        "1s",
+        "--set",
+        "go=TRUE@4",
+        "--set",
+        "go=FALSE@6",
+        "--watch",
+        "n,w,k",
+        "--plot",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let svg = std::fs::read_to_string(&svg).unwrap();
+    let texts: Vec<&str> = svg
+        .split("<text")
+        .skip(1)
+        .filter_map(|t| t.split_once('>').and_then(|(_, r)| r.split_once("</text>")))
+        .map(|(t, _)| t.trim())
+        .collect();
+    for want in ["3", "6", "137", "274"] {
+        assert!(texts.contains(&want), "no label {want}: {texts:?}");
+    }
+    assert!(
+        !texts
+            .iter()
+            .any(|t| t.contains('.') && t.parse::<f64>().is_ok()),
+        "a tick between whole numbers: {texts:?}"
+    );
+}
