@@ -27,6 +27,10 @@ const FTRANSLATED: u32 = 1 << 13;
 /// leaves for the waves beside its tree and signal panes.
 const WIDTH_PX: f64 = 550.0;
 
+/// Each watched enumeration's values and their integers, by the variable's
+/// path below the top scope (`tank.state`).
+pub type EnumValues = BTreeMap<String, Vec<(i64, String)>>;
+
 /// The files to write: the save file, then one translate file per
 /// enumeration lane.
 pub struct SaveFiles {
@@ -36,11 +40,23 @@ pub struct SaveFiles {
     pub filters: Vec<(PathBuf, String)>,
 }
 
-/// The enumeration lanes' value names: `path = Name` comments (il-trace
-/// writes one at each change of an enumeration), paired with the value the
-/// signal has at that time.
-fn enum_names(dump: &Dump) -> BTreeMap<usize, BTreeMap<u64, String>> {
+/// The enumeration lanes' value names: every value of the type, and the
+/// `path = Name` comments (il-trace writes one at each change of an
+/// enumeration) paired with the value the signal has at that time.
+fn enum_names(dump: &Dump, enums: &EnumValues) -> BTreeMap<usize, BTreeMap<u64, String>> {
     let mut out: BTreeMap<usize, BTreeMap<u64, String>> = BTreeMap::new();
+    for (i, s) in dump.signals.iter().enumerate() {
+        let Some(values) = s.path.get(1..).and_then(|p| enums.get(&p.join("."))) else {
+            continue;
+        };
+        if s.var_type == "integer" {
+            let names = out.entry(i).or_default();
+            for (v, n) in values {
+                // The dump holds the value's 64 bits.
+                names.insert(*v as u64, n.clone());
+            }
+        }
+    }
     for (t, comment) in &dump.comments {
         for line in comment.lines() {
             let Some((path, name)) = line.trim().split_once(" = ") else {
@@ -61,19 +77,33 @@ fn enum_names(dump: &Dump) -> BTreeMap<usize, BTreeMap<u64, String>> {
 
 /// The name GTKWave gives a variable: its path joined by `.`, and a
 /// vector's bit range.
-fn trace_name(s: &Signal) -> String {
-    let name = s.path.join(".");
-    match s.var_type.as_str() {
-        "wire" if s.width > 1 => format!("{name}[{}:0]", s.width - 1),
-        _ => name,
+///
+/// A name with a `.` of its own (a direct address, `%QX0.2`) is an escaped
+/// identifier to GTKWave, `Tank.\%QX0.2` (read back from its facility list
+/// under Xvfb); such a trace gets its name unescaped as an alias.
+fn trace_name(s: &Signal) -> (String, Option<String>) {
+    let leaf = s.path.last().map_or("", String::as_str);
+    let scopes = &s.path[..s.path.len().saturating_sub(1)];
+    let escaped = leaf.contains('.');
+    let mut name = scopes.join(".");
+    if !name.is_empty() {
+        name.push('.');
     }
+    if escaped {
+        name.push('\\');
+    }
+    name.push_str(leaf);
+    if s.var_type == "wire" && s.width > 1 {
+        let _ = write!(name, "[{}:0]", s.width - 1);
+    }
+    (name, escaped.then(|| leaf.to_string()))
 }
 
 /// The save file for `vcd` (already written), whose run ends at `end` (in
 /// timescale units).
-pub fn save_files(vcd: &Path, dump: &Dump, end: u64) -> SaveFiles {
+pub fn save_files(vcd: &Path, dump: &Dump, end: u64, enums: &EnumValues) -> SaveFiles {
     let save_path = vcd.with_extension("gtkw");
-    let enums = enum_names(dump);
+    let enums = enum_names(dump, enums);
     let stem = vcd
         .file_stem()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
@@ -88,8 +118,8 @@ pub fn save_files(vcd: &Path, dump: &Dump, end: u64) -> SaveFiles {
     let _ = writeln!(text, "[timestart] 0");
     let _ = writeln!(text, "[size] 1000 600");
     // GTKWave shows 2^-zoom time units per 200 pixels (checked under Xvfb):
-    // the largest zoom at which the whole run fits.
-    let zoom = -((200.0 * end.max(1) as f64) / WIDTH_PX).log2().ceil();
+    // the zoom at which the run, and a little more, fills the pane.
+    let zoom = -((200.0 * 1.05 * end.max(1) as f64) / WIDTH_PX).log2();
     let _ = writeln!(
         text,
         "*{zoom:.6} 0 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1 -1"
@@ -113,7 +143,14 @@ pub fn save_files(vcd: &Path, dump: &Dump, end: u64) -> SaveFiles {
             }
         };
         let _ = writeln!(text, "@{flags:x}");
-        let _ = writeln!(text, "{}", trace_name(s));
+        match trace_name(s) {
+            (name, Some(alias)) => {
+                let _ = writeln!(text, "+{{{alias}}} {name}");
+            }
+            (name, None) => {
+                let _ = writeln!(text, "{name}");
+            }
+        }
     }
     SaveFiles {
         save: (save_path, text),

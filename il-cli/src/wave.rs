@@ -92,6 +92,8 @@ pub struct Waves<'p> {
     /// the `.gtkw` is zoomed to the run.
     tick_ns: i64,
     last: TIME,
+    /// The watched places as named and their types.
+    watched: Vec<(String, Ty)>,
 }
 
 impl<'p> Waves<'p> {
@@ -131,6 +133,7 @@ impl<'p> Waves<'p> {
             plot: plot.map(|p| (p.clone(), Lanes::new(step))),
             tick_ns: il_trace::timescale(step).1.max(1),
             last: TIME(0),
+            watched: watch.to_vec(),
         }))
     }
 
@@ -157,7 +160,16 @@ impl<'p> Waves<'p> {
             rec.finish().map_err(err)?;
             rec.get_mut().commit().map_err(err)?;
             let end = u64::try_from(self.last.0 / self.tick_ns).unwrap_or(0);
-            write_save_files(&path, end)?;
+            // Each watched enumeration's values, by its path in the dump.
+            let mut enums = std::collections::BTreeMap::new();
+            for (text, ty) in &self.watched {
+                if let Ty::Enum(name) = ty {
+                    let (mut scopes, leaf) = split_path(text);
+                    scopes.push(leaf);
+                    enums.insert(scopes.join("."), enum_values(self.prog, name.as_str()));
+                }
+            }
+            write_save_files(&path, end, &enums)?;
         }
         if let Some((path, lanes)) = self.plot {
             Plot::new(&self.top, lanes)
@@ -170,11 +182,15 @@ impl<'p> Waves<'p> {
 
 /// `FILE.gtkw` (and the enumerations' translate files) beside the dump,
 /// from the dump as written.
-fn write_save_files(vcd: &std::path::Path, end: u64) -> Result<(), String> {
+fn write_save_files(
+    vcd: &std::path::Path,
+    end: u64,
+    enums: &crate::gtkw::EnumValues,
+) -> Result<(), String> {
     let err = |e: std::io::Error| format!("--vcd {}: {e}", vcd.display());
     let file = std::fs::File::open(vcd).map_err(err)?;
     let dump = il_trace::read::parse(std::io::BufReader::new(file)).map_err(err)?;
-    let files = crate::gtkw::save_files(vcd, &dump, end);
+    let files = crate::gtkw::save_files(vcd, &dump, end, enums);
     for (path, text) in files.filters.iter().chain([&files.save]) {
         let mut f = AtomicFile::create(path).map_err(err)?;
         std::io::Write::write_all(&mut f, text.as_bytes()).map_err(err)?;
@@ -206,6 +222,21 @@ fn type_def<'a>(prog: &'a Program, name: &str) -> Option<&'a TypeDef> {
             n.eq_ignore_ascii_case(name)
         }
     })
+}
+
+/// Every value of an enumeration with its integer, for the `.gtkw`'s
+/// translate file.
+fn enum_values(prog: &Program, ty: &str) -> Vec<(i64, String)> {
+    let mut out = Vec::new();
+    if let Some(TypeDef::Enum { values, .. }) = type_def(prog, ty) {
+        let mut next = 0i128;
+        for (n, d) in values {
+            let x = d.unwrap_or(next);
+            out.push((x as i64, n.clone()));
+            next = x + 1;
+        }
+    }
+    out
 }
 
 /// The integer value of an enumeration value, as the generated Rust enum's
