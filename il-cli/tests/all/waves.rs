@@ -591,6 +591,11 @@ fn vcd_comes_with_a_gtkwave_save_file() {
     assert!(names.lines().any(|l| l == "0 Idle"), "never shown: {names}");
     assert!(names.lines().any(|l| l == "1 Filling"), "{names}");
     assert!(names.lines().any(|l| l == "2 Full"), "{names}");
+    // The dump ends at the last scan, though nothing changes after 600 ms,
+    // so that GTKWave's time axis covers the run.
+    let dump = std::fs::read_to_string(&vcd).unwrap();
+    let last = dump.lines().rev().find(|l| l.starts_with('#'));
+    assert_eq!(last, Some("#3900"), "{dump}");
     // 40 scans of 100 ms end at 3900 ms: 2^-zoom * 550 / 200 must reach it.
     let zoom: f64 = save
         .lines()
