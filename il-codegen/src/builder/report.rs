@@ -68,7 +68,10 @@ impl Builder {
                         }
                     }
                     None => {
+                        // cargo puts `error: <package>@<version>: ` before
+                        // each line: an `error: ` of ours would be doubled.
                         for line in e.rendered.lines() {
+                            let line = line.strip_prefix("error: ").unwrap_or(line);
                             println!("cargo::error={line}");
                         }
                     }

@@ -274,6 +274,21 @@ include!(concat!(env!("OUT_DIR"), "/tank.rs"));
         assert!(stderr.contains("|     ST   pump"), "no snippet:\n{stderr}");
         assert!(!stderr.contains("custom build command"), "{stderr}");
     }
+    // A failure that is not about the IL fails the build script, with one
+    // `error:` line from cargo.
+    let script = with_build.join("build.rs");
+    let text_rs = std::fs::read_to_string(&script).unwrap();
+    std::fs::write(&script, text_rs.replace("plc/tank.il", "plc/missing.il")).unwrap();
+    let out = cargo(&with_build, &target, &["build", "--quiet"]);
+    let stderr = text(&out.stderr);
+    assert!(!out.status.success(), "the build must fail:\n{stderr}");
+    assert!(
+        stderr
+            .lines()
+            .any(|l| l
+                .starts_with("error: tank-build@0.1.0: cannot read source file `plc/missing.il`")),
+        "{stderr}"
+    );
 
     // 4. A PLCopen project in `il!`: il-macros leaves the XML import out by
     //    default (its cold build is the issue-16 target), so the call fails
