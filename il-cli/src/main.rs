@@ -6,6 +6,7 @@ mod debug;
 mod emit;
 mod flow;
 mod fmt;
+mod gtkw;
 mod input;
 mod lsp;
 mod plot;

@@ -13,6 +13,10 @@ use plotters::prelude::*;
 #[derive(Clone, Copy, PartialEq)]
 enum Kind {
     Bool,
+    /// Integers and bit strings: ticks at whole numbers only, each change's
+    /// value written where there is room.
+    Integer,
+    /// REAL and LREAL.
     Number,
     /// TIME and the like: drawn in the time axis' unit.
     Time,
@@ -70,11 +74,11 @@ impl Collect<'_> {
     fn put(&mut self, name: String, value: Value<'_>) {
         let (kind, y, text) = match value {
             Value::Bool(b) => (Kind::Bool, b as u8 as f64, None),
-            Value::Int { value, .. } => (Kind::Number, value as f64, None),
-            Value::UInt { value, .. } => (Kind::Number, value as f64, None),
+            Value::Int { value, .. } => (Kind::Integer, value as f64, None),
+            Value::UInt { value, .. } => (Kind::Integer, value as f64, None),
             Value::Real(r) => (Kind::Number, r, None),
             Value::Time(ns) => (Kind::Time, ns as f64, None),
-            Value::Date(d) => (Kind::Number, d as f64, None),
+            Value::Date(d) => (Kind::Integer, d as f64, None),
             Value::Enum { value, name } => (Kind::Bus, value as f64, Some(name.to_string())),
             Value::Str(b) => (
                 Kind::Bus,
@@ -264,14 +268,19 @@ impl Plot {
             mesh.x_desc(format!("time ({unit})"));
         }
         let suffix = if s.kind == Kind::Time { unit } else { "" };
+        let integer = s.kind == Kind::Integer;
         let fmt_y = |y: &f64| {
             if y.fract() == 0.0 {
                 format!("{y:.0}{suffix}")
+            } else if integer {
+                // An integer lane has no value between two whole numbers:
+                // a tick there would be a value it cannot take.
+                String::new()
             } else {
                 format!("{y:.2}{suffix}")
             }
         };
-        if matches!(s.kind, Kind::Number | Kind::Time) {
+        if matches!(s.kind, Kind::Number | Kind::Time | Kind::Integer) {
             mesh.y_labels(3).y_label_formatter(&fmt_y);
         } else {
             mesh.y_labels(0);
@@ -279,7 +288,7 @@ impl Plot {
         mesh.draw()?;
         let color = match s.kind {
             Kind::Bool => RGBColor(0, 110, 60),
-            Kind::Number | Kind::Time => RGBColor(20, 70, 170),
+            Kind::Number | Kind::Time | Kind::Integer => RGBColor(20, 70, 170),
             Kind::Bus => RGBColor(150, 70, 0),
         };
         // A value holds from its change until the next one.
@@ -295,6 +304,24 @@ impl Plot {
             pts.push((end, *y * scale));
         }
         chart.draw_series(LineSeries::new(pts, color.stroke_width(2)))?;
+        if integer {
+            // Each change's value beside its step, when it does not run
+            // into the previous one's text (a busy lane keeps its scale).
+            let style = ("monospace", 11).into_font().color(&color);
+            let px_per = f64::from(WIDTH - LABEL - 64 - 24) / end.max(f64::MIN_POSITIVE);
+            let mut free_from = f64::NEG_INFINITY;
+            let mut texts = Vec::new();
+            for (t, y, _) in &s.changes {
+                let x = *t as f64 / per;
+                let text = format!("{y:.0}");
+                if x * px_per >= free_from {
+                    free_from = x * px_per + 7.0 * text.len() as f64 + 6.0;
+                    texts
+                        .push(EmptyElement::at((x, *y)) + Text::new(text, (3, -13), style.clone()));
+                }
+            }
+            chart.draw_series(texts)?;
+        }
         if s.kind == Kind::Bus {
             let style = ("monospace", 12).into_font().color(&color);
             // Each value's name just above its segment, from the change on.

@@ -88,6 +88,12 @@ pub struct Waves<'p> {
     tys: Vec<Ty>,
     vcd: Option<(PathBuf, Recorder<AtomicFile>)>,
     plot: Option<(PathBuf, Lanes)>,
+    /// The length of a timescale tick in ns, and the last sample's time:
+    /// the `.gtkw` is zoomed to the run.
+    tick_ns: i64,
+    last: TIME,
+    /// The watched places as named and their types.
+    watched: Vec<(String, Ty)>,
 }
 
 impl<'p> Waves<'p> {
@@ -125,6 +131,9 @@ impl<'p> Waves<'p> {
             tys: watch.iter().map(|p| p.1.clone()).collect(),
             vcd,
             plot: plot.map(|p| (p.clone(), Lanes::new(step))),
+            tick_ns: il_trace::timescale(step).1.max(1),
+            last: TIME(0),
+            watched: watch.to_vec(),
         }))
     }
 
@@ -140,6 +149,7 @@ impl<'p> Waves<'p> {
         if let Some((_, lanes)) = &mut self.plot {
             lanes.sample(now, offer);
         }
+        self.last = now;
         Ok(())
     }
 
@@ -149,6 +159,17 @@ impl<'p> Waves<'p> {
             let err = |e: std::io::Error| format!("--vcd {}: {e}", path.display());
             rec.finish().map_err(err)?;
             rec.get_mut().commit().map_err(err)?;
+            let end = u64::try_from(self.last.0 / self.tick_ns).unwrap_or(0);
+            // Each watched enumeration's values, by its path in the dump.
+            let mut enums = std::collections::BTreeMap::new();
+            for (text, ty) in &self.watched {
+                if let Ty::Enum(name) = ty {
+                    let (mut scopes, leaf) = split_path(text);
+                    scopes.push(leaf);
+                    enums.insert(scopes.join("."), enum_values(self.prog, name.as_str()));
+                }
+            }
+            write_save_files(&path, end, &enums)?;
         }
         if let Some((path, lanes)) = self.plot {
             Plot::new(&self.top, lanes)
@@ -157,6 +178,25 @@ impl<'p> Waves<'p> {
         }
         Ok(())
     }
+}
+
+/// `FILE.gtkw` (and the enumerations' translate files) beside the dump,
+/// from the dump as written.
+fn write_save_files(
+    vcd: &std::path::Path,
+    end: u64,
+    enums: &crate::gtkw::EnumValues,
+) -> Result<(), String> {
+    let err = |e: std::io::Error| format!("--vcd {}: {e}", vcd.display());
+    let file = std::fs::File::open(vcd).map_err(err)?;
+    let dump = il_trace::read::parse(std::io::BufReader::new(file)).map_err(err)?;
+    let files = crate::gtkw::save_files(vcd, &dump, end, enums);
+    for (path, text) in files.filters.iter().chain([&files.save]) {
+        let mut f = AtomicFile::create(path).map_err(err)?;
+        std::io::Write::write_all(&mut f, text.as_bytes()).map_err(err)?;
+        f.commit().map_err(err)?;
+    }
+    Ok(())
 }
 
 fn offer_tree(v: &mut dyn Visitor, t: &Tree, values: &[Value], tys: &[Ty], prog: &Program) {
@@ -182,6 +222,21 @@ fn type_def<'a>(prog: &'a Program, name: &str) -> Option<&'a TypeDef> {
             n.eq_ignore_ascii_case(name)
         }
     })
+}
+
+/// Every value of an enumeration with its integer, for the `.gtkw`'s
+/// translate file.
+fn enum_values(prog: &Program, ty: &str) -> Vec<(i64, String)> {
+    let mut out = Vec::new();
+    if let Some(TypeDef::Enum { values, .. }) = type_def(prog, ty) {
+        let mut next = 0i128;
+        for (n, d) in values {
+            let x = d.unwrap_or(next);
+            out.push((x as i64, n.clone()));
+            next = x + 1;
+        }
+    }
+    out
 }
 
 /// The integer value of an enumeration value, as the generated Rust enum's

@@ -14,6 +14,8 @@
 //! `.plcopen_file("plc/project.xml")` (or `.file`, which knows XML by its
 //! text) and becomes `$OUT_DIR/project.rs`.
 
+mod report;
+
 use crate::diag::render::render;
 use crate::pipeline::{Input, Program};
 use std::fmt;
@@ -36,6 +38,9 @@ pub struct Builder {
 /// A failed build: every diagnostic of every file, rendered like rustc.
 pub struct Error {
     rendered: String,
+    /// When the IL has errors: each output file with the input's errors as
+    /// `compile_error!`s, for [`Builder::compile_or_report`].
+    deferred: Option<Vec<(PathBuf, String)>>,
 }
 
 /// The rendered diagnostics, as [`Display`](fmt::Display) shows them: a
@@ -55,6 +60,16 @@ impl fmt::Display for Error {
 }
 
 impl std::error::Error for Error {}
+
+impl Error {
+    /// A failure that is not about the IL (no file to put it in).
+    fn plain(rendered: String) -> Self {
+        Error {
+            rendered,
+            deferred: None,
+        }
+    }
+}
 
 impl Builder {
     /// A builder with no files; output goes to `$OUT_DIR`.
@@ -164,16 +179,15 @@ impl Builder {
             .unwrap_or_else(|| std::env::var_os("OUT_DIR").is_some());
         let out_dir = match self.out_dir.clone().or_else(|| std::env::var_os("OUT_DIR").map(PathBuf::from)) {
             Some(d) => d,
-            None => return Err(Error { rendered: "error: no output directory: OUT_DIR is not set (call Builder::out_dir outside build scripts)".into() }),
+            None => return Err(Error::plain("error: no output directory: OUT_DIR is not set (call Builder::out_dir outside build scripts)".into())),
         };
         // Refuse two inputs that share an output before reading anything, so
         // that nothing already written is lost or replaced by half a program.
         let out_paths = output_paths(&out_dir, self.files.iter().map(|(p, _)| p.as_path()))
-            .map_err(|rendered| Error { rendered })?;
+            .map_err(Error::plain)?;
         let encoding = match &self.encoding {
-            Some(label) => crate::read::Encoding::from_label(label).map_err(|e| Error {
-                rendered: format!("error: {e}\n"),
-            })?,
+            Some(label) => crate::read::Encoding::from_label(label)
+                .map_err(|e| Error::plain(format!("error: {e}\n")))?,
             None => crate::read::Encoding::default(),
         };
         let mut sources = Vec::new();
@@ -203,7 +217,7 @@ impl Builder {
             }
         }
         if !failed.is_empty() {
-            return Err(Error { rendered: failed });
+            return Err(Error::plain(failed));
         }
         // All files form one program: a FUNCTION_BLOCK of one is usable in another.
         let program = sources
@@ -215,8 +229,24 @@ impl Builder {
             line_markers: true,
         };
         let Some(outputs) = checked.emit(opts) else {
+            let deferred = checked
+                .reports()
+                .zip(&out_paths)
+                .map(|((input, diags), path)| {
+                    let errors: Vec<String> = diags
+                        .iter()
+                        .filter(|d| d.is_error())
+                        .map(|d| crate::diag::render_short(input.source(), d))
+                        .collect();
+                    (
+                        path.clone(),
+                        report::error_file(&input.source().name, &errors),
+                    )
+                })
+                .collect();
             return Err(Error {
                 rendered: checked.render(false),
+                deferred: Some(deferred),
             });
         };
         let mut planned = Vec::new();
@@ -232,12 +262,12 @@ impl Builder {
         let (k, earlier) = slot(&out_dir, &inputs, &out_paths_of(&planned));
         let mut written = Vec::new();
         for (path, code) in &planned {
-            write_if_changed(path, code).map_err(|e| Error {
-                rendered: format!("error: cannot write `{}`: {e}", path.display()),
+            write_if_changed(path, code).map_err(|e| {
+                Error::plain(format!("error: cannot write `{}`: {e}", path.display()))
             })?;
             written.push(path.clone());
         }
-        remove_stale(&out_dir, &written, k, &earlier).map_err(|rendered| Error { rendered })?;
+        remove_stale(&out_dir, &written, k, &earlier).map_err(Error::plain)?;
         Ok(written)
     }
 }

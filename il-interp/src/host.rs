@@ -249,8 +249,30 @@ impl Machine {
                 p.text, p.ty
             ));
         }
-        let v = crate::parse_literal(&p.ty, t)
-            .ok_or_else(|| format!("`{t}` is not a valid {} value (for `{}`)", p.ty, p.text))?;
+        let v = crate::parse_literal(&p.ty, t).ok_or_else(|| {
+            let mut msg = format!("`{t}` is not a valid {} value (for `{}`)", p.ty, p.text);
+            // A signed number into a bit string (`%IW1` is a WORD): say how.
+            let bits = match p.ty.to_string().as_str() {
+                "BYTE" => 8,
+                "WORD" => 16,
+                "DWORD" => 32,
+                "LWORD" => 64,
+                _ => 0,
+            };
+            if let Ok(n) = t.trim().parse::<i128>()
+                && n < 0
+                && bits > 0
+                && n >= -(1i128 << (bits - 1))
+            {
+                let twos = (1i128 << bits) + n;
+                msg.push_str(&format!(
+                    ": a {} has no sign; set the signed variable declared AT it \
+                     (`--set NAME={n}`), or write its two's complement (`--set {}={twos}`)",
+                    p.ty, p.text
+                ));
+            }
+            msg
+        })?;
         if let (Some((lo, hi)), Value::Int(x, _)) = (p.range, &v)
             && !(lo..=hi).contains(x)
         {

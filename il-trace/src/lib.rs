@@ -96,6 +96,8 @@ pub struct Recorder<W: Write> {
     signals: Vec<Signal>,
     started: bool,
     last_tick: Option<u64>,
+    /// The last `#time` written (only changes are).
+    written_tick: Option<u64>,
     finished: bool,
 }
 
@@ -118,6 +120,7 @@ impl<W: Write> Recorder<W> {
             signals: Vec::new(),
             started: false,
             last_tick: None,
+            written_tick: None,
             finished: false,
         })
     }
@@ -188,6 +191,7 @@ impl<W: Write> Recorder<W> {
             self.out.upscope()?;
             self.out.enddefinitions()?;
             self.out.timestamp(tick)?;
+            self.written_tick = Some(tick);
             self.out.begin(vcd::SimulationCommand::Dumpvars)?;
             for i in 0..self.signals.len() {
                 self.write_value(i)?;
@@ -202,6 +206,7 @@ impl<W: Write> Recorder<W> {
             self.started = true;
         } else if !changes.is_empty() {
             self.out.timestamp(tick)?;
+            self.written_tick = Some(tick);
             for (i, enc, note) in changes {
                 self.signals[i].last = enc;
                 self.write_value(i)?;
@@ -225,8 +230,19 @@ impl<W: Write> Recorder<W> {
         }
     }
 
-    /// Flush; the dump is complete. Later samples are refused.
+    /// Flush; the dump is complete. Later samples are refused. The time of
+    /// the last sample is written even when nothing changed in it, so that
+    /// a viewer's time axis (GTKWave ends it at the last time in the file)
+    /// covers the whole run.
     pub fn finish(&mut self) -> io::Result<()> {
+        if let Some(last) = self.last_tick
+            && self.started
+            && !self.finished
+            && self.written_tick.is_some_and(|w| w < last)
+        {
+            self.out.timestamp(last)?;
+            self.written_tick = Some(last);
+        }
         if !self.started {
             // A header with no samples is still a valid (empty) dump.
             self.out.add_module(&self.top)?;

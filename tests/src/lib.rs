@@ -1,6 +1,10 @@
 //! Generated code under test. Everything here is produced by il-codegen;
-//! `deny(warnings)` proves that it compiles without warnings in a user's crate.
+//! `deny(warnings)` proves that it compiles without warnings in a user's crate,
+//! even one that asks for documentation and clippy's pedantic lints (the
+//! generated items document themselves or allow the pedantic lints on
+//! themselves only; CI's `cargo clippy -- -D warnings` checks the latter).
 #![deny(warnings)]
+#![warn(missing_docs, clippy::pedantic)]
 #![forbid(unsafe_code)]
 
 /// Our IL test programs (`tests/plc/*.il`) through build.rs.
@@ -47,13 +51,13 @@ pub mod host_impl {
 
 /// `plc-host/host.il` through build.rs, beside the host's functions.
 pub mod host_build {
-    use super::host_impl::*;
+    use super::host_impl::{bump, clamp_sensor};
     include!(concat!(env!("OUT_DIR"), "/host/host.rs"));
 }
 
 /// The same through `il!(file = ...)`.
 pub mod host_macro {
-    use super::host_impl::*;
+    use super::host_impl::{bump, clamp_sensor};
     il_macros::il!(file = "plc-host/host.il");
 }
 
@@ -141,7 +145,7 @@ pub mod annex_f {
     include!(concat!(env!("OUT_DIR"), "/annex_f/fwd_rev_mon_fixed.rs"));
 }
 
-/// `CounterIL`, the IL POU of Beremiz's first_steps PLCopen XML project
+/// `CounterIL`, the IL POU of Beremiz's `first_steps` `PLCopen` XML project
 /// (`../shared/corpus/beremiz_beremiz_first_steps_plc.xml`).
 #[cfg(il_plcopen_corpus)]
 pub mod first_steps {

@@ -134,7 +134,7 @@ fn emit_writes_a_file_named_after_the_xml_stem_with_xml_line_comments() {
     assert!(code.contains("pub struct Blink"), "{code}");
     assert!(code.contains("// 13: LD run"), "{code}");
     assert!(code.contains("// 15: ST lamp"), "{code}");
-    assert!(code.contains("/// VAR_INPUT (XML line 8)"), "{code}");
+    assert!(code.contains("/// `VAR_INPUT` (XML line 8)"), "{code}");
     assert!(stderr(&o).contains("IL0203"), "warnings are shown");
 }
 

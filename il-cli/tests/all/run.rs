@@ -396,3 +396,17 @@ fn host_functions_are_run_by_their_interface_and_named() {
     let last: Vec<&str> = out.lines().last().unwrap().split_whitespace().collect();
     assert_eq!(last[2..], ["1", "2"], "{out}");
 }
+
+/// `--set %IW2=-5`: a WORD has no sign; the error says the two ways that work.
+#[test]
+fn a_negative_number_into_a_word_address_says_how() {
+    let f = file("tank.il", TANK);
+    let o = ilc(&["run", &f, "--cycles", "1", "--set", "%IW2=-5"]);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
+    let err = text(&o.stderr);
+    assert!(err.contains("a WORD has no sign"), "{err}");
+    assert!(err.contains("(`--set NAME=-5`)"), "{err}");
+    assert!(err.contains("(`--set %IW2=65531`)"), "{err}");
+    let o = ilc(&["run", &f, "--cycles", "1", "--set", "%IW2=65531"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+}

@@ -527,3 +527,132 @@ fn an_element_of_a_2d_array_is_one_watched_name() {
     assert_eq!(&rows[0][2..], ["1", "1"], "{stdout}");
     assert_eq!(&rows[1][2..], ["0", "0"], "{stdout}");
 }
+
+/// `--vcd FILE.vcd` writes `FILE.gtkw` beside it: read back, it names the
+/// dump, adds every watched signal in order with integers as signed decimal
+/// (GTKWave's flags 0x424) and BOOL as binary, shows the enumeration through
+/// a translate file holding its value names, and is zoomed so that the run
+/// fits (GTKWave shows 2^-zoom ticks per 200 pixels).
+#[test]
+fn vcd_comes_with_a_gtkwave_save_file() {
+    let src = file(
+        "gtkw.il",
+        "TYPE Phase : (Idle, Filling, Full); END_TYPE\n\
+         PROGRAM Fill\nVAR go : BOOL; level : INT := -3; phase : Phase; lamp AT %QX0.1 : BOOL; END_VAR\n\
+         LD go\nJMPCN done\nLD level\nADD 10\nST level\nLD Phase#Filling\nST phase\n\
+         LD level\nGT 20\nJMPCN done\nLD Phase#Full\nST phase\ndone:\nEND_PROGRAM\n",
+    );
+    let vcd = dir().join("fill.vcd");
+    let out = ilc(&[
+        "run",
+        &src,
+        "--cycles",
+        "40",
+        "--step",
+        "100ms",
+        "--set",
+        "go=TRUE@3",
+        "--watch",
+        "go,level,phase,%QX0.1",
+        "--vcd",
+        vcd.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let save = std::fs::read_to_string(dir().join("fill.gtkw")).expect("fill.gtkw");
+    assert!(
+        save.contains(&format!("[dumpfile] \"{}\"", vcd.display())),
+        "{save}"
+    );
+    let traces: Vec<&str> = save.lines().filter(|l| l.starts_with("Fill.")).collect();
+    assert_eq!(
+        traces,
+        ["Fill.go", "Fill.level[15:0]", "Fill.phase"],
+        "{save}"
+    );
+    // GTKWave names an address with a `.` as an escaped identifier; the
+    // trace shows it unescaped through an alias.
+    assert!(
+        save.lines().any(|l| l == "+{%QX0.1} Fill.\\%QX0.1"),
+        "{save}"
+    );
+    let flags = |trace: &str| {
+        let lines: Vec<&str> = save.lines().collect();
+        let i = lines.iter().position(|l| *l == trace).unwrap();
+        lines[i - 1].to_string()
+    };
+    assert_eq!(flags("Fill.go"), "@28");
+    assert_eq!(flags("Fill.level[15:0]"), "@424");
+    assert_eq!(flags("Fill.phase"), "@2024");
+    let filter = save
+        .lines()
+        .find_map(|l| l.strip_prefix("^1 "))
+        .expect("a translate file for the enumeration");
+    let names = std::fs::read_to_string(filter).unwrap();
+    assert!(names.lines().any(|l| l == "0 Idle"), "never shown: {names}");
+    assert!(names.lines().any(|l| l == "1 Filling"), "{names}");
+    assert!(names.lines().any(|l| l == "2 Full"), "{names}");
+    // The dump ends at the last scan, though nothing changes after 600 ms,
+    // so that GTKWave's time axis covers the run.
+    let dump = std::fs::read_to_string(&vcd).unwrap();
+    let last = dump.lines().rev().find(|l| l.starts_with('#'));
+    assert_eq!(last, Some("#3900"), "{dump}");
+    // 40 scans of 100 ms end at 3900 ms: 2^-zoom * 550 / 200 must reach it.
+    let zoom: f64 = save
+        .lines()
+        .find_map(|l| l.strip_prefix('*'))
+        .and_then(|l| l.split(' ').next())
+        .and_then(|z| z.parse().ok())
+        .expect("a zoom line");
+    let shown = 2f64.powf(-zoom) * 550.0 / 200.0;
+    assert!(
+        (3900.0..4500.0).contains(&shown),
+        "zoom {zoom} shows {shown} ms"
+    );
+}
+
+/// An integer lane of the plot has ticks at whole numbers only and each
+/// change's value written beside its step (room allowing): `n` going 3, 6
+/// and `w` going 137, 274 show those values (no tick falls on them), and `k`
+/// going 0 to 1 has no tick at 0.5.
+#[test]
+fn plot_integer_lanes_have_whole_ticks_and_labelled_changes() {
+    let src = file(
+        "count.il",
+        "PROGRAM Count\nVAR go : BOOL; n : INT; w : UINT; k : INT; END_VAR\n\
+         LD go\nJMPCN done\nLD n\nADD 3\nST n\nLD w\nADD 137\nST w\nLD 1\nST k\ndone:\nEND_PROGRAM\n",
+    );
+    let svg = dir().join("count.svg");
+    let out = ilc(&[
+        "run",
+        &src,
+        "--cycles",
+        "12",
+        "--step",
+        "1s",
+        "--set",
+        "go=TRUE@4",
+        "--set",
+        "go=FALSE@6",
+        "--watch",
+        "n,w,k",
+        "--plot",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let svg = std::fs::read_to_string(&svg).unwrap();
+    let texts: Vec<&str> = svg
+        .split("<text")
+        .skip(1)
+        .filter_map(|t| t.split_once('>').and_then(|(_, r)| r.split_once("</text>")))
+        .map(|(t, _)| t.trim())
+        .collect();
+    for want in ["3", "6", "137", "274"] {
+        assert!(texts.contains(&want), "no label {want}: {texts:?}");
+    }
+    assert!(
+        !texts
+            .iter()
+            .any(|t| t.contains('.') && t.parse::<f64>().is_ok()),
+        "a tick between whole numbers: {texts:?}"
+    );
+}

@@ -220,13 +220,17 @@ fn render_one(renderer: &Renderer, file: &SourceFile, d: &Diagnostic) -> String 
     )
 }
 
-/// One compact, self-contained message for `compile_error!` inside `il!`, where
-/// rustc can only point at the whole string literal: the code, the message, the
-/// IL position, the source line with a caret line under the span, the notes and
-/// the help.
+/// One self-contained message for `compile_error!` (inside `il!`, and in the
+/// file build.rs writes in place of a failed program), where rustc can only
+/// point at the whole string literal. It has the layout of [`render`], the
+/// one of rustc, `ilc` and build.rs: the code and the message, the IL
+/// position on an arrow line, the source line with a caret line under the
+/// span, the notes and the help. rustc prints it after `error: `, so editors'
+/// rustc problem matchers read the `-->` line as the error's place.
 ///
 /// ```text
-/// IL0003: expected an operand after `LD` (at line 12, column 5)
+/// IL0003: expected an operand after `LD`
+///   --> plc/motor.il:12:5
 ///    |
 /// 12 |     LD
 ///    |     ^^ operand missing here
@@ -237,7 +241,8 @@ pub fn render_short(file: &SourceFile, d: &Diagnostic) -> String {
 }
 
 /// [`render_short`] for IL inside a Rust file: `first_line` is the Rust line
-/// on which the IL's line 1 starts, so the message can name both.
+/// on which the IL's line 1 starts, so the arrow names both (there is no IL
+/// file to name; rustc's own arrow, after the message, names the Rust file).
 pub fn render_short_in(file: &SourceFile, d: &Diagnostic, first_line: Option<usize>) -> String {
     let text = file.text.as_str();
     let (lo_shown, hi) = display_span(text, d.span);
@@ -246,18 +251,22 @@ pub fn render_short_in(file: &SourceFile, d: &Diagnostic, first_line: Option<usi
     if d.severity == Severity::Warning {
         out.push_str("warning ");
     }
-    let at = match first_line {
-        Some(first) => format!(
-            "at IL line {line}, column {col}; line {} of this file",
-            first + line - 1
-        ),
-        None => format!("at line {line}, column {col}"),
-    };
-    out.push_str(&format!("{}: {} ({at})\n", d.code, one_line(&d.message)));
-
-    let src_line = file.line_text(line);
     let num = line.to_string();
     let pad = " ".repeat(num.len());
+    let at = match first_line {
+        Some(first) => format!(
+            "IL line {line}, column {col} (line {} of this file)",
+            first + line - 1
+        ),
+        None => format!("{}:{line}:{col}", one_line(&file.name)),
+    };
+    out.push_str(&format!(
+        "{}: {}\n{pad}--> {at}\n",
+        d.code,
+        one_line(&d.message)
+    ));
+
+    let src_line = file.line_text(line);
     // The caret line copies tabs so that it lines up under the source line.
     let prefix: String = src_line
         .chars()
@@ -381,7 +390,7 @@ mod tests {
         let r = render(&f, std::slice::from_ref(&d), false);
         assert!(r.contains(" --> t.il:2:7"), "{r}");
         let s = render_short(&f, &d);
-        assert!(s.contains("(at line 2, column 7)"), "{s}");
+        assert!(s.contains("\n --> t.il:2:7\n"), "{s}");
     }
 
     #[test]
@@ -397,7 +406,7 @@ mod tests {
         let s = render_short(&f, &d);
         assert_eq!(
             s,
-            "IL0003: expected an operand after `LD` (at line 2, column 2)\n  |\n2 | \tLD\n  | \t^^ here\n  = help: write `LD x`"
+            "IL0003: expected an operand after `LD`\n --> t.il:2:2\n  |\n2 | \tLD\n  | \t^^ here\n  = help: write `LD x`"
         );
     }
 

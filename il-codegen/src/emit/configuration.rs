@@ -53,8 +53,8 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
                 let id = rust_ident(rn);
                 let d = doc(&format!(" RESOURCE `{rn}` of CONFIGURATION `{}`.", c.name));
                 sub_items.push_str(&format!(
-                    "{d}#[derive(Clone, Debug, PartialEq)] #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)] pub struct {st} {{ {f} }} \
-                     #[allow(dead_code, clippy::all)] impl ::core::default::Default for {st} {{ fn default() -> Self {{ Self {{ {i} }} }} }}"
+                    "{d}#[derive(Clone, Debug, PartialEq)] #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)] pub struct {st} {{ {f} }} \
+                     #[allow(dead_code, clippy::all, clippy::pedantic)] impl ::core::default::Default for {st} {{ fn default() -> Self {{ Self {{ {i} }} }} }}"
                 ));
                 let fdoc = doc(&format!(" RESOURCE `{rn}`"));
                 res_fields.push_str(&format!("{fdoc}pub {id}: {st},"));
@@ -226,8 +226,8 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
     };
     let access = super::access::methods(c);
     o.code(&format!(
-        "{d}#[derive(Clone, Debug, PartialEq)] #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)] pub struct {name} {{ {fields} {prog_fields} {res_fields} {state_fields} }} \
-         #[allow(dead_code, clippy::all)] impl ::core::default::Default for {name} {{ fn default() -> Self {{ {new_self} }} }} \
+        "{d}#[derive(Clone, Debug, PartialEq)] #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)] pub struct {name} {{ {fields} {prog_fields} {res_fields} {state_fields} }} \
+         #[allow(dead_code, clippy::all, clippy::pedantic)] impl ::core::default::Default for {name} {{ fn default() -> Self {{ {new_self} }} }} \
          {sub_items}"
     ));
     retain_items(o, c, &name, opts);
@@ -238,7 +238,7 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
         ", ",
     );
     o.code(&format!(
-        "#[allow(dead_code, non_snake_case, unused_mut, unused_variables, clippy::all)] impl {name} {{ \
+        "#[allow(dead_code, non_snake_case, unused_mut, unused_variables, clippy::all, clippy::pedantic)] impl {name} {{ \
          /// The tasks, highest priority first.\n\
          pub const TASKS: &'static [::il_std::TaskInfo] = &[\n{infos}]; \
          /// The located globals (`AT %...`), which live in `Cycle::io`.\n\
@@ -279,7 +279,7 @@ fn retain_items(o: &mut Out, c: &ConfigDef, name: &str, opts: super::Options) {
             let id = rust_ident(&v.name);
             let f = rust_ident(&format!("{prefix}{}", v.name));
             let ty = rust_ty(&v.ty);
-            let d = doc(&format!(" VAR_GLOBAL RETAIN (IL line {})", v.line));
+            let d = doc(&format!(" `VAR_GLOBAL RETAIN` (IL line {})", v.line));
             let sf = super::serde_field(&v.ty, opts);
             fields.push_str(&format!("{d}{sf} pub {f}: {ty},"));
             takes.push_str(&format!("{f}: ::core::clone::Clone::clone(&{base}.{id}),"));
@@ -324,7 +324,7 @@ fn members(globals: &[Var], programs: &[(String, String)]) -> (String, String) {
         let id = rust_ident(&v.name);
         let ty = rust_ty(&v.ty);
         let d = doc(&format!(
-            " VAR_GLOBAL{}{} (IL line {})",
+            " `VAR_GLOBAL{}{}` (IL line {})",
             if v.constant { " CONSTANT" } else { "" },
             if v.retain { " RETAIN" } else { "" },
             v.line

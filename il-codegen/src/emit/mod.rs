@@ -153,7 +153,7 @@ impl PouEmitter<'_> {
 }
 
 /// The `allow` list of generated function bodies.
-const ALLOW_BODY: &str = "#[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]";
+const ALLOW_BODY: &str = "#[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]";
 
 impl PouEmitter<'_> {
     /// `let mut` for the CR, saved-value and VAR_TEMP locals.
@@ -230,12 +230,12 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
                 let id = rust_ident(&v.name);
                 let vdoc = if v.heap {
                     format!(
-                        " {} (IL line {}); over 64 KiB, so on the heap: the elements of its first dimension",
+                        " `{}` (IL line {}); over 64 KiB, so on the heap: the elements of its first dimension",
                         v.kind.keyword(),
                         v.line
                     )
                 } else {
-                    format!(" {} (IL line {})", v.kind.keyword(), v.line)
+                    format!(" `{}` (IL line {})", v.kind.keyword(), v.line)
                 };
                 decls.push_str(&format!(
                     "{}{} pub {id}: {},",
@@ -275,10 +275,10 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
                 .collect();
             let serde = serde_derive(opts);
             o.code(&format!(
-                "{pdoc}#[derive(Clone, Debug, PartialEq)] {serde} #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)] pub struct {name} {{ {decls} }}"
+                "{pdoc}#[derive(Clone, Debug, PartialEq)] {serde} #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)] pub struct {name} {{ {decls} }}"
             ));
             o.code(&format!(
-                "#[allow(dead_code, clippy::all)] impl ::core::default::Default for {name} {{ fn default() -> Self {{ Self {{ {inits} }} }} }}"
+                "#[allow(dead_code, clippy::all, clippy::pedantic)] impl ::core::default::Default for {name} {{ fn default() -> Self {{ Self {{ {inits} }} }} }}"
             ));
             let addresses = each(io::addresses(pou), ", ");
             let io_accessors = io::accessors(&pou.vars);
@@ -300,7 +300,7 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
                 format!(", mut __ext: {ext_id}<'_>")
             };
             o.code(&format!(
-                "#[allow(dead_code, clippy::all)] impl {name} {{ \
+                "#[allow(dead_code, clippy::all, clippy::pedantic)] impl {name} {{ \
                  /// The located variables and direct addresses this POU\n\
                  /// reads or writes in `Cycle::io`, for binding I/O.\n\
                  pub const ADDRESSES: &'static [::il_std::Located] = &[\n{addresses}]; {io_accessors} \
@@ -342,7 +342,7 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
             // The generic trait fits blocks called with the context alone.
             if inouts.is_empty() && externals.is_empty() {
                 o.code(&format!(
-                    "impl ::il_std::FunctionBlock for {name} {{ fn call(&mut self, ctx: &mut ::il_std::Cycle) {{ {name}::call(self, ctx) }} }}"
+                    "impl ::il_std::FunctionBlock for {name} {{ fn call(&mut self, ctx: &mut ::il_std::Cycle) {{ {name}::call(self, ctx); }} }}"
                 ));
             }
             visit::pou(o, &name, &fields);
@@ -352,19 +352,19 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
                     let id = rust_ident(&v.name);
                     let ty = rust_ty(&v.ty);
                     if v.constant {
-                        let vdoc = doc(&format!(" VAR_EXTERNAL CONSTANT (IL line {})", v.line));
+                        let vdoc = doc(&format!(" `VAR_EXTERNAL CONSTANT` (IL line {})", v.line));
                         efields.push_str(&format!("{vdoc}pub {id}: &'a {ty},"));
                     } else {
-                        let vdoc = doc(&format!(" VAR_EXTERNAL (IL line {})", v.line));
+                        let vdoc = doc(&format!(" `VAR_EXTERNAL` (IL line {})", v.line));
                         efields.push_str(&format!("{vdoc}pub {id}: &'a mut {ty},"));
                     }
                 }
                 let edoc = doc(&format!(
-                    " The globals `{}` uses (its VAR_EXTERNALs), passed to every call.",
+                    " The globals `{}` uses (its `VAR_EXTERNAL` variables), passed to every call.",
                     pou.name
                 ));
                 o.code(&format!(
-                    "{edoc}#[allow(dead_code, non_snake_case, non_camel_case_types)] pub struct {ext_id}<'a> {{ {efields} }}"
+                    "{edoc}#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)] pub struct {ext_id}<'a> {{ {efields} }}"
                 ));
             }
             retain_items(o, pou, opts);
@@ -390,7 +390,7 @@ fn retain_items(o: &mut Out, pou: &CheckedPou, opts: Options) {
             Retained::Whole => {
                 let ty = field_ty(v);
                 let d = doc(&format!(
-                    " {} RETAIN (IL line {})",
+                    " `{} RETAIN` (IL line {})",
                     v.kind.keyword(),
                     v.line
                 ));
@@ -411,7 +411,7 @@ fn retain_items(o: &mut Out, pou: &CheckedPou, opts: Options) {
                     snap(&v.ty)
                 };
                 let d = doc(&format!(
-                    " The RETAIN variables of `{}` (IL line {})",
+                    " The `RETAIN` variables of `{}` (IL line {})",
                     v.name, v.line
                 ));
                 let sf = serde_var(v, opts);
@@ -459,11 +459,11 @@ pub(crate) fn snapshot_item(
 ) {
     let serde = serde_derive(opts);
     o.code(&format!(
-        "{}#[derive(Clone, Debug, PartialEq)] {serde} #[allow(dead_code, non_snake_case, non_camel_case_types)] pub struct {st} {{ {fields} }}",
+        "{}#[derive(Clone, Debug, PartialEq)] {serde} #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)] pub struct {st} {{ {fields} }}",
         doc(d)
     ));
     o.code(&format!(
-        "#[allow(dead_code, clippy::all)] impl {owner} {{ \
+        "#[allow(dead_code, clippy::all, clippy::pedantic)] impl {owner} {{ \
          /// A snapshot of the RETAIN variables.\n\
          pub fn retain(&self) -> {st} {{ {st} {{ {takes} }} }} \
          /// Puts a snapshot back (a warm start); other variables keep their values.\n\
@@ -563,13 +563,16 @@ fn emit_type(o: &mut Out, t: &crate::ir::TypeDef, opts: Options) {
             for f in fields {
                 let fid = rust_ident(&f.name);
                 let sf = serde_field(&f.ty, opts);
-                decls.push_str(&format!("{sf} pub {fid}: {},", rust_ty(&f.ty)));
+                // Documented from the declaration, so that a crate with
+                // `#![warn(missing_docs)]` accepts the public field.
+                let fdoc = doc(&format!(" `{}`: `{}` field of `{name}`.", f.name, f.ty));
+                decls.push_str(&format!("{fdoc}{sf} pub {fid}: {},", rust_ty(&f.ty)));
                 let v = values::init_value(&f.ty, f.init.as_ref());
                 inits.push_str(&format!("{fid}: {v},"));
             }
             o.code(&format!(
-                "{d}#[derive(Clone, Copy, Debug, PartialEq)] {serde} #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)] pub struct {id} {{ {decls} }} \
-                 #[allow(dead_code, clippy::all)] impl ::core::default::Default for {id} {{ fn default() -> Self {{ Self {{ {inits} }} }} }}"
+                "{d}#[derive(Clone, Copy, Debug, PartialEq)] {serde} #[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)] pub struct {id} {{ {decls} }} \
+                 #[allow(dead_code, clippy::all, clippy::pedantic)] impl ::core::default::Default for {id} {{ fn default() -> Self {{ Self {{ {inits} }} }} }}"
             ));
             visit::strukt(o, name, fields);
         }
@@ -584,6 +587,8 @@ fn emit_type(o: &mut Out, t: &crate::ir::TypeDef, opts: Options) {
             ));
             let mut vals = String::new();
             for (i, (v, disc)) in values.iter().enumerate() {
+                // Each value documented as IL writes it (`missing_docs`).
+                vals.push_str(&doc(&format!(" `{name}#{v}`")));
                 if i == *default {
                     vals.push_str("#[default] ");
                 }
@@ -594,7 +599,7 @@ fn emit_type(o: &mut Out, t: &crate::ir::TypeDef, opts: Options) {
                 vals.push(',');
             }
             o.code(&format!(
-                "{d}#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)] {serde} #[allow(dead_code, non_camel_case_types, clippy::all)] pub enum {id} {{ {vals} }}"
+                "{d}#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)] {serde} #[allow(dead_code, non_camel_case_types, clippy::all, clippy::pedantic)] pub enum {id} {{ {vals} }}"
             ));
             visit::enumeration(o, name, values);
         }

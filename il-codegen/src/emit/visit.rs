@@ -81,7 +81,7 @@ pub(crate) fn strukt(o: &mut Out, name: &str, fields: &[Field]) {
         .map(|f| offer(&f.name, &f.ty, &format!("self.{}", rust_ident(&f.name))))
         .collect();
     o.code(&format!(
-        "#[allow(dead_code, unused_variables, clippy::all)] impl ::il_std::trace::Visit for {id} {{ fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {{ {offers} }} }}"
+        "#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)] impl ::il_std::trace::Visit for {id} {{ fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {{ {offers} }} }}"
     ));
 }
 
@@ -93,7 +93,7 @@ pub(crate) fn enumeration(o: &mut Out, name: &str, values: &[(String, Option<i12
         .map(|(v, _)| format!("{id}::{} => {}, ", rust_ident(v), str_lit(v)))
         .collect();
     o.code(&format!(
-        "#[allow(dead_code, clippy::all)] impl ::il_std::trace::AsValue for {id} {{ fn as_value(&self) -> ::il_std::trace::Value<'_> {{ ::il_std::trace::Value::Enum {{ value: *self as i64, name: match self {{ {arms} }}, }} }} }}"
+        "#[allow(dead_code, clippy::all, clippy::pedantic)] impl ::il_std::trace::AsValue for {id} {{ fn as_value(&self) -> ::il_std::trace::Value<'_> {{ ::il_std::trace::Value::Enum {{ value: *self as i64, name: match self {{ {arms} }}, }} }} }}"
     ));
 }
 
@@ -138,10 +138,10 @@ pub(crate) fn config(
 
 fn visit_items(o: &mut Out, name: &str, body: &str) {
     o.code(&format!(
-        "#[allow(dead_code, unused_variables, clippy::all)] impl {name} {{ \
+        "#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)] impl {name} {{ \
          /// Offer every variable to `v` (see `il_std::trace`): name, IEC\n\
          /// type and value, going into instances, STRUCTs and arrays.\n\
          pub fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {{ {body} }} }} \
-         impl ::il_std::trace::Visit for {name} {{ fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {{ {name}::visit(self, v) }} }}"
+         impl ::il_std::trace::Visit for {name} {{ fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {{ {name}::visit(self, v); }} }}"
     ));
 }

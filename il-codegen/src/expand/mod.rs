@@ -143,11 +143,8 @@ fn expand_inner(tokens: &[Tok]) -> Expansion {
     }
     for ((input, diags), (_, span)) in checked.reports().zip(&sources) {
         for d in diags.iter().filter(|d| d.is_error()) {
-            let mut msg = render_short_in(input.source(), d, first_line);
-            // A file's message names it: with several, the line alone is ambiguous.
-            if first_line.is_none() {
-                msg = format!("{}: {msg}", input.source().name);
-            }
+            // A file's message names it on its arrow line, as rustc would.
+            let msg = render_short_in(input.source(), d, first_line);
             out.errors.push((msg, *span));
         }
     }

@@ -289,7 +289,7 @@ fn files_in_a_named_encoding() {
     let out = call("utf-8");
     assert!(out.errors[0].0.contains("IL0040"), "{}", text(&out));
     assert!(
-        out.errors[0].0.contains("(at line 2, column 20)"),
+        out.errors[0].0.contains("nasos.exp:2:20\n"),
         "{}",
         text(&out)
     );
@@ -314,7 +314,7 @@ fn without_code_pages_a_file_in_one_is_an_error_naming_the_feature() {
     assert_eq!(out.errors.len(), 1, "{}", text(&out));
     let msg = &out.errors[0].0;
     assert!(msg.contains("IL0040"), "{msg}");
-    assert!(msg.contains("(at line 3, column 13)"), "{msg}");
+    assert!(msg.contains("nasos.exp:3:13\n"), "{msg}");
     assert!(msg.contains("`encodings` feature"), "{msg}");
     let out = expand(&[
         id("file"),

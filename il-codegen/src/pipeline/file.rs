@@ -146,7 +146,7 @@ fn write_line<'a>(
 
 /// The text of a `//` comment (see `emit::text::comment_text`): most IL
 /// lines are printable ASCII without `*/`, which stay as they are.
-fn sanitize_comment(s: &str) -> std::borrow::Cow<'_, str> {
+pub(crate) fn sanitize_comment(s: &str) -> std::borrow::Cow<'_, str> {
     // A byte scan: `contains("*/")` would build a substring searcher per line.
     let b = s.as_bytes();
     if b.iter().all(|b| (b' '..=b'~').contains(b)) && !b.windows(2).any(|w| w == b"*/") {

@@ -9,7 +9,7 @@
 //! is emitted only when no input has an error.
 
 #[cfg(feature = "build")]
-mod file;
+pub(crate) mod file;
 mod input;
 pub mod snippet;
 

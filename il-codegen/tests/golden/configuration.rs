@@ -2,14 +2,14 @@
 
 /// IEC 61131-3 PROGRAM `Fast`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Fast {
-    /// VAR_INPUT (IL line 6)
+    /// `VAR_INPUT` (IL line 6)
     pub enable: bool,
-    /// VAR_OUTPUT (IL line 7)
+    /// `VAR_OUTPUT` (IL line 7)
     pub seen: i32,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Fast {
     fn default() -> Self {
         Self {
@@ -18,7 +18,7 @@ impl ::core::default::Default for Fast {
         }
     }
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl Fast {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
@@ -46,7 +46,7 @@ impl Fast {
         }
     }
     /// Run one scan.
-    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle, mut __ext: Fast__Ext<'_>) {
         let mut __s_enable: bool = self.enable;
         let mut __s_seen: i32 = self.seen;
@@ -83,7 +83,7 @@ impl Fast {
         }
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl Fast {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -94,32 +94,32 @@ impl Fast {
 }
 impl ::il_std::trace::Visit for Fast {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        Fast::visit(self, v)
+        Fast::visit(self, v);
     }
 }
-/// The globals `Fast` uses (its VAR_EXTERNALs), passed to every call.
-#[allow(dead_code, non_snake_case, non_camel_case_types)]
+/// The globals `Fast` uses (its `VAR_EXTERNAL` variables), passed to every call.
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Fast__Ext<'a> {
-    /// VAR_EXTERNAL (IL line 5)
+    /// `VAR_EXTERNAL` (IL line 5)
     pub ticks: &'a mut i32,
 }
 /// IEC 61131-3 PROGRAM `Slow`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Slow {}
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Slow {
     fn default() -> Self {
         Self {}
     }
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl Slow {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
-    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle, mut __ext: Slow__Ext<'_>) {
         let mut __cr_dint: i32 = 0i32;
         let mut __cr_bool: bool = false;
@@ -139,7 +139,7 @@ impl Slow {
         // 28: keep:
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl Slow {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -147,35 +147,35 @@ impl Slow {
 }
 impl ::il_std::trace::Visit for Slow {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        Slow::visit(self, v)
+        Slow::visit(self, v);
     }
 }
-/// The globals `Slow` uses (its VAR_EXTERNALs), passed to every call.
-#[allow(dead_code, non_snake_case, non_camel_case_types)]
+/// The globals `Slow` uses (its `VAR_EXTERNAL` variables), passed to every call.
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Slow__Ext<'a> {
-    /// VAR_EXTERNAL CONSTANT (IL line 21)
+    /// `VAR_EXTERNAL CONSTANT` (IL line 21)
     pub limit: &'a i32,
-    /// VAR_EXTERNAL (IL line 22)
+    /// `VAR_EXTERNAL` (IL line 22)
     pub ticks: &'a mut i32,
 }
 /// IEC 61131-3 CONFIGURATION `Plant`, generated from Instruction List: its globals and program instances. Call [`Plant::run`] once per host cycle with the current time in the context.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Plant {
-    /// VAR_GLOBAL (IL line 33)
+    /// `VAR_GLOBAL` (IL line 33)
     pub ticks: i32,
-    /// VAR_GLOBAL (IL line 35)
+    /// `VAR_GLOBAL` (IL line 35)
     pub run: bool,
-    /// VAR_GLOBAL (IL line 36)
+    /// `VAR_GLOBAL` (IL line 36)
     pub fast_seen: i32,
-    /// VAR_GLOBAL CONSTANT (IL line 38)
+    /// `VAR_GLOBAL CONSTANT` (IL line 38)
     pub limit: i32,
     /// RESOURCE `Cpu`
     pub Cpu: Plant__Cpu,
     __task_0: ::il_std::TaskState,
     __task_1: ::il_std::TaskState,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Plant {
     fn default() -> Self {
         Self {
@@ -191,14 +191,14 @@ impl ::core::default::Default for Plant {
 }
 /// RESOURCE `Cpu` of CONFIGURATION `Plant`.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Plant__Cpu {
     /// PROGRAM instance `fast` : Fast
     pub fast: Fast,
     /// PROGRAM instance `slow` : Slow
     pub slow: Slow,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Plant__Cpu {
     fn default() -> Self {
         Self {
@@ -207,7 +207,7 @@ impl ::core::default::Default for Plant__Cpu {
         }
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl Plant {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -228,10 +228,10 @@ impl Plant {
 }
 impl ::il_std::trace::Visit for Plant {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        Plant::visit(self, v)
+        Plant::visit(self, v);
     }
 }
-#[allow(dead_code, non_snake_case, unused_mut, unused_variables, clippy::all)]
+#[allow(dead_code, non_snake_case, unused_mut, unused_variables, clippy::all, clippy::pedantic)]
 impl Plant {
     /// The tasks, highest priority first.
     pub const TASKS: &'static [::il_std::TaskInfo] = &[

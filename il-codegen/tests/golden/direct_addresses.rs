@@ -2,12 +2,12 @@
 
 /// IEC 61131-3 PROGRAM `Io`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Io {
-    /// VAR (IL line 3)
+    /// `VAR` (IL line 3)
     pub w: u16,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Io {
     fn default() -> Self {
         Self {
@@ -15,7 +15,7 @@ impl ::core::default::Default for Io {
         }
     }
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl Io {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
@@ -94,7 +94,7 @@ impl Io {
         }
     }
     /// Run one scan.
-    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_w: u16 = self.w;
         let mut __cr_bool: bool = false;
@@ -127,10 +127,10 @@ impl Io {
 }
 impl ::il_std::FunctionBlock for Io {
     fn call(&mut self, ctx: &mut ::il_std::Cycle) {
-        Io::call(self, ctx)
+        Io::call(self, ctx);
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl Io {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -140,6 +140,6 @@ impl Io {
 }
 impl ::il_std::trace::Visit for Io {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        Io::visit(self, v)
+        Io::visit(self, v);
     }
 }

@@ -2,18 +2,18 @@
 
 /// IEC 61131-3 PROGRAM `Dispatch`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Dispatch {
-    /// VAR_INPUT (IL line 5)
+    /// `VAR_INPUT` (IL line 5)
     pub start_mid: bool,
-    /// VAR (IL line 6)
+    /// `VAR` (IL line 6)
     pub i: i16,
-    /// VAR (IL line 6)
+    /// `VAR` (IL line 6)
     pub j: i16,
-    /// VAR (IL line 6)
+    /// `VAR` (IL line 6)
     pub n: i16,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Dispatch {
     fn default() -> Self {
         Self {
@@ -24,13 +24,13 @@ impl ::core::default::Default for Dispatch {
         }
     }
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl Dispatch {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
-    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_start_mid: bool = self.start_mid;
         let mut __s_i: i16 = self.i;
@@ -105,10 +105,10 @@ impl Dispatch {
 }
 impl ::il_std::FunctionBlock for Dispatch {
     fn call(&mut self, ctx: &mut ::il_std::Cycle) {
-        Dispatch::call(self, ctx)
+        Dispatch::call(self, ctx);
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl Dispatch {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -121,6 +121,6 @@ impl Dispatch {
 }
 impl ::il_std::trace::Visit for Dispatch {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        Dispatch::visit(self, v)
+        Dispatch::visit(self, v);
     }
 }

@@ -2,25 +2,25 @@
 
 /// IEC 61131-3 FUNCTION_BLOCK `Station`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Station {
-    /// VAR_INPUT (IL line 4)
+    /// `VAR_INPUT` (IL line 4)
     pub go: bool,
-    /// VAR_INPUT (IL line 4)
+    /// `VAR_INPUT` (IL line 4)
     pub a: bool,
-    /// VAR_INPUT (IL line 4)
+    /// `VAR_INPUT` (IL line 4)
     pub b: bool,
-    /// VAR_OUTPUT (IL line 5)
+    /// `VAR_OUTPUT` (IL line 5)
     pub q: bool,
-    /// VAR (IL line 6)
+    /// `VAR` (IL line 6)
     pub c: ::il_std::CTU,
-    /// VAR (IL line 6)
+    /// `VAR` (IL line 6)
     pub t: ::il_std::TON,
-    /// VAR (IL line 6)
+    /// `VAR` (IL line 6)
     pub edge: ::il_std::R_TRIG,
     __edge_memory_go: bool,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Station {
     fn default() -> Self {
         Self {
@@ -35,13 +35,13 @@ impl ::core::default::Default for Station {
         }
     }
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl Station {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Call the block once.
-    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let __edge_go: bool = self.go && !self.__edge_memory_go;
         self.__edge_memory_go = self.go;
@@ -80,10 +80,10 @@ impl Station {
 }
 impl ::il_std::FunctionBlock for Station {
     fn call(&mut self, ctx: &mut ::il_std::Cycle) {
-        Station::call(self, ctx)
+        Station::call(self, ctx);
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl Station {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -105,6 +105,6 @@ impl Station {
 }
 impl ::il_std::trace::Visit for Station {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        Station::visit(self, v)
+        Station::visit(self, v);
     }
 }

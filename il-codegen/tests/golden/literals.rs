@@ -2,20 +2,20 @@
 
 /// IEC 61131-3 PROGRAM `Literals`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Literals {
-    /// VAR (IL line 4)
+    /// `VAR` (IL line 4)
     pub a: bool,
-    /// VAR (IL line 4)
+    /// `VAR` (IL line 4)
     pub r: f32,
-    /// VAR (IL line 4)
+    /// `VAR` (IL line 4)
     pub n: i16,
-    /// VAR (IL line 4)
+    /// `VAR` (IL line 4)
     pub t: ::il_std::TIME,
-    /// VAR (IL line 4)
+    /// `VAR` (IL line 4)
     pub w: u16,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Literals {
     fn default() -> Self {
         Self {
@@ -27,13 +27,13 @@ impl ::core::default::Default for Literals {
         }
     }
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl Literals {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
-    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_a: bool = self.a;
         let mut __s_r: f32 = self.r;
@@ -77,10 +77,10 @@ impl Literals {
 }
 impl ::il_std::FunctionBlock for Literals {
     fn call(&mut self, ctx: &mut ::il_std::Cycle) {
-        Literals::call(self, ctx)
+        Literals::call(self, ctx);
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl Literals {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -94,6 +94,6 @@ impl Literals {
 }
 impl ::il_std::trace::Visit for Literals {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        Literals::visit(self, v)
+        Literals::visit(self, v);
     }
 }

@@ -2,16 +2,16 @@
 
 /// IEC 61131-3 PROGRAM `LongNetwork`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct LongNetwork {
-    /// VAR_INPUT (IL line 3)
+    /// `VAR_INPUT` (IL line 3)
     pub x: [bool; 8],
-    /// VAR_OUTPUT (IL line 4)
+    /// `VAR_OUTPUT` (IL line 4)
     pub m: [bool; 12],
-    /// VAR (IL line 5)
+    /// `VAR` (IL line 5)
     pub e: ::il_std::R_TRIG,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for LongNetwork {
     fn default() -> Self {
         Self {
@@ -21,13 +21,13 @@ impl ::core::default::Default for LongNetwork {
         }
     }
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl LongNetwork {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
-    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __copy__not_x: [bool; 8] = self.x.map(|__b| !__b);
         let __not_x = &mut *::core::hint::black_box(&mut __copy__not_x);
@@ -149,10 +149,10 @@ impl LongNetwork {
 }
 impl ::il_std::FunctionBlock for LongNetwork {
     fn call(&mut self, ctx: &mut ::il_std::Cycle) {
-        LongNetwork::call(self, ctx)
+        LongNetwork::call(self, ctx);
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl LongNetwork {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -172,6 +172,6 @@ impl LongNetwork {
 }
 impl ::il_std::trace::Visit for LongNetwork {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        LongNetwork::visit(self, v)
+        LongNetwork::visit(self, v);
     }
 }

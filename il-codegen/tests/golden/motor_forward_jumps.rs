@@ -2,20 +2,20 @@
 
 /// IEC 61131-3 FUNCTION_BLOCK `Motor`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Motor {
-    /// VAR_INPUT (IL line 4)
+    /// `VAR_INPUT` (IL line 4)
     pub start: bool,
-    /// VAR_INPUT (IL line 5)
+    /// `VAR_INPUT` (IL line 5)
     pub stop: bool,
-    /// VAR_OUTPUT (IL line 8)
+    /// `VAR_OUTPUT` (IL line 8)
     pub run: bool,
-    /// VAR_OUTPUT (IL line 9)
+    /// `VAR_OUTPUT` (IL line 9)
     pub starts: i16,
-    /// VAR (IL line 12)
+    /// `VAR` (IL line 12)
     pub edge: ::il_std::R_TRIG,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Motor {
     fn default() -> Self {
         Self {
@@ -27,13 +27,13 @@ impl ::core::default::Default for Motor {
         }
     }
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl Motor {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Call the block once.
-    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_start: bool = self.start;
         let mut __s_stop: bool = self.stop;
@@ -77,10 +77,10 @@ impl Motor {
 }
 impl ::il_std::FunctionBlock for Motor {
     fn call(&mut self, ctx: &mut ::il_std::Cycle) {
-        Motor::call(self, ctx)
+        Motor::call(self, ctx);
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl Motor {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -96,6 +96,6 @@ impl Motor {
 }
 impl ::il_std::trace::Visit for Motor {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        Motor::visit(self, v)
+        Motor::visit(self, v);
     }
 }

@@ -2,16 +2,16 @@
 
 /// IEC 61131-3 FUNCTION_BLOCK `Odometer`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Odometer {
-    /// VAR_INPUT (IL line 5)
+    /// `VAR_INPUT` (IL line 5)
     pub pulse: bool,
-    /// VAR (IL line 6)
+    /// `VAR` (IL line 6)
     pub total: u32,
-    /// VAR (IL line 7)
+    /// `VAR` (IL line 7)
     pub edge: ::il_std::R_TRIG,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Odometer {
     fn default() -> Self {
         Self {
@@ -21,13 +21,13 @@ impl ::core::default::Default for Odometer {
         }
     }
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl Odometer {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Call the block once.
-    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_pulse: bool = self.pulse;
         let mut __s_total: u32 = self.total;
@@ -60,10 +60,10 @@ impl Odometer {
 }
 impl ::il_std::FunctionBlock for Odometer {
     fn call(&mut self, ctx: &mut ::il_std::Cycle) {
-        Odometer::call(self, ctx)
+        Odometer::call(self, ctx);
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl Odometer {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -77,17 +77,17 @@ impl Odometer {
 }
 impl ::il_std::trace::Visit for Odometer {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        Odometer::visit(self, v)
+        Odometer::visit(self, v);
     }
 }
 /// The RETAIN variables of `Odometer` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Odometer__Retain {
-    /// VAR RETAIN (IL line 6)
+    /// `VAR RETAIN` (IL line 6)
     pub total: u32,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl Odometer {
     /// A snapshot of the RETAIN variables.
     pub fn retain(&self) -> Odometer__Retain {
@@ -102,20 +102,20 @@ impl Odometer {
 }
 /// IEC 61131-3 PROGRAM `Line`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Line {
-    /// VAR_INPUT (IL line 18)
+    /// `VAR_INPUT` (IL line 18)
     pub pulses: [bool; 2],
-    /// VAR (IL line 19)
+    /// `VAR` (IL line 19)
     pub shifts: i16,
-    /// VAR (IL line 21)
+    /// `VAR` (IL line 21)
     pub main: Odometer,
-    /// VAR (IL line 22)
+    /// `VAR` (IL line 22)
     pub axes: [Odometer; 2],
-    /// VAR (IL line 23)
+    /// `VAR` (IL line 23)
     pub scratch: i16,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Line {
     fn default() -> Self {
         Self {
@@ -127,13 +127,13 @@ impl ::core::default::Default for Line {
         }
     }
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl Line {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
-    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_shifts: i16 = self.shifts;
         let mut __s_scratch: i16 = self.scratch;
@@ -177,10 +177,10 @@ impl Line {
 }
 impl ::il_std::FunctionBlock for Line {
     fn call(&mut self, ctx: &mut ::il_std::Cycle) {
-        Line::call(self, ctx)
+        Line::call(self, ctx);
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl Line {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -204,21 +204,21 @@ impl Line {
 }
 impl ::il_std::trace::Visit for Line {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        Line::visit(self, v)
+        Line::visit(self, v);
     }
 }
 /// The RETAIN variables of `Line` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Line__Retain {
-    /// VAR RETAIN (IL line 19)
+    /// `VAR RETAIN` (IL line 19)
     pub shifts: i16,
-    /// The RETAIN variables of `main` (IL line 21)
+    /// The `RETAIN` variables of `main` (IL line 21)
     pub main: Odometer__Retain,
-    /// The RETAIN variables of `axes` (IL line 22)
+    /// The `RETAIN` variables of `axes` (IL line 22)
     pub axes: [Odometer__Retain; 2],
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl Line {
     /// A snapshot of the RETAIN variables.
     pub fn retain(&self) -> Line__Retain {
@@ -251,14 +251,14 @@ impl Line {
 }
 /// IEC 61131-3 PROGRAM `OnlyNested`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct OnlyNested {
-    /// VAR (IL line 35)
+    /// `VAR` (IL line 35)
     pub wheel: Odometer,
-    /// VAR (IL line 35)
+    /// `VAR` (IL line 35)
     pub x: bool,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for OnlyNested {
     fn default() -> Self {
         Self {
@@ -267,13 +267,13 @@ impl ::core::default::Default for OnlyNested {
         }
     }
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl OnlyNested {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Run one scan.
-    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_x: bool = self.x;
         '__body: {
@@ -287,10 +287,10 @@ impl OnlyNested {
 }
 impl ::il_std::FunctionBlock for OnlyNested {
     fn call(&mut self, ctx: &mut ::il_std::Cycle) {
-        OnlyNested::call(self, ctx)
+        OnlyNested::call(self, ctx);
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl OnlyNested {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -303,17 +303,17 @@ impl OnlyNested {
 }
 impl ::il_std::trace::Visit for OnlyNested {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        OnlyNested::visit(self, v)
+        OnlyNested::visit(self, v);
     }
 }
 /// The RETAIN variables of `OnlyNested` (and of the blocks it holds): what a host saves before power-off and restores at a warm start.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct OnlyNested__Retain {
-    /// The RETAIN variables of `wheel` (IL line 35)
+    /// The `RETAIN` variables of `wheel` (IL line 35)
     pub wheel: Odometer__Retain,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl OnlyNested {
     /// A snapshot of the RETAIN variables.
     pub fn retain(&self) -> OnlyNested__Retain {

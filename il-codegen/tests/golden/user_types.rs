@@ -2,14 +2,17 @@
 
 /// IEC 61131-3 enumeration `TankState`, generated from Instruction List.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-#[allow(dead_code, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub enum TankState {
+    /// `TankState#Idle`
     #[default]
     Idle,
+    /// `TankState#Filling`
     Filling,
+    /// `TankState#Full`
     Full,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::il_std::trace::AsValue for TankState {
     fn as_value(&self) -> ::il_std::trace::Value<'_> {
         ::il_std::trace::Value::Enum {
@@ -24,12 +27,14 @@ impl ::il_std::trace::AsValue for TankState {
 }
 /// IEC 61131-3 STRUCT `Point`, generated from Instruction List.
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Point {
+    /// `x`: `INT` field of `Point`.
     pub x: i16,
+    /// `y`: `INT` field of `Point`.
     pub y: i16,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Point {
     fn default() -> Self {
         Self {
@@ -38,7 +43,7 @@ impl ::core::default::Default for Point {
         }
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl ::il_std::trace::Visit for Point {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
         v.var("x", "INT", ::il_std::trace::AsValue::as_value(&self.x));
@@ -47,13 +52,16 @@ impl ::il_std::trace::Visit for Point {
 }
 /// IEC 61131-3 STRUCT `Tank`, generated from Instruction List.
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Tank {
+    /// `level`: `INT` field of `Tank`.
     pub level: i16,
+    /// `corner`: `Point` field of `Tank`.
     pub corner: Point,
+    /// `state`: `TankState` field of `Tank`.
     pub state: TankState,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Tank {
     fn default() -> Self {
         Self {
@@ -63,7 +71,7 @@ impl ::core::default::Default for Tank {
         }
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl ::il_std::trace::Visit for Tank {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
         v.var("level", "INT", ::il_std::trace::AsValue::as_value(&self.level));
@@ -74,7 +82,7 @@ impl ::il_std::trace::Visit for Tank {
     }
 }
 /// IEC 61131-3 FUNCTION `Scale`, generated from Instruction List.
-#[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+#[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
 pub fn Scale(__ctx: &mut ::il_std::Cycle, mut __v_raw: i16, __v_total: &mut i32, __v_ok: &mut bool) -> i16 {
     let mut __ret: i16 = 0i16;
     *__v_ok = false;
@@ -105,32 +113,32 @@ pub fn Scale(__ctx: &mut ::il_std::Cycle, mut __v_raw: i16, __v_total: &mut i32,
 }
 /// IEC 61131-3 FUNCTION_BLOCK `Plant`, generated from Instruction List.
 #[derive(Clone, Debug, PartialEq)]
-#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]
+#[allow(dead_code, non_snake_case, non_camel_case_types, clippy::all, clippy::pedantic)]
 pub struct Plant {
-    /// VAR_INPUT (IL line 37)
+    /// `VAR_INPUT` (IL line 37)
     pub demand: i16,
-    /// VAR_INPUT (IL line 37)
+    /// `VAR_INPUT` (IL line 37)
     pub r#ref: i16,
-    /// VAR_OUTPUT (IL line 38)
+    /// `VAR_OUTPUT` (IL line 38)
     pub state: TankState,
-    /// VAR (IL line 40)
+    /// `VAR` (IL line 40)
     pub main: Tank,
-    /// VAR (IL line 41)
+    /// `VAR` (IL line 41)
     pub tanks: [Tank; 3],
-    /// VAR (IL line 42)
+    /// `VAR` (IL line 42)
     pub grid: [[i16; 3]; 2],
-    /// VAR (IL line 43)
+    /// `VAR` (IL line 43)
     pub timers: [::il_std::TON; 2],
-    /// VAR (IL line 44)
+    /// `VAR` (IL line 44)
     pub pct: i16,
-    /// VAR (IL line 45)
+    /// `VAR` (IL line 45)
     pub i: i16,
-    /// VAR (IL line 46)
+    /// `VAR` (IL line 46)
     pub sum: i32,
-    /// VAR (IL line 47)
+    /// `VAR` (IL line 47)
     pub ok: bool,
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl ::core::default::Default for Plant {
     fn default() -> Self {
         Self {
@@ -157,13 +165,13 @@ impl ::core::default::Default for Plant {
         }
     }
 }
-#[allow(dead_code, clippy::all)]
+#[allow(dead_code, clippy::all, clippy::pedantic)]
 impl Plant {
     /// The located variables and direct addresses this POU
     /// reads or writes in `Cycle::io`, for binding I/O.
     pub const ADDRESSES: &'static [::il_std::Located] = &[];
     /// Call the block once.
-    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all)]
+    #[allow(dead_code, non_snake_case, unused_mut, unused_variables, unused_assignments, unreachable_code, unused_labels, unused_parens, unused_comparisons, clippy::all, clippy::pedantic)]
     pub fn call(&mut self, __ctx: &mut ::il_std::Cycle) {
         let mut __s_demand: i16 = self.demand;
         let mut __s_ref: i16 = self.r#ref;
@@ -291,10 +299,10 @@ impl Plant {
 }
 impl ::il_std::FunctionBlock for Plant {
     fn call(&mut self, ctx: &mut ::il_std::Cycle) {
-        Plant::call(self, ctx)
+        Plant::call(self, ctx);
     }
 }
-#[allow(dead_code, unused_variables, clippy::all)]
+#[allow(dead_code, unused_variables, clippy::all, clippy::pedantic)]
 impl Plant {
     /// Offer every variable to `v` (see `il_std::trace`): name, IEC
     /// type and value, going into instances, STRUCTs and arrays.
@@ -331,6 +339,6 @@ impl Plant {
 }
 impl ::il_std::trace::Visit for Plant {
     fn visit(&self, v: &mut dyn ::il_std::trace::Visitor) {
-        Plant::visit(self, v)
+        Plant::visit(self, v);
     }
 }
