@@ -13,6 +13,7 @@ use serde_json::{Value, json};
 /// Programs per folder.
 mod calls;
 mod code_actions;
+mod consistency;
 mod folders;
 mod formatting;
 mod semantic;
