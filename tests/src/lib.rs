@@ -78,7 +78,7 @@ pub mod encodings_macro {
 }
 
 /// `exp/project.EXP`: a CODESYS V2.3 export (Windows-1252) through
-/// build.rs. Its FUNCTION_BLOCK `Scale` is in Structured Text, so its body
+/// build.rs. Its `FUNCTION_BLOCK` `Scale` is in Structured Text, so its body
 /// is the crate's: `fn Scale` beside the generated struct.
 pub mod exp_build {
     include!(concat!(env!("OUT_DIR"), "/exp/project.rs"));
@@ -90,7 +90,7 @@ pub mod exp_build {
     }
 }
 
-/// `exp/host_blocks.EXP`: an ST block with a VAR_IN_OUT, called from IL,
+/// `exp/host_blocks.EXP`: an ST block with a `VAR_IN_OUT`, called from IL,
 /// and a CFC PROGRAM, their bodies in Rust.
 pub mod exp_host_build {
     include!(concat!(env!("OUT_DIR"), "/exp_host/host_blocks.rs"));

@@ -486,7 +486,7 @@ fn emit_host_check(o: &mut Out, pou: &CheckedPou) {
             .map(|(v, ty)| format!("{}: {ty}", rust_ident(&v.name))),
     );
     let d = doc(&format!(
-        " Host FUNCTION `{}` (`{{extern}}`): not generated. The crate provides `fn {name}(ctx: &mut ::il_std::Cycle{named}) -> {ret_ty}` beside this code; this constant checks that it exists with that signature.",
+        " Host `FUNCTION` `{}` (`{{extern}}`): not generated. The crate provides `fn {name}(ctx: &mut ::il_std::Cycle{named}) -> {ret_ty}` beside this code; this constant checks that it exists with that signature.",
         pou.name
     ));
     o.code(&format!(
@@ -507,7 +507,7 @@ fn emit_host_block_check(o: &mut Out, pou: &CheckedPou) {
         .collect();
     let types = tail(inouts.iter());
     let d = doc(&format!(
-        " Host {} `{}`: its body is not generated. The crate provides `fn {name}(this: &mut {name}, ctx: &mut ::il_std::Cycle{types})` beside this code, which runs one call on the struct's fields; this constant checks that it exists with that signature.",
+        " Host `{}` `{}`: its body is not generated. The crate provides `fn {name}(this: &mut {name}, ctx: &mut ::il_std::Cycle{types})` beside this code, which runs one call on the struct's fields; this constant checks that it exists with that signature.",
         pou.kind.keyword(),
         pou.name
     ));
