@@ -1,8 +1,8 @@
 //! CODESYS V2.3 / TwinCAT 2 `.EXP` import (the export format of CODESYS 2.3
 //! and the IDEs built on it: WAGO, Beckhoff TwinCAT 2, OWEN, ABB ...).
 //!
-//! [`Import::new`] cuts a file into its objects ([`split`]); the objects of
-//! every `.EXP` input of a program are then read together ([`project`]),
+//! [`Import::new`] cuts a file into its objects (`split`); the objects of
+//! every `.EXP` input of a program are then read together (`project`),
 //! because a project is usually exported one object per file: its global
 //! variable lists, constants and task configuration are the whole
 //! project's. Each file becomes IL text ([`write`]) that goes through the
@@ -217,7 +217,7 @@ pub fn is_exp(name: &str, text: &str) -> bool {
 
 impl Import {
     /// Read an export's objects and translate them on their own (a program
-    /// of several files translates them again, together: [`assemble`]).
+    /// of several files translates them again, together: `assemble`).
     pub fn new(exp: SourceFile) -> Import {
         let (mut objects, split_diags) = split::split(&exp.text);
         for o in &mut objects {
