@@ -201,11 +201,7 @@ fn class_name(c: Class) -> &'static str {
 }
 
 /// A parameter's type as signatures show it (`T: ANY_NUM`).
-pub(super) fn param_ty_name(t: ParamTy) -> String {
-    param_ty(t)
-}
-
-fn param_ty(t: ParamTy) -> String {
+pub(super) fn param_ty(t: ParamTy) -> String {
     match t {
         ParamTy::Concrete(e) => e.name().to_string(),
         ParamTy::T(c) => format!("T: {}", class_name(c)),

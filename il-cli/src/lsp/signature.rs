@@ -217,7 +217,7 @@ fn fn_callee(ix: &Index, name: &str, formal: bool) -> Option<Callee> {
     let mut params: Vec<(String, String)> = f
         .params
         .iter()
-        .map(|p| (p.name.to_string(), super::hover::param_ty_name(p.ty)))
+        .map(|p| (p.name.to_string(), super::hover::param_ty(p.ty)))
         .collect();
     if !formal && matches!(f.ext, sig::Ext::Fold | sig::Ext::Chain | sig::Ext::Mux) {
         params.push(("...".into(), String::new()));

@@ -136,6 +136,20 @@ struct Out {
     run: Option<usize>,
 }
 
+/// Each line's kind, and what it is inside after it (POU, VAR block, TYPE
+/// block): classified once, in order, for every pass over the lines.
+fn classify_all(lines: &[Line]) -> Vec<(Kind, (bool, bool, bool))> {
+    let mut state = State::default();
+    lines
+        .iter()
+        .map(|l| {
+            let toks: Vec<&Tok> = toks(l).collect();
+            let kind = state.classify(&toks, l.ends_instruction);
+            (kind, (state.pou, state.var, state.types))
+        })
+        .collect()
+}
+
 pub(super) fn layout(lines: &[Line], opts: &FormatOptions, crlf: bool) -> String {
     let case = match opts.keywords {
         KeywordCase::Preserve => None,
@@ -143,11 +157,11 @@ pub(super) fn layout(lines: &[Line], opts: &FormatOptions, crlf: bool) -> String
         KeywordCase::Lower => Some(false),
         KeywordCase::AsTheFile => Some(mostly_upper(lines)),
     };
-    let op_width = operator_width(lines);
-    let mut state = State::default();
+    let kinds = classify_all(lines);
+    let op_width = operator_width(lines, &kinds);
     let mut outs = Vec::with_capacity(lines.len());
     let mut run = 0;
-    let mut names_width = names_widths(lines);
+    let mut names_width = names_widths(lines, &kinds);
     for (i, line) in lines.iter().enumerate() {
         if line.verbatim {
             outs.push(Out {
@@ -155,10 +169,6 @@ pub(super) fn layout(lines: &[Line], opts: &FormatOptions, crlf: bool) -> String
                 comment: None,
                 run: None,
             });
-            // A comment over lines may hide an instruction's end: the state
-            // still follows the tokens.
-            let toks: Vec<&Tok> = toks(line).collect();
-            state.classify(&toks, line.ends_instruction);
             run += 1;
             continue;
         }
@@ -171,12 +181,14 @@ pub(super) fn layout(lines: &[Line], opts: &FormatOptions, crlf: bool) -> String
             run += 1;
             continue;
         }
-        let toks: Vec<&Tok> = toks(line).collect();
-        let was = (state.pou, state.var, state.types);
-        let kind = state.classify(&toks, line.ends_instruction);
-        if (state.pou, state.var, state.types) != was {
+        let (kind, section) = kinds[i];
+        let was = i
+            .checked_sub(1)
+            .map_or((false, false, false), |p| kinds[p].1);
+        if section != was {
             run += 1;
         }
+        let toks: Vec<&Tok> = toks(line).collect();
         let (code, trailing) = match kind {
             Kind::Plain(indent) => (indent_by(indent, &join(&line.items, case)), trailing(line)),
             Kind::InstrCont => (indent_by(8, &join(&line.items, case)), trailing(line)),
@@ -374,12 +386,9 @@ fn mostly_upper(lines: &[Line]) -> bool {
 /// The operator column's width: the longest operator word of the file's
 /// instructions, between 3 and 6 (a longer one, a user function's name,
 /// takes one space after it).
-fn operator_width(lines: &[Line]) -> usize {
+fn operator_width(lines: &[Line], kinds: &[(Kind, (bool, bool, bool))]) -> usize {
     let mut w = 3;
-    let mut state = State::default();
-    for l in lines {
-        let toks: Vec<&Tok> = toks(l).collect();
-        let kind = state.classify(&toks, l.ends_instruction);
+    for (l, &(kind, _)) in lines.iter().zip(kinds) {
         if kind == Kind::Instr
             && let Some((_, text)) = operator_of(l)
         {
@@ -458,10 +467,12 @@ fn decl(line: &Line, indent: usize, width: Option<usize>, case: Option<bool>) ->
 /// The width of the names before `:` for each declaration line that is
 /// aligned: the widest of its block (consecutive declaration lines) at its
 /// indentation, so a STRUCT's members align among themselves.
-fn names_widths(lines: &[Line]) -> std::collections::HashMap<usize, usize> {
+fn names_widths(
+    lines: &[Line],
+    kinds: &[(Kind, (bool, bool, bool))],
+) -> std::collections::HashMap<usize, usize> {
     type Blocks = std::collections::BTreeMap<usize, Vec<(usize, usize)>>;
     let mut out = std::collections::HashMap::new();
-    let mut state = State::default();
     let mut blocks: Blocks = Blocks::new();
     let flush = |blocks: &mut Blocks, out: &mut std::collections::HashMap<usize, usize>| {
         for block in blocks.values_mut() {
@@ -472,15 +483,13 @@ fn names_widths(lines: &[Line]) -> std::collections::HashMap<usize, usize> {
         }
     };
     for (i, l) in lines.iter().enumerate() {
-        let toks: Vec<&Tok> = toks(l).collect();
-        if l.verbatim || toks.is_empty() {
-            state.classify(&toks, l.ends_instruction);
+        if l.verbatim || toks(l).next().is_none() {
             if l.items.is_empty() && !l.verbatim {
                 flush(&mut blocks, &mut out);
             }
             continue;
         }
-        match state.classify(&toks, l.ends_instruction) {
+        match kinds[i].0 {
             Kind::Decl(indent) => {
                 let colon = l
                     .items
