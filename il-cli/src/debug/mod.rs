@@ -214,20 +214,30 @@ impl Session {
                 true
             }
             Incoming::Request { seq, command, args } => {
-                let r = catch_unwind(AssertUnwindSafe(|| handler(self, seq, &command, &args)));
-                if r.is_err() {
-                    eprintln!(
-                        "ilc debug: the handler of `{command}` panicked; the session goes on"
-                    );
-                    self.out.error(
-                        seq,
-                        &command,
-                        &format!("internal error while answering `{command}`"),
-                    );
-                }
+                self.guarded(seq, &command, |s| handler(s, seq, &command, &args));
                 true
             }
         }
+    }
+
+    /// `f` answering request `seq`; a panic in it is caught and answered
+    /// with an error response, and the session goes on (as `ilc lsp` does).
+    fn guarded<T>(
+        &mut self,
+        seq: i64,
+        command: &str,
+        f: impl FnOnce(&mut Session) -> T,
+    ) -> Option<T> {
+        let r = catch_unwind(AssertUnwindSafe(|| f(self)));
+        if r.is_err() {
+            eprintln!("ilc debug: the handler of `{command}` panicked; the session goes on");
+            self.out.error(
+                seq,
+                command,
+                &format!("internal error while answering `{command}`"),
+            );
+        }
+        r.ok()
     }
 
     /// Requests before the run starts.

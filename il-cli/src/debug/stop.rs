@@ -194,19 +194,10 @@ impl Session {
         use super::proto::Incoming;
         match m {
             Incoming::Request { seq, command, args } => {
-                let r = catch_unwind(AssertUnwindSafe(|| self.stopped(at, seq, &command, &args)));
-                match r {
-                    Ok(x) => *resume = x,
-                    Err(_) => {
-                        eprintln!(
-                            "ilc debug: the handler of `{command}` panicked; the session goes on"
-                        );
-                        self.out.error(
-                            seq,
-                            &command,
-                            &format!("internal error while answering `{command}`"),
-                        );
-                    }
+                if let Some(x) =
+                    self.guarded(seq, &command, |s| s.stopped(at, seq, &command, &args))
+                {
+                    *resume = x;
                 }
                 true
             }
