@@ -8,7 +8,7 @@
 //! instruction. Prints the medians and the spread, and the machine's load.
 
 use serde_json::{Value, json};
-use std::io::{BufRead, BufReader, Read, Write};
+use std::io::BufReader;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
@@ -44,28 +44,10 @@ struct Server {
 
 impl Server {
     fn send(&mut self, v: &Value) {
-        let body = v.to_string();
-        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).unwrap();
-        self.stdin.flush().unwrap();
+        il_testkit::framed::send(&mut self.stdin, v).unwrap();
     }
     fn read(&mut self) -> Value {
-        let mut len = 0;
-        loop {
-            let mut line = String::new();
-            if self.out.read_line(&mut line).unwrap() == 0 {
-                panic!("the server closed its output");
-            }
-            let line = line.trim();
-            if line.is_empty() {
-                break;
-            }
-            if let Some(n) = line.strip_prefix("Content-Length:") {
-                len = n.trim().parse().unwrap();
-            }
-        }
-        let mut buf = vec![0; len];
-        self.out.read_exact(&mut buf).unwrap();
-        serde_json::from_slice(&buf).unwrap()
+        il_testkit::framed::read(&mut self.out).expect("the server closed its output")
     }
     fn request(&mut self, method: &str, params: Value) -> Value {
         self.next += 1;

@@ -2,10 +2,9 @@
 //! JSON-RPC with Content-Length framing to the built `ilc lsp` over its
 //! stdin/stdout and checks the answers.
 
-use std::io::{BufRead, BufReader, Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Child, ChildStdin, Command, Stdio};
-use std::sync::mpsc::{Receiver, channel};
+use std::sync::mpsc::Receiver;
 use std::time::Duration;
 
 use serde_json::{Value, json};
@@ -85,34 +84,7 @@ impl Client {
         }
         let mut child = cmd.spawn().expect("start ilc lsp");
         let stdin = child.stdin.take().unwrap();
-        let mut stdout = BufReader::new(child.stdout.take().unwrap());
-        let (tx, incoming) = channel();
-        std::thread::spawn(move || {
-            loop {
-                let mut len = None;
-                loop {
-                    let mut line = String::new();
-                    if stdout.read_line(&mut line).unwrap_or(0) == 0 {
-                        return;
-                    }
-                    let line = line.trim_end();
-                    if line.is_empty() {
-                        break;
-                    }
-                    if let Some(v) = line.strip_prefix("Content-Length:") {
-                        len = v.trim().parse::<usize>().ok();
-                    }
-                }
-                let mut body = vec![0; len.expect("a Content-Length header")];
-                if stdout.read_exact(&mut body).is_err() {
-                    return;
-                }
-                let v: Value = serde_json::from_slice(&body).expect("a JSON message");
-                if tx.send(v).is_err() {
-                    return;
-                }
-            }
-        });
+        let incoming = il_testkit::framed::reader(child.stdout.take().unwrap());
         Client {
             child,
             stdin,
@@ -123,9 +95,7 @@ impl Client {
     }
 
     fn send(&mut self, msg: &Value) {
-        let body = msg.to_string();
-        write!(self.stdin, "Content-Length: {}\r\n\r\n{body}", body.len()).unwrap();
-        self.stdin.flush().unwrap();
+        il_testkit::framed::send(&mut self.stdin, msg).unwrap();
     }
 
     fn notify(&mut self, method: &str, params: Value) {
