@@ -438,7 +438,6 @@ impl Walk<'_, '_> {
             .map(String::from),
         );
         let near = suggest(&name.name, cands.iter().map(String::as_str)).map(str::to_string);
-        let hint = near.as_ref().map(|s| format!("did you mean `{s}`?"));
         if let Some(d) = self.err(
             UNKNOWN_FUNCTION,
             name.span,
@@ -449,7 +448,6 @@ impl Walk<'_, '_> {
                     "`{name}` is a variable: write `LD {name}` or `ST {name}`"
                 ));
             } else {
-                d.help = hint;
                 if let Some(s) = &near {
                     d.did_you_mean(name.span, s);
                 }
