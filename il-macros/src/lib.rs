@@ -57,8 +57,10 @@
 //!
 //! # Errors
 //! Each IL error becomes a `compile_error!` at the macro, whose message
-//! gives the code, the IL line and column and the source line (a proc macro
-//! cannot point inside a string literal). Warnings are not shown (proc
+//! gives the code, the Rust file, line and column of the error inside the
+//! string (on the `-->` line that editors' rustc problem matchers read),
+//! the source line, and the IL line and column (a proc macro cannot point
+//! rustc's own arrow inside a string literal). Warnings are not shown (proc
 //! macros have no stable API for them): `ilc check` and build.rs show them.
 //!
 //! The crate using `il!` depends on `il-std`, the runtime the generated code
@@ -102,6 +104,8 @@ fn tokens(input: TokenStream, spans: &mut Vec<Span>) -> Vec<Tok> {
             TokenTree::Literal(l) => Tok::Literal {
                 text: l.to_string(),
                 line: l.span().line(),
+                column: l.span().column(),
+                file: l.span().file(),
                 span: id(spans, l.span()),
             },
             TokenTree::Ident(i) => Tok::Ident(i.to_string(), id(spans, i.span())),

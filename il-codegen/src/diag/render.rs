@@ -240,10 +240,38 @@ pub fn render_short(file: &SourceFile, d: &Diagnostic) -> String {
     render_short_in(file, d, None)
 }
 
-/// [`render_short`] for IL inside a Rust file: `first_line` is the Rust line
-/// on which the IL's line 1 starts, so the arrow names both (there is no IL
-/// file to name; rustc's own arrow, after the message, names the Rust file).
-pub fn render_short_in(file: &SourceFile, d: &Diagnostic, first_line: Option<usize>) -> String {
+/// Where the IL of an `il!` string literal starts in the Rust file.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RustPlace {
+    /// As rustc names it in its messages (`src/main.rs`).
+    pub file: String,
+    /// 1-based.
+    pub line: usize,
+    /// 1-based, in characters: the column of the IL's first character.
+    pub column: usize,
+}
+
+impl RustPlace {
+    /// The place of IL line `line`, column `col` (both 1-based): the
+    /// literal's later lines start at column 1 of the Rust file. (Exact for
+    /// raw strings; an escape earlier on the line of a `"..."` string
+    /// moves it.)
+    pub fn of(&self, line: usize, col: usize) -> (usize, usize) {
+        let column = if line == 1 {
+            self.column + col - 1
+        } else {
+            col
+        };
+        (self.line + line - 1, column)
+    }
+}
+
+/// [`render_short`] for IL inside a Rust file: the arrow names the Rust
+/// file, line and column of the error, so that editors' rustc problem
+/// matchers (which read the line after `error:`) put it on the IL's line
+/// itself; the gutter numbers Rust lines, and a note gives the IL's own
+/// line and column. Without a place, the arrow says the IL line only.
+pub fn render_short_in(file: &SourceFile, d: &Diagnostic, place: Option<&RustPlace>) -> String {
     let text = file.text.as_str();
     let (lo_shown, hi) = display_span(text, d.span);
     let (line, col) = file.line_col(lo_shown as u32);
@@ -251,15 +279,22 @@ pub fn render_short_in(file: &SourceFile, d: &Diagnostic, first_line: Option<usi
     if d.severity == Severity::Warning {
         out.push_str("warning ");
     }
-    let num = line.to_string();
-    let pad = " ".repeat(num.len());
-    let at = match first_line {
-        Some(first) => format!(
-            "IL line {line}, column {col} (line {} of this file)",
-            first + line - 1
+    let (num, at, il_place) = match place {
+        Some(p) => {
+            let (l, c) = p.of(line, col);
+            (
+                l.to_string(),
+                format!("{}:{l}:{c}", one_line(&p.file)),
+                Some(format!("IL line {line}, column {col} of the il! input")),
+            )
+        }
+        None => (
+            line.to_string(),
+            format!("{}:{line}:{col}", one_line(&file.name)),
+            None,
         ),
-        None => format!("{}:{line}:{col}", one_line(&file.name)),
     };
+    let pad = " ".repeat(num.len());
     out.push_str(&format!(
         "{}: {}\n{pad}--> {at}\n",
         d.code,
@@ -291,10 +326,11 @@ pub fn render_short_in(file: &SourceFile, d: &Diagnostic, first_line: Option<usi
     out.push('\n');
     for (span, label) in &d.secondary {
         let (l, c) = file.line_col(span.lo);
+        let (l, c) = place.map_or((l, c), |p| p.of(l, c));
         let label = one_line(label);
         out.push_str(&format!("{pad} = note: {label} (line {l}, column {c})\n"));
     }
-    for note in &d.notes {
+    for note in il_place.iter().chain(&d.notes) {
         let note = one_line(note);
         out.push_str(&format!("{pad} = note: {note}\n"));
     }

@@ -16,13 +16,18 @@ pub const CALL_SITE: SpanId = u32::MAX;
 /// One token of the input.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Tok {
-    /// A literal: its source text (`"..."`, `r#"..."#`, `1`) and the line
-    /// of the caller's file where it starts (0 when unknown).
+    /// A literal: its source text (`"..."`, `r#"..."#`, `1`) and where it
+    /// starts in the caller's file (line and column 0 and an empty file
+    /// when unknown).
     Literal {
         /// As written.
         text: String,
-        /// The line it starts on, or 0.
+        /// The line it starts on (1-based), or 0.
         line: usize,
+        /// The column it starts at (1-based, in characters), or 0.
+        column: usize,
+        /// The Rust file, as rustc names it in its messages, or empty.
+        file: String,
         /// Its span.
         span: SpanId,
     },
@@ -49,6 +54,8 @@ impl Tok {
         Tok::Literal {
             text: string_source(value),
             line: 0,
+            column: 0,
+            file: String::new(),
             span,
         }
     }
@@ -63,9 +70,12 @@ impl Tok {
 }
 
 /// A string literal of the input.
+pub use crate::diag::render::RustPlace;
+
 pub(super) struct Lit {
     pub value: String,
-    pub line: usize,
+    /// Where the value's first character is in the Rust file, when known.
+    pub place: Option<RustPlace>,
     pub span: SpanId,
 }
 
@@ -135,10 +145,21 @@ impl<'a> Cursor<'a> {
 
     fn string(&mut self) -> Result<Lit, Refusal> {
         match self.next() {
-            Some(Tok::Literal { text, line, span }) => match string_value(text) {
+            Some(Tok::Literal {
+                text,
+                line,
+                column,
+                file,
+                span,
+            }) => match string_value(text) {
                 Ok(value) => Ok(Lit {
                     value,
-                    line: *line,
+                    // The value starts after `"`, `r"`, `r#"` ...
+                    place: (*line > 0 && *column > 0 && !file.is_empty()).then(|| RustPlace {
+                        file: file.clone(),
+                        line: *line,
+                        column: column + text.find('"').map_or(0, |q| q + 1),
+                    }),
                     span: *span,
                 }),
                 Err(_) => Err(usage(*span)),

@@ -17,6 +17,7 @@ pub use input::{CALL_SITE, SpanId, Tok};
 use crate::diag::{SourceFile, has_errors, render::render_short_in};
 use crate::pipeline::Program;
 use crate::{emit, sema, syntax};
+pub use input::RustPlace;
 use input::{Input, Refusal};
 
 /// The most IL one `il!` call takes (IL0035): beyond it, build.rs.
@@ -70,7 +71,7 @@ pub fn expand(tokens: &[Tok]) -> Expansion {
 }
 
 fn expand_inner(tokens: &[Tok]) -> Expansion {
-    let mut first_line = None;
+    let mut place = None;
     let (input, flags) = match input::parse(tokens) {
         Ok(x) => x,
         Err(r) => return r.into(),
@@ -85,8 +86,8 @@ fn expand_inner(tokens: &[Tok]) -> Expansion {
     match input {
         Input::Inline(lit) => {
             // The IL's line 1 is the rest of the line where the string starts
-            // (0 when the compiler does not report locations).
-            first_line = (lit.line > 0).then_some(lit.line);
+            // (none when the compiler does not report locations).
+            place = lit.place;
             sources.push((SourceFile::new("il! input", lit.value), lit.span));
         }
         Input::Files(lits) => {
@@ -144,7 +145,7 @@ fn expand_inner(tokens: &[Tok]) -> Expansion {
     for ((input, diags), (_, span)) in checked.reports().zip(&sources) {
         for d in diags.iter().filter(|d| d.is_error()) {
             // A file's message names it on its arrow line, as rustc would.
-            let msg = render_short_in(input.source(), d, first_line);
+            let msg = render_short_in(input.source(), d, place.as_ref());
             out.errors.push((msg, *span));
         }
     }

@@ -75,6 +75,8 @@ fn malformed_calls_say_how_il_is_called() {
             vec![Tok::Literal {
                 text: "b\"LD x\"".into(),
                 line: 1,
+                column: 1,
+                file: "src/lib.rs".into(),
                 span: 5,
             }],
             "il! takes",
@@ -96,11 +98,15 @@ fn raw_and_escaped_literals_are_read_as_rust_reads_them() {
     let raw = Tok::Literal {
         text: format!("r#\"{IL}\"#"),
         line: 7,
+        column: 5,
+        file: "src/lib.rs".into(),
         span: 1,
     };
     let escaped = Tok::Literal {
         text: format!("{IL:?}"),
         line: 7,
+        column: 5,
+        file: "src/lib.rs".into(),
         span: 1,
     };
     assert_eq!(expand(&[raw]).code, expand(&[escaped]).code);
@@ -108,12 +114,42 @@ fn raw_and_escaped_literals_are_read_as_rust_reads_them() {
     let bad = Tok::Literal {
         text: "r\"FUNCTION_BLOCK F\nVAR x : INT; END_VAR\n    LD y\nEND_FUNCTION_BLOCK\n\"".into(),
         line: 10,
+        column: 20,
+        file: "src/lib.rs".into(),
         span: 6,
     };
     let e = expand(&[bad]);
     assert_eq!(e.errors[0].1, 6);
-    assert!(e.errors[0].0.contains("line 12"), "{}", e.errors[0].0);
+    // `LD y` is IL line 3, column 8: Rust line 12, column 8 (a later line
+    // of a raw string starts at column 1).
+    assert!(
+        e.errors[0].0.contains("--> src/lib.rs:12:8\n"),
+        "{}",
+        e.errors[0].0
+    );
+    assert!(
+        e.errors[0]
+            .0
+            .contains("IL line 3, column 8 of the il! input"),
+        "{}",
+        e.errors[0].0
+    );
     assert!(e.code.contains("struct F"), "stubs: {}", e.code);
+    // On the literal's first line the IL starts after `r"` (2 characters
+    // from column 20): `INTT`, IL column 26, is Rust column 47.
+    let first = Tok::Literal {
+        text: "r\"FUNCTION_BLOCK F VAR x : INTT; END_VAR END_FUNCTION_BLOCK\"".into(),
+        line: 4,
+        column: 20,
+        file: "src/lib.rs".into(),
+        span: 2,
+    };
+    let e = expand(&[first]);
+    assert!(
+        e.errors[0].0.contains("--> src/lib.rs:4:47\n"),
+        "{}",
+        e.errors[0].0
+    );
 }
 
 #[test]
