@@ -22,7 +22,7 @@ mod writeback;
 use crate::ast::{PouKind, VarKind};
 use crate::ir::types::Ty;
 use crate::ir::{CheckedPou, Program, Storage};
-use text::{Out, doc, each, str_lit, tail};
+use text::{Out, doc, each, str_lit, tail, user_doc};
 
 pub use names::{item_ident, local_ident, rust_ident};
 
@@ -185,11 +185,12 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
     };
     p.complemented = complement::complemented(pou, p.has_fenced_rungs());
     let name = item_ident(&pou.name);
-    let pdoc = doc(&format!(
-        " IEC 61131-3 {} `{}`, generated from Instruction List.",
-        pou.kind.keyword(),
-        pou.name
-    ));
+    let pdoc = user_doc(pou.doc.as_deref())
+        + &doc(&format!(
+            " IEC 61131-3 {} `{}`, generated from Instruction List.",
+            pou.kind.keyword(),
+            pou.name
+        ));
     match pou.kind {
         PouKind::Function if pou.host => emit_host_check(o, pou),
         PouKind::Function => {
@@ -238,7 +239,8 @@ fn emit_pou(o: &mut Out, pou: &CheckedPou, opts: Options) {
                     format!(" `{}` (IL line {})", v.kind.keyword(), v.line)
                 };
                 decls.push_str(&format!(
-                    "{}{} pub {id}: {},",
+                    "{}{}{} pub {id}: {},",
+                    user_doc(v.doc.as_deref()),
                     doc(&vdoc),
                     serde_var(v, opts),
                     field_ty(v)

@@ -375,6 +375,31 @@ pub(crate) fn str_lit(s: &str) -> String {
     out
 }
 
+/// The engineer's comment of a declaration ([`crate::ir::Var::doc`]) as
+/// doc lines, then an empty doc line before what the generator adds: each
+/// line of text, its Markdown punctuation escaped (an IL comment is plain
+/// text: `[x]` must not become a broken link, nor `<b>` an HTML tag, in the
+/// user's `cargo doc`).
+pub(crate) fn user_doc(text: Option<&str>) -> String {
+    let Some(text) = text else {
+        return String::new();
+    };
+    let mut out = String::new();
+    for line in text.lines() {
+        let mut escaped = String::with_capacity(line.len() + 8);
+        escaped.push(' ');
+        for c in line.chars() {
+            if "\\`*_[]<>#|~!&".contains(c) {
+                escaped.push('\\');
+            }
+            escaped.push(c);
+        }
+        out.push_str(&doc(&escaped));
+    }
+    out.push_str("///\n");
+    out
+}
+
 /// A doc comment line `/// text` (with its newline) for [`Out::code`].
 pub(crate) fn doc(text: &str) -> String {
     let mut out = String::with_capacity(text.len() + 5);
@@ -461,7 +486,16 @@ pub(crate) fn each<I: IntoIterator<Item = S>, S: AsRef<str>>(items: I, sep: &str
 
 #[cfg(test)]
 mod tests {
-    use super::{Out, comment_text, doc, str_lit};
+    use super::{Out, comment_text, doc, str_lit, user_doc};
+
+    #[test]
+    fn an_il_comment_becomes_plain_doc_text() {
+        assert_eq!(user_doc(None), "");
+        assert_eq!(
+            user_doc(Some("see [Motor] <b>x</b>\n*/ a_b")),
+            "/// see \\[Motor\\] \\<b\\>x\\</b\\>\n/// \\* / a\\_b\n///\n"
+        );
+    }
 
     fn lay(s: &str) -> String {
         let mut o = Out::new();

@@ -86,6 +86,9 @@ pub struct CheckedPou {
     pub kind: PouKind,
     /// As declared (the Rust item keeps this spelling).
     pub name: String,
+    /// The comment lines just above its declaration: generated Rust
+    /// carries them as the item's documentation.
+    pub doc: Option<String>,
     /// Every variable of every VAR block, in declaration order ([`Root::Var`] indexes into this).
     pub vars: Vec<Var>,
     /// FUNCTION result type.
@@ -237,6 +240,10 @@ pub struct Var {
     pub heap: bool,
     /// Line of the declaration, for comments.
     pub line: u32,
+    /// The comment after its declaration on that line, as the engineer
+    /// wrote it (`start : BOOL; (* push button *)`): generated Rust
+    /// carries it as the field's documentation.
+    pub doc: Option<String>,
 }
 
 /// Where a variable lives: decided once, by the checker ([`Storage::of`]),

@@ -178,6 +178,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
                     retain: block.retain == ast::Retain::Retain,
                     heap: false,
                     line: cx.line(name.span),
+                    doc: super::docs::trailing(cx.file, name.span),
                 });
             }
         }
@@ -200,6 +201,7 @@ pub(crate) fn pou_sig(cx: &mut Cx, fb_names: &Names, types: &TypeTables, p: &ast
             retain: false,
             heap: false,
             line: cx.line(p.name.span),
+            doc: None,
         });
     }
     sig

@@ -5,6 +5,7 @@ mod address;
 pub mod codes;
 mod config;
 mod decls;
+mod docs;
 mod env;
 mod flow;
 mod graph;

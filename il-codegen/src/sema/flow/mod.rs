@@ -222,6 +222,7 @@ pub(crate) fn check_pou(
     Some(CheckedPou {
         kind: pou.kind,
         name: sig.name.clone(),
+        doc: super::docs::leading(w.cx.file, pou.name.span),
         // Taken from the signature at the end of `check_all` (held
         // twice, they were a fifth of a program of small POUs).
         vars: Vec::new(),
@@ -273,6 +274,7 @@ fn host_pou(cx: &mut Cx, env: &Env, pou: &ast::Pou, sig: &PouSig) -> CheckedPou 
     CheckedPou {
         kind: pou.kind,
         name: sig.name.clone(),
+        doc: super::docs::leading(cx.file, pou.name.span),
         // Taken from the signature at the end of `check_all` (held
         // twice, they were a fifth of a program of small POUs).
         vars: Vec::new(),
