@@ -3,20 +3,11 @@
 
 use crate::places::self_root;
 use crate::values::{Instance, Value};
-use crate::{Frame, Machine, find_var, held, stdfn};
+use crate::{Frame, Machine, held, stdfn};
 use il_codegen::ir::types::Ty;
-use il_codegen::ir::{CheckedPou, Expr, Op, PathElem, Place, Root, Storage};
 use il_codegen::ir::{Edge, PouKind, VarKind};
+use il_codegen::ir::{Expr, Op, PathElem, Place, Root, Storage};
 use il_std::{Cycle, FaultKind};
-
-/// Names of the VAR_IN_OUTs of `pou`, in declaration order.
-fn inout_names(pou: &CheckedPou) -> Vec<String> {
-    pou.vars
-        .iter()
-        .filter(|v| v.storage == Storage::InOut)
-        .map(|v| v.name.clone())
-        .collect()
-}
 
 impl Machine {
     /// A call of a user FUNCTION in an expression.
@@ -141,6 +132,7 @@ impl Machine {
             inputs,
             outputs,
             inouts,
+            inout_vars,
             inouts_in_instance,
             externals,
             cond: _,
@@ -151,28 +143,20 @@ impl Machine {
         }
         // In-outs and the globals the block uses: copied in, and out after the call.
         let mut places: Vec<Place> = inouts.clone();
-        for (e, _) in externals {
-            let k = find_var(&self.prog.pous[f.pou], e)
-                .ok_or_else(|| format!("internal: caller has no external {e}"))?;
+        for e in externals {
+            let k = e.caller as usize;
+            let var = (self.prog.pous[f.pou].vars.get(k))
+                .ok_or_else(|| format!("internal: caller has no external {}", e.name))?;
             places.push(Place {
                 root: Root::Var(k),
                 path: Vec::new(),
-                ty: self.prog.pous[f.pou].vars[k].ty.clone(),
+                ty: var.ty.clone(),
                 range: None,
             });
         }
-        let mut names = match &inst.ty {
-            Ty::Fb(fb) => self
-                .prog
-                .pous
-                .iter()
-                .find(|p| p.name.eq_ignore_ascii_case(fb))
-                .map(inout_names)
-                .unwrap_or_default(),
-            _ => Vec::new(),
-        };
-        names.extend(externals.iter().map(|(e, _)| e.clone()));
-        let refs: Vec<(String, &Place)> = names.into_iter().zip(&places).collect();
+        // The FB's variable each place is bound to, as the checker decided.
+        let vars = inout_vars.iter().chain(externals.iter().map(|e| &e.callee));
+        let refs: Vec<(usize, &Place)> = vars.map(|&k| k as usize).zip(&places).collect();
         let back = self.call_fb_at(f, inst, ins, (&refs, *inouts_in_instance), ctx, line)?;
         for (p, v) in places.iter().zip(back) {
             self.write(f, p, v, ctx, line)?;
@@ -205,7 +189,7 @@ impl Machine {
         f: &mut Frame,
         inst: &Place,
         ins: Vec<(usize, Value)>,
-        (refs, inouts_in_instance): (&[(String, &Place)], bool),
+        (refs, inouts_in_instance): (&[(usize, &Place)], bool),
         ctx: &mut Cycle,
         line: u32,
     ) -> Result<Vec<Value>, String> {
@@ -249,10 +233,11 @@ impl Machine {
                     }
                 }
                 let mut ref_idx = Vec::with_capacity(refs.len());
-                for (n, p) in refs {
-                    let k = find_var(&self.prog.pous[i.pou], n)
-                        .ok_or_else(|| format!("internal: no in-out {n}"))?;
-                    i.vars[k] = self.read(f, p, ctx, line)?;
+                for &(k, p) in refs {
+                    let v = self.read(f, p, ctx, line)?;
+                    *i.vars
+                        .get_mut(k)
+                        .ok_or_else(|| format!("internal: no in-out {k}"))? = v;
                     ref_idx.push(k);
                 }
                 if self.dbg.on() {

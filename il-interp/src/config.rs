@@ -339,22 +339,24 @@ impl ConfigMachine {
 
     /// The value a path names (a standard block's member read from it).
     pub(crate) fn field(&self, p: &InstancePath) -> Result<Value, String> {
-        let (first, rest) = path_steps(&p.steps)?;
+        let (i, rest) = path_steps(&p.steps)?;
         let inst = &self.programs[p.resource][p.program];
-        let i = find_var(&self.m.prog.pous[inst.pou], &first)
-            .ok_or_else(|| format!("internal: no `{first}`"))?;
+        let var = inst
+            .vars
+            .get(i)
+            .ok_or_else(|| format!("internal: no variable {i} for `{}`", p.text))?;
         self.m
-            .read_at(&inst.vars[i], &rest)
+            .read_at(var, &rest)
             .ok_or_else(|| format!("internal: cannot read `{}`", p.text))
     }
 
     /// Write the value a path names.
     pub(crate) fn set_field(&mut self, p: &InstancePath, v: Value) -> Result<(), String> {
-        let (first, rest) = path_steps(&p.steps)?;
-        let pou = self.programs[p.resource][p.program].pou;
-        let i = find_var(&self.m.prog.pous[pou], &first)
-            .ok_or_else(|| format!("internal: no `{first}`"))?;
-        let slot = &mut self.programs[p.resource][p.program].vars[i];
+        let (i, rest) = path_steps(&p.steps)?;
+        let slot = self.programs[p.resource][p.program]
+            .vars
+            .get_mut(i)
+            .ok_or_else(|| format!("internal: no variable {i} for `{}`", p.text))?;
         if self.m.write_at(slot, &rest, v) {
             Ok(())
         } else {
@@ -504,7 +506,7 @@ pub(crate) fn interp_steps(steps: &[PathElem]) -> Result<Vec<Step>, String> {
     steps
         .iter()
         .map(|e| match e {
-            PathElem::Field(f) => Ok(Step::Field(f.clone())),
+            PathElem::Field(m) => Ok(Step::Field(m.index as usize)),
             _ => e
                 .constant_index()
                 .map(|(_, flat)| Step::Index(Some(flat)))
@@ -513,10 +515,10 @@ pub(crate) fn interp_steps(steps: &[PathElem]) -> Result<Vec<Step>, String> {
         .collect()
 }
 
-/// The program variable a path starts at, and the steps after it.
-fn path_steps(steps: &[PathElem]) -> Result<(String, Vec<Step>), String> {
+/// The program variable a path starts at (its index), and the steps after it.
+fn path_steps(steps: &[PathElem]) -> Result<(usize, Vec<Step>), String> {
     match steps.split_first() {
-        Some((PathElem::Field(f), rest)) => Ok((f.clone(), interp_steps(rest)?)),
+        Some((PathElem::Field(m), rest)) => Ok((m.index as usize, interp_steps(rest)?)),
         _ => Err("internal: an instance path that does not start at a variable".into()),
     }
 }

@@ -137,7 +137,8 @@ impl Machine {
             (Some(Init::Fields(fields)), Ty::Fb(_)) => {
                 let mut v = self.default_of(t)?;
                 for (n, c) in fields {
-                    if !self.write_at(&mut v, &[Step::Field(n.clone())], Value::from_const(c)) {
+                    let step = Step::Field(n.index as usize);
+                    if !self.write_at(&mut v, &[step], Value::from_const(c)) {
                         return Err(format!("cannot initialise field {n}"));
                     }
                 }

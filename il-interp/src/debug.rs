@@ -682,7 +682,7 @@ fn place_text(pou: &CheckedPou, p: &Place, steps: &[Step]) -> String {
         match (e, steps.next()) {
             (PathElem::Field(n), _) => {
                 s.push('.');
-                s.push_str(n);
+                s.push_str(&n.name);
             }
             (PathElem::Index { dims, .. }, Some(Step::Index(Some(k)))) => {
                 s.push_str(&subscripts(dims, *k));

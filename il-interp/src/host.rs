@@ -144,7 +144,7 @@ impl Machine {
             .steps
             .into_iter()
             .map(|s| match s {
-                il_codegen::ir::path::Step::Field(f) => Step::Field(f),
+                il_codegen::ir::path::Step::Field(m) => Step::Field(m.index as usize),
                 il_codegen::ir::path::Step::Element(k) => Step::Index(Some(k)),
             })
             .collect();

@@ -2,7 +2,7 @@
 //! read and written as the emitter's place expressions are.
 
 use crate::values::Value;
-use crate::{Frame, Machine, find_var};
+use crate::{Frame, Machine};
 use il_codegen::ir::types::{Elem, Ty};
 use il_codegen::ir::{Loc, PathElem, Place, Root, Value as IrValue};
 use il_std::{Cycle, FaultKind};
@@ -10,7 +10,10 @@ use il_std::{Cycle, FaultKind};
 /// A resolved step of a place's path.
 #[derive(Clone, Debug)]
 pub(crate) enum Step {
-    Field(String),
+    /// A member by its index ([`il_codegen::ir::Member::index`]): of a user
+    /// FB, the variable; of a standard block, its table's member; of a
+    /// STRUCT, the field.
+    Field(usize),
     /// Flat index, or `None` when a subscript is out of range.
     Index(Option<usize>),
 }
@@ -65,12 +68,9 @@ impl Machine {
             return Some(v.clone());
         };
         match (first, v) {
-            (Step::Field(f), Value::Fb(inst)) => {
-                let i = find_var(&self.prog.pous[inst.pou], f)?;
-                self.read_at(&inst.vars[i], rest)
-            }
-            (Step::Field(f), Value::StdFb(b)) if rest.is_empty() => b.get(f),
-            (Step::Field(f), Value::Struct(s)) => self.read_at(s.field(f)?, rest),
+            (Step::Field(i), Value::Fb(inst)) => self.read_at(inst.vars.get(*i)?, rest),
+            (Step::Field(i), Value::StdFb(b)) if rest.is_empty() => b.get_at(*i),
+            (Step::Field(i), Value::Struct(s)) => self.read_at(&s.fields.get(*i)?.1, rest),
             (Step::Index(Some(k)), Value::Array(items)) => self.read_at(items.get(*k)?, rest),
             _ => None,
         }
@@ -82,15 +82,13 @@ impl Machine {
             return true;
         };
         match (first, v) {
-            (Step::Field(f), Value::Fb(inst)) => {
-                let Some(i) = find_var(&self.prog.pous[inst.pou], f) else {
-                    return false;
-                };
-                self.write_at(&mut inst.vars[i], rest, new)
-            }
-            (Step::Field(f), Value::StdFb(b)) if rest.is_empty() => b.set(f, &new),
-            (Step::Field(f), Value::Struct(s)) => match s.field_mut(f) {
+            (Step::Field(i), Value::Fb(inst)) => match inst.vars.get_mut(*i) {
                 Some(slot) => self.write_at(slot, rest, new),
+                None => false,
+            },
+            (Step::Field(i), Value::StdFb(b)) if rest.is_empty() => b.set_at(*i, &new),
+            (Step::Field(i), Value::Struct(s)) => match s.fields.get_mut(*i) {
+                Some(slot) => self.write_at(&mut slot.1, rest, new),
                 None => false,
             },
             (Step::Index(Some(k)), Value::Array(items)) => match items.get_mut(*k) {
@@ -174,7 +172,7 @@ impl Machine {
         let mut ok = true;
         for e in &p.path {
             match e {
-                PathElem::Field(n) => steps.push(Step::Field(n.clone())),
+                PathElem::Field(m) => steps.push(Step::Field(m.index as usize)),
                 // `read`/`write` split a partial access off before they get here.
                 PathElem::Part { .. } => {}
                 PathElem::Index { dims, subs } => {

@@ -402,6 +402,44 @@ macro_rules! std_fbs {
                 }
             }
 
+            /// Member `k` (its inputs, then its outputs, in the order of
+            /// il-std's table: [`il_codegen::ir::Member::index`]).
+            pub fn get_at(&self, k: usize) -> Option<Value> {
+                match self {
+                    $(StdFb::$name(_b) => {
+                        let mut _n = 0usize;
+                        $(if _n == k {
+                            return Some(_b.$i.to_value());
+                        }
+                        _n += 1;)*
+                        $(if _n == k {
+                            return Some(_b.$o.to_value());
+                        }
+                        _n += 1;)*
+                        None
+                    })*
+                }
+            }
+
+            /// Set member `k` (as [`StdFb::get_at`] counts); false if there
+            /// is no such member or the value is of another kind.
+            pub fn set_at(&mut self, k: usize, v: &Value) -> bool {
+                match self {
+                    $(StdFb::$name(_b) => {
+                        let mut _n = 0usize;
+                        $(if _n == k {
+                            return set(&mut _b.$i, v);
+                        }
+                        _n += 1;)*
+                        $(if _n == k {
+                            return set(&mut _b.$o, v);
+                        }
+                        _n += 1;)*
+                        false
+                    })*
+                }
+            }
+
             /// Set an input (or output) by name (case-insensitive); false if there is no such
             /// field or the value is of another kind.
             pub fn set(&mut self, field: &str, v: &Value) -> bool {

@@ -89,7 +89,7 @@ fn written(global: &str, steps: &[PathElem]) -> String {
         match e {
             PathElem::Field(f) => {
                 t.push('.');
-                t.push_str(f);
+                t.push_str(&f.name);
             }
             PathElem::Index { subs, .. } => {
                 let subs: Vec<String> = subs

@@ -33,7 +33,7 @@ pub(super) fn steps(steps: &[PathElem]) -> String {
         match e {
             PathElem::Field(f) => {
                 t.push('.');
-                t.push_str(&rust_ident(f));
+                t.push_str(&rust_ident(&f.name));
             }
             _ => {
                 for k in e.constant_index().map(|(o, _)| o).unwrap_or_default() {

@@ -551,6 +551,7 @@ impl PouEmitter<'_> {
                     inputs,
                     outputs,
                     inouts,
+                    inout_vars: _,
                     inouts_in_instance: _,
                     externals,
                     cond,
@@ -561,9 +562,9 @@ impl PouEmitter<'_> {
                         return String::new();
                     };
                     let st = super::names::ext_ident(fb);
-                    let fields = externals.iter().map(|(e, constant)| {
-                        let id = super::rust_ident(e);
-                        if *constant {
+                    let fields = externals.iter().map(|e| {
+                        let id = super::rust_ident(&e.name);
+                        if e.constant {
                             format!("{id}: &*__ext.{id}")
                         } else {
                             format!("{id}: &mut *__ext.{id}")
@@ -589,7 +590,7 @@ impl PouEmitter<'_> {
                     });
                     let sets: String = sets.collect();
                     let outs = outputs.iter().map(|(n, target, neg, w)| {
-                        let f = super::rust_ident(n);
+                        let f = super::rust_ident(&n.name);
                         let v = format!("{path}.{f}");
                         let v = super::values::widened(if *neg { format!("!{v}") } else { v }, w);
                         let v = self.fit_output(v, None, target, line);

@@ -62,31 +62,55 @@ pub struct FbCall {
     pub inst: Place,
     /// Inputs set before the call, with their values.
     pub inputs: Vec<(Member, Value)>,
-    /// Outputs copied after the call: (output name, target, complemented,
+    /// Outputs copied after the call: (output, target, complemented,
     /// widened to the target's type).
-    pub outputs: Vec<(String, Place, bool, Option<Widen>)>,
+    pub outputs: Vec<(Member, Place, bool, Option<Widen>)>,
     /// Places bound to the FB's VAR_IN_OUTs, in their declaration order.
     pub inouts: Vec<Place>,
+    /// The index of each of those VAR_IN_OUTs in the FB's
+    /// [`super::CheckedPou::vars`], in the same order.
+    pub inout_vars: Vec<u32>,
     /// Some in-out is bound to a place under the instance's own root
     /// (`CAL b(x := i, io := b.x)`): in-outs are references, so each is
     /// read after the inputs are set and sees them.
     pub inouts_in_instance: bool,
     /// The FB's (non-located) VAR_EXTERNALs, in declaration order: the
-    /// caller passes its own externals of the same names. `true`: the
-    /// FB declares it CONSTANT (a shared reference suffices).
-    pub externals: Vec<(String, bool)>,
+    /// caller passes its own externals of the same names.
+    pub externals: Vec<PassedExternal>,
     /// `CALC` / `CALCN`: call only when the condition holds.
     pub cond: Condition,
 }
 
-/// An input of a function block, as the checker resolved it: the name the
-/// emitter prints (the block's field) and the index a tool sets it by (the
-/// position among a standard block's inputs in il-std's table, or the
-/// index into the user FB's [`super::CheckedPou::vars`]).
-#[derive(Clone, Debug, PartialEq, Eq)]
+/// A VAR_EXTERNAL of a called FB, which the caller passes down from its own.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PassedExternal {
+    /// As declared (the same name in the caller and the FB).
+    pub name: String,
+    /// The FB declares it CONSTANT: a shared reference suffices.
+    pub constant: bool,
+    /// Its index in the caller's [`super::CheckedPou::vars`].
+    pub caller: u32,
+    /// Its index in the FB's [`super::CheckedPou::vars`].
+    pub callee: u32,
+}
+
+/// A member of a function block instance or a structure, as the checker
+/// resolved it: the name the emitter prints (the Rust field) and the index
+/// an interpreter reaches it by, so that no consumer looks a name up again:
+/// the index into a user FB's (or PROGRAM's) [`super::CheckedPou::vars`],
+/// the position in il-std's table of a standard block (its inputs, then its
+/// outputs: [`il_std::signature::FbSignature`]), or the position among a
+/// STRUCT's fields ([`super::TypeDef::Struct`]).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Member {
     /// As declared.
     pub name: String,
     /// As above.
     pub index: u32,
+}
+
+impl std::fmt::Display for Member {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.name)
+    }
 }

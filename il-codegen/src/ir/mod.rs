@@ -326,7 +326,7 @@ pub enum Init {
     /// initialiser (`[(x := 1), (x := 2, y := 3)]`).
     Array(Vec<(usize, Init)>),
     /// Inputs of an FB instance: `t : TON := (PT := T#1s)`.
-    Fields(Vec<(String, Const)>),
+    Fields(Vec<(Member, Const)>),
     /// A structure: `(x := 1, inner := (y := 2))`, with each field's type:
     /// the type's default value, then each given field in turn.
     Struct(Vec<(String, Ty, Init)>),
@@ -450,8 +450,8 @@ pub struct Loc {
 /// One step from a variable to a part of it.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PathElem {
-    /// A member of an FB instance, as declared in the FB.
-    Field(String),
+    /// A member of an FB instance or a structure.
+    Field(Member),
     /// Subscripts of an array with these bounds.
     Index {
         /// `(lo, hi)` per dimension, inclusive.

@@ -101,12 +101,12 @@ pub fn constant(text: &str) -> Result<i64, String> {
     i64::try_from(v).map_err(|_| "overflows LINT".to_string())
 }
 
-/// One step of a resolved path: a member by its declared name, or an
-/// element by its row-major index over all dimensions.
+/// One step of a resolved path: a member (its declared name and index), or
+/// an element by its row-major index over all dimensions.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Step {
-    /// A member of a structure or an FB instance, as declared.
-    Field(String),
+    /// A member of a structure or an FB instance.
+    Field(super::Member),
     /// The element at this flat index.
     Element(usize),
 }
@@ -181,14 +181,18 @@ pub fn held(v: &Var) -> bool {
     matches!(v.storage, Storage::Instance | Storage::External)
 }
 
-/// The member `f` of a value of type `ty`: its declared name, type and subrange.
+/// The member `f` of a value of type `ty`: the member, its type and subrange.
 #[allow(clippy::type_complexity)]
 fn member(
     prog: &Program,
     ty: &Ty,
     f: &str,
     text: &str,
-) -> Result<(String, Ty, Option<(i128, i128)>), String> {
+) -> Result<(super::Member, Ty, Option<(i128, i128)>), String> {
+    let at = |name: &str, index: usize| super::Member {
+        name: name.to_string(),
+        index: index as u32,
+    };
     let none = |names: Vec<&str>, of: &str| {
         let hint = crate::diag::suggest(f, names.iter().copied())
             .map(|s| format!("; did you mean `{s}`?"))
@@ -203,10 +207,9 @@ fn member(
                 }
             });
             match def {
-                Some(TypeDef::Struct { fields, .. }) => fields
-                    .iter()
-                    .find(|x| x.name.eq_ignore_ascii_case(f))
-                    .map(|x| (x.name.clone(), x.ty.clone(), x.range))
+                Some(TypeDef::Struct { fields, .. }) => (fields.iter().enumerate())
+                    .find(|(_, x)| x.name.eq_ignore_ascii_case(f))
+                    .map(|(i, x)| (at(&x.name, i), x.ty.clone(), x.range))
                     .ok_or_else(|| none(fields.iter().map(|x| x.name.as_str()).collect(), n)),
                 Some(TypeDef::Enum { .. }) => Err(format!("`{text}`: {n} has no members")),
                 None => Err(format!(
@@ -217,9 +220,9 @@ fn member(
         Ty::Fb(n) => {
             if let Some(p) = prog.pous.iter().find(|p| p.name.eq_ignore_ascii_case(n)) {
                 let mut names = Vec::new();
-                for v in p.vars.iter().filter(|v| held(v)) {
+                for (i, v) in p.vars.iter().enumerate().filter(|(_, v)| held(v)) {
                     if v.name.eq_ignore_ascii_case(f) {
-                        return Ok((v.name.clone(), v.ty.clone(), v.range));
+                        return Ok((at(&v.name, i), v.ty.clone(), v.range));
                     }
                     names.push(v.name.as_str());
                 }
@@ -228,10 +231,10 @@ fn member(
             let s = il_std::signature::lookup_fb(n)
                 .ok_or_else(|| format!("internal: no function block {n}"))?;
             let params = || s.inputs.iter().chain(s.outputs);
-            let p = params()
-                .find(|p| p.name.eq_ignore_ascii_case(f))
+            let (i, p) = (params().enumerate())
+                .find(|(_, p)| p.name.eq_ignore_ascii_case(f))
                 .ok_or_else(|| none(params().map(|p| p.name).collect(), n))?;
-            Ok((p.name.to_string(), Ty::of_std(p.ty), None))
+            Ok((at(p.name, i), Ty::of_std(p.ty), None))
         }
         _ => Err(format!("`{text}`: {ty} has no members")),
     }

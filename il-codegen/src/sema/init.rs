@@ -169,7 +169,9 @@ pub(crate) fn init_value(
             };
             let mut out = Vec::new();
             for (name, v) in fields {
-                let Some((iec, e)) = std.inputs.iter().find(|(n, _)| name.is(n)) else {
+                let Some((i, (iec, e))) =
+                    std.inputs.iter().enumerate().find(|(_, (n, _))| name.is(n))
+                else {
                     cx.err(
                         UNKNOWN_MEMBER,
                         name.span,
@@ -178,7 +180,11 @@ pub(crate) fn init_value(
                     continue;
                 };
                 if let Some(Init::Const(c)) = init_value(cx, types, v, &Ty::Elem(*e), None) {
-                    out.push((iec.to_string(), c));
+                    let m = crate::ir::Member {
+                        name: iec.to_string(),
+                        index: i as u32,
+                    };
+                    out.push((m, c));
                 }
             }
             Some(Init::Fields(out))

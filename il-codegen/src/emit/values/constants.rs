@@ -163,7 +163,7 @@ pub(super) fn array_init(t: &Ty, init: Option<&Init>, heap: bool) -> String {
             let ty = rust_ty(t);
             let sets: String = fields
                 .iter()
-                .map(|(n, c)| format!("__fb.{} = {};", rust_ident(n), constant(c)))
+                .map(|(n, c)| format!("__fb.{} = {};", rust_ident(&n.name), constant(c)))
                 .collect();
             format!(
                 "{{ let mut __fb = <{ty} as ::core::default::Default>::default(); {sets} __fb }}"

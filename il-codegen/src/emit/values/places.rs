@@ -120,7 +120,7 @@ impl PouEmitter<'_> {
         for e in &p.path {
             match e {
                 PathElem::Field(f) => {
-                    cur = format!("{cur}.{}", rust_ident(f));
+                    cur = format!("{cur}.{}", rust_ident(&f.name));
                     at_binding = false;
                 }
                 PathElem::Index { dims, subs } => {
@@ -219,7 +219,7 @@ impl PouEmitter<'_> {
         for e in &p.path {
             if let PathElem::Field(f) = e {
                 t.push('.');
-                t.push_str(&rust_ident(f));
+                t.push_str(&rust_ident(&f.name));
             }
         }
         t

@@ -367,15 +367,22 @@ fn walk(
     Some((steps, ty, named))
 }
 
-/// A member `part` of a place of type `ty`: (declared name, type, range,
+/// A member `part` of a place of type `ty`: (the member, type, range,
 /// CONSTANT, `AT %I*`).
 type Member = (
-    String,
+    crate::ir::Member,
     Ty,
     Option<(i128, i128)>,
     bool,
     Option<(ast::Area, String)>,
 );
+
+fn member_at(name: &str, index: usize) -> crate::ir::Member {
+    crate::ir::Member {
+        name: name.to_string(),
+        index: index as u32,
+    }
+}
 
 fn member(
     cx: &mut Cx,
@@ -388,7 +395,7 @@ fn member(
     match ty {
         Ty::Fb(fb) if env.pou(fb).is_some() => {
             let sig = env.pou(fb)?;
-            let Some((_, v)) = sig.var(&part.name) else {
+            let Some((i, v)) = sig.var(&part.name) else {
                 let names = sig.vars.iter().map(|v| v.name.as_str()).collect();
                 cx.err(
                     BAD_CONFIG,
@@ -416,7 +423,7 @@ fn member(
                 return None;
             }
             Some((
-                v.name.clone(),
+                member_at(&v.name, i),
                 v.ty.clone(),
                 v.range,
                 v.constant,
@@ -426,7 +433,8 @@ fn member(
         Ty::Fb(fb) if crate::sema::stdfb::lookup(fb).is_some() => {
             let std = crate::sema::stdfb::lookup(fb)?;
             let params = || std.inputs.iter().chain(&std.outputs);
-            let Some((name, elem)) = params().find(|(n, _)| part.is(n)) else {
+            let Some((i, (name, elem))) = params().enumerate().find(|(_, (n, _))| part.is(n))
+            else {
                 let names = params().map(|(n, _)| *n).collect();
                 cx.err(
                     BAD_CONFIG,
@@ -439,11 +447,11 @@ fn member(
                 .help = hint(&part.name, names);
                 return None;
             };
-            Some((name.to_string(), Ty::Elem(*elem), None, false, None))
+            Some((member_at(name, i), Ty::Elem(*elem), None, false, None))
         }
         Ty::Struct(s) if section == Section::Access => {
             let fields = env.types.structs.get(&s.to_ascii_uppercase())?;
-            let Some(f) = fields.iter().find(|f| part.is(&f.name)) else {
+            let Some((i, f)) = fields.iter().enumerate().find(|(_, f)| part.is(&f.name)) else {
                 let names = fields.iter().map(|f| f.name.as_str()).collect();
                 cx.err(
                     BAD_CONFIG,
@@ -453,7 +461,7 @@ fn member(
                 .help = hint(&part.name, names);
                 return None;
             };
-            Some((f.name.clone(), f.ty.clone(), f.range, false, None))
+            Some((member_at(&f.name, i), f.ty.clone(), f.range, false, None))
         }
         Ty::Struct(_) => {
             cx.err(

@@ -96,7 +96,7 @@ impl Walk<'_, '_> {
             return cr;
         };
         let (inouts, externals) = self.fb_refs(&fb);
-        if let Some((n, _)) = inouts.first() {
+        if let Some((n, _, _)) = inouts.first() {
             self.err(
                 BAD_IN_OUT,
                 span,
@@ -113,6 +113,7 @@ impl Walk<'_, '_> {
             inputs: vec![(input, value)],
             outputs: Vec::new(),
             inouts: Vec::new(),
+            inout_vars: Vec::new(),
             inouts_in_instance: false,
             externals,
             cond: None,
@@ -120,32 +121,11 @@ impl Walk<'_, '_> {
         cr
     }
 
-    /// The input `name` (as declared) of FB type `fb` with its index: the
-    /// position among a standard block's inputs, or the user FB's variable.
-    pub(super) fn input_member(&self, fb: &str, name: String) -> ir::Member {
-        let index = match stdfb::lookup(fb) {
-            Some(s) => s
-                .inputs
-                .iter()
-                .position(|(n, _)| n.eq_ignore_ascii_case(&name)),
-            None => self
-                .env
-                .pou(fb)
-                .and_then(|sig| sig.var(&name))
-                .map(|(i, _)| i),
-        };
-        // Always found (the checker resolved the name); MAX would make a
-        // consumer's lookup fail loudly, never pick another input.
-        ir::Member {
-            index: index.map_or(u32::MAX, |i| i as u32),
-            name,
-        }
-    }
-
     /// A user FB's VAR_IN_OUTs (name, type) and the names of its VAR_EXTERNALs
-    /// that the caller passes (the located ones need no passing).
+    /// that the caller passes (the located ones need no passing), each with
+    /// its index in the FB's variables.
     #[allow(clippy::type_complexity)]
-    pub(super) fn fb_refs(&self, fb: &str) -> (Vec<(String, Ty)>, Vec<(String, bool)>) {
+    pub(super) fn fb_refs(&self, fb: &str) -> (Vec<(String, Ty, u32)>, Vec<ir::PassedExternal>) {
         let Some(sig) = self
             .env
             .pou(fb)
@@ -153,17 +133,20 @@ impl Walk<'_, '_> {
         else {
             return (Vec::new(), Vec::new());
         };
-        let inouts = sig
-            .vars
-            .iter()
-            .filter(|v| v.kind == ast::VarKind::InOut)
-            .map(|v| (v.name.clone(), v.ty.clone()))
+        let inouts = (sig.vars.iter().enumerate())
+            .filter(|(_, v)| v.kind == ast::VarKind::InOut)
+            .map(|(i, v)| (v.name.clone(), v.ty.clone(), i as u32))
             .collect();
-        let externals = sig
-            .vars
-            .iter()
-            .filter(|v| v.kind == ast::VarKind::External && v.location.is_none())
-            .map(|v| (v.name.clone(), v.constant))
+        // The caller's own external of that name (the checker reports a
+        // caller without it; MAX then fails a consumer's look-up loudly).
+        let externals = (sig.vars.iter().enumerate())
+            .filter(|(_, v)| v.kind == ast::VarKind::External && v.location.is_none())
+            .map(|(i, v)| ir::PassedExternal {
+                name: v.name.clone(),
+                constant: v.constant,
+                caller: self.sig.var(&v.name).map_or(u32::MAX, |(k, _)| k as u32),
+                callee: i as u32,
+            })
             .collect();
         (inouts, externals)
     }
@@ -215,8 +198,8 @@ impl Walk<'_, '_> {
         args: &CallArgs,
         span: Span,
     ) -> (
-        Vec<(String, Value)>,
-        Vec<(String, Place, bool, Option<ir::Widen>)>,
+        Vec<(ir::Member, Value)>,
+        Vec<(ir::Member, Place, bool, Option<ir::Widen>)>,
         Vec<(String, Place)>,
     ) {
         let mut ins = Vec::new();
@@ -240,7 +223,7 @@ impl Walk<'_, '_> {
                         );
                         continue;
                     }
-                    if let Some((name, ty)) = inout_decl.iter().find(|(n, _)| p.name.is(n)) {
+                    if let Some((name, ty, _)) = inout_decl.iter().find(|(n, _, _)| p.name.is(n)) {
                         match &p.kind {
                             ParamKind::Input(o) => {
                                 if let Some(pl) = self.inout_place(o, name, ty, fb) {
@@ -292,7 +275,8 @@ impl Walk<'_, '_> {
                             let Some(place) = self.place_of(target, true) else {
                                 continue;
                             };
-                            let Ok(w) = self.output_fit(&name, &ty, &place, target.span()) else {
+                            let Ok(w) = self.output_fit(&name.name, &ty, &place, target.span())
+                            else {
                                 continue;
                             };
                             if *negate && !ty.is_logic() {
@@ -321,14 +305,17 @@ impl Walk<'_, '_> {
                 );
             }
             CallArgs::NonFormal(list) => {
-                let inputs: Vec<(String, Ty)> = if let Some(s) = stdfb::lookup(fb) {
-                    s.inputs
-                        .iter()
-                        .map(|(n, e)| (n.to_string(), Ty::Elem(*e)))
+                let member = |name: &str, index: usize| ir::Member {
+                    name: name.to_string(),
+                    index: index as u32,
+                };
+                let inputs: Vec<(ir::Member, Ty)> = if let Some(s) = stdfb::lookup(fb) {
+                    (s.inputs.iter().enumerate())
+                        .map(|(i, (n, e))| (member(n, i), Ty::Elem(*e)))
                         .collect()
                 } else if let Some(sig) = self.env.pou(fb) {
                     sig.inputs()
-                        .map(|(_, v)| (v.name.clone(), v.ty.clone()))
+                        .map(|(i, v)| (member(&v.name, i), v.ty.clone()))
                         .collect()
                 } else {
                     Vec::new()

@@ -388,8 +388,8 @@ impl Walk<'_, '_> {
                         };
                         let missing: Vec<&str> = inouts_decl
                             .iter()
-                            .filter(|(n, _)| !written(n))
-                            .map(|(n, _)| n.as_str())
+                            .filter(|(n, _, _)| !written(n))
+                            .map(|(n, _, _)| n.as_str())
                             .collect();
                         if !missing.is_empty() {
                             self.err(
@@ -405,27 +405,24 @@ impl Walk<'_, '_> {
                     }
                     return Cr::Undef(Why::AfterCal(self.line));
                 }
-                // In declaration order.
-                let inouts: Vec<Place> = inouts_decl
+                // In declaration order, with the FB's variable of each.
+                let (inouts, inout_vars): (Vec<Place>, Vec<u32>) = inouts_decl
                     .iter()
-                    .filter_map(|(n, _)| {
+                    .filter_map(|(n, _, k)| {
                         inouts
                             .iter()
                             .find(|(m, _)| m.eq_ignore_ascii_case(n))
-                            .map(|(_, p)| p.clone())
+                            .map(|(_, p)| (p.clone(), *k))
                     })
-                    .collect();
+                    .unzip();
                 let inouts_in_instance = inouts.iter().any(|p: &Place| p.root == inst.root);
-                let inputs = inputs
-                    .into_iter()
-                    .map(|(n, v)| (self.input_member(&fb, n), v))
-                    .collect();
                 self.push(Op::CallFb(Box::new(crate::sema::ir::FbCall {
                     inouts_in_instance,
                     inst,
                     inputs,
                     outputs,
                     inouts,
+                    inout_vars,
                     externals,
                     cond: cond_v,
                 })));

@@ -145,11 +145,15 @@ impl Walk<'_, '_> {
                     let field = matches!(ty, Ty::Struct(_))
                         .then(|| env.types.structs.get(&fb.to_ascii_uppercase()))
                         .flatten()
-                        .and_then(|fs| fs.iter().find(|x| f.is(&x.name)));
+                        .and_then(|fs| fs.iter().enumerate().find(|(_, x)| f.is(&x.name)));
                     let (name, mty, is_input) = match field {
-                        Some(field) => {
+                        Some((i, field)) => {
                             range = field.range;
-                            (field.name.clone(), field.ty.clone(), true)
+                            let m = ir::Member {
+                                name: field.name.clone(),
+                                index: i as u32,
+                            };
+                            (m, field.ty.clone(), true)
                         }
                         None => self.member(&fb, &f.name, f.span)?,
                     };
@@ -158,7 +162,10 @@ impl Walk<'_, '_> {
                         self.err(
                             NOT_WRITABLE,
                             f.span,
-                            format!("`{name}` is an output of {fb}; only the block sets it"),
+                            format!(
+                                "`{}` is an output of {fb}; only the block sets it",
+                                name.name
+                            ),
                         );
                         return None;
                     }
@@ -307,7 +314,7 @@ impl Walk<'_, '_> {
         fb: &str,
         name: &str,
         span: Span,
-    ) -> Option<(String, Ty, bool)> {
+    ) -> Option<(ir::Member, Ty, bool)> {
         // Most FB accesses name a member that exists: found directly; the
         // list of all members is built only for the message.
         if let Some(m) = self.find_member(fb, name) {
@@ -329,23 +336,29 @@ impl Walk<'_, '_> {
         None
     }
 
-    /// The member `name` of FB type `fb`, as [`Walk::members`] lists them.
-    pub(super) fn find_member(&self, fb: &str, name: &str) -> Option<(String, Ty, bool)> {
+    /// The member `name` of FB type `fb`, as [`Walk::members`] lists them,
+    /// with its index ([`ir::Member`]).
+    pub(super) fn find_member(&self, fb: &str, name: &str) -> Option<(ir::Member, Ty, bool)> {
+        let member = |name: &str, index: usize| ir::Member {
+            name: name.to_string(),
+            index: index as u32,
+        };
         if let Some(s) = stdfb::lookup(fb) {
-            let find = |list: &[(&str, Elem)], input: bool| {
-                (list.iter().find(|(n, _)| n.eq_ignore_ascii_case(name)))
-                    .map(|(n, e)| (n.to_string(), Ty::Elem(*e), input))
-            };
-            return find(&s.inputs, true).or_else(|| find(&s.outputs, false));
+            let params = s.inputs.iter().chain(&s.outputs).enumerate();
+            let (i, (n, e)) = params
+                .into_iter()
+                .find(|(_, (n, _))| n.eq_ignore_ascii_case(name))?;
+            return Some((member(n, i), Ty::Elem(*e), i < s.inputs.len()));
         }
         if let Some(fields) = self.env.types.structs.get(&fb.to_ascii_uppercase()) {
-            let f = fields.iter().find(|f| f.name.eq_ignore_ascii_case(name))?;
-            return Some((f.name.clone(), f.ty.clone(), true));
+            let (i, f) =
+                (fields.iter().enumerate()).find(|(_, f)| f.name.eq_ignore_ascii_case(name))?;
+            return Some((member(&f.name, i), f.ty.clone(), true));
         }
-        let (_, v) = self.env.pou(fb)?.var(name)?;
+        let (i, v) = self.env.pou(fb)?.var(name)?;
         match v.kind {
-            ast::VarKind::Input => Some((v.name.clone(), v.ty.clone(), true)),
-            ast::VarKind::Output => Some((v.name.clone(), v.ty.clone(), false)),
+            ast::VarKind::Input => Some((member(&v.name, i), v.ty.clone(), true)),
+            ast::VarKind::Output => Some((member(&v.name, i), v.ty.clone(), false)),
             _ => None,
         }
     }
