@@ -267,16 +267,20 @@ impl ConfigMachine {
         let def = std::sync::Arc::clone(&self.def);
         let pi = &def.resources[r].programs[p];
         let mut inst = std::mem::take(&mut self.programs[r][p]);
-        let pou = inst.pou;
-        let idx = |m: &Machine, n: &str| {
-            find_var(&m.prog.pous[pou], n).ok_or_else(|| format!("internal: no variable `{n}`"))
+        // The program's variable of each argument, as the checker decided.
+        let idx = |inst: &Instance, n: &il_codegen::ir::Member| {
+            let i = n.index as usize;
+            (i < inst.vars.len())
+                .then_some(i)
+                .ok_or_else(|| format!("internal: no variable `{n}`"))
         };
         for (n, a) in &pi.inputs {
             let v = match a {
                 ProgArg::Const(c) => Value::from_const(c),
                 ProgArg::Global(g) => self.read(ctx, *g),
             };
-            inst.vars[idx(&self.m, n)?] = v;
+            let i = idx(&inst, n)?;
+            inst.vars[i] = v;
         }
         let refs = pi
             .externals
@@ -284,7 +288,8 @@ impl ConfigMachine {
             .map(|(n, g, _)| (n, g))
             .chain(pi.inouts.iter().map(|(n, g)| (n, g)));
         for (n, g) in refs.clone() {
-            inst.vars[idx(&self.m, n)?] = self.slot(*g).clone();
+            let i = idx(&inst, n)?;
+            inst.vars[i] = self.slot(*g).clone();
         }
         self.programs[r][p] = inst;
         self.copy_config(ctx, r, p, true)?;
@@ -298,11 +303,11 @@ impl ConfigMachine {
         }
         let result = self.m.call_instance(&mut inst, ctx);
         for (n, g) in refs {
-            let v = inst.vars[idx(&self.m, n)?].clone();
+            let v = inst.vars[idx(&inst, n)?].clone();
             *self.slot_mut(*g) = v;
         }
         for (n, g) in &pi.outputs {
-            let v = inst.vars[idx(&self.m, n)?].clone();
+            let v = inst.vars[idx(&inst, n)?].clone();
             match &self.var_of(*g).location {
                 Some(l) => io_write(ctx, l, &v),
                 None => *self.slot_mut(*g) = v,

@@ -77,7 +77,7 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
             .inputs
             .iter()
             .map(|(n, a)| {
-                let f = rust_ident(n);
+                let f = rust_ident(&n.name);
                 let v = match a {
                     ProgArg::Const(k) => values::constant(k),
                     ProgArg::Global(g) => read_global(g),
@@ -90,7 +90,7 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
         } else {
             let st = names::ext_ident(&pi.program);
             let fs = pi.externals.iter().map(|(n, g, constant)| {
-                let id = rust_ident(n);
+                let id = rust_ident(&n.name);
                 let (_, path) = global(g);
                 if *constant {
                     format!("{id}: &{path}")
@@ -110,7 +110,7 @@ pub(crate) fn emit_config(o: &mut Out, c: &ConfigDef, opts: super::Options) {
             .outputs
             .iter()
             .map(|(n, g)| {
-                let f = rust_ident(n);
+                let f = rust_ident(&n.name);
                 let (v, path) = global(g);
                 let src = format!("{base}.{inst}.{f}");
                 match &v.location {

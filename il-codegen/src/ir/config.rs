@@ -166,15 +166,17 @@ pub struct ProgramInst {
     /// Index into the resource's tasks; `None`: runs on every call, after the tasks.
     pub task: Option<usize>,
     /// The globals bound to the program's (non-located) VAR_EXTERNALs, in
-    /// their declaration order; `true` for a VAR_EXTERNAL CONSTANT.
-    pub externals: Vec<(String, GlobalRef, bool)>,
+    /// their declaration order; `true` for a VAR_EXTERNAL CONSTANT. Each
+    /// variable of the program is a [`super::Member`]: its name and its
+    /// index in the program's [`super::CheckedPou::vars`].
+    pub externals: Vec<(super::Member, GlobalRef, bool)>,
     /// Inputs set before every run.
-    pub inputs: Vec<(String, ProgArg)>,
-    /// Outputs copied to globals after every run (target, source output).
-    pub outputs: Vec<(String, GlobalRef)>,
+    pub inputs: Vec<(super::Member, ProgArg)>,
+    /// Outputs copied to globals after every run (source output, target).
+    pub outputs: Vec<(super::Member, GlobalRef)>,
     /// The globals bound to the program's VAR_IN_OUTs (`PROGRAM p : P(io :=
     /// g)`), one for each, in their declaration order: passed by reference.
-    pub inouts: Vec<(String, GlobalRef)>,
+    pub inouts: Vec<(super::Member, GlobalRef)>,
     /// The program has RETAIN variables (a `retain()` snapshot).
     pub retain: bool,
 }

@@ -5,7 +5,7 @@
 
 use super::lookup::{lookup, unknown_global};
 use crate::ast::{self, Operand, ParamKind, VarKind};
-use crate::ir::{ConfigDef, GlobalRef, Init, ProgArg};
+use crate::ir::{ConfigDef, GlobalRef, Init, Member, ProgArg};
 use crate::sema::Cx;
 use crate::sema::codes::*;
 use crate::sema::env::{Env, PouSig};
@@ -14,10 +14,18 @@ use crate::sema::init::init_value;
 /// The checked arguments of one program instance.
 #[derive(Default)]
 pub(crate) struct ProgArgs {
-    pub inputs: Vec<(String, ProgArg)>,
-    pub outputs: Vec<(String, GlobalRef)>,
+    pub inputs: Vec<(Member, ProgArg)>,
+    pub outputs: Vec<(Member, GlobalRef)>,
     /// In the program's declaration order of its VAR_IN_OUTs.
-    pub inouts: Vec<(String, GlobalRef)>,
+    pub inouts: Vec<(Member, GlobalRef)>,
+}
+
+/// Variable `index` of the program, named `name`.
+pub(super) fn member(index: usize, name: &str) -> Member {
+    Member {
+        name: name.to_string(),
+        index: index as u32,
+    }
 }
 
 pub(crate) fn program_args(
@@ -27,17 +35,17 @@ pub(crate) fn program_args(
     res: usize,
     sig: &PouSig,
     pi: &ast::ProgramInstance,
-    externals: &[(String, GlobalRef, bool)],
+    externals: &[(Member, GlobalRef, bool)],
 ) -> ProgArgs {
     let mut out = ProgArgs::default();
-    let mut inouts: Vec<(String, GlobalRef)> = Vec::new();
+    let mut inouts: Vec<(Member, GlobalRef)> = Vec::new();
     let mut named: Vec<String> = Vec::new();
     for a in &pi.args {
         let want: &[VarKind] = match a.kind {
             ParamKind::Input(_) => &[VarKind::Input, VarKind::InOut],
             ParamKind::Output { .. } => &[VarKind::Output],
         };
-        let Some((_, v)) = sig
+        let Some((index, v)) = sig
             .var(&a.name.name)
             .filter(|(_, v)| want.contains(&v.kind))
         else {
@@ -115,20 +123,20 @@ pub(crate) fn program_args(
                     Some(m) => {
                         cx.err(BAD_IN_OUT, g.span(), m);
                     }
-                    None => inouts.push((v.name.clone(), gr)),
+                    None => inouts.push((member(index, &v.name), gr)),
                 }
             }
             ParamKind::Input(Operand::Lit(l)) => {
                 let init = ast::Initializer::Simple(Operand::Lit(l.clone()));
                 if let Some(Init::Const(c)) = init_value(cx, &env.types, &init, &v.ty, v.range) {
-                    out.inputs.push((v.name.clone(), ProgArg::Const(c)));
+                    out.inputs.push((member(index, &v.name), ProgArg::Const(c)));
                 }
             }
             ParamKind::Input(Operand::Var(g)) if g.path.is_empty() => {
                 match lookup(def, res, &g.base.name) {
-                    Some((gr, gv)) if gv.ty == v.ty => {
-                        out.inputs.push((v.name.clone(), ProgArg::Global(gr)))
-                    }
+                    Some((gr, gv)) if gv.ty == v.ty => out
+                        .inputs
+                        .push((member(index, &v.name), ProgArg::Global(gr))),
                     Some((_, gv)) => {
                         cx.err(
                             BAD_CONFIG,
@@ -150,7 +158,7 @@ pub(crate) fn program_args(
                         format!("the global `{}` is CONSTANT", gv.name),
                     );
                 }
-                Some((gr, gv)) if gv.ty == v.ty => out.outputs.push((v.name.clone(), gr)),
+                Some((gr, gv)) if gv.ty == v.ty => out.outputs.push((member(index, &v.name), gr)),
                 Some((_, gv)) => {
                     cx.err(
                         BAD_CONFIG,
@@ -172,7 +180,7 @@ pub(crate) fn program_args(
     // Every VAR_IN_OUT is bound, in declaration order (the order of `call`'s
     // reference parameters).
     for v in sig.vars.iter().filter(|v| v.kind == VarKind::InOut) {
-        match inouts.iter().position(|(n, _)| *n == v.name) {
+        match inouts.iter().position(|(n, _)| n.name == v.name) {
             Some(i) => out.inouts.push(inouts.swap_remove(i)),
             // A refused binding has its own error already.
             None if !named.iter().any(|n| n.eq_ignore_ascii_case(&v.name)) => {

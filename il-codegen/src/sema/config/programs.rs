@@ -64,10 +64,8 @@ pub(super) fn programs(
             },
         };
         let mut externals = Vec::new();
-        for v in sig
-            .vars
-            .iter()
-            .filter(|v| v.kind == VarKind::External && v.location.is_none())
+        for (index, v) in (sig.vars.iter().enumerate())
+            .filter(|(_, v)| v.kind == VarKind::External && v.location.is_none())
         {
             match lookup(def, res, &v.name) {
                 None => {
@@ -107,7 +105,9 @@ pub(super) fn programs(
                         ),
                     );
                 }
-                Some((gr, _)) => externals.push((v.name.clone(), gr, v.constant)),
+                Some((gr, _)) => {
+                    externals.push((super::args::member(index, &v.name), gr, v.constant));
+                }
             }
         }
         let args = program_args(cx, env, def, res, sig, pi, &externals);
