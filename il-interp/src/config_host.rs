@@ -4,13 +4,14 @@
 //! with members and elements after it (`g.field`, `Res.inst.v.f[2]`), and
 //! direct addresses. Located globals are their place in the process image.
 
+use crate::ConfigMachine;
 use crate::host::{Part, hint, split};
 use crate::places::{Step, io_read, io_write};
 use crate::values::Value;
-use crate::{ConfigMachine, find_var, held};
 use il_codegen::ir::parse_address;
+use il_codegen::ir::path::Rooted;
 use il_codegen::ir::types::Ty;
-use il_codegen::ir::{GlobalRef, Loc, Storage};
+use il_codegen::ir::{GlobalRef, Loc};
 use il_std::Cycle;
 
 /// A resolved place of a configuration: [`ConfigMachine::lookup`] makes one.
@@ -114,34 +115,27 @@ impl ConfigMachine {
             };
             let pou = &self.m.prog.pous[self.programs[r][p].pou];
             let var = var.as_str();
-            let Some(i) = find_var(pou, var) else {
-                let names = pou.vars.iter().filter(|v| held(v)).map(|v| v.name.as_str());
-                return Err(format!(
-                    "program `{}` (instance `{full}`) has no variable `{var}`{}",
-                    pou.name,
-                    hint(var, names)
-                ));
-            };
-            let v = &pou.vars[i];
-            if v.storage == Storage::Located
-                && let Some(l) = &v.location
-            {
-                if !rest.is_empty() {
-                    return Err(format!(
-                        "`{var}` is located at {}: it has no members",
-                        l.text
-                    ));
-                }
-                return Ok(place(v.ty.clone(), v.range, Target::Addr(l.clone())));
-            }
-            if !held(v) {
-                return Err(format!(
-                    "`{text}` lives only during a run of {} (a temporary); it cannot be set or watched",
-                    pou.name
-                ));
-            }
-            let (steps, ty, range) = self.m.resolve_parts(v.ty.clone(), v.range, rest, text)?;
-            return Ok(place(ty, range, Target::Program(r, p, i, steps)));
+            let rooted = il_codegen::ir::path::resolve_var(
+                &self.m.prog,
+                pou,
+                (var, rest),
+                text,
+                il_codegen::ir::path::Scope::Held,
+                |hint| {
+                    format!(
+                        "program `{}` (instance `{full}`) has no variable `{var}`{hint}",
+                        pou.name
+                    )
+                },
+            )?;
+            return Ok(match rooted {
+                Rooted::Located(l, ty, range) => place(ty, range, Target::Addr(l)),
+                Rooted::Var(i, res) => place(
+                    res.ty,
+                    res.range,
+                    Target::Program(r, p, i, crate::host::steps_of(res.steps)),
+                ),
+            });
         }
         let names = self.scope_names(scope);
         let near = hint(name, names.iter().map(String::as_str));

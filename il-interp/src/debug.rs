@@ -11,7 +11,7 @@ use std::any::Any;
 
 use crate::places::{Step, io_read};
 use crate::values::Value;
-use crate::{Frame, Machine, find_var};
+use crate::{Frame, Machine};
 use il_codegen::ir::types::Ty;
 use il_codegen::ir::{CheckedPou, Op, PathElem, Place, Root, Stmt, TypeDef, Var};
 use il_std::{Cycle, Fault};
@@ -357,29 +357,21 @@ impl Here<'_> {
         let (e, _, _) = self.frame(depth).ok_or("no such frame")?;
         let pou = &self.m.prog.pous[e.pou];
         let (root, parts) = crate::host::split(text)?;
-        let Some(i) = find_var(pou, &root) else {
-            let names = pou.vars.iter().map(|v| v.name.as_str());
-            return Err(format!(
-                "no variable `{root}` in {}{}",
-                pou.name,
-                crate::host::hint(&root, names)
-            ));
-        };
-        let var = &pou.vars[i];
-        // A located variable lives in the process image.
-        if let Some(l) = &var.location {
-            if !parts.is_empty() {
-                return Err(format!(
-                    "`{root}` is located at {}: it has no members",
-                    l.text
-                ));
+        let rooted = il_codegen::ir::path::resolve_var(
+            &self.m.prog,
+            pou,
+            (&root, &parts),
+            text,
+            il_codegen::ir::path::Scope::All,
+            |hint| format!("no variable `{root}` in {}{hint}", pou.name),
+        )?;
+        Ok(match rooted {
+            // A located variable lives in the process image.
+            il_codegen::ir::path::Rooted::Located(l, ty, _) => (Target::Addr(l), ty),
+            il_codegen::ir::path::Rooted::Var(i, r) => {
+                (Target::Var(i, crate::host::steps_of(r.steps)), r.ty)
             }
-            return Ok((Target::Addr(l.clone()), var.ty.clone()));
-        }
-        let (steps, ty, _) = self
-            .m
-            .resolve_parts(var.ty.clone(), var.range, &parts, text)?;
-        Ok((Target::Var(i, steps), ty))
+        })
     }
 
     /// The members of a value of type `ty`: an FB instance's variables, a

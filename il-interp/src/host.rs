@@ -6,9 +6,10 @@
 
 use crate::places::{Step, io_read, io_write};
 use crate::values::Value;
-use crate::{Machine, find_var, held};
+use crate::{Machine, held};
 use il_codegen::diag::suggest;
 use il_codegen::ir::parse_address;
+use il_codegen::ir::path::Rooted;
 use il_codegen::ir::types::{Elem, Ty};
 use il_codegen::ir::{Loc, Storage, TypeDef};
 use il_std::Cycle;
@@ -58,6 +59,17 @@ pub(crate) fn split(text: &str) -> Result<(String, Vec<Part>), String> {
     Ok((p.root, p.parts))
 }
 
+/// The interpreter's steps for the IR's resolved ones.
+pub(crate) fn steps_of(steps: Vec<il_codegen::ir::path::Step>) -> Vec<Step> {
+    use il_codegen::ir::path::Step as S;
+    (steps.into_iter())
+        .map(|s| match s {
+            S::Field(m) => Step::Field(m.index as usize),
+            S::Element(k) => Step::Index(Some(k)),
+        })
+        .collect()
+}
+
 /// ", did you mean `x`?" when a candidate is close.
 pub(crate) fn hint<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> String {
     suggest(name, candidates)
@@ -82,49 +94,27 @@ impl Machine {
         }
         let (root, parts) = split(text)?;
         let root = root.as_str();
-        let Some(i) = find_var(pou, root) else {
-            let names = pou
-                .vars
-                .iter()
-                .filter(|v| visible(v))
-                .map(|v| v.name.as_str());
-            return Err(format!(
-                "no variable `{root}` in {}{}",
-                pou.name,
-                hint(root, names)
-            ));
-        };
-        let var = &pou.vars[i];
-        if var.storage == Storage::Located {
-            let l = var
-                .location
-                .clone()
-                .ok_or("internal: located without address")?;
-            if !parts.is_empty() {
-                return Err(format!(
-                    "`{root}` is located at {}: it has no members",
-                    l.text
-                ));
-            }
-            return Ok(HostPlace {
+        let rooted = il_codegen::ir::path::resolve_var(
+            &self.prog,
+            pou,
+            (root, &parts),
+            text,
+            il_codegen::ir::path::Scope::Held,
+            |hint| format!("no variable `{root}` in {}{hint}", pou.name),
+        )?;
+        Ok(match rooted {
+            Rooted::Located(l, ty, range) => HostPlace {
                 text: text.to_string(),
-                ty: var.ty.clone(),
-                range: var.range,
+                ty,
+                range,
                 target: Target::Addr(l),
-            });
-        }
-        if !held(var) {
-            return Err(format!(
-                "`{root}` lives only during a call of {} (a temporary); it cannot be set or watched",
-                pou.name
-            ));
-        }
-        let (steps, ty, range) = self.resolve_parts(var.ty.clone(), var.range, &parts, text)?;
-        Ok(HostPlace {
-            text: text.to_string(),
-            ty,
-            range,
-            target: Target::Var(i, steps),
+            },
+            Rooted::Var(i, r) => HostPlace {
+                text: text.to_string(),
+                ty: r.ty,
+                range: r.range,
+                target: Target::Var(i, steps_of(r.steps)),
+            },
         })
     }
 
@@ -140,15 +130,7 @@ impl Machine {
         text: &str,
     ) -> Result<Resolved, String> {
         let r = il_codegen::ir::path::resolve(&self.prog, (ty, range), parts, text)?;
-        let steps = r
-            .steps
-            .into_iter()
-            .map(|s| match s {
-                il_codegen::ir::path::Step::Field(m) => Step::Field(m.index as usize),
-                il_codegen::ir::path::Step::Element(k) => Step::Index(Some(k)),
-            })
-            .collect();
-        Ok((steps, r.ty, r.range))
+        Ok((steps_of(r.steps), r.ty, r.range))
     }
 
     /// The current value of a host place (the process image is the cycle's).

@@ -9,7 +9,7 @@
 //! dividend's sign).
 
 use super::types::Ty;
-use super::{BinOp, Program, Storage, TypeDef, Var};
+use super::{BinOp, CheckedPou, Loc, Program, Storage, TypeDef, Var};
 
 /// A parsed path: its first name and the steps after it.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -171,6 +171,71 @@ pub fn resolve(
         }
     }
     Ok(Resolved { steps, ty, range })
+}
+
+/// What a path rooted at a variable of a POU names ([`resolve_var`]).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Rooted {
+    /// A located variable (`AT %IW2 : INT`): its place in the process
+    /// image, and the variable's declared type and subrange.
+    Located(Loc, Ty, Option<(i128, i128)>),
+    /// Variable `index` of the POU, and where the path's parts lead in it.
+    Var(usize, Resolved),
+}
+
+/// Which variables of a POU a path may start at.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scope {
+    /// Those an instance holds between calls ([`held`]) and the located
+    /// ones: a host or a tool between scans.
+    Held,
+    /// Every variable, temporaries included: a debugger stopped in a call.
+    All,
+}
+
+/// Resolve `root` and `parts` (of the path `text`) against the variables of
+/// `pou` in `prog`: the one resolution of a path's root for every tool (the
+/// interpreter's host access, the configuration's program variables and
+/// the debugger). `unknown` phrases the error for a root that is no variable
+/// of the POU, given the hint (`; did you mean `x`?`, or empty).
+pub fn resolve_var(
+    prog: &Program,
+    pou: &CheckedPou,
+    (root, parts): (&str, &[PathPart]),
+    text: &str,
+    scope: Scope,
+    unknown: impl FnOnce(&str) -> String,
+) -> Result<Rooted, String> {
+    let seen = |v: &Var| scope == Scope::All || held(v) || v.storage == Storage::Located;
+    let found = (pou.vars.iter().position(|v| v.name == root))
+        .or_else(|| (pou.vars.iter()).position(|v| v.name.eq_ignore_ascii_case(root)));
+    let Some(i) = found else {
+        let names = pou.vars.iter().filter(|v| seen(v)).map(|v| v.name.as_str());
+        let hint = crate::diag::suggest(root, names)
+            .map(|s| format!("; did you mean `{s}`?"))
+            .unwrap_or_default();
+        return Err(unknown(&hint));
+    };
+    let var = &pou.vars[i];
+    // A debugger shows any variable with an address at its address.
+    let located = scope == Scope::All || var.storage == Storage::Located;
+    if let Some(l) = var.location.as_ref().filter(|_| located) {
+        if !parts.is_empty() {
+            return Err(format!(
+                "`{root}` is located at {}: it has no members",
+                l.text
+            ));
+        }
+        return Ok(Rooted::Located(l.clone(), var.ty.clone(), var.range));
+    }
+    if !seen(var) {
+        return Err(format!(
+            "`{root}` lives only during a call of {} (a temporary); it cannot be set or watched",
+            pou.name
+        ));
+    }
+    let resolved = resolve(prog, (var.ty.clone(), var.range), parts, text)?;
+    Ok(Rooted::Var(i, resolved))
 }
 
 /// Whether an instance holds `v` between calls, so that a path can name
