@@ -37,6 +37,7 @@
 #![warn(missing_docs)]
 
 pub mod client;
+mod error;
 mod image;
 pub mod modbus;
 pub mod retain;
@@ -45,8 +46,9 @@ mod sched;
 mod signals;
 mod stats;
 
+pub use error::Error;
 pub use image::SharedImage;
-pub use runtime::{Error, Options, Report, RetainLoad, Runtime};
+pub use runtime::{Options, Report, RetainLoad, Runtime};
 pub use sched::Realtime;
 pub use stats::TaskStats;
 

@@ -10,7 +10,7 @@ use std::time::{Duration, Instant};
 
 use il_std::{Cycle, DT, TIME};
 
-use crate::runtime::Error;
+use crate::error::Error;
 use crate::{Plc, SharedImage, TaskStats, retain};
 
 /// Whether the scheduler thread runs under a real-time policy.
