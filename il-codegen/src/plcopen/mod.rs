@@ -29,11 +29,11 @@
 mod limits;
 pub(crate) mod map;
 #[cfg(feature = "plcopen")]
-mod text;
+pub(crate) mod text;
 #[cfg(feature = "plcopen")]
-mod translate;
+pub(crate) mod translate;
 #[cfg(feature = "plcopen")]
-mod validate;
+pub(crate) mod validate;
 
 pub use map::SpanMap;
 
@@ -151,6 +151,10 @@ pub(crate) fn language_name(tc6: &str) -> &'static str {
         "FBD" => "Function Block Diagram",
         "LD" => "Ladder Diagram",
         "SFC" => "Sequential Function Chart",
+        // LogicLab's names (`<sourceCode type="...">`).
+        "LD2" => "Ladder Diagram",
+        "CFC" => "Continuous Function Chart",
+        "EMBEDDED" => "code embedded in the target's firmware",
         _ => "another language",
     }
 }

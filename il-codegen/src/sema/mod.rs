@@ -31,6 +31,14 @@ pub(crate) use crate::ir::{self, types};
 pub use address::parse_address;
 pub use codes::CODES;
 
+/// Whether `name` (any case) is a standard function block or function of
+/// il-std: a POU of that name is refused (IL0104), so the importers that
+/// meet one in a vendor's library leave it out and say so.
+pub(crate) fn is_standard_pou(name: &str) -> bool {
+    let key = name.to_ascii_uppercase();
+    stdfb::lookup(&key).is_some() || stdfn::is_std(&key)
+}
+
 /// Check several files as one program (a FUNCTION_BLOCK of one file used in
 /// another) against a standard. Returns one program and one diagnostic
 /// list per file. `cr_steps`: record [`ir::CheckedPou::cr_steps`] (for

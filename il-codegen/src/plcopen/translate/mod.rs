@@ -6,6 +6,8 @@ mod pous;
 mod types;
 mod vars;
 
+pub(crate) use pous::escape;
+
 use std::collections::HashMap;
 use std::ops::Range;
 
@@ -137,8 +139,9 @@ fn not_plcopen(root: Node, at: Span) -> Diagnostic {
     )
     .with_label("not PLCopen's `<project>`")
     .with_note(
-        "the IL compiler reads IL source text and PLCopen TC6 XML projects \
-         (`<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">`, as Beremiz, OpenPLC and CODESYS export them); \
+        "the IL compiler reads IL source text, PLCopen TC6 XML projects \
+         (`<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">`, as Beremiz, OpenPLC and CODESYS export them) \
+         and LogicLab / Arduino PLC IDE projects (`<plcProject>`, `.plcprj`); \
          a file whose text starts with `<` is read as XML whatever its name",
     )
 }
@@ -157,6 +160,11 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
         left_out: LeftOut::default(),
     };
     let root = doc.root_element();
+    // An Axel LogicLab / Arduino PLC IDE project or library: its own
+    // schema, its own translation (same parser, limits and map).
+    if crate::logiclab::is_root(root) {
+        return crate::logiclab::translate(doc, xml);
+    }
     if !is_plcopen_root(root) {
         let at = t.tag(root);
         t.diags.push(not_plcopen(root, at));

@@ -1,0 +1,703 @@
+//! The IL text of a LogicLab project: which elements are written (the
+//! project's, and what it uses of its libraries), and how a variable, a
+//! data type and a POU are written.
+
+use std::collections::{HashMap, HashSet};
+
+use roxmltree::Node;
+
+use super::codes::{BAD_PROJECT, BAD_VALUE, NOT_IEC_ADDRESS, NOT_IL, STANDARD_NAME};
+use super::config::{self, Needs};
+use super::read::{self, Pou, Project, TypeKind, attr_span, checked, is, kid, kids, tag};
+use crate::ast::PouKind;
+use crate::diag::Diagnostic;
+use crate::plcopen::PouInfo;
+use crate::plcopen::codes::BODY_ESCAPES;
+use crate::plcopen::map::Writer;
+use crate::plcopen::text::{attr_into, content_range, decode_content, start_tag};
+use crate::plcopen::translate::{Translation, escape};
+use crate::plcopen::validate::{self, Kind, shown};
+use crate::syntax::lexer::{self, Tok};
+
+/// The translation under way: the XML, the IL text with its map, the
+/// diagnostics.
+pub(super) struct Lx<'i> {
+    pub xml: &'i str,
+    pub w: Writer,
+    pub diags: Vec<Diagnostic>,
+}
+
+/// Which elements are written, by index into the project's lists.
+pub(super) struct Selection {
+    pub pous: Vec<bool>,
+    pub types: Vec<bool>,
+    pub globals: Vec<bool>,
+    /// The names each IL POU's body uses (upper case), by POU index.
+    pub used: Vec<HashSet<String>>,
+}
+
+pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
+    let mut diags = Vec::new();
+    let p = read::read(doc.root_element(), xml, &mut diags);
+    let mut lx = Lx {
+        xml,
+        w: Writer::default(),
+        diags,
+    };
+    let sel = select(&p, &mut lx);
+    let needs = config::needs(&p, &sel, &mut lx);
+    for (k, t) in p.types.iter().enumerate() {
+        if sel.types[k] {
+            lx.data_type(t.node, t.kind, &t.name);
+        }
+    }
+    lx.not_il_warnings(&p, &sel);
+    let mut pous = Vec::new();
+    for (k, pou) in p.pous.iter().enumerate() {
+        if pou.origin.is_some() && !sel.pous[k] && !lx.standard(pou) {
+            continue;
+        }
+        let translated = sel.pous[k] && lx.pou(pou, &needs);
+        pous.push(PouInfo {
+            name: pou.name.clone(),
+            kind: pou.kind.keyword(),
+            language: pou.lang.clone(),
+            translated,
+        });
+    }
+    config::write(&p, &sel, &needs, &mut lx);
+    let mut seen = HashSet::new();
+    lx.diags
+        .retain(|d| seen.insert((d.code, d.span.lo, d.span.hi, d.message.clone())));
+    let (text, map) = lx.w.finish();
+    Translation {
+        text,
+        map,
+        diags: lx.diags,
+        pous,
+    }
+}
+
+/// An element of the project a name can refer to.
+#[derive(Clone, Copy)]
+enum Item {
+    Pou(usize),
+    Type(usize),
+    Global(usize),
+}
+
+/// The project's own elements, and those of its libraries that they use
+/// (by a variable's type, or a name in an IL body), and so on. A POU with
+/// the name of a standard block or function is never written.
+fn select(p: &Project, lx: &mut Lx) -> Selection {
+    let mut index: HashMap<String, Item> = HashMap::new();
+    let items = (p
+        .pous
+        .iter()
+        .enumerate()
+        .map(|(k, x)| (&x.name, Item::Pou(k))))
+    .chain(
+        p.types
+            .iter()
+            .enumerate()
+            .map(|(k, x)| (&x.name, Item::Type(k))),
+    )
+    .chain(
+        p.globals
+            .iter()
+            .enumerate()
+            .map(|(k, x)| (&x.name, Item::Global(k))),
+    );
+    for (name, item) in items {
+        // The first of a name: the project's before its libraries'.
+        index.entry(name.to_ascii_uppercase()).or_insert(item);
+    }
+    let mut sel = Selection {
+        pous: vec![false; p.pous.len()],
+        types: vec![false; p.types.len()],
+        globals: vec![false; p.globals.len()],
+        used: vec![HashSet::new(); p.pous.len()],
+    };
+    let mut queue: Vec<Item> = Vec::new();
+    queue.extend(
+        (0..p.pous.len())
+            .filter(|&k| p.pous[k].origin.is_none())
+            .map(Item::Pou),
+    );
+    queue.extend(
+        (0..p.types.len())
+            .filter(|&k| p.types[k].origin.is_none())
+            .map(Item::Type),
+    );
+    queue.extend(
+        (0..p.globals.len())
+            .filter(|&k| p.globals[k].origin.is_none())
+            .map(Item::Global),
+    );
+    while let Some(item) = queue.pop() {
+        crate::step_counter::add(1);
+        let refs: Vec<String> = match item {
+            Item::Pou(k) if !sel.pous[k] => {
+                let pou = &p.pous[k];
+                if crate::sema::is_standard_pou(&pou.name) {
+                    lx.standard_name(p, pou);
+                    continue;
+                }
+                sel.pous[k] = true;
+                let mut refs = type_refs(pou.node, pou.lang != "IL");
+                if pou.lang == "IL" {
+                    sel.used[k] = lx.body_names(pou);
+                    refs.extend(sel.used[k].iter().cloned());
+                }
+                refs
+            }
+            Item::Type(k) if !sel.types[k] => {
+                sel.types[k] = true;
+                type_refs(p.types[k].node, false)
+            }
+            Item::Global(k) if !sel.globals[k] => {
+                sel.globals[k] = true;
+                type_refs(p.globals[k].node, false)
+            }
+            _ => continue,
+        };
+        queue.extend(refs.iter().filter_map(|r| index.get(r).copied()));
+    }
+    sel
+}
+
+/// The type names (upper case) that the written text of an element names:
+/// its variables', members' and base type, a FUNCTION's result; of a POU
+/// that is not IL, only its interface's (the rest is not written).
+fn type_refs(n: Node, interface_only: bool) -> Vec<String> {
+    let interface = ["inputVars", "outputVars", "inoutVars"];
+    let vars = kids(n, "vars")
+        .flat_map(|v| v.children())
+        .filter(|b| b.is_element() && (!interface_only || interface.contains(&b.tag_name().name())))
+        .flat_map(|b| b.children())
+        // A struct's members are right in `<vars>`.
+        .chain(kids(n, "vars").flat_map(|v| v.children()));
+    vars.chain(std::iter::once(n))
+        .filter_map(|d| {
+            crate::step_counter::add(1);
+            d.attribute("type")
+                .filter(|_| d.is_element() && !is(&d, "sourceCode"))
+        })
+        .map(str::to_ascii_uppercase)
+        .chain(
+            kid(n, "returnValue")
+                .and_then(|r| r.text())
+                .map(|t| t.trim().to_ascii_uppercase()),
+        )
+        .collect()
+}
+
+impl Lx<'_> {
+    /// Whether `pou` is left out for its standard name.
+    fn standard(&self, pou: &Pou) -> bool {
+        crate::sema::is_standard_pou(&pou.name)
+    }
+
+    fn standard_name(&mut self, p: &Project, pou: &Pou) {
+        let from = match pou.origin {
+            Some(l) => format!("of library `{}`", shown(&p.libs[l].0)),
+            None => "of this project".to_string(),
+        };
+        let mut d = Diagnostic::warning(
+            STANDARD_NAME,
+            attr_span(self.xml, pou.node, "name"),
+            format!(
+                "{} `{}` {from} has the name of a standard {}: il-std's is used instead",
+                pou.kind.keyword(),
+                pou.name,
+                if crate::sema::is_standard_pou(&pou.name) && pou.kind == PouKind::Function {
+                    "function"
+                } else {
+                    "function block"
+                },
+            ),
+        )
+        .with_label("left out");
+        if ["TON", "TOF", "TP"].contains(&pou.name.to_ascii_uppercase().as_str()) {
+            d = d.with_note(
+                "LogicLab's timers take `PT` and give `ET` as UDINT milliseconds; il-std's as TIME (`PT := T#500ms`)",
+            );
+        }
+        self.diags.push(d);
+    }
+
+    /// The names an IL body uses, upper case (a member after `.` is not one).
+    fn body_names(&self, pou: &Pou) -> HashSet<String> {
+        let Some(code) = pou.code else {
+            return HashSet::new();
+        };
+        let mut scratch = Writer::default();
+        decode_content(
+            &mut scratch,
+            self.xml,
+            content_range(self.xml, code.range()),
+        );
+        let (toks, _) = lexer::lex(&scratch.text);
+        let mut out = HashSet::new();
+        let mut after_dot = false;
+        for (_, t, _) in &toks {
+            if let (Tok::Ident(s), false) = (t, after_dot) {
+                out.insert(s.to_ascii_uppercase());
+            }
+            after_dot = *t == Tok::Dot;
+        }
+        out
+    }
+
+    /// One warning per POU of the project that is not IL, one per library
+    /// for those of the library that the project uses.
+    fn not_il_warnings(&mut self, p: &Project, sel: &Selection) {
+        let mut per_lib: Vec<Vec<&Pou>> = vec![Vec::new(); p.libs.len()];
+        for (k, pou) in p.pous.iter().enumerate() {
+            if !sel.pous[k] || pou.lang == "IL" {
+                continue;
+            }
+            match pou.origin {
+                Some(l) => per_lib[l].push(pou),
+                None => {
+                    let at = attr_span(self.xml, pou.node, "name");
+                    let mut d = Diagnostic::warning(
+                        NOT_IL,
+                        at,
+                        format!(
+                            "{} `{}` is in {}: its interface is compiled, its body is not (host-provided)",
+                            pou.kind.keyword(),
+                            pou.name,
+                            language(&pou.lang)
+                        ),
+                    )
+                    .with_label("body not in IL")
+                    .with_note(
+                        "in generated Rust the crate supplies its body, as for an `{extern}` POU; `ilc run` runs its interface only",
+                    );
+                    if let Some(c) = pou.code {
+                        d = d.with_secondary(tag(self.xml, c), "its body");
+                    }
+                    self.diags.push(d);
+                }
+            }
+        }
+        for (l, list) in per_lib.iter().enumerate().filter(|(_, l)| !l.is_empty()) {
+            let names: Vec<String> = list
+                .iter()
+                .take(8)
+                .map(|p| format!("`{}`", p.name))
+                .collect();
+            let more = if list.len() > 8 {
+                format!(" and {} more", list.len() - 8)
+            } else {
+                String::new()
+            };
+            self.diags.push(
+                Diagnostic::warning(
+                    NOT_IL,
+                    tag(self.xml, p.libs[l].1),
+                    format!(
+                        "{} POU(s) of library `{}` that the project uses are not in IL: {}{more}; their interfaces are compiled, their bodies are host-provided",
+                        list.len(),
+                        shown(&p.libs[l].0),
+                        names.join(", ")
+                    ),
+                )
+                .with_label("library POUs not in IL"),
+            );
+        }
+    }
+
+    /// Generated text standing for element `n`'s start tag.
+    pub(super) fn put(&mut self, s: &str, n: Node) {
+        let r = start_tag(self.xml, n.range());
+        self.w.gen_at(s, r);
+    }
+
+    /// The IL type of a variable, member or typedef (`type`, `length`,
+    /// `dim0` ... attributes), or `None` (reported).
+    pub(super) fn type_text(&mut self, v: Node) -> Option<String> {
+        // The string types are keywords, and names no other way.
+        let base = match v.attribute("type") {
+            Some(t) if ["STRING", "WSTRING"].contains(&t.to_ascii_uppercase().as_str()) => t,
+            _ => checked(self.xml, v, "type", Kind::Name, &mut self.diags)?,
+        };
+        let mut ty = base.to_string();
+        if v.attribute("length").is_some() {
+            let n = checked(self.xml, v, "length", Kind::Count, &mut self.diags)?;
+            ty = format!("{ty}[{n}]");
+        }
+        let mut dims = Vec::new();
+        for d in ["dim0", "dim1", "dim2"] {
+            if v.attribute(d).is_none() {
+                break;
+            }
+            let n = checked(self.xml, v, d, Kind::Count, &mut self.diags)?;
+            match n.parse::<u64>() {
+                Ok(n) if n > 0 => dims.push(format!("0..{}", n - 1)),
+                _ => {
+                    self.diags.push(
+                        Diagnostic::error(
+                            BAD_VALUE,
+                            attr_span(self.xml, v, d),
+                            format!("array size `{d}=\"{}\"` is not a positive number", shown(n)),
+                        )
+                        .with_label("expected at least 1"),
+                    );
+                    return None;
+                }
+            }
+        }
+        if !dims.is_empty() {
+            ty = format!("ARRAY[{}] OF {ty}", dims.join(", "));
+        }
+        Some(ty)
+    }
+
+    /// The initial value of `v` (`<initValue>`), written after ` := `;
+    /// false when there is one that is not a value (reported).
+    fn init(&mut self, v: Node) -> bool {
+        let Some(iv) = kid(v, "initValue") else {
+            return true;
+        };
+        let value = iv.text().unwrap_or("").trim();
+        if value.is_empty() {
+            return true;
+        }
+        if let Err(why) = validate::check(Kind::Value, value) {
+            self.diags.push(
+                Diagnostic::error(
+                    BAD_VALUE,
+                    tag(self.xml, iv),
+                    format!(
+                        "the initial value `{}` is not {}: {why}",
+                        shown(value),
+                        Kind::Value.what()
+                    ),
+                )
+                .with_label("not a value")
+                .with_note("the variable is left out"),
+            );
+            return false;
+        }
+        let raw = content_range(self.xml, iv.range());
+        let lead = self.xml[raw.clone()].len() - self.xml[raw.clone()].trim_start().len();
+        let start = raw.start + lead;
+        let end = start + self.xml[start..raw.end].trim_end().len();
+        self.put(" := ", iv);
+        attr_into(&mut self.w, self.xml, start..end, value);
+        true
+    }
+
+    /// ` AT %QX1.5` for a bit address; other addresses are data block
+    /// positions, not IEC addresses (a warning).
+    fn address(&mut self, v: Node, name: &str) {
+        let Some(a) = kid(v, "address") else { return };
+        let get = |k: &str| a.attribute(k).unwrap_or("");
+        let (area, size, index, sub) = (get("type"), get("typeVar"), get("index"), get("subIndex"));
+        let bit = size.eq_ignore_ascii_case("X")
+            && sub.parse::<u8>().is_ok_and(|b| b <= 7)
+            && index.parse::<u32>().is_ok();
+        let text = format!("%{area}{size}{index}.{sub}");
+        if bit && validate::check(Kind::Address, &text).is_ok() {
+            self.put(&format!(" AT {text}"), a);
+            return;
+        }
+        self.diags.push(
+            Diagnostic::warning(
+                NOT_IEC_ADDRESS,
+                tag(self.xml, a),
+                format!(
+                    "`{name}` is located at `{}`, a position in a LogicLab data block, not an IEC address: compiled without it",
+                    shown(&text)
+                ),
+            )
+            .with_label("not bound")
+            .with_note("the host reads or writes it and binds it to the target itself"),
+        );
+    }
+
+    /// `\tname [AT %..] : TYPE [:= value];` for a `<var>` or `<const>`;
+    /// nothing (reported) when part of it cannot be written.
+    pub(super) fn var_line(&mut self, v: Node) -> bool {
+        let mark = self.w.mark();
+        let ok = (|| {
+            let name = checked(self.xml, v, "name", Kind::Name, &mut self.diags)?.to_string();
+            self.put("\t", v);
+            let r = v.attributes().find(|a| a.name() == "name")?.range_value();
+            attr_into(&mut self.w, self.xml, r, &name);
+            self.address(v, &name);
+            let ty = self.type_text(v)?;
+            self.w
+                .gen_at(&format!(" : {ty}"), attr_span(self.xml, v, "type").range());
+            self.init(v).then_some(())?;
+            self.put(";\n", v);
+            Some(())
+        })()
+        .is_some();
+        if !ok {
+            self.w.rollback(mark);
+        }
+        ok
+    }
+
+    fn data_type(&mut self, n: Node, kind: TypeKind, name: &str) {
+        let mark = self.w.mark();
+        self.put("TYPE ", n);
+        attr_into(
+            &mut self.w,
+            self.xml,
+            attr_span(self.xml, n, "name").range(),
+            name,
+        );
+        let ok = match kind {
+            TypeKind::Struct => {
+                self.put(" : STRUCT\n", n);
+                let members: Vec<Node> = kids(n, "vars")
+                    .flat_map(|v| v.children())
+                    .filter(|c| is(c, "var"))
+                    .collect();
+                let all = members.iter().all(|m| self.var_line(*m));
+                self.put("END_STRUCT;\n", n);
+                all && !members.is_empty() || self.empty(n, "members")
+            }
+            TypeKind::Enum => self.enum_values(n),
+            TypeKind::Typedef => match self.type_text(n) {
+                Some(ty) => {
+                    self.put(&format!(" : {ty};\n"), n);
+                    true
+                }
+                None => false,
+            },
+            TypeKind::Subrange => self.subrange(n),
+        };
+        if ok {
+            self.put("END_TYPE\n\n", n);
+        } else {
+            self.w.rollback(mark);
+        }
+    }
+
+    fn empty(&mut self, n: Node, what: &str) -> bool {
+        self.diags.push(
+            Diagnostic::error(
+                BAD_PROJECT,
+                tag(self.xml, n),
+                format!("`<{}>` has no {what}", n.tag_name().name()),
+            )
+            .with_label(format!("no {what}"))
+            .with_note("the type is left out"),
+        );
+        false
+    }
+
+    fn enum_values(&mut self, n: Node) -> bool {
+        let elements: Vec<Node> = kids(n, "elements")
+            .flat_map(|e| kids(e, "element"))
+            .collect();
+        if elements.is_empty() {
+            return self.empty(n, "elements");
+        }
+        self.put(" : (", n);
+        for (i, e) in elements.iter().enumerate() {
+            let Some(name) = checked(self.xml, *e, "name", Kind::Name, &mut self.diags) else {
+                return false;
+            };
+            if i > 0 {
+                self.put(", ", *e);
+            }
+            attr_into(
+                &mut self.w,
+                self.xml,
+                attr_span(self.xml, *e, "name").range(),
+                name,
+            );
+            if let Some(v) = kid(*e, "value") {
+                let value = v.text().unwrap_or("").trim();
+                if validate::check(Kind::Integer, value).is_err() {
+                    return self.bad_text(v, value, Kind::Integer);
+                }
+                self.put(&format!(" := {value}"), v);
+            }
+        }
+        self.put(");\n", n);
+        true
+    }
+
+    fn subrange(&mut self, n: Node) -> bool {
+        let Some(ty) = self.type_text(n) else {
+            return false;
+        };
+        let mut bounds = Vec::new();
+        for b in ["minValue", "maxValue"] {
+            let Some(v) = kid(n, b) else {
+                return self.empty(n, &format!("`<{b}>`"));
+            };
+            let value = v.text().unwrap_or("").trim();
+            if validate::check(Kind::Integer, value).is_err() {
+                return self.bad_text(v, value, Kind::Integer);
+            }
+            bounds.push(value.to_string());
+        }
+        self.put(&format!(" : {ty} ({}..{});\n", bounds[0], bounds[1]), n);
+        true
+    }
+
+    fn bad_text(&mut self, n: Node, value: &str, kind: Kind) -> bool {
+        self.diags.push(
+            Diagnostic::error(
+                BAD_VALUE,
+                tag(self.xml, n),
+                format!("`{}` is not {}", shown(value), kind.what()),
+            )
+            .with_label(format!("expected {}", kind.what()))
+            .with_note("the element is left out"),
+        );
+        false
+    }
+
+    /// Write a POU; false when it is left out (reported).
+    fn pou(&mut self, p: &Pou, needs: &Needs) -> bool {
+        let il = p.lang == "IL";
+        let keyword = p.kind.keyword();
+        let start = self.w.mark();
+        if !il {
+            self.put("{extern} ", p.node);
+        }
+        let head = self.w.mark();
+        self.put(&format!("{keyword} "), p.node);
+        attr_into(
+            &mut self.w,
+            self.xml,
+            attr_span(self.xml, p.node, "name").range(),
+            &p.name,
+        );
+        if p.kind == PouKind::Function {
+            let ret = kid(p.node, "returnValue");
+            let ty = ret.map(|r| r.text().unwrap_or("").trim()).unwrap_or("");
+            if let Err(why) = validate::check(Kind::Name, ty) {
+                let at =
+                    ret.map_or_else(|| attr_span(self.xml, p.node, "name"), |r| tag(self.xml, r));
+                self.diags.push(
+                    Diagnostic::error(
+                        BAD_PROJECT,
+                        at,
+                        format!("FUNCTION `{}` has no valid `<returnValue>`: {why}", p.name),
+                    )
+                    .with_label("no result type")
+                    .with_note(format!("FUNCTION `{}` is left out", p.name)),
+                );
+                self.w.rollback(start);
+                return false;
+            }
+            self.put(&format!(" : {ty}"), ret.unwrap_or(p.node));
+        }
+        self.put("\n", p.node);
+        for b in kids(p.node, "vars")
+            .flat_map(|v| v.children())
+            .filter(Node::is_element)
+        {
+            self.var_block(b, il);
+        }
+        if il {
+            if let Some(text) = needs.get(&p.name.to_ascii_uppercase()) {
+                self.put(text, p.node);
+            }
+            let Some(code) = p.code else {
+                return self.no_body(p, start);
+            };
+            self.put("\n", code);
+            decode_content(&mut self.w, self.xml, content_range(self.xml, code.range()));
+        }
+        let end = p.node.range().end;
+        let end_tag = self
+            .xml
+            .get(..end)
+            .and_then(|s| s.rfind("</"))
+            .unwrap_or(p.node.range().start);
+        self.w.gen_at(&format!("\nEND_{keyword}\n\n"), end_tag..end);
+        if let Err(at) = escape(&self.w, head.0) {
+            let at = at.unwrap_or_else(|| {
+                p.code
+                    .map_or_else(|| tag(self.xml, p.node), |c| tag(self.xml, c))
+            });
+            self.diags.push(
+                Diagnostic::error(
+                    BODY_ESCAPES,
+                    at,
+                    format!(
+                        "the IL body of POU `{}` reaches outside its POU: it ends the POU early or opens a comment it does not close",
+                        p.name
+                    ),
+                )
+                .with_label("the POU would end here")
+                .with_note(format!("POU `{}` is left out", p.name)),
+            );
+            self.w.rollback(start);
+            return false;
+        }
+        true
+    }
+
+    fn no_body(&mut self, p: &Pou, start: (usize, usize)) -> bool {
+        self.diags.push(
+            Diagnostic::error(
+                BAD_PROJECT,
+                attr_span(self.xml, p.node, "name"),
+                format!("POU `{}` has no `<sourceCode>`", p.name),
+            )
+            .with_label("no body"),
+        );
+        self.w.rollback(start);
+        false
+    }
+
+    /// A variable block of a POU (`<inputVars>` ...); a host-provided POU
+    /// keeps its interface only.
+    fn var_block(&mut self, b: Node, il: bool) {
+        let keyword = match b.tag_name().name() {
+            "inputVars" => "VAR_INPUT",
+            "outputVars" => "VAR_OUTPUT",
+            "inoutVars" => "VAR_IN_OUT",
+            "externalVars" => "VAR_EXTERNAL",
+            "localVars" => "VAR",
+            "localConsts" => "VAR CONSTANT",
+            "tempVars" => "VAR_TEMP",
+            other => {
+                self.diags.push(
+                    Diagnostic::warning(
+                        super::codes::SKIPPED,
+                        tag(self.xml, b),
+                        format!("variable block `<{}>` is not translated", shown(other)),
+                    )
+                    .with_label("unknown block"),
+                );
+                return;
+            }
+        };
+        let interface = matches!(keyword, "VAR_INPUT" | "VAR_OUTPUT" | "VAR_IN_OUT");
+        let vars: Vec<Node> = b
+            .children()
+            .filter(|v| is(v, "var") || is(v, "const"))
+            .collect();
+        if vars.is_empty() || (!il && !interface) {
+            return;
+        }
+        self.put(&format!("{keyword}\n"), b);
+        for v in vars {
+            self.var_line(v);
+        }
+        self.put("END_VAR\n", b);
+    }
+}
+
+/// A LogicLab body language in words.
+fn language(lang: &str) -> String {
+    let name = crate::plcopen::language_name(lang);
+    if lang.is_empty() {
+        "no language (no `<sourceCode>`)".to_string()
+    } else {
+        format!("{name} ({lang})")
+    }
+}
