@@ -23,6 +23,17 @@ struct Decl {
     constant: Option<String>,
 }
 
+/// One IL POU as the implicit blocks need it.
+struct Direct {
+    kind: PouKind,
+    /// The globals its body names and its VAR_EXTERNALs, by index.
+    needed: BTreeSet<usize>,
+    /// Its variables' type names (upper case): the blocks it holds.
+    types: Vec<String>,
+    /// Its own names (upper case).
+    locals: BTreeSet<String>,
+}
+
 /// What the POUs need declared, and the target's globals they name.
 #[derive(Default)]
 pub(super) struct Needs<'a, 'i> {
@@ -66,8 +77,7 @@ pub(super) fn needs<'a, 'i>(p: &Project<'a, 'i>, sel: &Selection, lx: &mut Lx) -
         });
     }
     // Per IL POU: the globals it names, its own names, its instances' types.
-    let mut direct: BTreeMap<String, (PouKind, BTreeSet<usize>, Vec<String>, BTreeSet<String>)> =
-        BTreeMap::new();
+    let mut direct: BTreeMap<String, Direct> = BTreeMap::new();
     for (k, pou) in p.pous.iter().enumerate() {
         if !sel.pous[k] || pou.lang != "IL" {
             continue;
@@ -126,22 +136,32 @@ pub(super) fn needs<'a, 'i>(p: &Project<'a, 'i>, sel: &Selection, lx: &mut Lx) -
         }
         direct.insert(
             pou.name.to_ascii_uppercase(),
-            (pou.kind, needed, types, locals),
+            Direct {
+                kind: pou.kind,
+                needed,
+                types,
+                locals,
+            },
         );
     }
     let mut needs: BTreeMap<String, BTreeSet<usize>> = direct
         .iter()
-        .map(|(k, v)| (k.clone(), v.1.clone()))
+        .map(|(k, v)| (k.clone(), v.needed.clone()))
         .collect();
     for _ in 0..direct.len().min(64) {
         let mut changed = false;
-        for (name, (kind, _, types, _)) in &direct {
-            if *kind == PouKind::Function {
+        for (name, d) in &direct {
+            if d.kind == PouKind::Function {
                 continue;
             }
-            let add: BTreeSet<usize> = types
+            let add: BTreeSet<usize> = d
+                .types
                 .iter()
-                .filter(|t| matches!(direct.get(*t), Some((PouKind::FunctionBlock, ..))))
+                .filter(|t| {
+                    direct
+                        .get(*t)
+                        .is_some_and(|c| c.kind == PouKind::FunctionBlock)
+                })
                 .filter_map(|t| needs.get(t))
                 .flatten()
                 .copied()
@@ -157,7 +177,7 @@ pub(super) fn needs<'a, 'i>(p: &Project<'a, 'i>, sel: &Selection, lx: &mut Lx) -
         }
     }
     for (name, set) in &needs {
-        let (kind, _, _, locals) = &direct[name];
+        let Direct { kind, locals, .. } = &direct[name];
         let (mut ext, mut cons) = (String::new(), String::new());
         for &g in set {
             let d = &decls[g];
