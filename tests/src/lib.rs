@@ -121,7 +121,7 @@ pub mod exp_macro {
     }
 }
 
-/// `logiclab/project.plcprj`: a LogicLab / Arduino PLC IDE project through
+/// `logiclab/project.plcprj`: a `LogicLab` / Arduino PLC IDE project through
 /// build.rs. Its `FUNCTION_BLOCK` `Scale` is in Structured Text, so its body
 /// is the crate's.
 pub mod logiclab_build {

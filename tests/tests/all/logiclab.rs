@@ -12,7 +12,10 @@ use il_std::{Cycle, TIME};
 /// 500 before scan 3); Total += Twice(Count); full := Count >= MaxCount (2);
 /// il-std's TON with PT T#20ms is late from 20 ms; Boot runs once (the
 /// single task Init); scaled := Count * 10 * 3 (the crate's body of Scale).
-const TRACE: [(bool, i16, i16, i16, bool, bool, u32, i16); 9] = [
+/// One scan's values, in the order of the doc above.
+type Scan = (bool, i16, i16, i16, bool, bool, u32, i16);
+
+const TRACE: [Scan; 9] = [
     (false, 0, 0, 1, false, false, 0, 0),
     (false, 0, 0, 1, false, false, 0, 0),
     (true, 1, 2, 1, false, true, 500, 30),
