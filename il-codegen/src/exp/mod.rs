@@ -68,8 +68,8 @@ pub mod codes {
 pub use codes::CODES;
 
 /// The language of a POU body (CODESYS writes no marker for IL and ST:
-/// a text body is IL when its first instruction is an IL operator or a
-/// label, ST otherwise).
+/// a text body is ST when it has a statement's `;`, an assignment's `:=`
+/// or a control keyword outside parentheses, IL otherwise).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Language {
     /// Instruction List.

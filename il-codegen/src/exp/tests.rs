@@ -54,3 +54,30 @@ fn sfc_bodies_and_visualisations() {
     let codes: Vec<&str> = i.diagnostics.iter().map(|d| d.code).collect();
     assert_eq!(codes, [codes::NOT_IL]);
 }
+
+#[test]
+fn the_body_language_is_read_from_what_only_st_has() {
+    let body = |b: &str| {
+        let text = format!(
+            "FUNCTION_BLOCK fb\nVAR_INPUT a : INT; END_VAR\nVAR x : INT; END_VAR\n(* @END_DECLARATION := '0' *)\n{b}\nEND_FUNCTION_BLOCK\n"
+        );
+        import(&text).objects()[0].language
+    };
+    // IL that starts with a user function used as an operator, with a
+    // call's `:=` in parentheses, with a label, or empty.
+    assert_eq!(body("Twice 3\nST x"), Language::Il);
+    assert_eq!(
+        body("CAL t(IN := TRUE,\n  PT := T#1s)\nLD t.Q\nST x"),
+        Language::Il
+    );
+    assert_eq!(body("start: LD a (* x := 1; *)\nST x"), Language::Il);
+    assert_eq!(body("LD 'a;b'\nST x"), Language::Il);
+    assert_eq!(body(""), Language::Il);
+    // ST: an assignment, a statement's `;`, a control keyword, even when
+    // the first word is spelt like an IL operator.
+    assert_eq!(body("x := a;"), Language::St);
+    assert_eq!(body("S := TRUE;"), Language::St);
+    assert_eq!(body("Twice(a);"), Language::St);
+    assert_eq!(body("IF a > 1 THEN\n x := 2\nEND_IF"), Language::St);
+    assert_eq!(body("LD := 1"), Language::St);
+}
