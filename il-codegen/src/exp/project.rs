@@ -128,7 +128,9 @@ pub(crate) fn assemble(imports: &mut [&mut Import]) {
         });
         with_prg.or_else(|| facts.globals.first().map(|g| g.import))
     });
+    let library_pous = library_pous(imports);
     for (me, imp) in imports.iter_mut().enumerate() {
+        imp.library_pous = library_pous.clone();
         let (w, diags, foreign) = super::write::write(imp, me, &facts);
         imp.foreign = foreign;
         imp.globals = facts
@@ -142,6 +144,44 @@ pub(crate) fn assemble(imports: &mut [&mut Import]) {
         imp.map = map;
         imp.diagnostics.extend(diags);
     }
+}
+
+/// The POUs the project's library references list (`LIBRARY Util.lib ...
+/// NumOfPOUs: 24 / BLINK: 2048 / ... / NumOfGVLs`), by upper-case name,
+/// with the library's file name: a POU that names one the compiler does
+/// not have is told where it comes from.
+fn library_pous(imports: &[&mut Import]) -> HashMap<String, String> {
+    let mut out = HashMap::new();
+    for imp in imports {
+        for o in &imp.objects {
+            if o.kind != ObjectKind::Skipped("a library reference") {
+                continue;
+            }
+            let lib = o.name.split_whitespace().next().unwrap_or("").to_string();
+            let text = imp.exp.text.get(o.span.clone()).unwrap_or("");
+            let mut in_pous = false;
+            for line in text.lines() {
+                crate::step_counter::add(1);
+                let Some((name, count)) = line.split_once(':') else {
+                    continue;
+                };
+                let name = name.trim();
+                if name.eq_ignore_ascii_case("NumOfPOUs") {
+                    in_pous = true;
+                } else if name.eq_ignore_ascii_case("NumOfGVLs") {
+                    in_pous = false;
+                } else if in_pous
+                    && !name.is_empty()
+                    && !name.contains(char::is_whitespace)
+                    && count.trim().chars().all(|c| c.is_ascii_digit())
+                {
+                    out.entry(name.to_ascii_uppercase())
+                        .or_insert_with(|| lib.clone());
+                }
+            }
+        }
+    }
+    out
 }
 
 /// Objects of one name: the same text is read once, another text is an

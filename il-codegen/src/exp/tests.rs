@@ -81,3 +81,24 @@ fn the_body_language_is_read_from_what_only_st_has() {
     assert_eq!(body("IF a > 1 THEN\n x := 2\nEND_IF"), Language::St);
     assert_eq!(body("LD := 1"), Language::St);
 }
+
+#[test]
+fn a_block_of_a_referenced_library_is_named_with_its_library() {
+    let text = "(* @NESTEDCOMMENTS := 'Yes' *)\nPROGRAM PLC_PRG\nVAR b : BLINK; q : BOOL; END_VAR\n(* @END_DECLARATION := '0' *)\nCAL b(ENABLE := TRUE)\nLD b.OUT\nST q\nEND_PROGRAM\n\nLIBRARY\nUtil.lib 18.5.10 14:14:28\n(* @LIBRARYSYMFILEINFO := '0' *)\nNumOfPOUs: 2\nBLINK: 2048\nHYSTERESIS: 2048\nNumOfGVLs: 1\nGlobale_Variablen: 0\nEND_LIBRARY\n";
+    let c = crate::Program::new()
+        .source(SourceFile::new("t.EXP", text))
+        .check();
+    let d = c.diagnostics()[0]
+        .iter()
+        .find(|d| d.code == "IL0105")
+        .unwrap_or_else(|| panic!("{:?}", c.diagnostics()));
+    assert!(
+        d.notes.iter().any(|n| n.starts_with(
+            "`BLINK` is a POU of the library `Util.lib`, which this project references"
+        )),
+        "{:?}",
+        d.notes
+    );
+    // A global list's name is no POU of the library.
+    assert!(!d.notes.iter().any(|n| n.contains("Globale_Variablen")));
+}
