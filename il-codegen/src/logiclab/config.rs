@@ -6,7 +6,7 @@ use std::collections::{BTreeMap, BTreeSet, HashMap};
 use roxmltree::Node;
 
 use super::codes::{BAD_VALUE, SKIPPED, TARGET_GLOBAL};
-use super::read::{Class, Project, attr_span, is, kids, tag};
+use super::read::{Class, Project, attr_span, checked, is, kids, tag};
 use super::write::{Lx, Selection};
 use crate::ast::PouKind;
 use crate::diag::Diagnostic;
@@ -295,7 +295,11 @@ fn tasks<'a, 'i>(p: &Project<'a, 'i>, written: &[&str], lx: &mut Lx) -> Vec<Task
         if t.programs.is_empty() {
             continue;
         }
-        let name_ok = validate::check(Kind::Name, &t.name).is_ok();
+        // A task's name is written into the IL text: checked (and reported)
+        // as every name is.
+        if checked(lx.xml, t.node, "name", Kind::Name, &mut lx.diags).is_none() {
+            continue;
+        }
         let mut params = Vec::new();
         let single = match t.node.attribute("type").unwrap_or("cyclic") {
             "cyclic" => false,
@@ -320,7 +324,7 @@ fn tasks<'a, 'i>(p: &Project<'a, 'i>, written: &[&str], lx: &mut Lx) -> Vec<Task
         if single {
             params.push("SINGLE := TRUE".to_string());
         } else if interval.chars().any(|c| ('1'..='9').contains(&c)) {
-            if !name_ok || validate::check(Kind::Duration, interval).is_err() {
+            if validate::check(Kind::Duration, interval).is_err() {
                 lx.diags.push(
                     Diagnostic::error(
                         BAD_VALUE,
@@ -354,9 +358,6 @@ fn tasks<'a, 'i>(p: &Project<'a, 'i>, written: &[&str], lx: &mut Lx) -> Vec<Task
                 continue;
             }
             params.push(format!("PRIORITY := {pr}"));
-        }
-        if !name_ok {
-            continue;
         }
         let mut programs = Vec::new();
         for n in &t.programs {

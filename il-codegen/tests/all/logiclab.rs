@@ -190,6 +190,12 @@ fn bad_projects_get_located_errors_and_nothing_is_emitted() {
             "IL0422",
             "which is not a duration",
         ),
+        (
+            "a task name that is code",
+            "<resources><resource name=\"R\"><task name=\"Fast(); END_RESOURCE\" interval=\"t#10ms\" priority=\"0\" type=\"cyclic\"/></resource></resources><tasks><task name=\"Fast(); END_RESOURCE\"><program>Main</program></task></tasks>{IL}",
+            "IL0422",
+            "is not an IEC identifier",
+        ),
     ];
     for (what, main, code, part) in cases {
         let main = main.replace("{IL}", IL_PROGRAM);
