@@ -2,6 +2,7 @@
 //! CONFIGURATION that holds the project's globals and runs its tasks.
 
 use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::ops::Range;
 
 use roxmltree::Node;
 
@@ -10,6 +11,7 @@ use super::read::{Class, Project, attr_span, checked, is, kids, tag};
 use super::write::{Lx, Selection};
 use crate::ast::PouKind;
 use crate::diag::Diagnostic;
+use crate::plcopen::text::start_tag;
 use crate::plcopen::validate::{self, Kind, shown};
 
 /// The name of the generated CONFIGURATION (as the `.EXP` import's).
@@ -21,7 +23,14 @@ struct Decl {
     ty: String,
     /// A constant's value (a POU declares it as a local `VAR CONSTANT`).
     constant: Option<String>,
+    /// Its `<var>`'s start tag: what a POU's implicit declaration of it
+    /// stands for (a definition look-up lands on the global).
+    at: Range<usize>,
 }
+
+/// A piece of an implicit block: its text, and the global's `<var>` it
+/// stands for (`None`: the POU's, for `VAR_EXTERNAL` and `END_VAR`).
+pub(super) type Piece = (String, Option<Range<usize>>);
 
 /// One IL POU as the implicit blocks need it.
 struct Direct {
@@ -39,13 +48,13 @@ struct Direct {
 pub(super) struct Needs<'a, 'i> {
     /// The implicit blocks (`VAR_EXTERNAL`, `VAR CONSTANT`) of each IL POU,
     /// by upper-case name.
-    blocks: HashMap<String, String>,
+    blocks: HashMap<String, Vec<Piece>>,
     /// Globals of the target: name, type, the first VAR_EXTERNAL of it.
     targets: Vec<(String, String, Node<'a, 'i>)>,
 }
 
 impl Needs<'_, '_> {
-    pub(super) fn get(&self, pou: &str) -> Option<&String> {
+    pub(super) fn get(&self, pou: &str) -> Option<&Vec<Piece>> {
         self.blocks.get(pou)
     }
 }
@@ -74,6 +83,7 @@ pub(super) fn needs<'a, 'i>(p: &Project<'a, 'i>, sel: &Selection, lx: &mut Lx) -
             name: g.name.clone(),
             ty,
             constant,
+            at: start_tag(lx.xml, g.node.range()),
         });
     }
     // Per IL POU: the globals it names, its own names, its instances' types.
@@ -120,6 +130,7 @@ pub(super) fn needs<'a, 'i>(p: &Project<'a, 'i>, sel: &Selection, lx: &mut Lx) -
                             name: name.to_string(),
                             ty,
                             constant: None,
+                            at: start_tag(lx.xml, v.range()),
                         });
                         decls.len() - 1
                     }
@@ -178,29 +189,31 @@ pub(super) fn needs<'a, 'i>(p: &Project<'a, 'i>, sel: &Selection, lx: &mut Lx) -
     }
     for (name, set) in &needs {
         let Direct { kind, locals, .. } = &direct[name];
-        let (mut ext, mut cons) = (String::new(), String::new());
+        let (mut ext, mut cons) = (Vec::new(), Vec::new());
         for &g in set {
             let d = &decls[g];
             if locals.contains(&d.name.to_ascii_uppercase()) {
                 continue;
             }
             match &d.constant {
-                Some(v) => cons.push_str(&format!("\t{} : {} := {v};\n", d.name, d.ty)),
+                Some(v) => cons.push((format!("\t{} : {} := {v};\n", d.name, d.ty), d.at.clone())),
                 None if *kind != PouKind::Function => {
-                    ext.push_str(&format!("\t{} : {};\n", d.name, d.ty));
+                    ext.push((format!("\t{} : {};\n", d.name, d.ty), d.at.clone()));
                 }
                 None => {}
             }
         }
-        let mut text = String::new();
-        if !ext.is_empty() {
-            text.push_str(&format!("VAR_EXTERNAL\n{ext}END_VAR\n"));
+        let mut pieces = Vec::new();
+        for (head, lines) in [("VAR_EXTERNAL\n", ext), ("VAR CONSTANT\n", cons)] {
+            if lines.is_empty() {
+                continue;
+            }
+            pieces.push((head.to_string(), None));
+            pieces.extend(lines.into_iter().map(|(t, at)| (t, Some(at))));
+            pieces.push(("END_VAR\n".to_string(), None));
         }
-        if !cons.is_empty() {
-            text.push_str(&format!("VAR CONSTANT\n{cons}END_VAR\n"));
-        }
-        if !text.is_empty() {
-            out.blocks.insert(name.clone(), text);
+        if !pieces.is_empty() {
+            out.blocks.insert(name.clone(), pieces);
         }
     }
     out

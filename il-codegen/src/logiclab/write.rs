@@ -601,8 +601,15 @@ impl Lx<'_> {
             self.var_block(b, il);
         }
         if il {
-            if let Some(text) = needs.get(&p.name.to_ascii_uppercase()) {
-                self.put(text, p.node);
+            for (text, at) in needs
+                .get(&p.name.to_ascii_uppercase())
+                .into_iter()
+                .flatten()
+            {
+                match at {
+                    Some(at) => self.w.gen_at(text, at.clone()),
+                    None => self.put(text, p.node),
+                }
             }
             let Some(code) = p.code else {
                 return self.no_body(p, start);
