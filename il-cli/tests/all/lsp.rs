@@ -678,7 +678,10 @@ fn a_logiclab_project() {
     // its definition is the group's `<var>`.
     let h = c.result("textDocument/hover", at(&prj, LOGICLAB, "ANDN\tlamp", 6));
     assert!(hover_text(&h).contains("lamp : BOOL"), "{h}");
-    let d = c.result("textDocument/definition", at(&prj, LOGICLAB, "ANDN\tlamp", 6));
+    let d = c.result(
+        "textDocument/definition",
+        at(&prj, LOGICLAB, "ANDN\tlamp", 6),
+    );
     assert_eq!(d["uri"], prj);
     assert_eq!(
         d["range"]["start"]["line"],

@@ -47,12 +47,32 @@ pub(super) struct Facts {
     pub(super) tasks: Option<(usize, usize, Vec<Task>)>,
     /// Whether the project has a PROGRAM PLC_PRG.
     pub(super) plc_prg: bool,
+    /// IL PROGRAMs that another POU calls (`CAL Prog`, `CAL Prog.Action`),
+    /// by upper-case name: CODESYS's programs are one instance each, which
+    /// any POU may call. Each is written as a FUNCTION_BLOCK with one
+    /// global instance of its name; a task runs it through a PROGRAM
+    /// `Name_RUN` that calls that instance.
+    pub(super) called: HashSet<String>,
     /// The IL actions of IL function blocks: upper-case block name →
     /// upper-case action names.
     actions: HashMap<String, Vec<String>>,
 }
 
 impl Facts {
+    /// The globals IL POU `name` needs.
+    pub(super) fn needed_by(&self, name: &str) -> impl Iterator<Item = &Global> {
+        self.needs
+            .get(&name.to_ascii_uppercase())
+            .into_iter()
+            .flatten()
+            .map(|&g| &self.globals[g])
+    }
+
+    /// Whether `name` is a PROGRAM that other POUs call (see `called`).
+    pub(super) fn is_called(&self, name: &str) -> bool {
+        self.called.contains(&name.to_ascii_uppercase())
+    }
+
     /// Whether block `ty` (upper case) has an IL action named `action`.
     pub(super) fn has_action(&self, ty: &str, action: &str) -> bool {
         self.actions
@@ -118,6 +138,7 @@ pub(crate) fn assemble(imports: &mut [&mut Import]) {
     let mut facts = Facts::default();
     collect_globals(imports, &mut facts);
     super::config::collect_tasks(imports, &mut facts);
+    called_programs(imports, &mut facts);
     collect_needs(imports, &mut facts);
     facts.holder = facts.tasks.as_ref().map(|t| t.0).or_else(|| {
         let with_prg = imports.iter().position(|i| {
@@ -143,6 +164,66 @@ pub(crate) fn assemble(imports: &mut [&mut Import]) {
         imp.il = crate::diag::SourceFile::new(imp.exp.name.clone(), text);
         imp.map = map;
         imp.diagnostics.extend(diags);
+    }
+}
+
+/// The IL PROGRAMs another IL POU calls (`CAL P`, `CALC P.Reset`, `CAL
+/// P(x := 1)`, where `P` is no variable of the caller), each with a global
+/// instance of its name in the project's globals.
+fn called_programs(imports: &[&mut Import], facts: &mut Facts) {
+    let mut programs: HashMap<String, (usize, usize)> = HashMap::new();
+    for (i, imp) in imports.iter().enumerate() {
+        for (k, o) in imp.objects.iter().enumerate() {
+            if o.kind == ObjectKind::Pou(PouKind::Program)
+                && o.language == Language::Il
+                && !imp.left_out[k]
+                && o.end.is_some()
+            {
+                programs
+                    .entry(o.name.to_ascii_uppercase())
+                    .or_insert((i, k));
+            }
+        }
+    }
+    for imp in imports.iter() {
+        for (k, o) in imp.objects.iter().enumerate() {
+            if !matches!(o.kind, ObjectKind::Pou(_))
+                || o.language != Language::Il
+                || imp.left_out[k]
+            {
+                continue;
+            }
+            let bodies = o
+                .body
+                .iter()
+                .cloned()
+                .chain(super::actions::il_actions(o).map(|a| a.body.clone()));
+            for body in bodies {
+                for target in super::actions::cal_targets(&imp.exp.text, body, o) {
+                    if programs.contains_key(&target) && !target.eq_ignore_ascii_case(&o.name) {
+                        facts.called.insert(target);
+                    }
+                }
+            }
+        }
+    }
+    let mut called: Vec<&String> = facts.called.iter().collect();
+    called.sort();
+    for name in called {
+        let (i, k) = programs[name];
+        let o = &imports[i].objects[k];
+        facts.globals.push(Global {
+            name: o.name.clone(),
+            at: None,
+            ty: o.name.clone(),
+            init: None,
+            constant: false,
+            retain: false,
+            import: i,
+            range: o.keyword.clone(),
+            file: imports[i].exp.name.clone(),
+            line: imports[i].exp.line_of(o.keyword.start as u32),
+        });
     }
 }
 
@@ -407,9 +488,12 @@ fn collect_needs(imports: &[&mut Import], facts: &mut Facts) {
     for imp in imports {
         let text = &imp.exp.text;
         for (k, o) in imp.objects.iter().enumerate() {
-            let ObjectKind::Pou(kind) = o.kind else {
+            let ObjectKind::Pou(mut kind) = o.kind else {
                 continue;
             };
+            if kind == PouKind::Program && facts.is_called(&o.name) {
+                kind = PouKind::FunctionBlock;
+            }
             if imp.left_out[k] || o.language != Language::Il {
                 continue;
             }
@@ -439,11 +523,23 @@ fn collect_needs(imports: &[&mut Import], facts: &mut Facts) {
                     instances.push(text[d.ty.clone()].trim().to_ascii_uppercase());
                 }
             }
+            // A called program's global instance has its name: the POU
+            // itself does not need it.
+            locals.insert(o.name.to_ascii_uppercase());
             let needs: BTreeSet<usize> = used
                 .iter()
                 .filter(|u| !locals.contains(*u))
                 .filter_map(|u| keys.get(u).copied())
                 .collect();
+            // The global instance of a called program is held through its
+            // VAR_EXTERNAL: what that block needs, this POU declares too.
+            instances.extend(
+                needs
+                    .iter()
+                    .map(|&g| &facts.globals[g])
+                    .filter(|g| facts.is_called(&g.name))
+                    .map(|g| g.ty.to_ascii_uppercase()),
+            );
             direct.insert(o.name.to_ascii_uppercase(), (kind, needs, instances));
         }
     }

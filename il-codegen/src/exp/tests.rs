@@ -102,3 +102,24 @@ fn a_block_of_a_referenced_library_is_named_with_its_library() {
     // A global list's name is no POU of the library.
     assert!(!d.notes.iter().any(|n| n.contains("Globale_Variablen")));
 }
+
+#[test]
+fn a_called_program_is_a_block_with_one_global_instance() {
+    // Without a task configuration, PLC_PRG calls Aux, and Aux calls no one.
+    let text = "PROGRAM Aux\nVAR_OUTPUT n : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nLD n\nADD 1\nST n\nEND_PROGRAM\nACTION Reset:\nLD 0\nST n\nEND_ACTION\n\nPROGRAM PLC_PRG\nVAR k : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nCAL Aux\nLD Aux.n\nST k\nCAL Aux.Reset\nEND_PROGRAM\n";
+    let c = crate::Program::new()
+        .source(SourceFile::new("t.EXP", text))
+        .check();
+    assert!(c.diagnostics()[0].is_empty(), "{:?}", c.diagnostics());
+    let crate::Input::Exp(i) = &c.inputs()[0] else {
+        panic!("an export")
+    };
+    let il = &i.il.text;
+    assert!(il.contains("FUNCTION_BLOCK Aux\n"), "{il}");
+    assert!(il.contains("END_FUNCTION_BLOCK\n"), "{il}");
+    assert!(il.contains("CAL Aux(Reset := TRUE)"), "{il}");
+    assert!(il.contains("VAR_GLOBAL\n\tAux : Aux;\nEND_VAR"), "{il}");
+    assert!(il.contains("PROGRAM PLC_PRG : PLC_PRG;"), "{il}");
+    // No task runs Aux: it runs where it is called, with no Aux_RUN.
+    assert!(!il.contains("Aux_RUN"), "{il}");
+}

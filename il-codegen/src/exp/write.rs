@@ -276,6 +276,14 @@ fn write_pou(
         return;
     }
     let mut edits = decl_edits(text, o.decl.clone(), o.nested, facts);
+    // A PROGRAM that other POUs call is a block with one global instance.
+    let called = kind == PouKind::Program && facts.is_called(&o.name);
+    let kind = if called {
+        edits.push((o.keyword.clone(), "FUNCTION_BLOCK".to_string()));
+        PouKind::FunctionBlock
+    } else {
+        kind
+    };
     let mut implicit = facts.implicit_blocks(&o.name, kind);
     let acts: Vec<&super::Action> = match kind {
         PouKind::Function => Vec::new(),
@@ -319,7 +327,11 @@ fn write_pou(
         }
     }
     w.gen_at("\n", end.start..end.start);
-    w.copy(&text[end.clone()], end.start);
+    if called {
+        w.gen_at("END_FUNCTION_BLOCK", end.clone());
+    } else {
+        w.copy(&text[end.clone()], end.start);
+    }
     w.gen_at("\n", end.end..end.end);
     for a in &o.actions {
         let d = if kind == PouKind::Function {
