@@ -84,6 +84,13 @@ pub(super) struct Project<'a, 'i> {
     pub anchor: Option<Node<'a, 'i>>,
 }
 
+/// Whether LogicLab leaves the element out of the build
+/// (`excludeFromBuild="TRUE"`): the import does too.
+fn excluded(n: &Node) -> bool {
+    n.attribute("excludeFromBuild")
+        .is_some_and(|v| v.eq_ignore_ascii_case("TRUE"))
+}
+
 pub(super) fn is(n: &Node, name: &str) -> bool {
     n.is_element() && n.tag_name().name() == name
 }
@@ -254,9 +261,25 @@ fn container<'a, 'i>(
     ];
     for (outer, inner, kind) in groups {
         for n in kids(c, outer).flat_map(|o| kids(o, inner)) {
+            if excluded(&n) {
+                continue;
+            }
             let Some(name) = checked(xml, n, "name", Kind::Name, diags) else {
                 continue;
             };
+            // Object-oriented parts of a block have no IL form.
+            for part in ["methods", "interfaces"] {
+                if let Some(m) = kid(n, part).filter(|m| m.children().any(|k| k.is_element())) {
+                    diags.push(
+                        Diagnostic::warning(
+                            SKIPPED,
+                            tag(xml, m),
+                            format!("the {part} of `{name}` are not translated"),
+                        )
+                        .with_label("skipped"),
+                    );
+                }
+            }
             let code = kid(n, "sourceCode");
             let lang = code
                 .and_then(|s| s.attribute("type"))
@@ -280,6 +303,9 @@ fn container<'a, 'i>(
     ];
     for (outer, inner, kind) in types {
         for n in kids(c, outer).flat_map(|o| kids(o, inner)) {
+            if excluded(&n) {
+                continue;
+            }
             if let Some(name) = checked(xml, n, "name", Kind::Name, diags) {
                 p.types.push(Type {
                     node: n,
@@ -299,6 +325,7 @@ fn container<'a, 'i>(
         for block in kids(c, outer) {
             // Variables in named groups, or (hand-written) right in the block.
             let vars = kids(block, "group")
+                .filter(|g| !excluded(g))
                 .flat_map(|g| g.children())
                 .chain(block.children())
                 .filter(|v| is(v, "var") || is(v, "const"));

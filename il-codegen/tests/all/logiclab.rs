@@ -274,3 +274,33 @@ fn mangled_projects_never_panic() {
         }
     }
 }
+
+#[test]
+fn what_logiclab_excludes_from_the_build_is_left_out() {
+    // The excluded POU, type and group would not compile: they are not read.
+    let main = format!(
+        "<globalVars><group name=\"Off\" excludeFromBuild=\"TRUE\"><var name=\"bad\" type=\"NoSuchType\"/></group></globalVars><structs><struct name=\"S\" excludeFromBuild=\"TRUE\"><vars><var name=\"m\" type=\"NoSuchType\"/></vars></struct></structs>{}",
+        IL_PROGRAM.replace(
+            "</programs>",
+            "<program name=\"Old\" excludeFromBuild=\"TRUE\"><vars/><sourceCode type=\"IL\"><![CDATA[\n\tLD\tnowhere\n]]></sourceCode></program></programs>"
+        )
+    );
+    let c = check(project(&main, ""));
+    assert!(c.diagnostics()[0].is_empty(), "{}", c.render(false));
+    assert_eq!(
+        c.emit(EmitOptions::default()).expect("emitted")[0].pous,
+        ["Main"]
+    );
+}
+
+#[test]
+fn methods_of_a_block_are_a_warning() {
+    let main = "<functionBlocks><functionBlock name=\"Fb\"><vars><inputVars><var name=\"a\" type=\"INT\"/></inputVars></vars><methods><method name=\"Reset\"/></methods><sourceCode type=\"IL\"><![CDATA[\n\tLD\ta\n]]></sourceCode></functionBlock></functionBlocks>";
+    let c = check(project(main, ""));
+    assert_eq!(
+        located(&c),
+        [("IL0426", Severity::Warning, 5, 104)],
+        "{}",
+        c.render(false)
+    );
+}
