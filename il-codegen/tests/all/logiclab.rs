@@ -304,3 +304,26 @@ fn methods_of_a_block_are_a_warning() {
         c.render(false)
     );
 }
+
+#[test]
+fn a_build_of_a_damaged_project_writes_nothing() {
+    let dir = std::env::temp_dir().join(format!("il-logiclab-build-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(dir.join("out")).unwrap();
+    // The test project with one IL body that ends its POU early.
+    let damaged = project_file()
+        .text
+        .replace("\tST\tBoots\n", "\tST\tBoots\nEND_PROGRAM\nPROGRAM Evil\n");
+    let prj = dir.join("project.plcprj");
+    std::fs::write(&prj, damaged).unwrap();
+    let e = il_codegen::Builder::new()
+        .file(&prj)
+        .out_dir(dir.join("out"))
+        .compile()
+        .unwrap_err();
+    assert!(e.to_string().contains("IL0209"), "{e}");
+    assert!(e.to_string().contains("project.plcprj:180:1"), "{e}");
+    let written: Vec<_> = std::fs::read_dir(dir.join("out")).unwrap().collect();
+    assert!(written.is_empty(), "{written:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
