@@ -32,9 +32,11 @@
 //!   task with its interval, a `single` task (LogicLab's `Init`, run once at
 //!   start) as `SINGLE := TRUE`.
 //!
-//! A POU that has the name of an IEC standard block or function (the
+//! A function block that has the name of an IEC standard block (the
 //! vendor's `Standard.plclib` defines `TON`, `CTU`, `R_TRIG` ... in IL) is
-//! left out with a warning: il-std's is used.
+//! compiled as `TON_LogicLab`, the type of the project's variables of type
+//! `TON`, with a warning; a function of a standard name is left out
+//! (il-std's is used).
 
 #[cfg(feature = "plcopen")]
 mod config;
@@ -53,7 +55,7 @@ pub mod codes {
     BAD_VALUE = "IL0422", "value of a LogicLab project that cannot be written as IL",
         "An attribute or element text that becomes part of the IL text holds something it cannot: a name that is not an IEC identifier, a type that is not a type name (`type=\"@BYTE\"`), an array size or string length that is not a positive number, an initial value that is not one literal or name, a task interval that is not a duration. The element (a variable, a type, a POU, a task) is left out; nothing of the value reaches the IL text.\n\n    <var name=\"x; END_VAR\" type=\"INT\"/>\n    <var name=\"buf\" type=\"BYTE\" dim0=\"-1\"/>";
     STANDARD_NAME = "IL0423", "LogicLab POU with the name of a standard block or function",
-        "LogicLab's `Standard.plclib` (and a project) may define a POU with the name of an IEC standard function block or function: `TON`, `TOF`, `TP`, `CTU`, `CTD`, `CTUD` and their typed forms, `R_TRIG`, `F_TRIG`, `SR`, `RS`. The compiler has these in il-std, and a POU may not take their name, so the project's is left out and il-std's is used. The counters, edges and bistables have the same interface; LogicLab's timers take `PT` and give `ET` as UDINT milliseconds, il-std's as TIME: a call that passes a number to `PT` gets a type error (write `T#500ms`).\n\n    <functionBlock name=\"TON\"> ... <sourceCode type=\"IL\"> ...";
+        "LogicLab's `Standard.plclib` (and a project) may define a POU with the name of an IEC standard function block or function: `TON`, `TOF`, `TP`, `CTU`, `CTD`, `CTUD` and their typed forms, `R_TRIG`, `F_TRIG`, `SR`, `RS`. A POU may not take a standard name (IL0104), so a FUNCTION_BLOCK of such a name that the project uses is compiled under the name `TON_LogicLab`, and every variable of the project declared `TON` gets that type: the project runs the vendor's blocks, as on the target. LogicLab's timers take `PT` and give `ET` as UDINT milliseconds counted from the target's global `sysTimer`, which the host sets (IL0425). One warning per block of the project, one per library for the library's blocks. A FUNCTION or PROGRAM of a standard name is left out, and il-std's function is used.\n\n    <functionBlock name=\"TON\"> ... <sourceCode type=\"IL\"> ...";
     NOT_IEC_ADDRESS = "IL0424", "LogicLab address that is no IEC address",
         "LogicLab locates a variable with `<address type=\"M\" typeVar=\"W\" index=\"201\" subIndex=\"0\"/>`: a data block (`index`) and a position in it (`subIndex`). A bit address (`typeVar=\"X\"`) with a `subIndex` of 0 to 7 is bound as the IEC address `%QX1.5` (area, byte `index`, bit `subIndex`); a byte, word or double word address names a position in a data block, which IEC addresses do not: the variable is compiled without an address, with this warning, and the host binds it.\n\n    <var name=\"Setpoint\" type=\"INT\"><address type=\"M\" typeVar=\"W\" index=\"201\" subIndex=\"3\"/></var>";
     TARGET_GLOBAL = "IL0425", "VAR_EXTERNAL of a global of the target",

@@ -25,6 +25,12 @@ pub(super) struct Lx<'i> {
     pub xml: &'i str,
     pub w: Writer,
     pub diags: Vec<Diagnostic>,
+    /// Function blocks of the project with a standard block's name, by
+    /// upper-case name: the name they are compiled under (`TON_LogicLab`),
+    /// which every variable of that type is written with.
+    pub renamed: HashMap<String, String>,
+    /// The names renamed so in each library, for one warning per library.
+    lib_renamed: Vec<Vec<String>>,
 }
 
 /// Which elements are written, by index into the project's lists.
@@ -43,8 +49,12 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
         xml,
         w: Writer::default(),
         diags,
+        renamed: HashMap::new(),
+        lib_renamed: Vec::new(),
     };
+    lx.lib_renamed = vec![Vec::new(); p.libs.len()];
     let sel = select(&p, &mut lx);
+    lx.renamed_warnings(&p);
     let needs = config::needs(&p, &sel, &mut lx);
     for (k, t) in p.types.iter().enumerate() {
         if sel.types[k] {
@@ -54,7 +64,7 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
     lx.not_il_warnings(&p, &sel);
     let mut pous = Vec::new();
     for (k, pou) in p.pous.iter().enumerate() {
-        if pou.origin.is_some() && !sel.pous[k] && !lx.standard(pou) {
+        if pou.origin.is_some() && !sel.pous[k] {
             continue;
         }
         let translated = sel.pous[k] && lx.pou(pou, &needs);
@@ -88,7 +98,8 @@ enum Item {
 
 /// The project's own elements, and those of its libraries that they use
 /// (by a variable's type, or a name in an IL body), and so on. A POU with
-/// the name of a standard block or function is never written.
+/// the name of a standard function or program is never written; a function
+/// block of a standard block's name is, under another name.
 fn select(p: &Project, lx: &mut Lx) -> Selection {
     let mut index: HashMap<String, Item> = HashMap::new();
     let items = (p
@@ -141,7 +152,9 @@ fn select(p: &Project, lx: &mut Lx) -> Selection {
                 let pou = &p.pous[k];
                 if crate::sema::is_standard_pou(&pou.name) {
                     lx.standard_name(p, pou);
-                    continue;
+                    if pou.kind != PouKind::FunctionBlock {
+                        continue;
+                    }
                 }
                 sel.pous[k] = true;
                 let mut refs = type_refs(pou.node, pou.lang != "IL");
@@ -193,37 +206,77 @@ fn type_refs(n: Node, interface_only: bool) -> Vec<String> {
 }
 
 impl Lx<'_> {
-    /// Whether `pou` is left out for its standard name.
-    fn standard(&self, pou: &Pou) -> bool {
-        crate::sema::is_standard_pou(&pou.name)
-    }
-
+    /// A POU with a standard block's or function's name: a function block
+    /// is compiled under another name, which the project's variables of
+    /// its type take; a function or program is left out (il-std's is used).
     fn standard_name(&mut self, p: &Project, pou: &Pou) {
         let from = match pou.origin {
             Some(l) => format!("of library `{}`", shown(&p.libs[l].0)),
             None => "of this project".to_string(),
         };
-        let mut d = Diagnostic::warning(
-            STANDARD_NAME,
-            attr_span(self.xml, pou.node, "name"),
-            format!(
-                "{} `{}` {from} has the name of a standard {}: il-std's is used instead",
-                pou.kind.keyword(),
-                pou.name,
-                if crate::sema::is_standard_pou(&pou.name) && pou.kind == PouKind::Function {
-                    "function"
-                } else {
-                    "function block"
-                },
-            ),
-        )
-        .with_label("left out");
-        if ["TON", "TOF", "TP"].contains(&pou.name.to_ascii_uppercase().as_str()) {
-            d = d.with_note(
-                "LogicLab's timers take `PT` and give `ET` as UDINT milliseconds; il-std's as TIME (`PT := T#500ms`)",
-            );
-        }
+        let kind = pou.kind.keyword();
+        let name = &pou.name;
+        let at = attr_span(self.xml, pou.node, "name");
+        let d = if pou.kind == PouKind::FunctionBlock {
+            let new = format!("{name}_LogicLab");
+            self.renamed.insert(name.to_ascii_uppercase(), new.clone());
+            if let Some(l) = pou.origin {
+                // Said once for the library (`Standard.plclib` has 16).
+                self.lib_renamed[l].push(name.clone());
+                return;
+            }
+            let mut d = Diagnostic::warning(
+                STANDARD_NAME,
+                at,
+                format!(
+                    "{kind} `{name}` {from} has the name of a standard function block: compiled as `{new}`, the type of the project's variables of type `{name}`"
+                ),
+            )
+            .with_label(format!("compiled as `{new}`"));
+            if ["TON", "TOF", "TP"].contains(&name.to_ascii_uppercase().as_str()) {
+                d = d.with_note(TIMERS);
+            }
+            d
+        } else {
+            Diagnostic::warning(
+                STANDARD_NAME,
+                at,
+                format!(
+                    "{kind} `{name}` {from} has the name of a standard function: il-std's is used instead"
+                ),
+            )
+            .with_label("left out")
+        };
         self.diags.push(d);
+    }
+
+    /// One warning per library whose blocks of standard names the project
+    /// uses (compiled renamed: see `standard_name`).
+    fn renamed_warnings(&mut self, p: &Project) {
+        for (l, names) in self.lib_renamed.iter().enumerate() {
+            if names.is_empty() {
+                continue;
+            }
+            let list: Vec<String> = names.iter().map(|n| format!("`{n}`")).collect();
+            let mut d = Diagnostic::warning(
+                STANDARD_NAME,
+                tag(self.xml, p.libs[l].1),
+                format!(
+                    "{} function block(s) of library `{}` that the project uses have standard blocks' names: {}; each is compiled as `NAME_LogicLab`, the type of the project's variables of type `NAME`",
+                    names.len(),
+                    shown(&p.libs[l].0),
+                    list.join(", ")
+                ),
+            )
+            .with_label("blocks of standard names");
+            if names
+                .iter()
+                .any(|n| ["TON", "TOF", "TP"].contains(&n.to_ascii_uppercase().as_str()))
+            {
+                d = d.with_note(TIMERS);
+            }
+            self.diags.push(d);
+        }
     }
 
     /// The names an IL body uses, upper case (a member after `.` is not one).
@@ -323,7 +376,11 @@ impl Lx<'_> {
             Some(t) if ["STRING", "WSTRING"].contains(&t.to_ascii_uppercase().as_str()) => t,
             _ => checked(self.xml, v, "type", Kind::Name, &mut self.diags)?,
         };
-        let mut ty = base.to_string();
+        let mut ty = self
+            .renamed
+            .get(&base.to_ascii_uppercase())
+            .cloned()
+            .unwrap_or_else(|| base.to_string());
         if v.attribute("length").is_some() {
             let n = checked(self.xml, v, "length", Kind::Count, &mut self.diags)?;
             ty = format!("{ty}[{n}]");
@@ -567,12 +624,14 @@ impl Lx<'_> {
         }
         let head = self.w.mark();
         self.put(&format!("{keyword} "), p.node);
-        attr_into(
-            &mut self.w,
-            self.xml,
-            attr_span(self.xml, p.node, "name").range(),
-            &p.name,
-        );
+        let name_at = attr_span(self.xml, p.node, "name").range();
+        match self.renamed.get(&p.name.to_ascii_uppercase()) {
+            Some(new) if p.kind == PouKind::FunctionBlock => {
+                let new = new.clone();
+                self.w.gen_at(&new, name_at);
+            }
+            _ => attr_into(&mut self.w, self.xml, name_at, &p.name),
+        }
         if p.kind == PouKind::Function {
             let ret = kid(p.node, "returnValue");
             let ty = ret.map(|r| r.text().unwrap_or("").trim()).unwrap_or("");
@@ -698,6 +757,9 @@ impl Lx<'_> {
         self.put("END_VAR\n", b);
     }
 }
+
+/// What LogicLab's timers differ in.
+const TIMERS: &str = "LogicLab's timers take `PT` and give `ET` as UDINT milliseconds, counted from the target's `sysTimer`, which the host sets";
 
 /// A LogicLab body language in words.
 fn language(lang: &str) -> String {

@@ -54,8 +54,8 @@ fn the_project_checks_with_one_warning_per_thing_not_compiled_as_written() {
         [
             ("IL0424", Severity::Warning, 29, 7),
             ("IL0420", Severity::Warning, 108, 26),
+            ("IL0423", Severity::Warning, 225, 4),
             ("IL0425", Severity::Warning, 252, 20),
-            ("IL0423", Severity::Warning, 280, 27),
         ],
         "{}",
         c.render(false)
@@ -69,11 +69,11 @@ fn the_project_checks_with_one_warning_per_thing_not_compiled_as_written() {
         "{msgs:?}"
     );
     assert!(
-        msgs[2].contains("`sysTimer` is no global of the project"),
+        msgs[2].starts_with("1 function block(s) of library `MyLib.plclib` that the project uses have standard blocks' names: `TON`"),
         "{msgs:?}"
     );
     assert!(
-        msgs[3].contains("`TON` of library `MyLib.plclib`"),
+        msgs[3].contains("`sysTimer` is no global of the project"),
         "{msgs:?}"
     );
     let files = c.emit(EmitOptions::default()).expect("no errors: emitted");
@@ -82,8 +82,10 @@ fn the_project_checks_with_one_warning_per_thing_not_compiled_as_written() {
     // library is not written at all (it would ask the crate for a body).
     assert!(rust.contains("Host `FUNCTION_BLOCK` `Scale`"), "{rust}");
     assert!(!rust.contains("sysLog"), "{rust}");
-    // The library's IL block the project uses is compiled.
+    // The library's IL blocks the project uses are compiled, its TON under
+    // another name than the standard block's.
     assert!(rust.contains("pub struct EdgeCounter"), "{rust}");
+    assert!(rust.contains("pub struct TON_LogicLab"), "{rust}");
 }
 
 #[test]
@@ -326,4 +328,35 @@ fn a_build_of_a_damaged_project_writes_nothing() {
     let written: Vec<_> = std::fs::read_dir(dir.join("out")).unwrap().collect();
     assert!(written.is_empty(), "{written:?}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_block_of_a_standard_name_is_compiled_renamed_and_a_function_left_out() {
+    let main = "<functions><function name=\"LIMIT\"><returnValue>INT</returnValue><vars><inputVars><var name=\"a\" type=\"INT\"/></inputVars></vars><sourceCode type=\"IL\"><![CDATA[\n\tLD\ta\n\tST\tLIMIT\n]]></sourceCode></function></functions><functionBlocks><functionBlock name=\"R_TRIG\"><vars><inputVars><var name=\"clk\" type=\"BOOL\"/></inputVars><outputVars><var name=\"q\" type=\"BOOL\"/></outputVars><localVars><var name=\"m\" type=\"BOOL\"/></localVars></vars><sourceCode type=\"IL\"><![CDATA[\n\tLD\tclk\n\tANDN\tm\n\tST\tq\n\tLD\tclk\n\tST\tm\n]]></sourceCode></functionBlock></functionBlocks><programs><program name=\"Main\"><vars><localVars><var name=\"e\" type=\"R_TRIG\"/><var name=\"x\" type=\"INT\"/></localVars></vars><sourceCode type=\"IL\"><![CDATA[\n\tCAL\te(clk := TRUE)\n\tLD\t5\n\tLIMIT\t0, 3\n\tST\tx\n]]></sourceCode></program></programs>";
+    let c = check(project(main, ""));
+    let msgs: Vec<(&str, &str)> = c.diagnostics()[0]
+        .iter()
+        .map(|d| (d.code, d.message.as_str()))
+        .collect();
+    assert_eq!(
+        msgs,
+        [
+            (
+                "IL0423",
+                "FUNCTION `LIMIT` of this project has the name of a standard function: il-std's is used instead"
+            ),
+            (
+                "IL0423",
+                "FUNCTION_BLOCK `R_TRIG` of this project has the name of a standard function block: compiled as `R_TRIG_LogicLab`, the type of the project's variables of type `R_TRIG`"
+            ),
+        ],
+        "{}",
+        c.render(false)
+    );
+    let files = c.emit(EmitOptions::default()).expect("emitted");
+    assert!(
+        files[0].text.contains("pub e: R_TRIG_LogicLab"),
+        "{}",
+        files[0].text
+    );
 }
