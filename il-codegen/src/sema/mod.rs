@@ -32,8 +32,10 @@ pub use address::parse_address;
 pub use codes::CODES;
 
 /// Whether `name` (any case) is a standard function block or function of
-/// il-std: a POU of that name is refused (IL0104), so the importers that
-/// meet one in a vendor's library leave it out and say so.
+/// il-std: a POU of that name is refused (IL0104), so the LogicLab import,
+/// which meets them in the vendor's library, renames such a block and
+/// leaves such a function out, and says so.
+#[cfg(feature = "plcopen")]
 pub(crate) fn is_standard_pou(name: &str) -> bool {
     let key = name.to_ascii_uppercase();
     stdfb::lookup(&key).is_some() || stdfn::is_std(&key)
