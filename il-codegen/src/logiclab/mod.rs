@@ -11,7 +11,7 @@
 //!
 //! The XML is parsed by the PLCopen import's parser (same limits, same
 //! located errors for malformed XML), which hands a `<plcProject>` or
-//! `<plcLibrary>` root to [`translate`]. It writes one IL text, mapped back
+//! `<plcLibrary>` root to `translate`. It writes one IL text, mapped back
 //! byte for byte into the XML ([`crate::plcopen::SpanMap`]):
 //! - the project's data types (structs, enums, typedefs, subranges) as
 //!   `TYPE ... END_TYPE`;
