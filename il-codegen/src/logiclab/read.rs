@@ -82,6 +82,9 @@ pub(super) struct Project<'a, 'i> {
     pub libs: Vec<(String, Node<'a, 'i>)>,
     /// The element the CONFIGURATION is written for (`<main>`, `<lib>`).
     pub anchor: Option<Node<'a, 'i>>,
+    /// The folder of each POU and type of the project's tree
+    /// (`<workspace>`), by upper-case name, as `Lib/Time`.
+    pub folders: std::collections::HashMap<String, String>,
 }
 
 /// Whether LogicLab leaves the element out of the build
@@ -208,6 +211,12 @@ pub(super) fn read<'a, 'i>(
     }
     p.anchor = Some(main);
     container(&mut p, main, None, xml, diags);
+    if let Some(root) = sources
+        .and_then(|s| kid(s, "workspace"))
+        .and_then(|w| kid(w, "root"))
+    {
+        p.folders = folders(root);
+    }
     tasks(&mut p, main, xml, diags);
     for lib in sources
         .into_iter()
@@ -235,6 +244,34 @@ pub(super) fn read<'a, 'i>(
         container(&mut p, lib, Some(k), xml, diags);
     }
     p
+}
+
+/// The folder path of every `<Pou>` and `<Definition>` of the project's
+/// tree that is in a folder (walked with a stack: the tree is the file's).
+fn folders(root: Node) -> std::collections::HashMap<String, String> {
+    let mut out = std::collections::HashMap::new();
+    let mut stack: Vec<(Node, String)> = vec![(root, String::new())];
+    while let Some((n, path)) = stack.pop() {
+        for c in n.children().filter(Node::is_element) {
+            crate::step_counter::add(1);
+            let name = c.attribute("name").unwrap_or("");
+            match c.tag_name().name() {
+                "folder" => {
+                    let sub = if path.is_empty() {
+                        name.to_string()
+                    } else {
+                        format!("{path}/{name}")
+                    };
+                    stack.push((c, sub));
+                }
+                "Pou" | "Definition" if !path.is_empty() => {
+                    out.insert(name.to_ascii_uppercase(), path.clone());
+                }
+                _ => {}
+            }
+        }
+    }
+    out
 }
 
 fn missing(xml: &str, n: Node, child: &str) -> Diagnostic {

@@ -80,11 +80,21 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
     lx.diags
         .retain(|d| seen.insert((d.code, d.span.lo, d.span.hi, d.message.clone())));
     let (text, map) = lx.w.finish();
+    // The project's POUs and types in a folder of its tree.
+    let mut folders = Vec::new();
+    let nodes = (p.pous.iter().map(|x| (x.node, &x.name, x.origin)))
+        .chain(p.types.iter().map(|x| (x.node, &x.name, x.origin)));
+    for (node, name, origin) in nodes {
+        if let (None, Some(f)) = (origin, p.folders.get(&name.to_ascii_uppercase())) {
+            folders.push((node.range(), shown(f)));
+        }
+    }
     Translation {
         text,
         map,
         diags: lx.diags,
         pous,
+        folders,
     }
 }
 

@@ -88,6 +88,7 @@ struct Translation {
     map: SpanMap,
     diags: Vec<Diagnostic>,
     pous: Vec<PouInfo>,
+    folders: Vec<(std::ops::Range<usize>, String)>,
 }
 
 /// What happened to one POU of the project.
@@ -120,6 +121,9 @@ pub struct Import {
     /// The POUs left out: one look-up per diagnostic, not a scan of every
     /// POU.
     left_out: LeftOut,
+    /// XML ranges of elements in a folder of the project's tree (LogicLab's
+    /// workspace), with the folder's path, in document order.
+    folders: Vec<(std::ops::Range<usize>, String)>,
 }
 
 /// The POUs left out (not IL) by lower-case name, as an index into the
@@ -231,6 +235,7 @@ impl Import {
             pous: t.pous,
             map: t.map,
             left_out,
+            folders: t.folders,
         }
     }
 
@@ -256,6 +261,7 @@ impl Import {
                 ),
             ],
             pous: Vec::new(),
+            folders: Vec::new(),
         }
     }
 
@@ -304,6 +310,7 @@ impl Import {
                 map: SpanMap::default(),
                 diags: vec![d],
                 pous: Vec::new(),
+                folders: Vec::new(),
             },
         }
     }
@@ -326,6 +333,10 @@ impl Import {
             ));
         }
         d.span = self.map.to_xml(d.span);
+        let at = d.span.lo as usize;
+        if let Some((_, folder)) = self.folders.iter().find(|(r, _)| r.contains(&at)) {
+            d.notes.push(format!("in the project's folder `{folder}`"));
+        }
         // An edit of the translated IL is no edit of the XML.
         d.fixes.clear();
         for (s, _) in &mut d.secondary {

@@ -360,3 +360,16 @@ fn a_block_of_a_standard_name_is_compiled_renamed_and_a_function_left_out() {
         files[0].text
     );
 }
+
+#[test]
+fn a_diagnostic_in_a_pou_of_a_folder_names_the_folder() {
+    let main = IL_PROGRAM.replace("ST\tx", "ST\ty");
+    let text = project(&main, "").text.replace(
+        "</libraries>",
+        "</libraries>\n<workspace><root name=\"t\"><Pou name=\"Other\"/><folder name=\"Lib\"><folder name=\"Time\"><Pou name=\"Main\"/></folder></folder></root></workspace>",
+    );
+    let c = check(SourceFile::new("t.plcprj", text));
+    let d = &c.diagnostics()[0];
+    assert_eq!(d.len(), 1, "{}", c.render(false));
+    assert_eq!(d[0].notes, ["in the project's folder `Lib/Time`"]);
+}

@@ -30,6 +30,9 @@ pub(crate) struct Translation {
     pub map: SpanMap,
     pub diags: Vec<Diagnostic>,
     pub pous: Vec<PouInfo>,
+    /// XML ranges of elements in a folder of the project's tree, with the
+    /// folder's path (LogicLab's workspace; PLCopen has none).
+    pub folders: Vec<(Range<usize>, String)>,
 }
 
 /// The elementary types as TC6 spells them (elements without content).
@@ -206,6 +209,7 @@ impl<'a, 'i> Tr<'a, 'i> {
             map,
             diags: self.diags,
             pous: self.pous,
+            folders: Vec::new(),
         }
     }
 
