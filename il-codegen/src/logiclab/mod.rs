@@ -41,6 +41,8 @@
 #[cfg(feature = "plcopen")]
 mod config;
 #[cfg(feature = "plcopen")]
+mod decls;
+#[cfg(feature = "plcopen")]
 mod read;
 #[cfg(feature = "plcopen")]
 mod write;
