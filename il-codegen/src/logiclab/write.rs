@@ -90,6 +90,8 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
             folders.push((node.range(), shown(f)));
         }
     }
+    // In document order, for the look-up by position.
+    folders.sort_by_key(|(r, _): &(std::ops::Range<usize>, String)| r.start);
     Translation {
         text,
         map,

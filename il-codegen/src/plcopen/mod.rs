@@ -333,8 +333,16 @@ impl Import {
             ));
         }
         d.span = self.map.to_xml(d.span);
+        // The ranges are elements of the document, in its order, none in
+        // another: the last that starts at or before the place holds it or
+        // none does (one search per diagnostic, not a scan of the folders).
         let at = d.span.lo as usize;
-        if let Some((_, folder)) = self.folders.iter().find(|(r, _)| r.contains(&at)) {
+        let k = self.folders.partition_point(|(r, _)| r.start <= at);
+        if let Some((_, folder)) = k
+            .checked_sub(1)
+            .and_then(|k| self.folders.get(k))
+            .filter(|(r, _)| r.contains(&at))
+        {
             d.notes.push(format!("in the project's folder `{folder}`"));
         }
         // An edit of the translated IL is no edit of the XML.

@@ -193,6 +193,12 @@ fn bad_projects_get_located_errors_and_nothing_is_emitted() {
             "which is not a duration",
         ),
         (
+            "a name with a bidirectional control",
+            "<programs><program name=\"Ma\u{202E}in\"><vars/><sourceCode type=\"IL\"><![CDATA[\n\tLD\t1\n]]></sourceCode></program></programs>",
+            "IL0422",
+            "control character U+202E",
+        ),
+        (
             "a task name that is code",
             "<resources><resource name=\"R\"><task name=\"Fast(); END_RESOURCE\" interval=\"t#10ms\" priority=\"0\" type=\"cyclic\"/></resource></resources><tasks><task name=\"Fast(); END_RESOURCE\"><program>Main</program></task></tasks>{IL}",
             "IL0422",
