@@ -379,3 +379,59 @@ fn a_diagnostic_in_a_pou_of_a_folder_names_the_folder() {
     assert_eq!(d.len(), 1, "{}", c.render(false));
     assert_eq!(d[0].notes, ["in the project's folder `Lib/Time`"]);
 }
+
+/// `n` IL blocks in a folder, each using its global and a library block,
+/// `n` programs holding one each, run by a task, and one unknown name in
+/// each program (a diagnostic with its folder's note).
+fn many(n: usize) -> SourceFile {
+    let mut globals = String::new();
+    let mut fbs = String::new();
+    let mut prgs = String::new();
+    let mut runs = String::new();
+    let mut tree = String::new();
+    for k in 0..n {
+        globals.push_str(&format!("<var name=\"g{k}\" type=\"INT\"/>"));
+        fbs.push_str(&format!("<functionBlock name=\"Fb{k}\"><vars><localVars><var name=\"c\" type=\"Counter\"/></localVars></vars><sourceCode type=\"IL\"><![CDATA[\n\tCAL\tc\n\tLD\tg{k}\n\tADD\t1\n\tST\tg{k}\n]]></sourceCode></functionBlock>"));
+        prgs.push_str(&format!("<program name=\"P{k}\"><vars><localVars><var name=\"f\" type=\"Fb{k}\"/></localVars></vars><sourceCode type=\"IL\"><![CDATA[\n\tCAL\tf\n\tLD\tnowhere{k}\n]]></sourceCode></program>"));
+        runs.push_str(&format!("<program>P{k}</program>"));
+        tree.push_str(&format!(
+            "<folder name=\"F{k}\"><Pou name=\"P{k}\"/><Pou name=\"Fb{k}\"/></folder>"
+        ));
+    }
+    let main = format!(
+        "<resources><resource name=\"R\"><task name=\"Fast\" interval=\"t#10ms\" priority=\"0\" type=\"cyclic\"/></resource></resources><tasks><task name=\"Fast\">{runs}</task></tasks><globalVars><group name=\"G\">{globals}</group></globalVars><functionBlocks>{fbs}</functionBlocks><programs>{prgs}</programs>"
+    );
+    let lib = "<functionBlocks><functionBlock name=\"Counter\"><vars><outputVars><var name=\"n\" type=\"INT\"/></outputVars></vars><sourceCode type=\"IL\"><![CDATA[\n\tLD\tn\n\tADD\t1\n\tST\tn\n]]></sourceCode></functionBlock></functionBlocks>";
+    let text = project(&main, lib).text.replace(
+        "</libraries>",
+        &format!("</libraries><workspace><root name=\"t\">{tree}</root></workspace>"),
+    );
+    SourceFile::new("many.plcprj", text)
+}
+
+#[test]
+fn a_project_of_many_pous_checks_in_linear_steps() {
+    let _quiet = crate::plcopen_limits::quiet();
+    let steps = |n: usize| {
+        let file = many(n);
+        let s0 = il_codegen::step_counter::steps();
+        let c = check(file);
+        let s = il_codegen::step_counter::steps() - s0;
+        // One error per program (as many as a file shows), in its folder.
+        let d = &c.diagnostics()[0];
+        assert!(d.iter().filter(|d| d.code == "IL0101").count() >= n.min(100));
+        assert!(
+            d[0].notes
+                .iter()
+                .any(|n| n.starts_with("in the project's folder `F"))
+        );
+        s
+    };
+    let (s1, s8) = (steps(40), steps(320));
+    let ratio = s8 as f64 / s1.max(1) as f64;
+    println!("8x the POUs took {ratio:.1}x the steps ({s1} → {s8})");
+    assert!(
+        ratio < 12.0,
+        "8x the POUs took {ratio:.1}x the steps ({s1} → {s8})"
+    );
+}
