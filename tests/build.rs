@@ -85,6 +85,15 @@ fn main() {
         .compile()
         .unwrap_or_else(|e| panic!("\n{e}"));
 
+    // A LogicLab / Arduino PLC IDE project (.plcprj) whose FUNCTION_BLOCK
+    // `Scale` is in ST: host-provided, body in src/lib.rs (logiclab_build).
+    println!("cargo:rerun-if-changed=logiclab");
+    il_codegen::Builder::new()
+        .file("logiclab/project.plcprj")
+        .out_dir(out.join("logiclab"))
+        .compile()
+        .unwrap_or_else(|e| panic!("\n{e}"));
+
     let corpus = Path::new("../../shared/corpus");
     let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));
     if corpus.join("beremiz_matiec_cmd_monitor_il.txt").exists() {

@@ -20,7 +20,7 @@ pub fn read_source(path: &str, encoding: il_codegen::read::Encoding) -> Result<S
 }
 
 /// The paths given, with each folder replaced by its source files (`.exp`,
-/// `.il`, `.xml`, any case), sorted: a CODESYS project exported one object
+/// `.il`, `.xml`, `.plcprj`, any case), sorted: a CODESYS project exported one object
 /// per file is given as its folder (`ilc check project/`).
 pub fn expand(paths: impl Iterator<Item = String>) -> Vec<String> {
     let mut out = Vec::new();
@@ -34,7 +34,7 @@ pub fn expand(paths: impl Iterator<Item = String>) -> Vec<String> {
             .filter(|f| {
                 f.is_file()
                     && f.extension().is_some_and(|e| {
-                        ["exp", "il", "xml"]
+                        ["exp", "il", "xml", "plcprj"]
                             .iter()
                             .any(|x| e.eq_ignore_ascii_case(x))
                     })

@@ -14,6 +14,7 @@ pub fn all() -> impl Iterator<Item = &'static CodeInfo> {
         .chain(crate::sema::CODES)
         .chain(crate::plcopen::CODES)
         .chain(crate::exp::CODES)
+        .chain(crate::logiclab::CODES)
         .chain(crate::dialect::CODES)
 }
 

@@ -62,6 +62,7 @@ pub mod dialect;
 pub mod exp;
 pub mod format;
 pub mod ir;
+pub mod logiclab;
 pub mod plcopen;
 pub mod read;
 pub mod step_counter;

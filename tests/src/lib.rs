@@ -121,6 +121,30 @@ pub mod exp_macro {
     }
 }
 
+/// `logiclab/project.plcprj`: a `LogicLab` / Arduino PLC IDE project through
+/// build.rs. Its `FUNCTION_BLOCK` `Scale` is in Structured Text, so its body
+/// is the crate's.
+pub mod logiclab_build {
+    include!(concat!(env!("OUT_DIR"), "/logiclab/project.rs"));
+
+    /// `Scale`'s ST body, `scaled := raw * k;` (k = 3), in Rust.
+    #[allow(non_snake_case)]
+    pub fn Scale(this: &mut Scale, _ctx: &mut il_std::Cycle) {
+        this.scaled = this.raw.wrapping_mul(3);
+    }
+}
+
+/// The same project through `il!`.
+pub mod logiclab_macro {
+    il_macros::il!(file = "logiclab/project.plcprj");
+
+    /// `Scale`'s ST body, `scaled := raw * k;` (k = 3), in Rust.
+    #[allow(non_snake_case)]
+    pub fn Scale(this: &mut Scale, _ctx: &mut il_std::Cycle) {
+        this.scaled = this.raw.wrapping_mul(3);
+    }
+}
+
 /// The tank controller of the new-user test (`new-user/plc`): two files,
 /// one program, through one `il!(files = [...])`.
 pub mod tank_macro {

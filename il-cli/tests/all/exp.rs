@@ -142,3 +142,45 @@ fn the_owen_project_checks_with_no_error() {
         "cycle  time  K14UZSPumpSpeed\n    1  0s                100\n    2  10ms              100\n"
     );
 }
+
+/// A PROGRAM with an action that another POU calls (`CAL Aux.Reset`) and
+/// reads (`Aux.n`), and that a task runs too.
+const CALLED: &str = "(* @NESTEDCOMMENTS := 'Yes' *)\n(* @GLOBAL_VARIABLE_LIST := 'G' *)\nVAR_GLOBAL\n	total : INT;\nEND_VAR\n(* @OBJECT_END := 'G' *)\n\n(* @NESTEDCOMMENTS := 'Yes' *)\nPROGRAM Aux\nVAR_OUTPUT n : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nLD n\nADD 1\nST n\nADD total\nST total\nEND_PROGRAM\nACTION Reset:\nLD 0\nST n\nEND_ACTION\n\n(* @NESTEDCOMMENTS := 'Yes' *)\nPROGRAM PLC_PRG\nVAR k : INT; END_VAR\n(* @END_DECLARATION := '0' *)\nLD Aux.n\nST k\nGE 3\nCALC Aux.Reset\nEND_PROGRAM\n\nRESOURCE\nTASK Fast (PRIORITY := 1, INTERVAL := T#10ms);\nAux();\nPLC_PRG();\nEND_TASK\nEND_RESOURCE\n";
+
+#[test]
+fn a_program_called_from_another_pou_runs_its_action_there() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("ilc_exp_called");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let f = dir.join("called.EXP");
+    std::fs::write(&f, CALLED).unwrap();
+    let f = f.display().to_string();
+    let o = ilc(&["check", &f]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert_eq!(text(&o.stderr), "");
+    // By hand: the task runs Aux (n += 1; total += n), then PLC_PRG
+    // (k := Aux.n; at k >= 3 CALC Aux.Reset, which sets n to 0 and does not
+    // count): one instance of Aux, as CODESYS has.
+    let o = ilc(&[
+        "run",
+        &f,
+        "--cycles",
+        "6",
+        "--watch",
+        "Aux.n,total,PLC.PLC_PRG.k",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert_eq!(
+        text(&o.stdout),
+        "\
+cycle  time  Aux.n  total  PLC.PLC_PRG.k
+    1  0s        1      1              1
+    2  10ms      2      3              2
+    3  20ms      0      6              3
+    4  30ms      1      7              1
+    5  40ms      2      9              2
+    6  50ms      0     12              3
+"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -625,6 +625,73 @@ fn a_plcopen_project() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A LogicLab / Arduino PLC IDE project: the same answers in its XML.
+const LOGICLAB: &str = r#"<?xml version="1.0" encoding="UTF-8" standalone="no"?>
+<plcProject version="2.11">
+  <sources>
+    <main>
+      <globalVars>
+        <group name="IO">
+          <var name="lamp" type="BOOL"/>
+        </group>
+      </globalVars>
+      <programs>
+        <program name="Blink">
+          <vars>
+            <inputVars>
+              <var name="run" type="BOOL"/>
+            </inputVars>
+          </vars>
+          <sourceCode type="IL">
+            <![CDATA[
+	LD	run
+	ANDN	lamp
+	ST	lampp
+]]>
+          </sourceCode>
+        </program>
+      </programs>
+    </main>
+  </sources>
+</plcProject>
+"#;
+
+#[test]
+fn a_logiclab_project() {
+    let dir = temp_dir("plcprj");
+    let prj = uri(&dir.join("Blink.plcprj"));
+    let mut c = Client::start(&[]);
+    c.initialize(&dir, json!({}));
+    c.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": prj, "languageId": "xml", "version": 1, "text": LOGICLAB}}),
+    );
+    let diags = c.diagnostics_for(&prj);
+    assert_eq!(diags.len(), 1, "{diags:?}");
+    assert_eq!(diags[0]["code"], "IL0101");
+    let (line, col) = find(LOGICLAB, "lampp", 0);
+    assert_eq!(
+        diags[0]["range"]["start"],
+        json!({"line": line, "character": col})
+    );
+    // `lamp` is a global of the project's group, seen without VAR_EXTERNAL:
+    // its definition is the group's `<var>`.
+    let h = c.result("textDocument/hover", at(&prj, LOGICLAB, "ANDN\tlamp", 6));
+    assert!(hover_text(&h).contains("lamp : BOOL"), "{h}");
+    let d = c.result(
+        "textDocument/definition",
+        at(&prj, LOGICLAB, "ANDN\tlamp", 6),
+    );
+    assert_eq!(d["uri"], prj);
+    assert_eq!(
+        d["range"]["start"]["line"],
+        find(LOGICLAB, "\"lamp\"", 0).0,
+        "{d}"
+    );
+    c.finish();
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn hover_on_a_standard_function() {
     let dir = temp_dir("stdfn");

@@ -11,6 +11,7 @@ mod encodings;
 mod exp;
 mod explain;
 mod fmt;
+mod logiclab;
 mod lsp;
 mod plcopen;
 mod run;

@@ -97,8 +97,15 @@ pub(super) fn accessors_in(prefix: &str, vars: &[Var]) -> String {
             l.text,
             l.elem.name()
         ));
+        // A name with capitals (LogicLab's `Lamp`) makes a method name
+        // rustc warns about in the user's crate.
+        let allow = if v.name.chars().any(|c| c.is_ascii_uppercase()) {
+            "#[allow(non_snake_case)] "
+        } else {
+            ""
+        };
         out.push_str(&format!(
-            "{gdoc}pub fn {get}(__ctx: &::il_std::Cycle) -> {ty} {{ {read} }} {sdoc}pub fn {set}(__ctx: &mut ::il_std::Cycle, __value: {ty}) {{ {write} }}"
+            "{gdoc}{allow}pub fn {get}(__ctx: &::il_std::Cycle) -> {ty} {{ {read} }} {sdoc}{allow}pub fn {set}(__ctx: &mut ::il_std::Cycle, __value: {ty}) {{ {write} }}"
         ));
     }
     out

@@ -141,8 +141,11 @@ pub(super) fn call_edits(
             && toks
                 .get(k + 4)
                 .is_none_or(|(_, r)| !same_line(text, toks[k].1.start, r.start))
-            && let Some(ty) = insts.get(&target.to_ascii_uppercase())
-            && facts.has_action(ty, action)
+            && let Some(ty) = insts
+                .get(&target.to_ascii_uppercase())
+                .cloned()
+                .or_else(|| facts.is_called(target).then(|| target.to_ascii_uppercase()))
+            && facts.has_action(&ty, action)
         {
             let r = toks[k + 1].1.start..toks[k + 3].1.end;
             out.push((r, format!("{target}({action} := TRUE)")));
@@ -166,6 +169,34 @@ pub(super) fn call_edits(
                 _ => format!("JMPC {skip}\n{code}\n{skip}:\n"),
             };
             out.push((toks[k].1.start..toks[k + 1].1.end, text_of));
+        }
+    }
+    out
+}
+
+/// The upper-case words that `CAL`, `CALC`, `CALCN` and `CALNC` at the
+/// start of a line of `range` call, when they are no variable of `o`.
+pub(super) fn cal_targets(text: &str, range: Range<usize>, o: &Object) -> Vec<String> {
+    let from = range.start;
+    let toks: Vec<(Tok, Range<usize>)> = Scanner::new(text, range, o.nested)
+        .filter(|(t, _)| !matches!(t, Tok::Comment { .. } | Tok::Pragma))
+        .collect();
+    let firsts = line_firsts(text, from, &toks);
+    let insts = instances(text, o);
+    let mut out = Vec::new();
+    for (k, (t, r)) in toks.iter().enumerate() {
+        let op = text[r.clone()].to_ascii_uppercase();
+        if *t != Tok::Word
+            || !firsts[k]
+            || !matches!(op.as_str(), "CAL" | "CALC" | "CALCN" | "CALNC")
+        {
+            continue;
+        }
+        if let Some((Tok::Word, n)) = toks.get(k + 1) {
+            let name = text[n.clone()].to_ascii_uppercase();
+            if !insts.contains_key(&name) {
+                out.push(name);
+            }
         }
     }
     out

@@ -108,6 +108,34 @@ pub(super) fn write_config(
     if facts.globals.is_empty() && tasks.is_none() && !facts.plc_prg {
         return;
     }
+    // The PROGRAMs that run a called program's global instance.
+    let scheduled: Vec<(String, Range<usize>)> = match tasks {
+        Some((_, _, tasks)) => tasks
+            .iter()
+            .flat_map(|t| &t.programs)
+            .filter(|(p, _, _)| facts.is_called(p))
+            .map(|(p, _, r)| (p.clone(), r.clone()))
+            .collect(),
+        None if facts.plc_prg && facts.is_called("PLC_PRG") => {
+            vec![("PLC_PRG".to_string(), anchor.clone())]
+        }
+        None => Vec::new(),
+    };
+    for (p, r) in &scheduled {
+        // The instance, and the globals the block uses (IEC: who holds an
+        // instance declares them too).
+        let mut externals = format!("\t{p} : {p};\n");
+        for g in facts.needed_by(p).filter(|g| !g.constant) {
+            externals.push_str(&format!("\t{} : {};\n", g.name, g.ty));
+        }
+        w.gen_at(
+            &format!(
+                "\nPROGRAM {}\nVAR_EXTERNAL\n{externals}END_VAR\nCAL {p}\nEND_PROGRAM\n",
+                run_name(p)
+            ),
+            r.clone(),
+        );
+    }
     w.gen_at(&format!("\nCONFIGURATION {CONFIG_NAME}\n"), anchor.clone());
     let mut open: Option<(bool, bool)> = None;
     for g in &facts.globals {
@@ -172,8 +200,13 @@ pub(super) fn write_config(
                     } else {
                         format!("({args})")
                     };
+                    let ty = if facts.is_called(p) {
+                        run_name(p)
+                    } else {
+                        p.clone()
+                    };
                     w.gen_at(
-                        &format!("PROGRAM {p} WITH {} : {p}{args};\n", t.name),
+                        &format!("PROGRAM {p} WITH {} : {ty}{args};\n", t.name),
                         r.clone(),
                     );
                 }
@@ -181,9 +214,24 @@ pub(super) fn write_config(
             w.gen_at("END_RESOURCE\n", anchor.clone());
         }
         None if facts.plc_prg => {
-            w.gen_at("PROGRAM PLC_PRG : PLC_PRG;\n", anchor.clone());
+            let ty = if facts.is_called("PLC_PRG") {
+                run_name("PLC_PRG")
+            } else {
+                "PLC_PRG".to_string()
+            };
+            w.gen_at(&format!("PROGRAM PLC_PRG : {ty};\n"), anchor.clone());
         }
         None => {}
     }
     w.gen_at("END_CONFIGURATION\n", anchor);
+}
+
+/// The PROGRAM that runs the global instance of called program `p` from a
+/// task: `p_RUN` (`pRUN` after a trailing `_`: IEC names have no `__`).
+fn run_name(p: &str) -> String {
+    if p.ends_with('_') {
+        format!("{p}RUN")
+    } else {
+        format!("{p}_RUN")
+    }
 }

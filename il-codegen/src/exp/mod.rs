@@ -68,8 +68,8 @@ pub mod codes {
 pub use codes::CODES;
 
 /// The language of a POU body (CODESYS writes no marker for IL and ST:
-/// a text body is IL when its first instruction is an IL operator or a
-/// label, ST otherwise).
+/// a text body is ST when it has a statement's `;`, an assignment's `:=`
+/// or a control keyword outside parentheses, IL otherwise).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Language {
     /// Instruction List.
@@ -193,6 +193,9 @@ pub struct Import {
     /// CONSTANT: a FUNCTION naming one gets a note (IEC FUNCTIONs have no
     /// VAR_EXTERNAL; CODESYS lets them read globals).
     globals: std::collections::HashSet<String>,
+    /// The POUs of the libraries the project references, by upper-case
+    /// name, with the library's file name (`BLINK` → `Util.lib`).
+    library_pous: std::collections::HashMap<String, String>,
 }
 
 /// Whether a source is a CODESYS export: its name ends in `.exp` (any
@@ -239,6 +242,7 @@ impl Import {
             split_diags,
             foreign: Vec::new(),
             globals: Default::default(),
+            library_pous: Default::default(),
         };
         let mut one = [&mut i];
         assemble(&mut one);
@@ -268,6 +272,13 @@ impl Import {
         if d.code == "IL0101" && self.globals.contains(&word.to_ascii_uppercase()) {
             d.notes.push(format!(
                 "`{word}` is a global of this project: a PROGRAM or FUNCTION_BLOCK sees it, a FUNCTION does not (IEC FUNCTIONs have no VAR_EXTERNAL): pass it as an input"
+            ));
+        }
+        if matches!(d.code, "IL0101" | "IL0105" | "IL0114")
+            && let Some(lib) = self.library_pous.get(&word.to_ascii_uppercase())
+        {
+            d.notes.push(format!(
+                "`{word}` is a POU of the library `{lib}`, which this project references; the compiler has IEC's standard blocks and functions (il-std), not CODESYS's libraries: declare it with its interface as `{{extern}} FUNCTION_BLOCK {word}` (or `{{extern}} FUNCTION`), whose body the crate supplies, or add its IL source to the program"
             ));
         }
         d.span = self.map.to_xml(d.span);

@@ -47,12 +47,32 @@ pub(super) struct Facts {
     pub(super) tasks: Option<(usize, usize, Vec<Task>)>,
     /// Whether the project has a PROGRAM PLC_PRG.
     pub(super) plc_prg: bool,
+    /// IL PROGRAMs that another POU calls (`CAL Prog`, `CAL Prog.Action`),
+    /// by upper-case name: CODESYS's programs are one instance each, which
+    /// any POU may call. Each is written as a FUNCTION_BLOCK with one
+    /// global instance of its name; a task runs it through a PROGRAM
+    /// `Name_RUN` that calls that instance.
+    pub(super) called: HashSet<String>,
     /// The IL actions of IL function blocks: upper-case block name →
     /// upper-case action names.
     actions: HashMap<String, Vec<String>>,
 }
 
 impl Facts {
+    /// The globals IL POU `name` needs.
+    pub(super) fn needed_by(&self, name: &str) -> impl Iterator<Item = &Global> {
+        self.needs
+            .get(&name.to_ascii_uppercase())
+            .into_iter()
+            .flatten()
+            .map(|&g| &self.globals[g])
+    }
+
+    /// Whether `name` is a PROGRAM that other POUs call (see `called`).
+    pub(super) fn is_called(&self, name: &str) -> bool {
+        self.called.contains(&name.to_ascii_uppercase())
+    }
+
     /// Whether block `ty` (upper case) has an IL action named `action`.
     pub(super) fn has_action(&self, ty: &str, action: &str) -> bool {
         self.actions
@@ -118,6 +138,7 @@ pub(crate) fn assemble(imports: &mut [&mut Import]) {
     let mut facts = Facts::default();
     collect_globals(imports, &mut facts);
     super::config::collect_tasks(imports, &mut facts);
+    called_programs(imports, &mut facts);
     collect_needs(imports, &mut facts);
     facts.holder = facts.tasks.as_ref().map(|t| t.0).or_else(|| {
         let with_prg = imports.iter().position(|i| {
@@ -128,7 +149,9 @@ pub(crate) fn assemble(imports: &mut [&mut Import]) {
         });
         with_prg.or_else(|| facts.globals.first().map(|g| g.import))
     });
+    let library_pous = library_pous(imports);
     for (me, imp) in imports.iter_mut().enumerate() {
+        imp.library_pous = library_pous.clone();
         let (w, diags, foreign) = super::write::write(imp, me, &facts);
         imp.foreign = foreign;
         imp.globals = facts
@@ -142,6 +165,104 @@ pub(crate) fn assemble(imports: &mut [&mut Import]) {
         imp.map = map;
         imp.diagnostics.extend(diags);
     }
+}
+
+/// The IL PROGRAMs another IL POU calls (`CAL P`, `CALC P.Reset`, `CAL
+/// P(x := 1)`, where `P` is no variable of the caller), each with a global
+/// instance of its name in the project's globals.
+fn called_programs(imports: &[&mut Import], facts: &mut Facts) {
+    let mut programs: HashMap<String, (usize, usize)> = HashMap::new();
+    for (i, imp) in imports.iter().enumerate() {
+        for (k, o) in imp.objects.iter().enumerate() {
+            if o.kind == ObjectKind::Pou(PouKind::Program)
+                && o.language == Language::Il
+                && !imp.left_out[k]
+                && o.end.is_some()
+            {
+                programs
+                    .entry(o.name.to_ascii_uppercase())
+                    .or_insert((i, k));
+            }
+        }
+    }
+    for imp in imports.iter() {
+        for (k, o) in imp.objects.iter().enumerate() {
+            if !matches!(o.kind, ObjectKind::Pou(_))
+                || o.language != Language::Il
+                || imp.left_out[k]
+            {
+                continue;
+            }
+            let bodies = o
+                .body
+                .iter()
+                .cloned()
+                .chain(super::actions::il_actions(o).map(|a| a.body.clone()));
+            for body in bodies {
+                for target in super::actions::cal_targets(&imp.exp.text, body, o) {
+                    if programs.contains_key(&target) && !target.eq_ignore_ascii_case(&o.name) {
+                        facts.called.insert(target);
+                    }
+                }
+            }
+        }
+    }
+    let mut called: Vec<&String> = facts.called.iter().collect();
+    called.sort();
+    for name in called {
+        let (i, k) = programs[name];
+        let o = &imports[i].objects[k];
+        facts.globals.push(Global {
+            name: o.name.clone(),
+            at: None,
+            ty: o.name.clone(),
+            init: None,
+            constant: false,
+            retain: false,
+            import: i,
+            range: o.keyword.clone(),
+            file: imports[i].exp.name.clone(),
+            line: imports[i].exp.line_of(o.keyword.start as u32),
+        });
+    }
+}
+
+/// The POUs the project's library references list (`LIBRARY Util.lib ...
+/// NumOfPOUs: 24 / BLINK: 2048 / ... / NumOfGVLs`), by upper-case name,
+/// with the library's file name: a POU that names one the compiler does
+/// not have is told where it comes from.
+fn library_pous(imports: &[&mut Import]) -> HashMap<String, String> {
+    let mut out = HashMap::new();
+    for imp in imports {
+        for o in &imp.objects {
+            if o.kind != ObjectKind::Skipped("a library reference") {
+                continue;
+            }
+            let lib = o.name.split_whitespace().next().unwrap_or("").to_string();
+            let text = imp.exp.text.get(o.span.clone()).unwrap_or("");
+            let mut in_pous = false;
+            for line in text.lines() {
+                crate::step_counter::add(1);
+                let Some((name, count)) = line.split_once(':') else {
+                    continue;
+                };
+                let name = name.trim();
+                if name.eq_ignore_ascii_case("NumOfPOUs") {
+                    in_pous = true;
+                } else if name.eq_ignore_ascii_case("NumOfGVLs") {
+                    in_pous = false;
+                } else if in_pous
+                    && !name.is_empty()
+                    && !name.contains(char::is_whitespace)
+                    && count.trim().chars().all(|c| c.is_ascii_digit())
+                {
+                    out.entry(name.to_ascii_uppercase())
+                        .or_insert_with(|| lib.clone());
+                }
+            }
+        }
+    }
+    out
 }
 
 /// Objects of one name: the same text is read once, another text is an
@@ -367,9 +488,12 @@ fn collect_needs(imports: &[&mut Import], facts: &mut Facts) {
     for imp in imports {
         let text = &imp.exp.text;
         for (k, o) in imp.objects.iter().enumerate() {
-            let ObjectKind::Pou(kind) = o.kind else {
+            let ObjectKind::Pou(mut kind) = o.kind else {
                 continue;
             };
+            if kind == PouKind::Program && facts.is_called(&o.name) {
+                kind = PouKind::FunctionBlock;
+            }
             if imp.left_out[k] || o.language != Language::Il {
                 continue;
             }
@@ -399,11 +523,23 @@ fn collect_needs(imports: &[&mut Import], facts: &mut Facts) {
                     instances.push(text[d.ty.clone()].trim().to_ascii_uppercase());
                 }
             }
+            // A called program's global instance has its name: the POU
+            // itself does not need it.
+            locals.insert(o.name.to_ascii_uppercase());
             let needs: BTreeSet<usize> = used
                 .iter()
                 .filter(|u| !locals.contains(*u))
                 .filter_map(|u| keys.get(u).copied())
                 .collect();
+            // The global instance of a called program is held through its
+            // VAR_EXTERNAL: what that block needs, this POU declares too.
+            instances.extend(
+                needs
+                    .iter()
+                    .map(|&g| &facts.globals[g])
+                    .filter(|g| facts.is_called(&g.name))
+                    .map(|g| g.ty.to_ascii_uppercase()),
+            );
             direct.insert(o.name.to_ascii_uppercase(), (kind, needs, instances));
         }
     }

@@ -13,24 +13,46 @@ use crate::ast::{PouKind, Span};
 use crate::diag::Diagnostic;
 use crate::plcopen::map::Writer;
 
-const IL_OPERATORS: &[&str] = &[
-    "LD", "LDN", "ST", "STN", "S", "R", "AND", "ANDN", "OR", "ORN", "XOR", "XORN", "NOT", "ADD",
-    "SUB", "MUL", "DIV", "MOD", "GT", "GE", "EQ", "NE", "LE", "LT", "JMP", "JMPC", "JMPCN",
-    "JMPNC", "CAL", "CALC", "CALCN", "CALNC", "RET", "RETC", "RETCN", "RETNC", "S1", "R1", "CLK",
-    "CU", "CD", "PV", "IN", "PT",
+/// Words that only Structured Text has (IL jumps with `JMP`, returns with
+/// `RET`, and has no statements).
+const ST_KEYWORDS: &[&str] = &[
+    "IF",
+    "THEN",
+    "ELSIF",
+    "ELSE",
+    "END_IF",
+    "CASE",
+    "END_CASE",
+    "FOR",
+    "TO",
+    "BY",
+    "DO",
+    "END_FOR",
+    "WHILE",
+    "END_WHILE",
+    "REPEAT",
+    "UNTIL",
+    "END_REPEAT",
+    "EXIT",
+    "RETURN",
 ];
 
 /// The language of a body: CODESYS marks graphical bodies (`_CFC_BODY`,
 /// `_FBD_BODY`, `_LD_BODY`) and writes IL and ST as they are. A text body
-/// is IL when its first line starts with an IL operator (without `:=`) or
-/// a label; an empty body is IL.
+/// is ST when it has what only ST has, outside parentheses (where an IL
+/// call's `CAL f(a := 1)` puts its `:=`): a statement's `;`, an assignment's
+/// `:=`, or a control keyword (`IF`, `FOR`, `RETURN` ...). Otherwise it is
+/// IL, whatever its first word: an IL body may start with a label, an
+/// operator, or a user function used as one (`Scale 10`). An empty body
+/// is IL.
 pub(super) fn language(text: &str, body: Range<usize>, nested: bool) -> Language {
     let mut toks = Scanner::new(text, body, nested)
-        .filter(|(t, _)| !matches!(t, Tok::Comment { .. } | Tok::Pragma));
-    let Some((tok, r)) = toks.next() else {
+        .filter(|(t, _)| !matches!(t, Tok::Comment { .. } | Tok::Pragma))
+        .peekable();
+    let Some((tok, r)) = toks.peek().cloned() else {
         return Language::Il;
     };
-    let word = text[r.clone()].to_ascii_uppercase();
+    let word = text[r].to_ascii_uppercase();
     if tok == Tok::Word {
         if word.starts_with("_CFC") {
             return Language::Cfc;
@@ -47,25 +69,25 @@ pub(super) fn language(text: &str, body: Range<usize>, nested: bool) -> Language
             return Language::Sfc;
         }
     }
-    if tok != Tok::Word {
-        return Language::St;
+    let mut depth = 0i32;
+    for (t, r) in toks {
+        let s = &text[r.clone()];
+        match (t, s) {
+            (Tok::Punct, "(") => depth += 1,
+            (Tok::Punct, ")") => depth -= 1,
+            (Tok::Punct, ";") if depth <= 0 => return Language::St,
+            (Tok::Punct, ":") if depth <= 0 && text[r.end..].starts_with('=') => {
+                return Language::St;
+            }
+            (Tok::Word, w)
+                if depth <= 0 && ST_KEYWORDS.iter().any(|k| k.eq_ignore_ascii_case(w)) =>
+            {
+                return Language::St;
+            }
+            _ => {}
+        }
     }
-    // `x := ...` is ST even when `x` is spelt like an operator (`S`, `IN`).
-    let next = toks.next();
-    let assigns = next.as_ref().is_some_and(|(t, c)| {
-        *t == Tok::Punct && &text[c.clone()] == ":" && text[c.end..].starts_with('=')
-    });
-    if IL_OPERATORS.contains(&word.as_str()) && !assigns {
-        return Language::Il;
-    }
-    // A label: `name:` not followed by `=`.
-    if let Some((Tok::Punct, c)) = &next
-        && &text[c.clone()] == ":"
-        && !assigns
-    {
-        return Language::Il;
-    }
-    Language::St
+    Language::Il
 }
 
 /// Text edits of a copied range: `(range, replacement)`, in order.
@@ -254,6 +276,14 @@ fn write_pou(
         return;
     }
     let mut edits = decl_edits(text, o.decl.clone(), o.nested, facts);
+    // A PROGRAM that other POUs call is a block with one global instance.
+    let called = kind == PouKind::Program && facts.is_called(&o.name);
+    let kind = if called {
+        edits.push((o.keyword.clone(), "FUNCTION_BLOCK".to_string()));
+        PouKind::FunctionBlock
+    } else {
+        kind
+    };
     let mut implicit = facts.implicit_blocks(&o.name, kind);
     let acts: Vec<&super::Action> = match kind {
         PouKind::Function => Vec::new(),
@@ -297,7 +327,11 @@ fn write_pou(
         }
     }
     w.gen_at("\n", end.start..end.start);
-    w.copy(&text[end.clone()], end.start);
+    if called {
+        w.gen_at("END_FUNCTION_BLOCK", end.clone());
+    } else {
+        w.copy(&text[end.clone()], end.start);
+    }
     w.gen_at("\n", end.end..end.end);
     for a in &o.actions {
         let d = if kind == PouKind::Function {

@@ -69,6 +69,16 @@ impl Input {
         }
     }
 
+    /// [`Input::source`], to change what reading it reported.
+    pub(crate) fn source_mut(&mut self) -> &mut SourceFile {
+        match self {
+            Input::Il(f) => f,
+            Input::PlcOpen(i) => &mut i.xml,
+            Input::Snippet(s) => &mut s.file,
+            Input::Exp(i) => &mut i.exp,
+        }
+    }
+
     /// The IL text that is compiled.
     pub fn il_text(&self) -> &SourceFile {
         match self {

@@ -100,6 +100,7 @@ impl Program {
 
     /// Parse and check every input.
     pub fn check(mut self) -> Checked {
+        one_guess_per_program(&mut self.inputs);
         // The CODESYS exports of the program are one project: their
         // global lists and task configuration are read together.
         let mut exps: Vec<&mut crate::exp::Import> = self
@@ -188,6 +189,52 @@ impl Program {
             ok,
             resolutions,
         }
+    }
+}
+
+/// A program of many files that are not UTF-8 (a CODESYS project exported
+/// one object per file) gets one IL0039 warning, not one per file: the
+/// first file's, with a note naming the others. The guess and the switch
+/// are the same for all of them.
+fn one_guess_per_program(inputs: &mut [Input]) {
+    let guessed = |i: &Input| {
+        i.source()
+            .read_diagnostics
+            .iter()
+            .any(|d| d.code == crate::read::GUESSED_ENCODING)
+    };
+    let all: Vec<usize> = (0..inputs.len()).filter(|&k| guessed(&inputs[k])).collect();
+    let [first, rest @ ..] = &all[..] else { return };
+    if rest.is_empty() {
+        return;
+    }
+    let names: Vec<String> = rest
+        .iter()
+        .take(8)
+        .map(|&k| format!("`{}`", inputs[k].source().name))
+        .collect();
+    let more = match rest.len() {
+        n if n > 8 => format!(" and {} more", n - 8),
+        _ => String::new(),
+    };
+    for &k in rest {
+        inputs[k]
+            .source_mut()
+            .read_diagnostics
+            .retain(|d| d.code != crate::read::GUESSED_ENCODING);
+    }
+    let note = format!(
+        "{} other file(s) of this program are not UTF-8 either and were read as Windows-1252: {}{more}",
+        rest.len(),
+        names.join(", ")
+    );
+    if let Some(d) = inputs[*first]
+        .source_mut()
+        .read_diagnostics
+        .iter_mut()
+        .find(|d| d.code == crate::read::GUESSED_ENCODING)
+    {
+        d.notes.push(note);
     }
 }
 

@@ -29,11 +29,11 @@
 mod limits;
 pub(crate) mod map;
 #[cfg(feature = "plcopen")]
-mod text;
+pub(crate) mod text;
 #[cfg(feature = "plcopen")]
-mod translate;
+pub(crate) mod translate;
 #[cfg(feature = "plcopen")]
-mod validate;
+pub(crate) mod validate;
 
 pub use map::SpanMap;
 
@@ -88,6 +88,7 @@ struct Translation {
     map: SpanMap,
     diags: Vec<Diagnostic>,
     pous: Vec<PouInfo>,
+    folders: Vec<(std::ops::Range<usize>, String)>,
 }
 
 /// What happened to one POU of the project.
@@ -120,6 +121,9 @@ pub struct Import {
     /// The POUs left out: one look-up per diagnostic, not a scan of every
     /// POU.
     left_out: LeftOut,
+    /// XML ranges of elements in a folder of the project's tree (LogicLab's
+    /// workspace), with the folder's path, in document order.
+    folders: Vec<(std::ops::Range<usize>, String)>,
 }
 
 /// The POUs left out (not IL) by lower-case name, as an index into the
@@ -151,6 +155,10 @@ pub(crate) fn language_name(tc6: &str) -> &'static str {
         "FBD" => "Function Block Diagram",
         "LD" => "Ladder Diagram",
         "SFC" => "Sequential Function Chart",
+        // LogicLab's names (`<sourceCode type="...">`).
+        "LD2" => "Ladder Diagram",
+        "CFC" => "Continuous Function Chart",
+        "EMBEDDED" => "code embedded in the target's firmware",
         _ => "another language",
     }
 }
@@ -227,6 +235,7 @@ impl Import {
             pous: t.pous,
             map: t.map,
             left_out,
+            folders: t.folders,
         }
     }
 
@@ -252,6 +261,7 @@ impl Import {
                 ),
             ],
             pous: Vec::new(),
+            folders: Vec::new(),
         }
     }
 
@@ -300,6 +310,7 @@ impl Import {
                 map: SpanMap::default(),
                 diags: vec![d],
                 pous: Vec::new(),
+                folders: Vec::new(),
             },
         }
     }
@@ -322,6 +333,18 @@ impl Import {
             ));
         }
         d.span = self.map.to_xml(d.span);
+        // The ranges are elements of the document, in its order, none in
+        // another: the last that starts at or before the place holds it or
+        // none does (one search per diagnostic, not a scan of the folders).
+        let at = d.span.lo as usize;
+        let k = self.folders.partition_point(|(r, _)| r.start <= at);
+        if let Some((_, folder)) = k
+            .checked_sub(1)
+            .and_then(|k| self.folders.get(k))
+            .filter(|(r, _)| r.contains(&at))
+        {
+            d.notes.push(format!("in the project's folder `{folder}`"));
+        }
         // An edit of the translated IL is no edit of the XML.
         d.fixes.clear();
         for (s, _) in &mut d.secondary {

@@ -32,6 +32,16 @@ pub(crate) use crate::ir::{self, types};
 pub use address::parse_address;
 pub use codes::CODES;
 
+/// Whether `name` (any case) is a standard function block or function of
+/// il-std: a POU of that name is refused (IL0104), so the LogicLab import,
+/// which meets them in the vendor's library, renames such a block and
+/// leaves such a function out, and says so.
+#[cfg(feature = "plcopen")]
+pub(crate) fn is_standard_pou(name: &str) -> bool {
+    let key = name.to_ascii_uppercase();
+    stdfb::lookup(&key).is_some() || stdfn::is_std(&key)
+}
+
 /// Check several files as one program (a FUNCTION_BLOCK of one file used in
 /// another) against a standard. Returns one program and one diagnostic
 /// list per file. `cr_steps`: record [`ir::CheckedPou::cr_steps`] (for

@@ -91,3 +91,33 @@ fn the_guess_is_a_warning_of_the_file() {
         "{out}"
     );
 }
+
+#[test]
+fn a_program_of_many_guessed_files_gets_one_warning_naming_the_others() {
+    let files = ["a.exp", "b.exp", "c.exp"].map(|n| {
+        // One PROGRAM per file, each with its own name and an `ä` (0xE4).
+        let mut bytes = b"(* L\xE4nge *)\nPROGRAM P_".to_vec();
+        bytes.extend_from_slice(&n.as_bytes()[..1]);
+        bytes.extend_from_slice(b"\nVAR x : INT; END_VAR\n    LD 1\n    ST x\nEND_PROGRAM\n");
+        il_codegen::read::decode(n, bytes, Default::default())
+    });
+    let checked = files
+        .into_iter()
+        .fold(il_codegen::Program::new(), il_codegen::Program::source)
+        .check();
+    let guesses: Vec<(usize, &il_codegen::Diagnostic)> = checked
+        .diagnostics()
+        .iter()
+        .enumerate()
+        .flat_map(|(k, d)| d.iter().filter(|d| d.code == "IL0039").map(move |d| (k, d)))
+        .collect();
+    assert_eq!(guesses.len(), 1, "{}", checked.render(false));
+    let (k, d) = guesses[0];
+    assert_eq!(k, 0);
+    assert_eq!(
+        d.notes,
+        [
+            "2 other file(s) of this program are not UTF-8 either and were read as Windows-1252: `b.exp`, `c.exp`"
+        ]
+    );
+}

@@ -19,6 +19,8 @@ mod front_end_robustness;
 mod golden_emit;
 mod ir_operators;
 mod ir_size;
+#[cfg(feature = "plcopen")]
+mod logiclab;
 mod pipeline_snippet;
 #[cfg(feature = "plcopen")]
 mod plcopen_corpus;

@@ -6,6 +6,8 @@ mod pous;
 mod types;
 mod vars;
 
+pub(crate) use pous::escape;
+
 use std::collections::HashMap;
 use std::ops::Range;
 
@@ -28,6 +30,9 @@ pub(crate) struct Translation {
     pub map: SpanMap,
     pub diags: Vec<Diagnostic>,
     pub pous: Vec<PouInfo>,
+    /// XML ranges of elements in a folder of the project's tree, with the
+    /// folder's path (LogicLab's workspace; PLCopen has none).
+    pub folders: Vec<(Range<usize>, String)>,
 }
 
 /// The elementary types as TC6 spells them (elements without content).
@@ -137,8 +142,9 @@ fn not_plcopen(root: Node, at: Span) -> Diagnostic {
     )
     .with_label("not PLCopen's `<project>`")
     .with_note(
-        "the IL compiler reads IL source text and PLCopen TC6 XML projects \
-         (`<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">`, as Beremiz, OpenPLC and CODESYS export them); \
+        "the IL compiler reads IL source text, PLCopen TC6 XML projects \
+         (`<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">`, as Beremiz, OpenPLC and CODESYS export them) \
+         and LogicLab / Arduino PLC IDE projects (`<plcProject>`, `.plcprj`); \
          a file whose text starts with `<` is read as XML whatever its name",
     )
 }
@@ -157,6 +163,11 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
         left_out: LeftOut::default(),
     };
     let root = doc.root_element();
+    // An Axel LogicLab / Arduino PLC IDE project or library: its own
+    // schema, its own translation (same parser, limits and map).
+    if crate::logiclab::is_root(root) {
+        return crate::logiclab::translate(doc, xml);
+    }
     if !is_plcopen_root(root) {
         let at = t.tag(root);
         t.diags.push(not_plcopen(root, at));
@@ -198,6 +209,7 @@ impl<'a, 'i> Tr<'a, 'i> {
             map,
             diags: self.diags,
             pous: self.pous,
+            folders: Vec::new(),
         }
     }
 

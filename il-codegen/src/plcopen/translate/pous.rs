@@ -144,38 +144,10 @@ impl Tr<'_, '_> {
     /// then another POU) or swallow what follows (an unclosed `(*`). When
     /// it does, report it at the place in the body.
     fn stays_in_its_pou(&mut self, start: (usize, usize), name: &str, lang: Node) -> bool {
-        let text = &self.w.text[start.0..];
-        let (toks, _) = lexer::lex(text);
-        let structural = |t: &Tok| {
-            matches!(
-                t,
-                Tok::Pou(_)
-                    | Tok::EndPou(_)
-                    | Tok::Type
-                    | Tok::EndType
-                    | Tok::Configuration
-                    | Tok::EndConfiguration
-                    | Tok::Orphan
-            )
-        };
-        let mut it = toks.iter().filter(|(_, t, _)| structural(t));
-        let first_ok = matches!(it.next(), Some((0, Tok::Pou(_), _)));
-        let end = it.next();
-        let extra = it.next();
-        let end_is_last = matches!(end, Some((_, Tok::EndPou(_), _)))
-            && toks.last().map(|(lo, _, _)| *lo) == end.map(|(lo, _, _)| *lo);
-        if first_ok && end_is_last && extra.is_none() {
+        let Err(at) = escape(&self.w, start.0) else {
             return true;
-        }
-        // The first token that does not belong, else the body's tag.
-        let at = match (end_is_last, end, extra) {
-            (true, _, Some((lo, _, hi))) | (false, Some((lo, _, hi)), _) => {
-                let lo = self.w.xml_at(start.0 + lo);
-                let hi = self.w.xml_at(start.0 + hi).max(lo);
-                Span::new(lo, hi)
-            }
-            _ => self.tag(lang),
         };
+        let at = at.unwrap_or_else(|| self.tag(lang));
         self.diags.push(
             Diagnostic::error(
                 BODY_ESCAPES,
@@ -189,4 +161,44 @@ impl Tr<'_, '_> {
         );
         false
     }
+}
+
+/// Whether the POU written into `w` since byte `start` lexes as one POU:
+/// its body (copied as it is) must not end it early (`END_PROGRAM` then
+/// another POU) or swallow what follows (an unclosed `(*`). `Err` holds
+/// the XML span of the first token that does not belong, when there is
+/// one. The LogicLab import checks its bodies with it too.
+pub(crate) fn escape(w: &Writer, start: usize) -> Result<(), Option<Span>> {
+    let text = &w.text[start..];
+    let (toks, _) = lexer::lex(text);
+    let structural = |t: &Tok| {
+        matches!(
+            t,
+            Tok::Pou(_)
+                | Tok::EndPou(_)
+                | Tok::Type
+                | Tok::EndType
+                | Tok::Configuration
+                | Tok::EndConfiguration
+                | Tok::Orphan
+        )
+    };
+    let mut it = toks.iter().filter(|(_, t, _)| structural(t));
+    let first_ok = matches!(it.next(), Some((0, Tok::Pou(_), _)));
+    let end = it.next();
+    let extra = it.next();
+    let end_is_last = matches!(end, Some((_, Tok::EndPou(_), _)))
+        && toks.last().map(|(lo, _, _)| *lo) == end.map(|(lo, _, _)| *lo);
+    if first_ok && end_is_last && extra.is_none() {
+        return Ok(());
+    }
+    // The first token that does not belong.
+    Err(match (end_is_last, end, extra) {
+        (true, _, Some((lo, _, hi))) | (false, Some((lo, _, hi)), _) => {
+            let lo = w.xml_at(start + lo);
+            let hi = w.xml_at(start + hi).max(lo);
+            Some(Span::new(lo, hi))
+        }
+        _ => None,
+    })
 }
