@@ -89,6 +89,7 @@ struct Translation {
     diags: Vec<Diagnostic>,
     pous: Vec<PouInfo>,
     folders: Vec<(std::ops::Range<usize>, String)>,
+    globals: std::collections::HashSet<String>,
 }
 
 /// What happened to one POU of the project.
@@ -124,6 +125,10 @@ pub struct Import {
     /// XML ranges of elements in a folder of the project's tree (LogicLab's
     /// workspace), with the folder's path, in document order.
     folders: Vec<(std::ops::Range<usize>, String)>,
+    /// The upper-case names of the project's globals that are not
+    /// CONSTANT, which LogicLab's POUs see without VAR_EXTERNAL: a FUNCTION
+    /// naming one gets a note (IEC FUNCTIONs have no VAR_EXTERNAL).
+    globals: std::collections::HashSet<String>,
 }
 
 /// The POUs left out (not IL) by lower-case name, as an index into the
@@ -236,6 +241,7 @@ impl Import {
             map: t.map,
             left_out,
             folders: t.folders,
+            globals: t.globals,
         }
     }
 
@@ -262,6 +268,7 @@ impl Import {
             ],
             pous: Vec::new(),
             folders: Vec::new(),
+            globals: Default::default(),
         }
     }
 
@@ -311,6 +318,7 @@ impl Import {
                 diags: vec![d],
                 pous: Vec::new(),
                 folders: Vec::new(),
+                globals: Default::default(),
             },
         }
     }
@@ -330,6 +338,11 @@ impl Import {
                 p.kind,
                 language_name(&p.language),
                 p.language
+            ));
+        }
+        if d.code == "IL0101" && self.globals.contains(&word.to_ascii_uppercase()) {
+            d.notes.push(format!(
+                "`{word}` is a global of this project: a PROGRAM or FUNCTION_BLOCK sees it, a FUNCTION does not (IEC FUNCTIONs have no VAR_EXTERNAL): pass it as an input"
             ));
         }
         d.span = self.map.to_xml(d.span);
