@@ -17,8 +17,9 @@
 //! with a warning (IL0204).
 //!
 //! A source is XML by its text ([`crate::pipeline::is_xml`]: it starts
-//! with `<`), or by a `.xml` name; XML whose root is not PLCopen's
-//! `<project>` is one error (IL0202) naming its root.
+//! with `<`), or by a `.xml` name; a LogicLab root (`<plcProject>`,
+//! `<plcLibrary>`) goes to [`crate::logiclab`], with the same parser and
+//! map; XML whose root is neither is one error (IL0202) naming its root.
 //!
 //! Reading XML is the `plcopen` feature (roxmltree and the translation): on
 //! by default in il-codegen, off by default in il-macros (an `il!` user who
@@ -48,7 +49,7 @@ pub mod codes {
     MALFORMED_XML = "IL0201", "malformed XML",
         "The file is not well-formed XML, so it cannot be read as a PLCopen project. The message gives the line and column where the XML parser stopped.\n\n    <pou name=\"Main\" pouType=\"program\">\n      <body><IL><xhtml:p>LD a</IL></body>   <!-- </xhtml:p> missing -->";
     BAD_PROJECT = "IL0202", "not a valid PLCopen project",
-        "The XML is well-formed but is not a PLCopen TC6 project, or lacks something one must have. A source whose text starts with `<` (after a byte order mark and blank space) is read as XML whatever its name, so another tool's XML (a SoMachine Basic `.smbp`, a TwinCAT `.TcPOU`) gets this one error, which names its root element and namespace: the compiler reads IL text and PLCopen TC6 projects, whose root is `<project>` in PLCopen's namespace (`http://www.plcopen.org/xml/tc6_0201`, `tc6_0200`) or in none. Export such a program as PLCopen XML or as IL text. Inside a project, the error is a POU without `name` or `pouType`, a variable without `<type>`, a FUNCTION without `<returnType>`.\n\n    <?xml version=\"1.0\" encoding=\"utf-8\"?>\n    <ProjectDescriptor>   <!-- SoMachine Basic's root, not PLCopen's <project> -->\n\n    <pou name=\"Main\">   <!-- pouType=\"program\" missing -->";
+        "The XML is well-formed but is not a PLCopen TC6 project, or lacks something one must have. A source whose text starts with `<` (after a byte order mark and blank space) is read as XML whatever its name, so another tool's XML (a SoMachine Basic `.smbp`, a TwinCAT `.TcPOU`) gets this one error, which names its root element and namespace: the compiler reads IL text, PLCopen TC6 projects, whose root is `<project>` in PLCopen's namespace (`http://www.plcopen.org/xml/tc6_0201`, `tc6_0200`) or in none, and LogicLab / Arduino PLC IDE projects and libraries (`<plcProject>`, `<plcLibrary>`: IL0420 ...). Export such a program as PLCopen XML or as IL text. Inside a project, the error is a POU without `name` or `pouType`, a variable without `<type>`, a FUNCTION without `<returnType>`.\n\n    <?xml version=\"1.0\" encoding=\"utf-8\"?>\n    <ProjectDescriptor>   <!-- SoMachine Basic's root, not PLCopen's <project> -->\n\n    <pou name=\"Main\">   <!-- pouType=\"program\" missing -->";
     NOT_IL = "IL0203", "POU body not in IL",
         "Only POUs whose body is Instruction List (`<body><IL>`) are translated. A POU in Structured Text, FBD, LD or SFC is left out with this warning; the other POUs still compile. A POU that uses a left-out one gets an `unknown type` error.\n\n    <pou name=\"CounterST\" pouType=\"functionBlock\">\n      <body><ST><xhtml:p>Cnt := Cnt + 1;</xhtml:p></ST></body>";
     NOT_TRANSLATED = "IL0204", "PLCopen element left out",
