@@ -92,12 +92,17 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
     }
     // In document order, for the look-up by position.
     folders.sort_by_key(|(r, _): &(std::ops::Range<usize>, String)| r.start);
+    let globals = (p.globals.iter().enumerate())
+        .filter(|(k, g)| sel.globals[*k] && g.class != read::Class::Constant)
+        .map(|(_, g)| g.name.to_ascii_uppercase())
+        .collect();
     Translation {
         text,
         map,
         diags: lx.diags,
         pous,
         folders,
+        globals,
     }
 }
 

@@ -12,7 +12,9 @@ use crate::plcopen::Import;
 pub enum Input {
     /// IL text.
     Il(SourceFile),
-    /// A PLCopen TC6 XML project, translated to IL.
+    /// An XML project translated to IL: PLCopen TC6, or a LogicLab /
+    /// Arduino PLC IDE project (`<plcProject>`, [`crate::logiclab`]), by
+    /// its root.
     PlcOpen(Box<Import>),
     /// A bare instruction list, compiled as the body of a PROGRAM.
     Snippet(Box<Snippet>),

@@ -17,8 +17,9 @@
 //! with a warning (IL0204).
 //!
 //! A source is XML by its text ([`crate::pipeline::is_xml`]: it starts
-//! with `<`), or by a `.xml` name; XML whose root is not PLCopen's
-//! `<project>` is one error (IL0202) naming its root.
+//! with `<`), or by a `.xml` name; a LogicLab root (`<plcProject>`,
+//! `<plcLibrary>`) goes to [`crate::logiclab`], with the same parser and
+//! map; XML whose root is neither is one error (IL0202) naming its root.
 //!
 //! Reading XML is the `plcopen` feature (roxmltree and the translation): on
 //! by default in il-codegen, off by default in il-macros (an `il!` user who
@@ -48,7 +49,7 @@ pub mod codes {
     MALFORMED_XML = "IL0201", "malformed XML",
         "The file is not well-formed XML, so it cannot be read as a PLCopen project. The message gives the line and column where the XML parser stopped.\n\n    <pou name=\"Main\" pouType=\"program\">\n      <body><IL><xhtml:p>LD a</IL></body>   <!-- </xhtml:p> missing -->";
     BAD_PROJECT = "IL0202", "not a valid PLCopen project",
-        "The XML is well-formed but is not a PLCopen TC6 project, or lacks something one must have. A source whose text starts with `<` (after a byte order mark and blank space) is read as XML whatever its name, so another tool's XML (a SoMachine Basic `.smbp`, a TwinCAT `.TcPOU`) gets this one error, which names its root element and namespace: the compiler reads IL text and PLCopen TC6 projects, whose root is `<project>` in PLCopen's namespace (`http://www.plcopen.org/xml/tc6_0201`, `tc6_0200`) or in none. Export such a program as PLCopen XML or as IL text. Inside a project, the error is a POU without `name` or `pouType`, a variable without `<type>`, a FUNCTION without `<returnType>`.\n\n    <?xml version=\"1.0\" encoding=\"utf-8\"?>\n    <ProjectDescriptor>   <!-- SoMachine Basic's root, not PLCopen's <project> -->\n\n    <pou name=\"Main\">   <!-- pouType=\"program\" missing -->";
+        "The XML is well-formed but is not a PLCopen TC6 project, or lacks something one must have. A source whose text starts with `<` (after a byte order mark and blank space) is read as XML whatever its name, so another tool's XML (a SoMachine Basic `.smbp`, a TwinCAT `.TcPOU`) gets this one error, which names its root element and namespace: the compiler reads IL text, PLCopen TC6 projects, whose root is `<project>` in PLCopen's namespace (`http://www.plcopen.org/xml/tc6_0201`, `tc6_0200`) or in none, and LogicLab / Arduino PLC IDE projects and libraries (`<plcProject>`, `<plcLibrary>`: IL0420 ...). Export such a program as PLCopen XML or as IL text. Inside a project, the error is a POU without `name` or `pouType`, a variable without `<type>`, a FUNCTION without `<returnType>`.\n\n    <?xml version=\"1.0\" encoding=\"utf-8\"?>\n    <ProjectDescriptor>   <!-- SoMachine Basic's root, not PLCopen's <project> -->\n\n    <pou name=\"Main\">   <!-- pouType=\"program\" missing -->";
     NOT_IL = "IL0203", "POU body not in IL",
         "Only POUs whose body is Instruction List (`<body><IL>`) are translated. A POU in Structured Text, FBD, LD or SFC is left out with this warning; the other POUs still compile. A POU that uses a left-out one gets an `unknown type` error.\n\n    <pou name=\"CounterST\" pouType=\"functionBlock\">\n      <body><ST><xhtml:p>Cnt := Cnt + 1;</xhtml:p></ST></body>";
     NOT_TRANSLATED = "IL0204", "PLCopen element left out",
@@ -89,6 +90,7 @@ struct Translation {
     diags: Vec<Diagnostic>,
     pous: Vec<PouInfo>,
     folders: Vec<(std::ops::Range<usize>, String)>,
+    globals: std::collections::HashSet<String>,
 }
 
 /// What happened to one POU of the project.
@@ -124,6 +126,10 @@ pub struct Import {
     /// XML ranges of elements in a folder of the project's tree (LogicLab's
     /// workspace), with the folder's path, in document order.
     folders: Vec<(std::ops::Range<usize>, String)>,
+    /// The upper-case names of the project's globals that are not
+    /// CONSTANT, which LogicLab's POUs see without VAR_EXTERNAL: a FUNCTION
+    /// naming one gets a note (IEC FUNCTIONs have no VAR_EXTERNAL).
+    globals: std::collections::HashSet<String>,
 }
 
 /// The POUs left out (not IL) by lower-case name, as an index into the
@@ -236,6 +242,7 @@ impl Import {
             map: t.map,
             left_out,
             folders: t.folders,
+            globals: t.globals,
         }
     }
 
@@ -262,6 +269,7 @@ impl Import {
             ],
             pous: Vec::new(),
             folders: Vec::new(),
+            globals: Default::default(),
         }
     }
 
@@ -311,6 +319,7 @@ impl Import {
                 diags: vec![d],
                 pous: Vec::new(),
                 folders: Vec::new(),
+                globals: Default::default(),
             },
         }
     }
@@ -330,6 +339,11 @@ impl Import {
                 p.kind,
                 language_name(&p.language),
                 p.language
+            ));
+        }
+        if d.code == "IL0101" && self.globals.contains(&word.to_ascii_uppercase()) {
+            d.notes.push(format!(
+                "`{word}` is a global of this project: a PROGRAM or FUNCTION_BLOCK sees it, a FUNCTION does not (IEC FUNCTIONs have no VAR_EXTERNAL): pass it as an input"
             ));
         }
         d.span = self.map.to_xml(d.span);

@@ -435,3 +435,17 @@ fn a_project_of_many_pous_checks_in_linear_steps() {
         "8x the POUs took {ratio:.1}x the steps ({s1} → {s8})"
     );
 }
+
+#[test]
+fn a_function_naming_a_global_is_told_why_it_does_not_see_it() {
+    let main = "<globalVars><group name=\"G\"><var name=\"g\" type=\"INT\"/></group></globalVars><functions><function name=\"F\"><returnValue>INT</returnValue><vars><inputVars><var name=\"a\" type=\"INT\"/></inputVars></vars><sourceCode type=\"IL\"><![CDATA[\n\tLD\tg\n\tST\tF\n]]></sourceCode></function></functions>";
+    let c = check(project(main, ""));
+    let d = &c.diagnostics()[0];
+    assert_eq!(d.len(), 1, "{}", c.render(false));
+    assert_eq!(d[0].code, "IL0101");
+    assert!(
+        d[0].notes[0].starts_with("`g` is a global of this project: a PROGRAM or FUNCTION_BLOCK sees it, a FUNCTION does not"),
+        "{:?}",
+        d[0].notes
+    );
+}

@@ -33,6 +33,8 @@ pub(crate) struct Translation {
     /// XML ranges of elements in a folder of the project's tree, with the
     /// folder's path (LogicLab's workspace; PLCopen has none).
     pub folders: Vec<(Range<usize>, String)>,
+    /// Globals that POUs see without VAR_EXTERNAL (LogicLab's), upper case.
+    pub globals: std::collections::HashSet<String>,
 }
 
 /// The elementary types as TC6 spells them (elements without content).
@@ -210,6 +212,7 @@ impl<'a, 'i> Tr<'a, 'i> {
             diags: self.diags,
             pous: self.pous,
             folders: Vec::new(),
+            globals: Default::default(),
         }
     }
 
