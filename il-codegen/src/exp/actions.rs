@@ -18,7 +18,7 @@ use std::collections::HashMap;
 use std::ops::Range;
 
 use super::decls;
-use super::project::Facts;
+use super::facts::Facts;
 use super::scan::{Scanner, Tok, for_lexer, line_firsts};
 use super::{Language, Object};
 

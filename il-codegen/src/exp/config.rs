@@ -4,7 +4,7 @@
 
 use std::ops::Range;
 
-use super::project::Facts;
+use super::facts::{Facts, Task};
 use super::scan::{Scanner, Tok, for_lexer, line_firsts};
 use super::{Import, ObjectKind};
 use crate::ast::PouKind;
@@ -13,15 +13,6 @@ use crate::plcopen::map::Writer;
 /// The name of the CONFIGURATION made of a project's global lists and task
 /// configuration.
 pub(super) const CONFIG_NAME: &str = "Project";
-
-/// A `TASK` of the task configuration and the programs it calls.
-#[derive(Clone, Debug)]
-pub(super) struct Task {
-    /// `TASK t (PRIORITY := 1, INTERVAL := T#200ms);`
-    decl: Range<usize>,
-    name: String,
-    programs: Vec<(String, String, Range<usize>)>,
-}
 
 pub(super) fn collect_tasks(imports: &[&mut Import], facts: &mut Facts) {
     facts.plc_prg = imports.iter().any(|i| {

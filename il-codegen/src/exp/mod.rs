@@ -29,6 +29,7 @@
 mod actions;
 mod config;
 mod decls;
+mod facts;
 mod project;
 mod scan;
 mod split;

@@ -6,7 +6,7 @@ use std::ops::Range;
 
 use super::actions;
 use super::decls::{self, Block};
-use super::project::Facts;
+use super::facts::Facts;
 use super::scan::{Scanner, Tok, for_lexer};
 use super::{Import, Language, Object, ObjectKind, codes};
 use crate::ast::{PouKind, Span};

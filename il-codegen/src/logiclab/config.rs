@@ -7,8 +7,8 @@ use std::ops::Range;
 use roxmltree::Node;
 
 use super::codes::{BAD_VALUE, SKIPPED, TARGET_GLOBAL};
+use super::lx::{Lx, Selection};
 use super::read::{Class, Project, attr_span, checked, is, kids, tag};
-use super::write::{Lx, Selection};
 use crate::ast::PouKind;
 use crate::diag::Diagnostic;
 use crate::plcopen::text::start_tag;

@@ -7,8 +7,8 @@
 use roxmltree::Node;
 
 use super::codes::{BAD_PROJECT, BAD_VALUE, NOT_IEC_ADDRESS};
+use super::lx::Lx;
 use super::read::{TypeKind, attr_span, checked, is, kid, kids, tag};
-use super::write::Lx;
 use crate::diag::Diagnostic;
 use crate::plcopen::text::{attr_into, content_range, start_tag};
 use crate::plcopen::validate::{self, Kind, shown};

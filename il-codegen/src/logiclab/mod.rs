@@ -42,6 +42,7 @@
 mod config;
 #[cfg(feature = "plcopen")]
 mod decls;
+mod lx;
 #[cfg(feature = "plcopen")]
 mod read;
 #[cfg(feature = "plcopen")]

@@ -9,6 +9,7 @@ use roxmltree::Node;
 
 use super::codes::{BAD_PROJECT, NOT_IL, STANDARD_NAME};
 use super::config::{self, Needs};
+use super::lx::{Lx, Selection};
 use super::read::{self, Pou, Project, attr_span, is, kid, kids, tag};
 use crate::ast::PouKind;
 use crate::diag::Diagnostic;
@@ -19,29 +20,6 @@ use crate::plcopen::text::{attr_into, content_range, decode_content};
 use crate::plcopen::translate::{Translation, escape};
 use crate::plcopen::validate::{self, Kind, shown};
 use crate::syntax::lexer::{self, Tok};
-
-/// The translation under way: the XML, the IL text with its map, the
-/// diagnostics.
-pub(super) struct Lx<'i> {
-    pub xml: &'i str,
-    pub w: Writer,
-    pub diags: Vec<Diagnostic>,
-    /// Function blocks of the project with a standard block's name, by
-    /// upper-case name: the name they are compiled under (`TON_LogicLab`),
-    /// which every variable of that type is written with.
-    pub renamed: HashMap<String, String>,
-    /// The names renamed so in each library, for one warning per library.
-    lib_renamed: Vec<Vec<String>>,
-}
-
-/// Which elements are written, by index into the project's lists.
-pub(super) struct Selection {
-    pub pous: Vec<bool>,
-    pub types: Vec<bool>,
-    pub globals: Vec<bool>,
-    /// The names each IL POU's body uses (upper case), by POU index.
-    pub used: Vec<HashSet<String>>,
-}
 
 pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
     let mut diags = Vec::new();
