@@ -23,6 +23,7 @@ mod host_functions;
 mod hostile;
 mod jumps;
 mod labels_parens;
+mod m221_blocks;
 mod misc_lang;
 mod motor;
 mod new_user;
