@@ -297,7 +297,17 @@ macro_rules! int_field {
         }
     )*};
 }
-int_field!(i16 => INT, i32 => DINT, i64 => LINT, u32 => UDINT, u64 => ULINT);
+// `u16` is WORD or UINT: `tagged` gives a field the type the table names.
+int_field!(i16 => INT, u16 => WORD, i32 => DINT, i64 => LINT, u32 => UDINT, u64 => ULINT);
+
+/// A block field's value with the type il-std's table gives it (a Rust type can stand
+/// for several IEC ones: `u16` for WORD and UINT).
+fn tagged<T: Field>(x: &T, e: Elem) -> Value {
+    match x.to_value() {
+        Value::Int(v, _) => Value::Int(v, e),
+        v => v,
+    }
+}
 
 macro_rules! time_field {
     ($($t:ident => $e:ident),*) => {$(
@@ -358,8 +368,8 @@ macro_rules! std_fbs {
             pub fn fields(&self) -> Vec<(&'static str, Value)> {
                 match self {
                     $(StdFb::$name(_b) => vec![
-                        $((stringify!($i), _b.$i.to_value()),)*
-                        $((stringify!($o), _b.$o.to_value()),)*
+                        $((stringify!($i), tagged(&_b.$i, Elem::$it)),)*
+                        $((stringify!($o), tagged(&_b.$o, Elem::$ot)),)*
                     ],)*
                 }
             }
@@ -376,10 +386,10 @@ macro_rules! std_fbs {
                 match self {
                     $(StdFb::$name(_b) => {
                         $(if field.eq_ignore_ascii_case(stringify!($i)) {
-                            return Some(_b.$i.to_value());
+                            return Some(tagged(&_b.$i, Elem::$it));
                         })*
                         $(if field.eq_ignore_ascii_case(stringify!($o)) {
-                            return Some(_b.$o.to_value());
+                            return Some(tagged(&_b.$o, Elem::$ot));
                         })*
                         None
                     })*

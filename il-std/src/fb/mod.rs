@@ -1,5 +1,5 @@
 //! The standard function blocks of IEC 61131-3 (bistables, edge detection, counters, timers,
-//! real-time clock).
+//! real-time clock), and in [`m221`] the vendor blocks of the Modicon M221.
 //!
 //! Every block is a plain struct with its IEC inputs and outputs as `pub` UPPERCASE fields and
 //! private internal state, and a `call(&mut self, ctx: &mut Cycle)` that runs its body once.
@@ -10,6 +10,7 @@ use crate::cycle::Cycle;
 mod bistable;
 mod counters;
 mod edge;
+pub mod m221;
 mod timers;
 
 // Every block of the modules; the crate root re-exports those of the table
@@ -17,6 +18,7 @@ mod timers;
 pub use bistable::*;
 pub use counters::*;
 pub use edge::*;
+pub use m221::*;
 pub use timers::*;
 
 /// A function block: something with state that is invoked once per `CAL`.

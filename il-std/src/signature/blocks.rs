@@ -60,6 +60,11 @@ macro_rules! std_function_blocks {
             TON (IN: BOOL, PT: TIME) -> (Q: BOOL, ET: TIME);
             TOF (IN: BOOL, PT: TIME) -> (Q: BOOL, ET: TIME);
             RTC (IN: BOOL, PDT: DT) -> (Q: BOOL, CDT: DT);
+            M221_DR (R: BOOL, U: BOOL, S: INT, STEPS: INT, P0: WORD, P1: WORD, P2: WORD, P3: WORD, P4: WORD, P5: WORD, P6: WORD, P7: WORD) -> (F: BOOL, CTRL: WORD, UPD: BOOL);
+            M221_FIFO (R: BOOL, I: BOOL, O: BOOL, IW: INT, OW: INT) -> (E: BOOL, F: BOOL);
+            M221_LIFO (R: BOOL, I: BOOL, O: BOOL, IW: INT, OW: INT) -> (E: BOOL, F: BOOL);
+            M221_SBR (R: BOOL, CU: BOOL, CD: BOOL, X: WORD) -> ();
+            M221_SC (R: BOOL, CU: BOOL, CD: BOOL, X0: WORD, X1: WORD, X2: WORD, X3: WORD, X4: WORD, X5: WORD, X6: WORD, X7: WORD, X8: WORD, X9: WORD, X10: WORD, X11: WORD, X12: WORD, X13: WORD, X14: WORD, X15: WORD) -> ();
         }
     };
 }

@@ -24,6 +24,7 @@ mod hostile;
 mod jumps;
 mod labels_parens;
 mod logiclab;
+mod m221_blocks;
 mod misc_lang;
 mod motor;
 mod new_user;
