@@ -42,6 +42,7 @@
 mod config;
 #[cfg(feature = "plcopen")]
 mod decls;
+#[cfg(feature = "plcopen")]
 mod lx;
 #[cfg(feature = "plcopen")]
 mod read;
