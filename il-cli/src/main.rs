@@ -8,11 +8,13 @@ mod flow;
 mod fmt;
 mod gtkw;
 mod input;
+mod load;
 mod lsp;
 mod plot;
 mod progress;
 mod run;
 mod run_target;
+mod source_map;
 mod wave;
 
 use std::io::{self, IsTerminal};

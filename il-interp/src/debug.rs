@@ -107,8 +107,27 @@ pub struct FrameInfo {
 pub enum Cr {
     /// The value and its type as the checker typed the CR local.
     Value(Value, Ty),
-    /// Undefined, and why (`no value loaded`, `after CAL on line 18`).
-    Undefined(String),
+    /// Undefined, and why.
+    Undefined(Undefined),
+}
+
+/// Why a frame's CR has no value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Undefined {
+    /// Nothing was loaded yet in this call of the body.
+    NothingLoaded,
+    /// A `CAL` on this IL line left it undefined (IEC 61131-3: the checker's IL0108).
+    AfterCal(u32),
+}
+
+impl std::fmt::Display for Undefined {
+    /// `no value loaded`, `after CAL on line 18` (an IL line).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Undefined::NothingLoaded => f.write_str("no value loaded"),
+            Undefined::AfterCal(l) => write!(f, "after CAL on line {l}"),
+        }
+    }
 }
 
 /// A variable (or member, element) to show: its name, value and type.
@@ -204,11 +223,11 @@ impl Here<'_> {
         let (e, _, crs) = self.frame(depth)?;
         let pou = &self.m.prog.pous[e.pou];
         Some(match e.cr {
-            CrNow::Unset => Cr::Undefined("no value loaded".into()),
-            CrNow::AfterCal(l) => Cr::Undefined(format!("after CAL on line {l}")),
+            CrNow::Unset => Cr::Undefined(Undefined::NothingLoaded),
+            CrNow::AfterCal(l) => Cr::Undefined(Undefined::AfterCal(l)),
             CrNow::Slot(i) => match (crs.get(i as usize), pou.cr_types.get(i as usize)) {
                 (Some(v), Some(t)) => Cr::Value(v.clone(), t.clone()),
-                _ => Cr::Undefined("no value loaded".into()),
+                _ => Cr::Undefined(Undefined::NothingLoaded),
             },
         })
     }

@@ -16,6 +16,7 @@ mod faults;
 mod force;
 mod functions;
 mod fuzz;
+mod multi;
 mod picture;
 mod sources;
 
@@ -244,6 +245,17 @@ pub fn var<'a>(vars: &'a [(String, String, String)], name: &str) -> (&'a str, &'
         .find(|v| v.0 == name)
         .unwrap_or_else(|| panic!("no variable {name} in {vars:?}"));
     (&v.1, &v.2)
+}
+
+/// The `flow` request's lines without their `source` (a temporary path).
+pub fn without_source(lines: &Value) -> Value {
+    let mut lines = lines.clone();
+    for l in lines.as_array_mut().into_iter().flatten() {
+        if let Some(o) = l.as_object_mut() {
+            o.remove("source");
+        }
+    }
+    lines
 }
 
 /// A file of `text` in a fresh temporary folder.
