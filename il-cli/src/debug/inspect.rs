@@ -251,17 +251,14 @@ impl Session {
             .and_then(Value::as_str)
             .ok_or("setVariable needs `value`")?;
         let h = r.checked_sub(1).and_then(|i| self.handles.get(i)).cloned();
-        let path = match h {
-            Some(Handle::Section(0, _) | Handle::Image(0)) => name.to_string(),
-            Some(Handle::Path(0, p)) if name.starts_with('[') => format!("{p}{name}"),
-            Some(Handle::Path(0, p)) => format!("{p}.{name}"),
-            Some(
-                Handle::Section(..) | Handle::Path(..) | Handle::Image(..) | Handle::Result(..),
-            ) => {
-                return Err(
-                    "only the innermost frame's variables can be set (the others are in a call)"
-                        .into(),
-                );
+        // Any frame's: an outer frame's variable is written when the call
+        // it is in returns (its view shows the value now).
+        let (depth, path) = match h {
+            Some(Handle::Section(d, _) | Handle::Image(d)) => (d, name.to_string()),
+            Some(Handle::Path(d, p)) if name.starts_with('[') => (d, format!("{p}{name}")),
+            Some(Handle::Path(d, p)) => (d, format!("{p}.{name}")),
+            Some(Handle::Result(_)) => {
+                return Err("a FUNCTION's result is set by its own instructions".into());
             }
             Some(Handle::Globals(_)) => {
                 return Err(
@@ -270,8 +267,8 @@ impl Session {
             }
             _ => return Err(format!("`{name}` cannot be set here")),
         };
-        let v = at.set(&path, value)?;
-        let (_, ty) = at.eval(0, &path)?;
+        let v = at.set_in(depth, &path, value)?;
+        let (_, ty) = at.eval(depth, &path)?;
         let ty = ty.to_string();
         Ok(json!({ "value": shown(&v, &ty), "type": ty }))
     }

@@ -14,6 +14,7 @@ mod breakpoints;
 mod config;
 mod faults;
 mod force;
+mod frames;
 mod functions;
 mod fuzz;
 mod multi;
