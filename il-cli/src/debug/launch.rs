@@ -207,7 +207,6 @@ pub fn parse(args: &Value) -> Result<Launch, String> {
             encoding,
             standard,
             snippet: boolean("snippet")?,
-            ..Front::default()
         },
     })
 }

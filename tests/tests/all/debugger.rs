@@ -102,7 +102,7 @@ fn compiled(x: &impl Visit) -> Shown {
 fn shown(at: &Here<'_>, prefix: &str, externs: &Externs) -> Shown {
     let mut out = Shown::new();
     for (var, value) in at.vars(0) {
-        if var.name.starts_with("__") || !held(&var) {
+        if var.name.starts_with("__") || !held(var) {
             continue;
         }
         let key = if var.kind == VarKind::External {
