@@ -64,7 +64,8 @@ const CLIENT_FIELDS: &[&str] = &[
 ];
 
 /// Parse the arguments of `launch`; an unknown field is an error that names it.
-pub fn parse(args: &Value) -> Result<Launch, String> {
+/// `encoding` reads the files when the launch names no `encoding`.
+pub fn parse(args: &Value, encoding: il_codegen::read::Encoding) -> Result<Launch, String> {
     let Some(obj) = args.as_object() else {
         return Err("launch needs arguments: an object with at least `program`".into());
     };
@@ -115,7 +116,7 @@ pub fn parse(args: &Value) -> Result<Launch, String> {
     let program = paths.join("`, `");
     let files = crate::input::expand(paths.into_iter());
     let encoding = match string("encoding")? {
-        None => il_codegen::read::Encoding::default(),
+        None => encoding,
         Some(e) => il_codegen::read::Encoding::from_label(&e)
             .map_err(|why| format!("launch field `encoding`: {why}"))?,
     };
@@ -265,18 +266,22 @@ mod tests {
     use super::*;
     use serde_json::json;
 
+    fn parse_default(v: &Value) -> Result<Launch, String> {
+        parse(v, Default::default())
+    }
+
     #[test]
     fn unknown_fields_and_bad_values_are_named() {
-        let e = parse(&json!({"program": "a.il", "cylces": 3})).unwrap_err();
+        let e = parse_default(&json!({"program": "a.il", "cylces": 3})).unwrap_err();
         assert!(
             e.contains("`cylces`") && e.contains("did you mean `cycles`"),
             "{e}"
         );
-        assert!(parse(&json!({"program": "a.il", "cycles": 0})).is_err());
-        assert!(parse(&json!({"program": "a.il", "cycles": 2, "set": ["x=1@3"]})).is_err());
-        assert!(parse(&json!({"cycles": 2})).is_err());
-        assert!(parse(&json!(null)).is_err());
-        let l = parse(&json!({
+        assert!(parse_default(&json!({"program": "a.il", "cycles": 0})).is_err());
+        assert!(parse_default(&json!({"program": "a.il", "cycles": 2, "set": ["x=1@3"]})).is_err());
+        assert!(parse_default(&json!({"cycles": 2})).is_err());
+        assert!(parse_default(&json!(null)).is_err());
+        let l = parse_default(&json!({
             "program": "a.il", "type": "ilc", "request": "launch", "name": "x",
             "__sessionId": "1", "set": ["start=TRUE@3"], "cycleTime": "T#20ms",
             "force": {"stop": false}

@@ -103,13 +103,17 @@ pub struct Session {
     quit: bool,
     /// End the adapter (`disconnect`, end of input).
     gone: bool,
+    /// The encoding of a launch that names none (`ilc --encoding X debug`).
+    encoding: il_codegen::read::Encoding,
 }
 
 /// How many flow entries one scan keeps (a long loop keeps its last ones).
 const FLOW_MAX: usize = 4096;
 
 /// `ilc debug`: serve one debug session on stdin/stdout; the exit status.
-pub fn run() -> u8 {
+/// `encoding`: how a launch without an `encoding` field reads its files
+/// (`ilc --encoding X debug`).
+pub fn run(encoding: il_codegen::read::Encoding) -> u8 {
     let (tx, rx) = crossbeam_channel::unbounded();
     let attention = Arc::new(AtomicBool::new(false));
     let flag = Arc::clone(&attention);
@@ -129,7 +133,8 @@ pub fn run() -> u8 {
         }
     });
     let out = Out::new(Box::new(std::io::stdout()));
-    let s = Session::new(out, rx, attention);
+    let mut s = Session::new(out, rx, attention);
+    s.encoding = encoding;
     s.serve();
     0
 }
@@ -157,6 +162,7 @@ impl Session {
             fault: None,
             quit: false,
             gone: false,
+            encoding: Default::default(),
         }
     }
 
@@ -271,7 +277,7 @@ impl Session {
                 .out
                 .error(seq, "launch", "this session has already launched a program");
         }
-        let l = match launch::parse(args) {
+        let l = match launch::parse(args, self.encoding) {
             Ok(l) => l,
             Err(e) => return self.out.error(seq, "launch", &e),
         };

@@ -40,7 +40,13 @@ pub struct Dap {
 
 impl Dap {
     pub fn start() -> Dap {
+        Dap::start_with(&[])
+    }
+
+    /// `ilc ARGS debug`.
+    pub fn start_with(args: &[&str]) -> Dap {
         let mut child = Command::new(env!("CARGO_BIN_EXE_ilc"))
+            .args(args)
             .arg("debug")
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())

@@ -135,6 +135,34 @@ fn a_folder_of_exports_in_windows_1251_stops_in_each_file() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// `program` as a list of files; their encoding from `ilc --encoding`.
+#[test]
+fn a_list_of_files_in_the_commands_encoding() {
+    let counter = COUNTER.replace('ё', "е");
+    let dir = folder("list", &[("counter.exp", &counter), ("main.exp", MAIN)]);
+    let (main, count) = (dir.join("main.exp"), dir.join("counter.exp"));
+    let s = |p: &Path| p.display().to_string();
+    let mut d = Dap::start_with(&["--encoding", "windows-1251"]);
+    d.launch(json!({"program": [s(&count), s(&main)], "cycles": 1}));
+    let b = d.breakpoints(&s(&count), json!([{"line": 7}]));
+    assert_eq!(b[0]["verified"], true);
+    d.ok("configurationDone", json!({}));
+    d.stopped();
+    let st = d.ok("stackTrace", json!({"threadId": 1}));
+    assert_eq!(name(&st["stackFrames"][0]), "counter.exp");
+    assert_eq!(d.eval(2, "msg")["result"], "'Насос'");
+    d.ok("continue", json!({"threadId": 1}));
+    d.event("terminated");
+    d.finish();
+    // A list that is not of paths is the launch's error.
+    let mut d = Dap::start();
+    d.ok("initialize", json!({"adapterID": "ilc"}));
+    let e = d.refused("launch", json!({"program": [s(&main), 3]}));
+    assert!(e.contains("`program`"), "{e}");
+    d.finish();
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// The OWEN project of the corpus: 95 exports in Windows-1251, launched as
 /// its folder, read in the launch's `encoding` (no IL0039 warning that
 /// the files are not UTF-8), and run through.
