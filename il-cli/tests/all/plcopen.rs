@@ -384,3 +384,31 @@ fn run_reports_a_fault_at_the_xml_line_of_the_il_body() {
         "{out}"
     );
 }
+
+/// A scan that never ends (the interpreter's limit of instructions per
+/// scan) is an error placed at the XML line of the IL body too.
+#[test]
+fn run_places_an_endless_scan_at_the_xml_line() {
+    let xml = RATIO.replace(
+        "\n(* the ratio *)\nLD 100\nDIV d\nST q\n",
+        "\ntop: LD q\nADD 1\nST q\nJMP top\n",
+    );
+    let body: Vec<usize> = xml
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| ["top: LD q", "ADD 1", "ST q", "JMP top"].contains(l))
+        .map(|(k, _)| k + 1)
+        .collect();
+    assert_eq!(body, [14, 15, 16, 17]);
+    let p = temp("spin.xml", &xml);
+    let path = p.to_str().unwrap();
+    let o = ilc(&["run", path, "--cycles", "1"]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    let at = err
+        .split_once(&format!("{path}:"))
+        .and_then(|(_, rest)| rest.split(':').next())
+        .and_then(|l| l.parse::<usize>().ok());
+    assert!(at.is_some_and(|l| body.contains(&l)), "{err}");
+    assert!(err.contains("in Ratio: more than"), "{err}");
+}
