@@ -94,10 +94,12 @@ impl Here<'_> {
     pub fn cr(&self, depth: usize) -> Option<Cr> {
         let (e, _, crs) = self.frame(depth)?;
         let pou = &self.m.prog.pous[e.pou];
-        Some(match e.cr {
+        Some(match &e.cr {
             CrNow::Unset => Cr::Undefined(Undefined::NothingLoaded),
-            CrNow::AfterCal(l) => Cr::Undefined(Undefined::AfterCal(l)),
-            CrNow::Slot(i) => match (crs.get(i as usize), pou.cr_types.get(i as usize)) {
+            CrNow::AfterCal(l) => Cr::Undefined(Undefined::AfterCal(*l)),
+            CrNow::Folded => Cr::Undefined(Undefined::Folded),
+            CrNow::Literal(v, t) => Cr::Value(v.clone(), t.clone()),
+            CrNow::Slot(i) => match (crs.get(*i as usize), pou.cr_types.get(*i as usize)) {
                 (Some(v), Some(t)) => Cr::Value(v.clone(), t.clone()),
                 _ => Cr::Undefined(Undefined::NothingLoaded),
             },

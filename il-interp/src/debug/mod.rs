@@ -30,7 +30,7 @@ pub trait Hook: Any + Send {
 }
 
 /// The CR of a frame, as the statements run so far in it left it.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 enum CrNow {
     /// Nothing loaded yet in this call of the body.
     Unset,
@@ -38,6 +38,12 @@ enum CrNow {
     Slot(u32),
     /// A `CAL` on this line left it undefined (IEC 61131-3: the checker's IL0108).
     AfterCal(u32),
+    /// A literal the checker folds into the instruction that uses it
+    /// (`LD 7` is an [`Op::Nop`]: no CR local holds it yet).
+    Folded,
+    /// A literal stored as it was (`LD 7` `ST x`): its value, typed as
+    /// the place it went to (no CR local holds it either).
+    Literal(Value, Ty),
 }
 
 /// One frame of the debugged call stack.
@@ -121,6 +127,9 @@ pub enum Undefined {
     NothingLoaded,
     /// A `CAL` on this IL line left it undefined (IEC 61131-3: the checker's IL0108).
     AfterCal(u32),
+    /// A literal the checker folds into the instruction that uses it
+    /// (`LD 7` before `ADD x`): no value of a type yet.
+    Folded,
 }
 
 impl std::fmt::Display for Undefined {
@@ -129,6 +138,7 @@ impl std::fmt::Display for Undefined {
         match self {
             Undefined::NothingLoaded => f.write_str("no value loaded"),
             Undefined::AfterCal(l) => write!(f, "after CAL on line {l}"),
+            Undefined::Folded => f.write_str("a literal, folded into the instruction that uses it"),
         }
     }
 }
@@ -278,12 +288,24 @@ impl Machine {
             pc += 1;
             let faults = ctx.fault_count();
             let r = self.exec(f, s, labels, ctx);
-            if let Some(top) = self.dbg.0.as_mut().and_then(|d| d.stack.last_mut()) {
-                match &s.op {
-                    Op::SetCr { cr, .. } => top.cr = CrNow::Slot(*cr),
-                    Op::CallFb(_) => top.cr = CrNow::AfterCal(s.line),
-                    _ => {}
+            let now = match &s.op {
+                Op::SetCr { cr, .. } => Some(CrNow::Slot(*cr)),
+                Op::CallFb(_) => Some(CrNow::AfterCal(s.line)),
+                Op::Nop => Some(CrNow::Folded),
+                Op::Store {
+                    place,
+                    value: il_codegen::ir::Value::Const(c),
+                    negate: false,
+                } => {
+                    let ty = self.prog.pous[f.pou].place(*place).ty.clone();
+                    Some(CrNow::Literal(Value::from_const(c), ty))
                 }
+                _ => None,
+            };
+            if let Some(now) = now
+                && let Some(top) = self.dbg.0.as_mut().and_then(|d| d.stack.last_mut())
+            {
+                top.cr = now;
             }
             let fault = if ctx.fault_count() > faults {
                 ctx.faults().last().copied()
