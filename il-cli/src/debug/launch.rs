@@ -113,6 +113,13 @@ pub fn parse(args: &Value, encoding: il_codegen::read::Encoding) -> Result<Launc
             .ok_or("launch field `program` must be a path or a list of paths")?,
         Some(_) => return Err("launch field `program` must be a path or a list of paths".into()),
     };
+    if paths.iter().any(|p| p == "-") {
+        // `ilc run -` reads standard input; here it carries the protocol.
+        return Err(
+            "launch field `program`: `-` (standard input) carries the debug protocol: name a file"
+                .into(),
+        );
+    }
     let program = paths.join("`, `");
     let files = crate::input::expand(paths.into_iter());
     let encoding = match string("encoding")? {
@@ -280,6 +287,11 @@ mod tests {
         assert!(parse_default(&json!({"program": "a.il", "cycles": 0})).is_err());
         assert!(parse_default(&json!({"program": "a.il", "cycles": 2, "set": ["x=1@3"]})).is_err());
         assert!(parse_default(&json!({"cycles": 2})).is_err());
+        assert!(parse_default(&json!({"program": "-"})).is_err());
+        assert!(parse_default(&json!({"program": []})).is_err());
+        let l = parse_default(&json!({"program": ["a.il", "b.il"], "encoding": "koi8-r"})).unwrap();
+        assert_eq!(l.files, ["a.il", "b.il"]);
+        assert!(parse_default(&json!({"program": "a.il", "encoding": "nope"})).is_err());
         assert!(parse_default(&json!(null)).is_err());
         let l = parse_default(&json!({
             "program": "a.il", "type": "ilc", "request": "launch", "name": "x",
