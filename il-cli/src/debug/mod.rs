@@ -492,7 +492,7 @@ impl Default for Base {
 impl Base {
     /// A line of ours (from 1) as the client numbers it.
     pub fn out(self, line: u32) -> u32 {
-        (line + self.line).saturating_sub(1)
+        line.saturating_add(self.line).saturating_sub(1)
     }
     /// A line the client sent, numbered from 1 (`None`: not a line).
     pub fn read(self, line: u64) -> Option<u32> {
