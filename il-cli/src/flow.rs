@@ -83,19 +83,18 @@ pub fn print(
         "\nflow of cycle {cycle} (time {time}): the CR after each line run"
     )?;
     // Each input's text, read once: the file's, or the IL it became.
-    let texts: Vec<Option<String>> = map
-        .files()
-        .iter()
-        .map(|f| {
-            f.il.clone()
-                .or_else(|| std::fs::read_to_string(&f.path).ok())
+    let texts: Vec<Option<String>> = (0..map.files().len())
+        .map(|k| match map.il_of(k) {
+            Some(il) => Some(il.to_string()),
+            None => std::fs::read_to_string(&map.files()[k].path).ok(),
         })
         .collect();
     let source = |pou: &str, l: u32| -> &str {
         let f = map.file_of(pou);
-        let at = match map.files().get(f) {
-            Some(x) if x.il.is_some() => l,
-            _ => map.line(pou, l),
+        let at = if map.il_of(f).is_some() {
+            l
+        } else {
+            map.line(pou, l)
         };
         texts
             .get(f)

@@ -16,8 +16,6 @@ pub struct FileLines {
     /// The user's line of each IL line (index 0 is line 1); `None`: the
     /// same (an IL file).
     map: Option<Vec<u32>>,
-    /// The IL text an input that is not IL became (what `--flow` shows).
-    pub il: Option<String>,
 }
 
 impl FileLines {
@@ -55,24 +53,20 @@ impl SourceMap {
                 Input::Il(f) => FileLines {
                     path: f.name.clone(),
                     map: None,
-                    il: None,
                 },
                 Input::PlcOpen(i) => FileLines {
                     path: i.xml.name.clone(),
                     map: lines(i.xml_lines()),
-                    il: Some(i.il.text.to_string()),
                 },
                 Input::Exp(i) => FileLines {
                     path: i.exp.name.clone(),
                     map: lines(i.exp_lines()),
-                    il: Some(i.il.text.to_string()),
                 },
                 Input::Snippet(s) => {
                     let n = s.il.text.lines().count() + 1;
                     FileLines {
                         path: s.file.name.clone(),
                         map: Some((1..=n).map(|k| s.line_of(k) as u32).collect()),
-                        il: Some(s.il.text.to_string()),
                     }
                 }
             });
@@ -91,6 +85,15 @@ impl SourceMap {
     /// The inputs, in the order given.
     pub fn files(&self) -> &[FileLines] {
         &self.files
+    }
+
+    /// The IL text input `k` became when it is not IL (an XML project, an
+    /// export, a snippet): what `--flow` shows, numbered by its own lines.
+    pub fn il_of(&self, k: usize) -> Option<&str> {
+        match self.inputs.get(k)? {
+            Input::Il(_) => None,
+            other => Some(&other.il_text().text),
+        }
     }
 
     /// The input that holds POU `pou`.
