@@ -60,13 +60,24 @@ async function provideInlineValues(document, viewport) {
     return [];
   }
   const values = [];
-  for (const { line, cr } of flow.lines || []) {
+  for (const { line, cr, source } of flow.lines || []) {
+    // Each line is in the file of its POU (a program may have several).
+    if (source && source.path && !samePath(source.path, document.uri.fsPath)) continue;
     const l = line - 1;
     if (l < viewport.start.line || l > viewport.end.line || l >= document.lineCount) continue;
     const end = document.lineAt(l).range.end;
     values.push(new vscode.InlineValueText(new vscode.Range(end, end), `CR = ${cr}`));
   }
   return values;
+}
+
+// The adapter sends resolved paths (`\\?\C:\...` on Windows).
+function samePath(a, b) {
+  const norm = (p) => {
+    const s = p.replace(/^\\\\\?\\/, "");
+    return process.platform === "win32" ? s.toLowerCase() : s;
+  };
+  return norm(a) === norm(b);
 }
 
 function deactivate() {

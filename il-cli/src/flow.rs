@@ -5,54 +5,26 @@
 
 use std::io::Write;
 
-use il_interp::{Cr, Here, Hook};
+use il_interp::{Cr, Here, Hook, Undefined};
 
-/// The CR a statement left, as shown next to its line: `1 : INT`, or
-/// `undefined (after CAL on line 18)`.
-pub fn cr_text(at: &Here<'_>) -> String {
-    match at.cr(0) {
+use crate::source_map::SourceMap;
+
+/// The CR of frame `depth`, as shown next to its line: `1 : INT`, or
+/// `undefined (after CAL on line 18)`, that line as `line` numbers the
+/// IL lines of the frame's POU (the user's file, the client's base).
+pub fn cr_text(at: &Here<'_>, depth: usize, line: &dyn Fn(&str, u32) -> u32) -> String {
+    match at.cr(depth) {
         Some(Cr::Value(v, t)) => format!("{} : {t}", v.display()),
+        Some(Cr::Undefined(Undefined::AfterCal(l))) => {
+            let pou = at
+                .frames()
+                .get(depth)
+                .map(|f| f.pou.clone())
+                .unwrap_or_default();
+            format!("undefined (after CAL on line {})", line(&pou, l))
+        }
         Some(Cr::Undefined(why)) => format!("undefined ({why})"),
         None => String::new(),
-    }
-}
-
-/// The lines of the file the user wrote for the interpreter's IL lines:
-/// the same for an IL file; for a PLCopen XML project, the XML line each
-/// IL line came from; for a snippet, the line before the added header.
-/// It keeps the IL text of an input that is not IL (the text shown by `--flow`).
-#[derive(Clone, Debug, Default)]
-pub struct SourceLines(Option<Vec<u32>>, Option<String>);
-
-impl SourceLines {
-    /// The map of the (single) input of a checked program.
-    pub fn of(checked: &il_codegen::pipeline::Checked) -> SourceLines {
-        use il_codegen::pipeline::Input;
-        match checked.inputs().first() {
-            Some(Input::PlcOpen(i)) => SourceLines(
-                Some(i.xml_lines().into_iter().map(|l| l as u32).collect()),
-                Some(i.il.text.to_string()),
-            ),
-            Some(Input::Snippet(s)) => {
-                let n = s.il.text.lines().count() + 1;
-                SourceLines(
-                    Some((1..=n).map(|k| s.line_of(k) as u32).collect()),
-                    Some(s.il.text.to_string()),
-                )
-            }
-            _ => SourceLines(None, None),
-        }
-    }
-
-    /// The user's line of IL line `line`.
-    pub fn get(&self, line: u32) -> u32 {
-        match &self.0 {
-            None => line,
-            Some(m) => m
-                .get((line as usize).wrapping_sub(1))
-                .copied()
-                .unwrap_or(line),
-        }
     }
 }
 
@@ -60,10 +32,10 @@ impl SourceLines {
 pub type Lines = std::collections::VecDeque<(String, u32, String)>;
 
 /// Record the statement `at` just ran; the lines of a long loop are kept
-/// up to `max` (the last ones).
-pub fn record(lines: &mut Lines, at: &Here<'_>, max: usize) {
+/// up to `max` (the last ones). `line` numbers a line a message names.
+pub fn record(lines: &mut Lines, at: &Here<'_>, max: usize, line: &dyn Fn(&str, u32) -> u32) {
     {
-        let cr = cr_text(at);
+        let cr = cr_text(at, 0, line);
         let line = at.line();
         match lines.back_mut() {
             // A line of several statements: the CR after its last one.
@@ -78,9 +50,9 @@ pub fn record(lines: &mut Lines, at: &Here<'_>, max: usize) {
     }
 }
 
-/// The recorder `ilc run --flow` attaches for the last scan.
-#[derive(Default)]
-pub struct Recorder(pub Lines);
+/// The recorder `ilc run --flow` attaches for the last scan, with the
+/// program's lines (a CAL's line in a message is the user's).
+pub struct Recorder(pub Lines, pub SourceMap);
 
 /// Lines `ilc run --flow` keeps of one scan.
 const MAX: usize = 100_000;
@@ -90,16 +62,18 @@ impl Hook for Recorder {
         Ok(())
     }
     fn after(&mut self, at: &mut Here<'_>) -> Result<(), String> {
-        record(&mut self.0, at, MAX);
+        let map = &self.1;
+        record(&mut self.0, at, MAX, &|pou, l| map.line(pou, l));
         Ok(())
     }
 }
 
-/// Print the flow of scan `cycle`: one line per IL line run, with the
-/// source text when it is at hand.
+/// Print the flow of scan `cycle`: one line per IL line run, numbered by
+/// the user's file, with the source text when it is at hand (the IL text
+/// an XML project, an export or a snippet became, numbered by its own lines).
 pub fn print(
     rec: &Recorder,
-    (source, lines): (Option<&str>, &SourceLines),
+    map: &SourceMap,
     cycle: u64,
     time: &str,
     out: &mut dyn Write,
@@ -108,29 +82,37 @@ pub fn print(
         out,
         "\nflow of cycle {cycle} (time {time}): the CR after each line run"
     )?;
-    // The IL text: the file's, or the IL an XML project or a snippet became
-    // (then numbered by the interpreter's lines).
-    let (text, il): (Vec<&str>, bool) = match (&lines.1, source) {
-        (Some(il), _) => (il.lines().collect(), true),
-        (None, s) => (s.map(|s| s.lines().collect()).unwrap_or_default(), false),
+    // Each input's text, read once: the file's, or the IL it became.
+    let texts: Vec<Option<String>> = (0..map.files().len())
+        .map(|k| match map.il_of(k) {
+            Some(il) => Some(il.to_string()),
+            None => std::fs::read_to_string(&map.files()[k].path).ok(),
+        })
+        .collect();
+    let source = |pou: &str, l: u32| -> &str {
+        let f = map.file_of(pou);
+        let at = if map.il_of(f).is_some() {
+            l
+        } else {
+            map.line(pou, l)
+        };
+        texts
+            .get(f)
+            .and_then(|t| t.as_deref())
+            .and_then(|t| t.lines().nth((at as usize).wrapping_sub(1)))
+            .map_or("", |s| strip_comment(s.trim()))
     };
-    let at = |l: u32| if il { l } else { lines.get(l) };
     let pw = rec.0.iter().map(|l| l.0.len()).max().unwrap_or(0);
     let sw = rec
         .0
         .iter()
-        .filter_map(|l| text.get((at(l.1) as usize).wrapping_sub(1)))
-        .map(|s| strip_comment(s.trim()).chars().count())
+        .map(|l| source(&l.0, l.1).chars().count())
         .max()
         .unwrap_or(0)
         .min(40);
     for (pou, il_line, cr) in &rec.0 {
-        let line = lines.get(*il_line);
-        let src = text
-            .get((at(*il_line) as usize).wrapping_sub(1))
-            .map(|s| s.trim())
-            .unwrap_or("");
-        let src = strip_comment(src);
+        let line = map.line(pou, *il_line);
+        let src = source(pou, *il_line);
         writeln!(out, "{pou:<pw$} {line:>4}  {src:<sw$}  {cr}")?;
     }
     Ok(())

@@ -8,11 +8,13 @@ mod flow;
 mod fmt;
 mod gtkw;
 mod input;
+mod load;
 mod lsp;
 mod plot;
 mod progress;
 mod run;
 mod run_target;
+mod source_map;
 mod wave;
 
 use std::io::{self, IsTerminal};
@@ -133,7 +135,16 @@ fn main() -> ExitCode {
                 .copied()
                 .unwrap_or_default(),
         )),
-        Some(("debug", _)) => ExitCode::from(debug::run()),
+        Some(("debug", m)) => {
+            // `ilc --encoding X debug`: the encoding of launches that name none.
+            let encoding = m
+                .try_get_one::<il_codegen::read::Encoding>("encoding")
+                .ok()
+                .flatten()
+                .copied()
+                .unwrap_or_default();
+            ExitCode::from(debug::run(encoding))
+        }
         Some(("explain", m)) => {
             let code = m.get_one::<String>("code").map_or("", String::as_str);
             match il_codegen::codes::lookup(code) {

@@ -148,20 +148,6 @@ pub struct Options {
     pub flow: bool,
 }
 
-/// The checked programs of several files as one.
-fn join(many: &[il_codegen::ir::Program]) -> il_codegen::ir::Program {
-    let mut out = il_codegen::ir::Program {
-        file: many.first().map(|p| p.file.clone()).unwrap_or_default(),
-        ..Default::default()
-    };
-    for p in many {
-        out.types.extend(p.types.iter().cloned());
-        out.pous.extend(p.pous.iter().cloned());
-        out.configs.extend(p.configs.iter().cloned());
-    }
-    out
-}
-
 /// Run and print; the exit status (0 fine, 1 error).
 pub fn run(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> u8 {
     match simulate(o, out, err) {
@@ -176,94 +162,37 @@ pub fn run(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> u8 {
 }
 
 fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(), String> {
-    // An XML file (by its text or a `.xml` name) is a PLCopen project: its
-    // IL POUs are run.
-    let files = o
-        .files
-        .iter()
-        .map(|f| o.front.read(f))
-        .collect::<Result<Vec<_>, _>>()?;
-    let program = o.front.program(files);
-    let checked = program.check();
-    let _ = write!(err, "{}", checked.render(o.color));
-    let file = o.files.join("`, `");
-    let Some(progs) = checked.ir() else {
-        return Err(format!("`{file}` has errors; nothing was run"));
-    };
-    // Several files are one program: the interpreter finds POUs, types and
-    // configurations by name, so their checked programs are joined.
-    let joined;
-    let prog = match progs {
-        [one] => one,
-        many => {
-            joined = join(many);
-            &joined
-        }
-    };
-    let lines = crate::flow::SourceLines::of(&checked);
-    if o.program.is_some() && o.config.is_some() {
-        return Err("give --program or --config, not both".to_string());
-    }
-    let programs: Vec<&str> = prog
-        .pous
-        .iter()
-        .filter(|p| p.kind == il_codegen::ir::PouKind::Program)
-        .map(|p| p.name.as_str())
-        .collect();
-    // A CONFIGURATION is run when named, or when no --program is given and
-    // the file's only CONFIGURATION is the one thing to run (a file with one
-    // PROGRAM runs that program, as it did before configurations could run).
-    // A CODESYS project with a task configuration runs it, as the PLC does.
-    let exp_tasks = checked.inputs().iter().any(|i| match i {
-        il_codegen::Input::Exp(e) => e
-            .objects()
-            .iter()
-            .any(|ob| ob.kind == il_codegen::exp::ObjectKind::Tasks),
-        _ => false,
+    // The loader `ilc debug` shares: an XML file (by its text or a `.xml`
+    // name) is a PLCopen project whose IL POUs run, an `.EXP` a CODESYS
+    // export; several files are one program.
+    let (rendered, loaded) = crate::load::load(&crate::load::Request {
+        files: &o.files,
+        front: o.front,
+        program: o.program.as_deref(),
+        config: o.config.as_deref(),
+        names: ("--program", "--config"),
+        color: o.color,
     });
-    let config = match (&o.config, &o.program, prog.configs.as_slice()) {
-        (Some(c), _, _) => Some(c.clone()),
-        (None, None, [one]) if programs.len() != 1 || exp_tasks => Some(one.name.clone()),
-        _ => None,
-    };
-    if let Some(c) = config {
-        let mut m = ConfigMachine::new(prog, &c)?;
-        return scan_table(o, (prog, &lines), &mut m, out, err);
+    let _ = write!(err, "{rendered}");
+    let crate::load::Loaded { prog, map, chosen } = loaded?;
+    match chosen {
+        crate::load::Chosen::Config(c) => {
+            let mut m = ConfigMachine::new(&prog, &c)?;
+            m.set_locate(map.locator());
+            scan_table(o, (&prog, &map), &mut m, out, err)
+        }
+        crate::load::Chosen::Pou(name) => {
+            let mut m = Machine::new(&prog, &name)?;
+            m.set_locate(map.locator());
+            scan_table(o, (&prog, &map), &mut m, out, err)
+        }
     }
-    let name = match &o.program {
-        Some(n) => n.clone(),
-        None => match programs.as_slice() {
-            [one] => one.to_string(),
-            [] => {
-                return Err(format!(
-                    "`{file}` has no PROGRAM; name a FUNCTION_BLOCK with --program"
-                ));
-            }
-            many => {
-                let configs: Vec<&str> = prog.configs.iter().map(|c| c.name.as_str()).collect();
-                let also = if configs.is_empty() {
-                    String::new()
-                } else {
-                    format!(
-                        ", or a CONFIGURATION ({}) with --config",
-                        configs.join(", ")
-                    )
-                };
-                return Err(format!(
-                    "`{file}` has several PROGRAMs ({}); choose one with --program{also}",
-                    many.join(", ")
-                ));
-            }
-        },
-    };
-    let mut m = Machine::new(prog, &name)?;
-    scan_table(o, (prog, &lines), &mut m, out, err)
 }
 
 /// Scan `m` `o.cycles` times and print the table (and the waves).
 fn scan_table<T: Target>(
     o: &Options,
-    (prog, lines): (&il_codegen::ir::Program, &crate::flow::SourceLines),
+    (prog, map): (&il_codegen::ir::Program, &crate::source_map::SourceMap),
     m: &mut T,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -352,7 +281,10 @@ fn scan_table<T: Target>(
         // Only the last scan runs through the hook: the others keep the
         // interpreter's speed.
         if o.flow && k == o.cycles {
-            m.set_hook(Some(Box::new(crate::flow::Recorder::default())));
+            m.set_hook(Some(Box::new(crate::flow::Recorder(
+                Default::default(),
+                map.clone(),
+            ))));
         }
         m.scan(&mut ctx)
             .map_err(|e| format!("cycle {k} (time {}): {e}", fmt_dur(now.0)))?;
@@ -371,9 +303,13 @@ fn scan_table<T: Target>(
             let recent: Vec<_> = ctx.faults().copied().collect();
             let shown = recent.len().min(new as usize);
             for f in &recent[recent.len() - shown..] {
+                // At the line of the file the user wrote (an XML
+                // project's or an export's, not the IL they became).
                 fault_lines.push(format!(
-                    "cycle {k}: fault {:?} in {} at IL line {}",
-                    f.kind, f.pou, f.line
+                    "cycle {k}: fault {:?} in {} at {}",
+                    f.kind,
+                    f.pou,
+                    map.place(f.pou, f.line)
                 ));
             }
             faults_seen = ctx.fault_count();
@@ -416,13 +352,7 @@ fn scan_table<T: Target>(
     out.write_all(text.as_bytes())
         .map_err(|e| format!("cannot write the table: {e}"))?;
     if let Some((k, time, rec)) = flow {
-        // The lines' text when the program is one file (the recorded lines
-        // carry no file: with several, only their numbers are shown).
-        let source = match &o.files[..] {
-            [one] => std::fs::read_to_string(one).ok(),
-            _ => None,
-        };
-        crate::flow::print(&rec, (source.as_deref(), lines), k, &time, out)
+        crate::flow::print(&rec, map, k, &time, out)
             .map_err(|e| format!("cannot write the flow: {e}"))?;
     }
     for f in &fault_lines {

@@ -65,6 +65,9 @@ impl Machine {
             self.dbg_call(f, None, name);
         }
         let (r, outs, back) = self.call_function(p, vals, refs, ctx)?;
+        if self.dbg.on() {
+            self.dbg_return(f);
+        }
         // VAR_IN_OUT: copy-in/copy-out (`UserCall::inouts`).
         for (place, v) in inouts.iter().zip(back) {
             self.write(f, place, v, ctx, line)?;
@@ -244,6 +247,9 @@ impl Machine {
                     self.dbg_call(f, Some((inst, &steps)), "");
                 }
                 self.call_instance(i, ctx)?;
+                if self.dbg.on() {
+                    self.dbg_return(f);
+                }
                 back.extend(ref_idx.iter().map(|&k| i.vars[k].clone()));
             }
             _ => return Err("internal: CAL of a non-instance".into()),

@@ -113,6 +113,11 @@ impl ConfigMachine {
         self.m.set_hook(hook);
     }
 
+    /// [`Machine::set_locate`], for every program of the configuration.
+    pub fn set_locate(&mut self, f: crate::Locate) {
+        self.m.set_locate(f);
+    }
+
     /// [`Machine::take_hook`].
     pub fn take_hook<T: crate::Hook>(&mut self) -> Option<Box<T>> {
         self.m.take_hook()

@@ -7,14 +7,19 @@ use il_std::{Cycle, FaultKind};
 
 impl Machine {
     /// An error of statement `s` with the place in the source it comes from
-    /// (`file:line:col: in POU: ...`); an error from a nested call already
-    /// has its own, and keeps it.
+    /// (`file:line:col: in POU: ...`, placed by [`Machine::set_locate`]
+    /// when one is given); an error from a nested call already has its
+    /// own, and keeps it.
     pub(crate) fn located(&mut self, pou: usize, s: &Stmt, e: String) -> String {
         if std::mem::replace(&mut self.error_located, true) {
             return e;
         }
         let (file, name) = (&self.prog.file, &self.prog.pous[pou].name);
-        format!("{file}:{}:{}: in {name}: {e}", s.line, s.col)
+        let at = match &self.locate.0 {
+            Some(f) => f(name, s.line, s.col),
+            None => format!("{file}:{}:{}", s.line, s.col),
+        };
+        format!("{at}: in {name}: {e}")
     }
 
     pub(crate) fn run(&mut self, f: &mut Frame, ctx: &mut Cycle) -> Result<(), String> {

@@ -33,7 +33,7 @@ mod values;
 pub use config::ConfigMachine;
 pub use config_host::ConfigPlace;
 pub use constants::parse_literal;
-pub use debug::{Cr, FrameInfo, Here, Hook, Shown, type_of_value};
+pub use debug::{Cr, FrameInfo, Here, Hook, Shown, Undefined, type_of_value};
 pub use host::HostPlace;
 pub use host_fn::HostFn;
 /// The runtime the interpreter runs on (for front ends without their own dependency).
@@ -124,6 +124,27 @@ pub struct Machine {
     hosts: host_fn::HostFns,
     /// The debugger attached, if any ([`Machine::set_hook`]).
     dbg: debug::Dbg,
+    /// Where an error's statement is in the user's files ([`Machine::set_locate`]).
+    locate: Places,
+}
+
+/// Places a statement in the file the user wrote: (POU, IL line, IL
+/// column) → `file:line:col`. A program read from a PLCopen XML project or
+/// a CODESYS export runs IL its import made; its errors point into the
+/// XML or the export (the pipeline's span maps), not into that IL.
+pub type Locate = std::sync::Arc<dyn Fn(&str, u32, u32) -> String + Send + Sync>;
+
+#[derive(Clone, Default)]
+struct Places(Option<Locate>);
+
+impl std::fmt::Debug for Places {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(if self.0.is_some() {
+            "mapped"
+        } else {
+            "IL lines"
+        })
+    }
 }
 
 /// The state of one call of a POU: its variables, current results and saves.
@@ -198,7 +219,14 @@ impl Machine {
             error_located: false,
             hosts: Default::default(),
             dbg: Default::default(),
+            locate: Places::default(),
         }
+    }
+
+    /// Name the place of an error's statement with `f` instead of the
+    /// program's file and its IL line and column.
+    pub fn set_locate(&mut self, f: Locate) {
+        self.locate = Places(Some(f));
     }
 
     /// Run `f` for each call of the host FUNCTION `name` (an `{extern}`

@@ -6,7 +6,8 @@ use std::collections::HashMap;
 
 use serde_json::{Value, json};
 
-use crate::flow::SourceLines;
+use super::Base;
+use crate::source_map::SourceMap;
 use il_codegen::ir::{Op, Program};
 
 /// `hitCondition`: `5` (from the 5th hit on), `>= 5`, `> 5`, `== 5`, `% 5`
@@ -71,8 +72,9 @@ pub struct Bp {
 
 #[derive(Default)]
 pub struct Breakpoints {
-    /// By the user's line (verified: a line that holds an instruction).
-    pub lines: HashMap<u32, Vec<Bp>>,
+    /// By input (its index in the program's files) and the user's line
+    /// there, from 1 (verified: a line that holds an instruction).
+    pub lines: HashMap<(usize, u32), Vec<Bp>>,
     /// By POU name in upper case.
     pub functions: HashMap<String, Vec<Bp>>,
     /// Scan breakpoints (a function breakpoint named `scan N`): id and scan.
@@ -82,17 +84,19 @@ pub struct Breakpoints {
     next_id: i64,
 }
 
-/// The lines of each POU that hold an instruction, sorted, with the POU's name.
-fn instruction_lines((prog, src): (&Program, &SourceLines)) -> Vec<(String, Vec<u32>)> {
+/// The lines of each POU of input `file` that hold an instruction,
+/// sorted, with the POU's name.
+fn instruction_lines((prog, src): (&Program, &SourceMap), file: usize) -> Vec<(String, Vec<u32>)> {
     let mut pous: Vec<(String, Vec<u32>)> = prog
         .pous
         .iter()
+        .filter(|p| src.file_of(&p.name) == file)
         .map(|p| {
             let mut lines: Vec<u32> = p
                 .body
                 .iter()
                 .filter(|s| !matches!(s.op, Op::Label(_) | Op::Nop))
-                .map(|s| src.get(s.line))
+                .map(|s| src.line(&p.name, s.line))
                 .collect();
             lines.sort_unstable();
             lines.dedup();
@@ -104,18 +108,14 @@ fn instruction_lines((prog, src): (&Program, &SourceLines)) -> Vec<(String, Vec<
     pous
 }
 
-/// Where a breakpoint asked for on `line` goes: the line itself when it
-/// holds an instruction, else the next one that does in the same POU (the
-/// first POU whose last instruction is not above `line`), or why none.
-pub fn place(prog: (&Program, &SourceLines), line: u32) -> Result<u32, String> {
-    for (_, lines) in instruction_lines(prog) {
-        if let Some(&at) = lines.iter().find(|&&l| l >= line) {
-            return Ok(at);
-        }
-    }
-    Err(format!(
-        "line {line} holds no instruction, and no instruction of a POU follows it"
-    ))
+/// Where a breakpoint asked for on `line` (from 1) of input `file` goes:
+/// the line itself when it holds an instruction, else the next one that
+/// does in the same POU (the first POU whose last instruction is not
+/// above `line`), or `None`.
+pub fn place(prog: (&Program, &SourceMap), file: usize, line: u32) -> Option<u32> {
+    instruction_lines(prog, file)
+        .into_iter()
+        .find_map(|(_, lines)| lines.into_iter().find(|&l| l >= line))
 }
 
 impl Breakpoints {
@@ -146,19 +146,45 @@ impl Breakpoints {
         })
     }
 
-    /// `setBreakpoints` for the launched file `launched`: the answer's body.
+    /// `setBreakpoints` for one file of the launched program (they replace
+    /// that file's): the answer's body, lines numbered as the client does.
     pub fn set_lines(
         &mut self,
-        prog: (&Program, &SourceLines),
-        launched: &str,
+        prog: (&Program, &SourceMap),
+        base: Base,
         args: &Value,
-    ) -> Value {
+    ) -> Result<Value, String> {
         let path = args
             .pointer("/source/path")
             .and_then(Value::as_str)
             .unwrap_or("");
-        let same = same_file(path, launched);
-        self.lines.clear();
+        let files = prog.1.files();
+        let file = match files.iter().position(|f| same_file(path, &f.path)) {
+            Some(k) => k,
+            // No path: the program's only file.
+            None if path.is_empty() && files.len() == 1 => 0,
+            None if path.is_empty() => {
+                return Err(
+                    "setBreakpoints needs `source.path`: the program has several files".into(),
+                );
+            }
+            None => {
+                let names: Vec<&str> = files.iter().map(|f| f.path.as_str()).collect();
+                let mut out = Vec::new();
+                for b in args
+                    .get("breakpoints")
+                    .and_then(Value::as_array)
+                    .into_iter()
+                    .flatten()
+                {
+                    let id = self.id();
+                    out.push(json!({ "id": id, "verified": false, "line": b.get("line"),
+                        "message": format!("`{path}` is not a file of the launched program (`{}`)", names.join("`, `")) }));
+                }
+                return Ok(json!({ "breakpoints": out }));
+            }
+        };
+        self.lines.retain(|(f, _), _| *f != file);
         let asked = args
             .get("breakpoints")
             .and_then(Value::as_array)
@@ -166,32 +192,28 @@ impl Breakpoints {
             .unwrap_or_default();
         let mut out = Vec::new();
         for b in &asked {
+            // Messages name lines as the client numbers them.
             let line = b.get("line").and_then(Value::as_u64).unwrap_or(0);
             let refuse = |id: i64, why: String| json!({ "id": id, "verified": false, "line": line, "message": why });
             let id = self.id();
-            if !same {
-                out.push(refuse(
-                    id,
-                    format!("`{path}` is not the launched program `{launched}`"),
-                ));
-                continue;
-            }
-            let Ok(line32) = u32::try_from(line) else {
+            let Some(from1) = base.read(line) else {
                 out.push(refuse(id, format!("there is no line {line}")));
                 continue;
             };
-            let at = match place(prog, line32) {
-                Ok(at) => at,
-                Err(why) => {
-                    out.push(refuse(id, why));
-                    continue;
-                }
+            let Some(at) = place(prog, file, from1) else {
+                out.push(refuse(
+                    id,
+                    format!(
+                        "line {line} holds no instruction, and no instruction of a POU follows it"
+                    ),
+                ));
+                continue;
             };
             match self.bp(id, b) {
                 Ok(bp) => {
-                    self.lines.entry(at).or_default().push(bp);
-                    let mut v = json!({ "id": id, "verified": true, "line": at });
-                    if at != line32 {
+                    self.lines.entry((file, at)).or_default().push(bp);
+                    let mut v = json!({ "id": id, "verified": true, "line": base.out(at) });
+                    if at != from1 {
                         v["message"] =
                             json!(format!("moved from line {line}: it holds no instruction"));
                     }
@@ -200,12 +222,17 @@ impl Breakpoints {
                 Err(why) => out.push(refuse(id, why)),
             }
         }
-        json!({ "breakpoints": out })
+        Ok(json!({ "breakpoints": out }))
     }
 
     /// `setFunctionBreakpoints`: stop at the first instruction of a POU,
     /// or (named `scan N`) at the first instruction of scan N.
-    pub fn set_functions(&mut self, (prog, src): (&Program, &SourceLines), args: &Value) -> Value {
+    pub fn set_functions(
+        &mut self,
+        (prog, src): (&Program, &SourceMap),
+        base: Base,
+        args: &Value,
+    ) -> Value {
         self.functions.clear();
         self.scans.clear();
         let asked = args
@@ -232,12 +259,13 @@ impl Breakpoints {
             let id = self.id();
             match (pou, self.bp(id, b)) {
                 (Some(p), Ok(bp)) if !p.body.is_empty() => {
-                    let line = src.get(p.body[0].line);
+                    let line = base.out(src.line(&p.name, p.body[0].line));
                     self.functions
                         .entry(p.name.to_ascii_uppercase())
                         .or_default()
                         .push(bp);
-                    out.push(json!({ "id": id, "verified": true, "line": line }));
+                    out.push(json!({ "id": id, "verified": true, "line": line,
+                        "source": super::source(src.path_of(&p.name)) }));
                 }
                 (Some(p), Ok(_)) => out.push(json!({ "id": id, "verified": false,
                     "message": format!("{} has no instructions", p.name) })),
@@ -268,7 +296,7 @@ fn scan_number(name: &str) -> Option<Option<u64>> {
 /// Whether a client's path names the launched file (both as given, or both
 /// resolved: clients send absolute paths, launch.json may hold a relative one).
 fn same_file(a: &str, b: &str) -> bool {
-    if a.is_empty() || a == b {
+    if a == b {
         return true;
     }
     match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {

@@ -49,19 +49,7 @@ impl Session {
         self.handles.len()
     }
 
-    fn source(&self) -> Value {
-        let path = self.launch.as_ref().map_or("", |l| l.program.as_str());
-        let abs = std::fs::canonicalize(path)
-            .map(|p| p.display().to_string())
-            .unwrap_or_else(|_| path.to_string());
-        let name = std::path::Path::new(path)
-            .file_name()
-            .map_or(path.to_string(), |n| n.to_string_lossy().into_owned());
-        json!({ "name": name, "path": abs })
-    }
-
     pub(super) fn stack_trace(&mut self, at: &Here<'_>) -> Result<Value, String> {
-        let source = self.source();
         let frames: Vec<Value> = at
             .frames()
             .iter()
@@ -72,8 +60,11 @@ impl Session {
                 } else {
                     format!("{} ({})", f.path, f.pou)
                 };
-                let line = self.src.get(f.line);
-                json!({ "id": d + 1, "name": name, "source": source, "line": line, "column": 1 })
+                // Each frame in the file of its POU, at the user's line.
+                let source = super::source(self.src.path_of(&f.pou));
+                let line = self.base.out(self.src.line(&f.pou, f.line));
+                json!({ "id": d + 1, "name": name, "source": source, "line": line,
+                        "column": self.base.column })
             })
             .collect();
         Ok(json!({ "stackFrames": frames, "totalFrames": frames.len() }))
@@ -133,9 +124,13 @@ impl Session {
         let mut out = Vec::new();
         match h {
             Handle::Cr(depth) => {
+                let (src, base) = (&self.src, self.base);
                 let (value, ty) = match at.cr(depth) {
                     Some(Cr::Value(v, t)) => (v.display(), t.to_string()),
-                    Some(Cr::Undefined(why)) => (format!("undefined ({why})"), "undefined".into()),
+                    Some(Cr::Undefined(_)) => (
+                        crate::flow::cr_text(at, depth, &|pou, l| base.out(src.line(pou, l))),
+                        "undefined".into(),
+                    ),
                     None => ("undefined".into(), "undefined".into()),
                 };
                 out.push(
@@ -151,7 +146,7 @@ impl Session {
             }
             Handle::Flow => {
                 for (pou, line, cr) in &self.flow {
-                    let line = self.src.get(*line);
+                    let line = self.base.out(self.src.line(pou, *line));
                     out.push(json!({ "name": format!("{pou} line {line}"), "value": cr, "variablesReference": 0 }));
                 }
             }
@@ -256,17 +251,14 @@ impl Session {
             .and_then(Value::as_str)
             .ok_or("setVariable needs `value`")?;
         let h = r.checked_sub(1).and_then(|i| self.handles.get(i)).cloned();
-        let path = match h {
-            Some(Handle::Section(0, _) | Handle::Image(0)) => name.to_string(),
-            Some(Handle::Path(0, p)) if name.starts_with('[') => format!("{p}{name}"),
-            Some(Handle::Path(0, p)) => format!("{p}.{name}"),
-            Some(
-                Handle::Section(..) | Handle::Path(..) | Handle::Image(..) | Handle::Result(..),
-            ) => {
-                return Err(
-                    "only the innermost frame's variables can be set (the others are in a call)"
-                        .into(),
-                );
+        // Any frame's: an outer frame's variable is written when the call
+        // it is in returns (its view shows the value now).
+        let (depth, path) = match h {
+            Some(Handle::Section(d, _) | Handle::Image(d)) => (d, name.to_string()),
+            Some(Handle::Path(d, p)) if name.starts_with('[') => (d, format!("{p}{name}")),
+            Some(Handle::Path(d, p)) => (d, format!("{p}.{name}")),
+            Some(Handle::Result(_)) => {
+                return Err("a FUNCTION's result is set by its own instructions".into());
             }
             Some(Handle::Globals(_)) => {
                 return Err(
@@ -275,8 +267,8 @@ impl Session {
             }
             _ => return Err(format!("`{name}` cannot be set here")),
         };
-        let v = at.set(&path, value)?;
-        let (_, ty) = at.eval(0, &path)?;
+        let v = at.set_in(depth, &path, value)?;
+        let (_, ty) = at.eval(depth, &path)?;
         let ty = ty.to_string();
         Ok(json!({ "value": shown(&v, &ty), "type": ty }))
     }

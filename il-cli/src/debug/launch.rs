@@ -5,15 +5,18 @@
 use serde_json::Value;
 
 use crate::input::Front;
+use crate::load::Chosen;
 use crate::run::{SetArg, parse_set, parse_step};
-use il_codegen::ir::{PouKind, Program};
+use il_codegen::ir::Program;
 use il_interp::il_std::TIME;
 use il_interp::{ConfigMachine, Machine};
 
 /// What `launch` asks for.
 #[derive(Debug)]
 pub struct Launch {
-    /// The IL or PLCopen XML file.
+    /// The files to run (IL, PLCopen XML, CODESYS `.EXP`), folders expanded.
+    pub files: Vec<String>,
+    /// `program` as given (what messages name).
     pub program: String,
     pub pou: Option<String>,
     pub configuration: Option<String>,
@@ -32,6 +35,7 @@ pub struct Launch {
 /// The fields of our launch configuration.
 const FIELDS: &[&str] = &[
     "program",
+    "encoding",
     "pou",
     "configuration",
     "cycles",
@@ -60,7 +64,8 @@ const CLIENT_FIELDS: &[&str] = &[
 ];
 
 /// Parse the arguments of `launch`; an unknown field is an error that names it.
-pub fn parse(args: &Value) -> Result<Launch, String> {
+/// `encoding` reads the files when the launch names no `encoding`.
+pub fn parse(args: &Value, encoding: il_codegen::read::Encoding) -> Result<Launch, String> {
     let Some(obj) = args.as_object() else {
         return Err("launch needs arguments: an object with at least `program`".into());
     };
@@ -92,8 +97,36 @@ pub fn parse(args: &Value) -> Result<Launch, String> {
             Some(_) => Err(format!("launch field `{k}` must be true or false")),
         }
     };
-    let program =
-        string("program")?.ok_or("launch needs `program`: the IL or PLCopen file to run")?;
+    // One path (a file or a folder) or a list of them.
+    let paths: Vec<String> = match obj.get("program") {
+        None | Some(Value::Null) => {
+            return Err(
+                "launch needs `program`: the IL, PLCopen XML or .EXP file (or folder) to run"
+                    .into(),
+            );
+        }
+        Some(Value::String(s)) => vec![s.clone()],
+        Some(Value::Array(items)) if !items.is_empty() => items
+            .iter()
+            .map(|v| v.as_str().map(str::to_string))
+            .collect::<Option<_>>()
+            .ok_or("launch field `program` must be a path or a list of paths")?,
+        Some(_) => return Err("launch field `program` must be a path or a list of paths".into()),
+    };
+    if paths.iter().any(|p| p == "-") {
+        // `ilc run -` reads standard input; here it carries the protocol.
+        return Err(
+            "launch field `program`: `-` (standard input) carries the debug protocol: name a file"
+                .into(),
+        );
+    }
+    let program = paths.join("`, `");
+    let files = crate::input::expand(paths.into_iter());
+    let encoding = match string("encoding")? {
+        None => encoding,
+        Some(e) => il_codegen::read::Encoding::from_label(&e)
+            .map_err(|why| format!("launch field `encoding`: {why}"))?,
+    };
     let cycles = match obj.get("cycles") {
         None | Some(Value::Null) => None,
         Some(v) => match v.as_u64() {
@@ -168,6 +201,7 @@ pub fn parse(args: &Value) -> Result<Launch, String> {
         return Err("give `pou` or `configuration`, not both".into());
     }
     Ok(Launch {
+        files,
         program,
         pou,
         configuration,
@@ -178,9 +212,9 @@ pub fn parse(args: &Value) -> Result<Launch, String> {
         stop_on_entry: boolean("stopOnEntry")?,
         real_time: boolean("realTime")?,
         front: Front {
+            encoding,
             standard,
             snippet: boolean("snippet")?,
-            ..Front::default()
         },
     })
 }
@@ -191,60 +225,45 @@ pub enum Target {
     Config(Box<ConfigMachine>),
 }
 
-/// What [`load`] makes: the checked program, the machine, the user's line
-/// of each IL line, and the warnings (rendered).
+/// What [`load`] makes: the checked program, the machine, where its
+/// lines are in the user's files, and the warnings (rendered).
 pub struct Loaded {
     pub prog: Program,
     pub target: Target,
-    pub lines: crate::flow::SourceLines,
+    pub lines: crate::source_map::SourceMap,
     pub warnings: String,
 }
 
-/// The checked program, or the diagnostics that stop it (rendered).
+/// The checked program, or the diagnostics that stop it (rendered), loaded
+/// as `ilc run` loads it.
 pub fn load(l: &Launch) -> Result<Loaded, String> {
-    if std::path::Path::new(&l.program).is_dir() {
-        return Err(format!(
-            "`{}` is a folder: name one of its files in `program` (the debugger runs one file)",
-            l.program
-        ));
-    }
-    let file = l.front.read(&l.program)?;
-    let checked = l.front.program(vec![file]).check();
-    let rendered = checked.render(false);
-    let Some([prog]) = checked.ir() else {
-        return Err(format!(
-            "{rendered}`{}` has errors; nothing was run",
-            l.program
-        ));
-    };
-    let target = match (&l.pou, &l.configuration) {
-        (_, Some(c)) => Target::Config(Box::new(ConfigMachine::new(prog, c)?)),
-        (Some(p), None) => Target::Pou(Box::new(Machine::new(prog, p)?)),
-        (None, None) => {
-            let programs: Vec<&str> = prog
-                .pous
-                .iter()
-                .filter(|p| p.kind == PouKind::Program)
-                .map(|p| p.name.as_str())
-                .collect();
-            match (programs.as_slice(), prog.configs.as_slice()) {
-                (_, [one]) if programs.len() != 1 => {
-                    Target::Config(Box::new(ConfigMachine::new(prog, &one.name)?))
-                }
-                ([one], _) => Target::Pou(Box::new(Machine::new(prog, one)?)),
-                _ => {
-                    return Err(format!(
-                        "`{}` has no single PROGRAM or CONFIGURATION to run: name one with `pou` or `configuration`",
-                        l.program
-                    ));
-                }
-            }
+    let (rendered, loaded) = crate::load::load(&crate::load::Request {
+        files: &l.files,
+        front: l.front,
+        program: l.pou.as_deref(),
+        config: l.configuration.as_deref(),
+        names: ("`pou`", "`configuration`"),
+        color: false,
+    });
+    let loaded = loaded.map_err(|e| format!("{rendered}{e}"))?;
+    let prog = &loaded.prog;
+    // A scan's error points into the user's file (an XML project's line).
+    let target = match &loaded.chosen {
+        Chosen::Config(c) => {
+            let mut m = ConfigMachine::new(prog, c).map_err(|e| format!("{rendered}{e}"))?;
+            m.set_locate(loaded.map.locator());
+            Target::Config(Box::new(m))
+        }
+        Chosen::Pou(p) => {
+            let mut m = Machine::new(prog, p).map_err(|e| format!("{rendered}{e}"))?;
+            m.set_locate(loaded.map.locator());
+            Target::Pou(Box::new(m))
         }
     };
     Ok(Loaded {
-        prog: prog.clone(),
         target,
-        lines: crate::flow::SourceLines::of(&checked),
+        prog: loaded.prog,
+        lines: loaded.map,
         warnings: rendered,
     })
 }
@@ -254,18 +273,27 @@ mod tests {
     use super::*;
     use serde_json::json;
 
+    fn parse_default(v: &Value) -> Result<Launch, String> {
+        parse(v, Default::default())
+    }
+
     #[test]
     fn unknown_fields_and_bad_values_are_named() {
-        let e = parse(&json!({"program": "a.il", "cylces": 3})).unwrap_err();
+        let e = parse_default(&json!({"program": "a.il", "cylces": 3})).unwrap_err();
         assert!(
             e.contains("`cylces`") && e.contains("did you mean `cycles`"),
             "{e}"
         );
-        assert!(parse(&json!({"program": "a.il", "cycles": 0})).is_err());
-        assert!(parse(&json!({"program": "a.il", "cycles": 2, "set": ["x=1@3"]})).is_err());
-        assert!(parse(&json!({"cycles": 2})).is_err());
-        assert!(parse(&json!(null)).is_err());
-        let l = parse(&json!({
+        assert!(parse_default(&json!({"program": "a.il", "cycles": 0})).is_err());
+        assert!(parse_default(&json!({"program": "a.il", "cycles": 2, "set": ["x=1@3"]})).is_err());
+        assert!(parse_default(&json!({"cycles": 2})).is_err());
+        assert!(parse_default(&json!({"program": "-"})).is_err());
+        assert!(parse_default(&json!({"program": []})).is_err());
+        let l = parse_default(&json!({"program": ["a.il", "b.il"], "encoding": "koi8-r"})).unwrap();
+        assert_eq!(l.files, ["a.il", "b.il"]);
+        assert!(parse_default(&json!({"program": "a.il", "encoding": "nope"})).is_err());
+        assert!(parse_default(&json!(null)).is_err());
+        let l = parse_default(&json!({
             "program": "a.il", "type": "ilc", "request": "launch", "name": "x",
             "__sessionId": "1", "set": ["start=TRUE@3"], "cycleTime": "T#20ms",
             "force": {"stop": false}

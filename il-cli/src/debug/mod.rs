@@ -79,8 +79,11 @@ pub struct Session {
     launch: Option<launch::Launch>,
     target: Option<launch::Target>,
     prog: Option<Arc<Program>>,
-    /// The user's line of each IL line the interpreter reports.
-    src: crate::flow::SourceLines,
+    /// Where the interpreter's IL lines are in the user's files.
+    src: crate::source_map::SourceMap,
+    /// The client's numbering (`initialize`: `linesStartAt1`,
+    /// `columnsStartAt1`): 1 or 0 for the first line and column.
+    base: Base,
     bps: Breakpoints,
     mode: Mode,
     /// The last statement the hook saw before it ran: depth, pc, line.
@@ -100,13 +103,17 @@ pub struct Session {
     quit: bool,
     /// End the adapter (`disconnect`, end of input).
     gone: bool,
+    /// The encoding of a launch that names none (`ilc --encoding X debug`).
+    encoding: il_codegen::read::Encoding,
 }
 
 /// How many flow entries one scan keeps (a long loop keeps its last ones).
 const FLOW_MAX: usize = 4096;
 
 /// `ilc debug`: serve one debug session on stdin/stdout; the exit status.
-pub fn run() -> u8 {
+/// `encoding`: how a launch without an `encoding` field reads its files
+/// (`ilc --encoding X debug`).
+pub fn run(encoding: il_codegen::read::Encoding) -> u8 {
     let (tx, rx) = crossbeam_channel::unbounded();
     let attention = Arc::new(AtomicBool::new(false));
     let flag = Arc::clone(&attention);
@@ -126,7 +133,8 @@ pub fn run() -> u8 {
         }
     });
     let out = Out::new(Box::new(std::io::stdout()));
-    let s = Session::new(out, rx, attention);
+    let mut s = Session::new(out, rx, attention);
+    s.encoding = encoding;
     s.serve();
     0
 }
@@ -141,6 +149,7 @@ impl Session {
             target: None,
             prog: None,
             src: Default::default(),
+            base: Base::default(),
             bps: Breakpoints::default(),
             mode: Mode::Run,
             last: None,
@@ -153,6 +162,7 @@ impl Session {
             fault: None,
             quit: false,
             gone: false,
+            encoding: Default::default(),
         }
     }
 
@@ -243,7 +253,15 @@ impl Session {
     /// Requests before the run starts.
     fn setup(&mut self, seq: i64, command: &str, args: &Value) {
         match command {
-            "initialize" => self.out.ok(seq, command, capabilities()),
+            "initialize" => {
+                // Lines and columns count from 1 unless the client says not.
+                let from1 = |k: &str| args.get(k).and_then(Value::as_bool).unwrap_or(true);
+                self.base = Base {
+                    line: u32::from(from1("linesStartAt1")),
+                    column: u32::from(from1("columnsStartAt1")),
+                };
+                self.out.ok(seq, command, capabilities())
+            }
             "launch" => self.launch(seq, args),
             "configurationDone" => {
                 self.configured = true;
@@ -259,7 +277,7 @@ impl Session {
                 .out
                 .error(seq, "launch", "this session has already launched a program");
         }
-        let l = match launch::parse(args) {
+        let l = match launch::parse(args, self.encoding) {
             Ok(l) => l,
             Err(e) => return self.out.error(seq, "launch", &e),
         };
@@ -307,16 +325,16 @@ impl Session {
                 self.out
                     .error(seq, command, "the session is already set up")
             }
-            "setBreakpoints" => match (&self.prog, &self.launch) {
-                (Some(p), Some(l)) => {
-                    let body = self.bps.set_lines((p, &self.src), &l.program, args);
-                    self.out.ok(seq, command, body);
-                }
-                _ => self.out.error(seq, command, "launch a program first"),
+            "setBreakpoints" => match &self.prog {
+                Some(p) => match self.bps.set_lines((p, &self.src), self.base, args) {
+                    Ok(body) => self.out.ok(seq, command, body),
+                    Err(e) => self.out.error(seq, command, &e),
+                },
+                None => self.out.error(seq, command, "launch a program first"),
             },
             "setFunctionBreakpoints" => match &self.prog {
                 Some(p) => {
-                    let body = self.bps.set_functions((p, &self.src), args);
+                    let body = self.bps.set_functions((p, &self.src), self.base, args);
                     self.out.ok(seq, command, body);
                 }
                 None => self.out.error(seq, command, "launch a program first"),
@@ -421,7 +439,7 @@ impl Session {
     fn flow_lines(&self) -> Value {
         let mut lines: Vec<(&str, u32, &str)> = Vec::new();
         for (pou, line, cr) in &self.flow {
-            let line = self.src.get(*line);
+            let line = self.base.out(self.src.line(pou, *line));
             match lines.iter_mut().find(|(p, l, _)| *p == pou && *l == line) {
                 Some(x) => x.2 = cr,
                 None => lines.push((pou, line, cr)),
@@ -429,7 +447,10 @@ impl Session {
         }
         let lines: Vec<Value> = lines
             .into_iter()
-            .map(|(pou, line, cr)| json!({ "pou": pou, "line": line, "cr": cr }))
+            .map(|(pou, line, cr)| {
+                let path = self.src.path_of(pou);
+                json!({ "pou": pou, "line": line, "cr": cr, "source": source(path) })
+            })
             .collect();
         json!({ "scan": self.scan, "lines": lines })
     }
@@ -453,6 +474,43 @@ impl Session {
     fn attention(&self) -> bool {
         self.attention.swap(false, Ordering::Acquire)
     }
+}
+
+/// How the client numbers lines and columns: the number of the first.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Base {
+    pub line: u32,
+    pub column: u32,
+}
+
+impl Default for Base {
+    fn default() -> Base {
+        Base { line: 1, column: 1 }
+    }
+}
+
+impl Base {
+    /// A line of ours (from 1) as the client numbers it.
+    pub fn out(self, line: u32) -> u32 {
+        line.saturating_add(self.line).saturating_sub(1)
+    }
+    /// A line the client sent, numbered from 1 (`None`: not a line).
+    pub fn read(self, line: u64) -> Option<u32> {
+        let l = u32::try_from(line).ok()?.checked_add(1 - self.line)?;
+        (l >= 1).then_some(l)
+    }
+}
+
+/// A DAP `Source` of a path: its name and its absolute path (clients
+/// compare these with the files they have open).
+pub fn source(path: &str) -> Value {
+    let abs = std::fs::canonicalize(path)
+        .map(|p| p.display().to_string())
+        .unwrap_or_else(|_| path.to_string());
+    let name = std::path::Path::new(path)
+        .file_name()
+        .map_or(path.to_string(), |n| n.to_string_lossy().into_owned());
+    json!({ "name": name, "path": abs })
 }
 
 /// What the adapter supports (the `initialize` response).

@@ -84,8 +84,11 @@ impl Session {
         } else {
             String::new()
         };
-        let src_line = self.src.get(line);
-        let lines = self.bps.lines.get_mut(&src_line).into_iter().flatten();
+        let key = {
+            let pou = &at.pou().name;
+            (self.src.file_of(pou), self.src.line(pou, line))
+        };
+        let lines = self.bps.lines.get_mut(&key).into_iter().flatten();
         let funcs = self
             .bps
             .functions
@@ -133,11 +136,19 @@ impl Session {
     }
 
     fn after_statement(&mut self, at: &mut Here<'_>) -> Result<(), String> {
-        crate::flow::record(&mut self.flow, at, FLOW_MAX);
+        let (src, base) = (&self.src, self.base);
+        crate::flow::record(&mut self.flow, at, FLOW_MAX, &|pou, l| {
+            base.out(src.line(pou, l))
+        });
         if self.bps.faults
             && let Some(f) = at.fault()
         {
-            let text = format!("{:?} in {} at line {}", f.kind, f.pou, self.src.get(f.line));
+            let path = self.src.path_of(f.pou);
+            let name = std::path::Path::new(path)
+                .file_name()
+                .map_or(path.into(), |n| n.to_string_lossy());
+            let line = self.base.out(self.src.line(f.pou, f.line));
+            let text = format!("{:?} in {} at line {line} of {name}", f.kind, f.pou);
             return self.stop(at, "exception", Some(text), Vec::new());
         }
         Ok(())

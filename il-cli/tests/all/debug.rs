@@ -14,8 +14,10 @@ mod breakpoints;
 mod config;
 mod faults;
 mod force;
+mod frames;
 mod functions;
 mod fuzz;
+mod multi;
 mod picture;
 mod sources;
 
@@ -38,7 +40,13 @@ pub struct Dap {
 
 impl Dap {
     pub fn start() -> Dap {
+        Dap::start_with(&[])
+    }
+
+    /// `ilc ARGS debug`.
+    pub fn start_with(args: &[&str]) -> Dap {
         let mut child = Command::new(env!("CARGO_BIN_EXE_ilc"))
+            .args(args)
             .arg("debug")
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
@@ -246,6 +254,17 @@ pub fn var<'a>(vars: &'a [(String, String, String)], name: &str) -> (&'a str, &'
     (&v.1, &v.2)
 }
 
+/// The `flow` request's lines without their `source` (a temporary path).
+pub fn without_source(lines: &Value) -> Value {
+    let mut lines = lines.clone();
+    for l in lines.as_array_mut().into_iter().flatten() {
+        if let Some(o) = l.as_object_mut() {
+            o.remove("source");
+        }
+    }
+    lines
+}
+
 /// A file of `text` in a fresh temporary folder.
 pub fn temp_file(tag: &str, text: &str) -> String {
     let d = std::env::temp_dir().join(format!("ilc-debug-{tag}-{}", std::process::id()));
@@ -449,4 +468,32 @@ fn run_flow_prints_the_current_result_of_each_line_of_the_last_scan() {
     );
     assert_eq!(cols(flow[8]), ["Motor", "22", "ADD", "1", "1", ":", "INT"]);
     assert_eq!(out.matches("flow of").count(), 1);
+}
+
+/// A literal load is folded by the checker into the instruction that uses
+/// it (`LD 7` has no statement): the flow says so instead of showing the
+/// CR local an earlier line left, and `ST x` after it shows the literal
+/// typed as `x`.
+#[test]
+fn run_flow_shows_literal_loads_as_folded_and_their_stores() {
+    let path = temp_file(
+        "literal",
+        "PROGRAM P\nVAR x : INT; y : INT; s : STRING[8]; END_VAR\n    LD 5\n    ADD x\n    ST y\n    LD 7\n    ST x\n    LD 'ab'\n    ST s\nEND_PROGRAM\n",
+    );
+    let o = crate::run::ilc(&["run", &path, "--cycles", "1", "--flow"]);
+    let out = crate::run::text(&o.stdout);
+    assert!(o.status.success(), "{out}{}", crate::run::text(&o.stderr));
+    // Each line's words: POU, line, instruction, CR.
+    let cr: Vec<String> = out
+        .lines()
+        .skip_while(|l| !l.starts_with("flow of cycle 1"))
+        .skip(1)
+        .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
+        .collect();
+    let folded = "undefined (a literal, folded into the instruction that uses it)";
+    assert_eq!(cr[0], format!("P 3 LD 5 {folded}"), "{out}");
+    assert_eq!(cr[1], "P 4 ADD x 5 : INT", "{out}");
+    assert_eq!(cr[3], format!("P 6 LD 7 {folded}"), "{out}");
+    assert_eq!(cr[4], "P 7 ST x 7 : INT", "{out}");
+    assert_eq!(cr[6], "P 9 ST s 'ab' : STRING[8]", "{out}");
 }

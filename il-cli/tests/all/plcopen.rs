@@ -333,3 +333,82 @@ fn the_corpus_smbp_projects_are_one_error_each() {
         assert!(msg.contains("`<ProjectDescriptor>`"), "{msg}");
     }
 }
+
+/// A PLCopen project whose IL body divides by zero on XML line 16.
+const RATIO: &str = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <types>
+    <dataTypes/>
+    <pous>
+      <pou name="Ratio" pouType="program">
+        <interface>
+          <inputVars><variable name="d"><type><INT/></type></variable></inputVars>
+          <outputVars><variable name="q"><type><INT/></type></variable></outputVars>
+        </interface>
+        <body>
+          <IL>
+            <xhtml:p><![CDATA[
+(* the ratio *)
+LD 100
+DIV d
+ST q
+]]></xhtml:p>
+          </IL>
+        </body>
+      </pou>
+    </pous>
+  </types>
+</project>
+"#;
+
+#[test]
+fn run_reports_a_fault_at_the_xml_line_of_the_il_body() {
+    let line = RATIO.lines().position(|l| l == "DIV d").unwrap() + 1;
+    assert_eq!(line, 16);
+    let p = temp("ratio.xml", RATIO);
+    let path = p.to_str().unwrap();
+    let o = ilc(&["run", path, "--cycles", "2", "--set", "d=4@2"]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    // Scan 1 divides by zero; scan 2 by 4.
+    assert!(
+        err.contains(&format!(
+            "warning: cycle 1: fault DivisionByZero in Ratio at {path}:16\n"
+        )),
+        "{err}"
+    );
+    assert!(!err.contains("cycle 2: fault"), "{err}");
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        out.lines().nth(2).is_some_and(|l| l.ends_with(" 25")),
+        "{out}"
+    );
+}
+
+/// A scan that never ends (the interpreter's limit of instructions per
+/// scan) is an error placed at the XML line of the IL body too.
+#[test]
+fn run_places_an_endless_scan_at_the_xml_line() {
+    let xml = RATIO.replace(
+        "\n(* the ratio *)\nLD 100\nDIV d\nST q\n",
+        "\ntop: LD q\nADD 1\nST q\nJMP top\n",
+    );
+    let body: Vec<usize> = xml
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| ["top: LD q", "ADD 1", "ST q", "JMP top"].contains(l))
+        .map(|(k, _)| k + 1)
+        .collect();
+    assert_eq!(body, [14, 15, 16, 17]);
+    let p = temp("spin.xml", &xml);
+    let path = p.to_str().unwrap();
+    let o = ilc(&["run", path, "--cycles", "1"]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    let at = err
+        .split_once(&format!("{path}:"))
+        .and_then(|(_, rest)| rest.split(':').next())
+        .and_then(|l| l.parse::<usize>().ok());
+    assert!(at.is_some_and(|l| body.contains(&l)), "{err}");
+    assert!(err.contains("in Ratio: more than"), "{err}");
+}

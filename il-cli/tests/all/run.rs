@@ -105,7 +105,7 @@ fn faults_are_reported_on_stderr() {
     assert_eq!(o.status.code(), Some(0));
     let err = text(&o.stderr);
     assert!(
-        err.contains("cycle 1: fault DivisionByZero in Main at IL line 21"),
+        err.contains("cycle 1: fault DivisionByZero in Main at ") && err.contains("faults.il:21\n"),
         "{err}"
     );
     assert!(err.contains("cycle 2:"), "{err}");

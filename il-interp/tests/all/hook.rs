@@ -143,3 +143,45 @@ fn hook_sees_faults_after_the_statement() {
     m.scan(&mut il_interp::il_std::Cycle::new()).unwrap();
     assert_eq!(m.hook_mut::<F>().unwrap().0, [4]);
 }
+
+/// `Here::set_in` on an outer frame: shown at once in that frame, written
+/// to its variable when the call returns (the instance's own statements
+/// see nothing of it); the instance being called is refused there.
+#[test]
+fn a_write_to_an_outer_frame_lands_when_the_call_returns() {
+    #[derive(Default)]
+    struct W(Vec<String>);
+    impl Hook for W {
+        fn before(&mut self, at: &mut Here<'_>) -> Result<(), String> {
+            // Inside pumps[2], at its first statement: write Main's `q`.
+            if at.depth() == 2 && at.line() == 11 {
+                let v = at.set_in(1, "q", "40").map_err(|e| e.to_string())?;
+                self.0.push(v.display());
+                self.0.push(at.eval(1, "q")?.0.display());
+                self.0.push(at.set_in(1, "pumps[2].n", "9").unwrap_err());
+                self.0.push(at.set_in(1, "go", "TRUE")?.display());
+            }
+            if at.depth() == 1 && at.line() == 22 {
+                // Back in Main: `q` is 40 before `LD pumps[2].n` runs.
+                self.0.push(at.eval(0, "q")?.0.display());
+            }
+            Ok(())
+        }
+    }
+    let mut m = machine();
+    m.set_hook(Some(Box::new(W::default())));
+    m.scan(&mut il_interp::il_std::Cycle::new()).unwrap();
+    let w = m.take_hook::<W>().unwrap();
+    assert_eq!(w.0[..2], ["40", "40"]);
+    assert!(
+        w.0[2].contains("Main.pumps[2]") && w.0[2].contains("that frame"),
+        "{:?}",
+        w.0
+    );
+    assert_eq!(w.0[3..], ["TRUE", "40"]);
+    // The write was overwritten by the program's own `ST q` afterwards.
+    assert_eq!(
+        m.get("q"),
+        Some(il_interp::int(1, il_codegen::ir::types::Elem::INT))
+    );
+}

@@ -9,6 +9,7 @@ mod annex_f;
 mod cfg_forms;
 mod cfg_paths;
 mod corners;
+mod debugger;
 mod dialect;
 mod differential;
 mod edge_cases;

@@ -54,7 +54,7 @@ fn lines_are_verified_moved_or_refused() {
         bps[0]["message"]
             .as_str()
             .unwrap()
-            .contains("not the launched program")
+            .contains("is not a file of the launched program")
     );
     // A hit count that is no count is refused.
     let bps = d.breakpoints(MOTOR, json!([{"line": 14, "hitCondition": "often"}]));

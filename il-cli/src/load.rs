@@ -1,0 +1,138 @@
+//! The one loader of what `ilc run` and `ilc debug` run: the files (IL,
+//! PLCopen XML, CODESYS `.EXP`, folders of them, expanded by the caller)
+//! read in `--encoding`, checked together as one program, joined, and the
+//! PROGRAM, FUNCTION_BLOCK or CONFIGURATION to run chosen as `ilc run`
+//! chooses it.
+
+use il_codegen::ir::{PouKind, Program};
+
+use crate::input::Front;
+use crate::source_map::SourceMap;
+
+/// What to load and run.
+pub struct Request<'a> {
+    pub files: &'a [String],
+    pub front: Front,
+    /// The POU to run (`--program`, launch `pou`).
+    pub program: Option<&'a str>,
+    /// The CONFIGURATION to run (`--config`, launch `configuration`).
+    pub config: Option<&'a str>,
+    /// How the two options are named in messages: (`--program`, `--config`).
+    pub names: (&'a str, &'a str),
+    /// ANSI colours in the rendered diagnostics.
+    pub color: bool,
+}
+
+/// What runs.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Chosen {
+    /// A PROGRAM or FUNCTION_BLOCK alone.
+    Pou(String),
+    /// A CONFIGURATION with its tasks.
+    Config(String),
+}
+
+/// The checked program (the files joined), where its lines are, and what runs.
+pub struct Loaded {
+    pub prog: Program,
+    pub map: SourceMap,
+    pub chosen: Chosen,
+}
+
+/// The checked programs of several files as one.
+fn join(many: &[Program]) -> Program {
+    let mut out = Program {
+        file: many.first().map(|p| p.file.clone()).unwrap_or_default(),
+        ..Default::default()
+    };
+    for p in many {
+        out.types.extend(p.types.iter().cloned());
+        out.pous.extend(p.pous.iter().cloned());
+        out.configs.extend(p.configs.iter().cloned());
+    }
+    out
+}
+
+/// Load `r`: the rendered diagnostics (warnings too, also when it fails),
+/// and the program or why it cannot run.
+pub fn load(r: &Request) -> (String, Result<Loaded, String>) {
+    let files = match r
+        .files
+        .iter()
+        .map(|f| r.front.read(f))
+        .collect::<Result<Vec<_>, _>>()
+    {
+        Ok(f) => f,
+        Err(e) => return (String::new(), Err(e)),
+    };
+    if files.is_empty() {
+        return (String::new(), Err("no source file to run".into()));
+    }
+    let checked = r.front.program(files).check();
+    let rendered = checked.render(r.color);
+    (rendered, choose(r, &checked))
+}
+
+fn choose(r: &Request, checked: &il_codegen::Checked) -> Result<Loaded, String> {
+    let file = r.files.join("`, `");
+    let Some(progs) = checked.ir() else {
+        return Err(format!("`{file}` has errors; nothing was run"));
+    };
+    // Several files are one program: the interpreter finds POUs, types and
+    // configurations by name, so their checked programs are joined.
+    let prog = match progs {
+        [one] => one.clone(),
+        many => join(many),
+    };
+    let (p_opt, c_opt) = r.names;
+    if r.program.is_some() && r.config.is_some() {
+        return Err(format!("give {p_opt} or {c_opt}, not both"));
+    }
+    let programs: Vec<&str> = prog
+        .pous
+        .iter()
+        .filter(|p| p.kind == PouKind::Program)
+        .map(|p| p.name.as_str())
+        .collect();
+    // A CONFIGURATION is run when named, or when no program is named and
+    // the only CONFIGURATION is the one thing to run (a file with one
+    // PROGRAM runs that program, as it did before configurations could
+    // run). A CODESYS project with a task configuration runs it, as the PLC does.
+    let exp_tasks = checked.inputs().iter().any(|i| match i {
+        il_codegen::Input::Exp(e) => e
+            .objects()
+            .iter()
+            .any(|ob| ob.kind == il_codegen::exp::ObjectKind::Tasks),
+        _ => false,
+    });
+    let chosen = match (r.config, r.program, prog.configs.as_slice()) {
+        (Some(c), _, _) => Chosen::Config(c.to_string()),
+        (None, None, [one]) if programs.len() != 1 || exp_tasks => Chosen::Config(one.name.clone()),
+        (None, Some(p), _) => Chosen::Pou(p.to_string()),
+        (None, None, _) => match programs.as_slice() {
+            [one] => Chosen::Pou(one.to_string()),
+            [] => {
+                return Err(format!(
+                    "`{file}` has no PROGRAM; name a FUNCTION_BLOCK with {p_opt}"
+                ));
+            }
+            many => {
+                let configs: Vec<&str> = prog.configs.iter().map(|c| c.name.as_str()).collect();
+                let also = if configs.is_empty() {
+                    String::new()
+                } else {
+                    format!(", or a CONFIGURATION ({}) with {c_opt}", configs.join(", "))
+                };
+                return Err(format!(
+                    "`{file}` has several PROGRAMs ({}); choose one with {p_opt}{also}",
+                    many.join(", ")
+                ));
+            }
+        },
+    };
+    Ok(Loaded {
+        prog,
+        map: SourceMap::of(checked),
+        chosen,
+    })
+}
