@@ -1,0 +1,62 @@
+//! Schneider Modicon M221 projects (Machine Expert Basic / SoMachine Basic,
+//! `.smbp`, XML root `<ProjectDescriptor>`).
+//!
+//! Every rung of an M221 program, even one drawn in ladder, is stored with
+//! its Instruction List (`<InstructionLines>`), and the timers, counters and
+//! constants it uses are configured in the same file. The XML is parsed by
+//! the PLCopen import's parser (same limits, same located errors for
+//! malformed XML), which hands a `<ProjectDescriptor>` root to `translate`.
+//! It writes one IEC IL text, mapped back into the XML
+//! ([`crate::plcopen::SpanMap`]), so every diagnostic points at the
+//! instruction line it comes from:
+//! - each POU of the master task (`<Pous>`) as a PROGRAM, its rungs in
+//!   order, each instruction line translated to IEC IL (`rung`, `blocks`,
+//!   `expr`);
+//! - the objects the program uses (`%I0.3`, `%M5`, `%MW2`, `%TM0` ...) as
+//!   globals of one CONFIGURATION `M221` (`objects`, `write`), the timers
+//!   and counters configured from `<Timers>` / `<Counters>` (`read`).
+//!
+//! docs/semantics.md, "Modicon M221 dialect", says what each object and
+//! instruction means and which choices are made where the manuals are
+//! silent.
+
+#[cfg(feature = "plcopen")]
+mod blocks;
+#[cfg(feature = "plcopen")]
+mod expr;
+#[cfg(feature = "plcopen")]
+mod objects;
+#[cfg(feature = "plcopen")]
+mod read;
+#[cfg(feature = "plcopen")]
+mod rung;
+#[cfg(feature = "plcopen")]
+mod write;
+
+/// The codes of the M221 import.
+pub mod codes {
+    crate::diag::codes::codes! {
+    BAD_LINE = "IL0430", "M221 instruction line the import cannot read",
+        "An `<InstructionLine>` of a Modicon M221 project (`.smbp`) is not an instruction of the M221's Instruction List as the import reads it: an unknown instruction, a missing or extra operand, an operand that is no M221 object (`%I0.1`, `%M3`, `%MW10`, `%TM0` ...), a `)` without its `AND(`/`OR(`, an `OUT_BLK` outside `BLK ... END_BLK`. The rung is left out of the program, with this error; the other rungs are still translated, so every such line is reported at once.\n\n    <InstructionLine>LD %X0.0</InstructionLine>";
+    UNSUPPORTED = "IL0431", "M221 object or instruction the import does not compile",
+        "A rung uses an object or instruction of the M221 that the import does not compile yet (a drum `%DRn`, a register `%Rn`, a PID, a communication block, a subroutine call ...), or one whose configuration it cannot read. The message names the object, the rung and why. The rung is left out of the program.\n\n    <InstructionLine>BLK %DR0</InstructionLine>";
+    OVERLAP = "IL0432", "M221 project that uses two views of the same memory words",
+        "On the M221 `%MDn` and `%MFn` occupy the words `%MWn` and `%MWn+1`, so `%MF1` and `%MW2`, or `%MF1` and `%MF2`, share memory. The import keeps each object in a variable of its own type and does not reproduce the sharing, so a project that uses two overlapping objects is refused, with one error naming both and the rung of the first. Use distinct words (`%MF10` for a float, `%MW1` and `%MW2` for words).\n\n    LD [ %MF1 >= %MF2 ]    (* %MF1 is %MW1..2, %MF2 is %MW2..3 *)";
+    BAD_CONFIG = "IL0433", "M221 object configuration the import cannot read",
+        "An element of the project's configuration of an object (a `<TimerTM>`'s `<Preset>`, `<Base>` or `<Type>`, a `<CounterCT>`'s `<Preset>`, a `<ConstantWord>`'s `<Value>`) holds a value the import does not know: a preset that is not a number from 0 to 32767, a time base other than `OneMillisecond`, `TenMilliseconds`, `HundredMilliseconds`, `OneSecond`, `OneMinute`, a timer type other than `TON`, `TOF`, `TP`. The object takes its default (`TON`, one minute, preset 9999) with this error.\n\n    <TimerTM><Address>%TM0</Address><Base>Fortnight</Base></TimerTM>";
+    SYSTEM_OBJECT = "IL0434", "M221 system bit or word set by the host",
+        "A rung uses a system bit `%Sn` or a system word `%SWn`. The import declares it as a global of the configuration (`S0`, `SW7`) that starts at 0 and that the host (or `ilc run --set S0=TRUE`) sets; the controller's own behaviour of the object (the first-scan bit `%S0`, the clock bits `%S4` .. `%S7`) is not simulated. One warning per object.\n\n    LD %S6     (* the controller's 1 s clock *)";
+    }
+}
+pub use codes::CODES;
+
+/// Whether an XML root is an M221 project's: `<ProjectDescriptor>` in no
+/// namespace.
+#[cfg(feature = "plcopen")]
+pub(crate) fn is_root(root: roxmltree::Node) -> bool {
+    let tag = root.tag_name();
+    tag.namespace().is_none() && tag.name() == "ProjectDescriptor"
+}
+
+#[cfg(feature = "plcopen")]
+pub(crate) use write::translate;
