@@ -60,3 +60,23 @@ pub(crate) fn is_root(root: roxmltree::Node) -> bool {
 
 #[cfg(feature = "plcopen")]
 pub(crate) use write::translate;
+
+/// Whether an XML text is an M221 project: its root element, after the
+/// prolog and comments, is `<ProjectDescriptor>` (for `ilc run`, which runs
+/// such a project's configuration, as the controller runs its POUs).
+pub fn is_project(xml: &str) -> bool {
+    let mut rest = xml.trim_start_matches('\u{feff}');
+    loop {
+        rest = rest.trim_start();
+        if let Some(r) = rest.strip_prefix("<?").or_else(|| rest.strip_prefix("<!")) {
+            match r.find('>') {
+                Some(k) => rest = &r[k + 1..],
+                None => return false,
+            }
+        } else {
+            return rest.strip_prefix("<ProjectDescriptor").is_some_and(|r| {
+                r.starts_with(|c: char| c.is_whitespace() || c == '>' || c == '/')
+            });
+        }
+    }
+}
