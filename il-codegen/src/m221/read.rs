@@ -41,6 +41,8 @@ pub(super) struct Rung {
     pub number: usize,
     pub at: Range<usize>,
     pub lines: Vec<Line>,
+    /// `<Label>%L1</Label>`: the rung is the target of `JMP %L1`.
+    pub label: Option<Line>,
 }
 
 /// A `<ProgramOrganizationUnits>` of `<Pous>`.
@@ -141,6 +143,9 @@ pub(super) fn read(root: Node, xml: &str, diags: &mut Vec<Diagnostic>) -> Projec
                     .filter_map(|e| kid(e, "InstructionLine"))
                     .map(|l| line(xml, l))
                     .collect(),
+                label: kid(r, "Label")
+                    .map(|l| line(xml, l))
+                    .filter(|l| !l.text.trim().is_empty()),
             })
             .collect();
         p.pous.push(Pou {

@@ -404,7 +404,7 @@ impl Pou<'_> {
                         ),
                     )
                     .with_label("overlaps another object")
-                    .with_secondary(span(&first), format!("`{o}` used here"))
+                    .with_secondary(span(&first), format!("`%{o}` used here"))
                     .with_note("`%MDn` and `%MFn` are the words `%MWn` and `%MWn+1`")
                 } else if e.unsupported {
                     Diagnostic::error(UNSUPPORTED, at, e.what).with_label("not compiled")

@@ -10,7 +10,7 @@ use std::ops::Range;
 use super::codes::{BAD_LINE, SYSTEM_OBJECT, UNSUPPORTED};
 use super::objects::Objects;
 use super::read::{self, Pou as XmlPou, Project, span};
-use super::rung::{Locals, Pou, Rung, bad};
+use super::rung::{Locals, Pou, Rung, bad, label_name};
 use crate::diag::Diagnostic;
 use crate::plcopen::PouInfo;
 use crate::plcopen::map::Writer;
@@ -103,7 +103,20 @@ fn body(
         t.w.gen_at(&format!("(* rung {} *)\n", r.number), at.clone());
         let mut rung = Rung::default();
         let mut failed = None;
-        for line in &r.lines {
+        if let Some(l) = &r.label {
+            let name = label_name(l.text.trim()).map(|n| format!("{n}:"));
+            match name {
+                Some(n) => t.w.gen_at(&format!("{n}\n"), l.xml(0..l.text.len())),
+                None => {
+                    failed = Some(*bad(
+                        l,
+                        0..l.text.len(),
+                        format!("`{}` is not a label (`%L1` ... `%L63`)", l.text.trim()),
+                    ))
+                }
+            }
+        }
+        for line in r.lines.iter().filter(|_| failed.is_none()) {
             let res = t.line(&mut rung, line);
             for n in t.objs.touched.drain(..) {
                 t.locals.used.insert(n);
