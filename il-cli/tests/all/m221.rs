@@ -255,3 +255,46 @@ cycle  time  TM0.PT   Q0_1   C0.V
 ";
     assert_eq!(text(&o.stdout), want, "{}", text(&o.stderr));
 }
+
+#[test]
+fn end_of_scan_bits_of_words_and_hex_constants_follow_the_hand_trace() {
+    // tests/m221/ends.smbp, POU First: ENDC on I0.0 (scan 3) ends the scan,
+    // so nothing after it runs, in First or in Second; MW2 counts the scans
+    // First completes, Q0.0 is its bit 1 (`%MW2:X1`). POU Second: MW3
+    // counts its scans, MW6 adds #10 (16) each, `%MW4:X0` := I0.1, ENDCN
+    // ends the scan while I0.2 is 0 (from scan 5), before MW5 += 1.
+    let f = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../tests/m221/ends.smbp")
+        .display()
+        .to_string();
+    let o = ilc(&[
+        "run",
+        &f,
+        "--cycles",
+        "6",
+        "--set",
+        "I0_0=TRUE@3",
+        "--set",
+        "I0_0=FALSE@4",
+        "--set",
+        "I0_1=TRUE@2",
+        "--set",
+        "I0_1=FALSE@4",
+        "--set",
+        "I0_2=TRUE",
+        "--set",
+        "I0_2=FALSE@5",
+        "--watch",
+        "MW2,Q0_0,MW3,MW4,MW5,MW6",
+    ]);
+    let want = "\
+cycle  time  MW2  Q0_0   MW3  MW4  MW5  MW6
+    1  0s      1  FALSE    1    0    1   16
+    2  10ms    2  TRUE     2    1    2   32
+    3  20ms    2  TRUE     2    1    2   32
+    4  30ms    3  TRUE     3    0    3   48
+    5  40ms    4  FALSE    4    0    3   64
+    6  50ms    5  FALSE    5    0    3   80
+";
+    assert_eq!(text(&o.stdout), want, "{}", text(&o.stderr));
+}

@@ -331,6 +331,16 @@ impl Objects {
                 ok(name, Ty::Bool)
             }
             "SW" => {
+                if let Some((w, b)) = tail.split_once(":X") {
+                    let (Some(n), Some(k)) = (num(w), num(b)) else {
+                        return Err(NotObject::Unknown);
+                    };
+                    if k > 15 {
+                        return Err(NotObject::Unknown);
+                    }
+                    let word = self.operand(p, &format!("%SW{n}"), at)?;
+                    return ok(format!("{}.{k}", word.il), Ty::Bool);
+                }
                 let n = num(tail).ok_or(NotObject::Unknown)?;
                 let name = format!("SW{n}");
                 self.plain(&name, "INT", at, true);
@@ -338,10 +348,15 @@ impl Objects {
             }
             "MW" | "MD" | "MF" => {
                 if let Some((w, b)) = tail.split_once(":X") {
-                    let _ = (w, b);
-                    return Err(NotObject::Unsupported(
-                        "a bit of a word (`%MWn:Xk`) is not compiled yet".into(),
-                    ));
+                    // A bit of a word: `%MW4:X3` is bit 3 of `MW4`.
+                    let (Some(n), Some(k)) = (num(w), num(b)) else {
+                        return Err(NotObject::Unknown);
+                    };
+                    if kind != "MW" || k > 15 {
+                        return Err(NotObject::Unknown);
+                    }
+                    let word = self.operand(p, &format!("%MW{n}"), at)?;
+                    return ok(format!("{}.{k}", word.il), Ty::Bool);
                 }
                 let n = num(tail).ok_or(NotObject::Unknown)?;
                 let (ty, t) = match kind {

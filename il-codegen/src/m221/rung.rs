@@ -24,6 +24,10 @@ use super::read::{Line, Project, span};
 use crate::diag::Diagnostic;
 use crate::plcopen::map::Writer;
 
+/// The global that `END`, `ENDC` and `ENDCN` set: the POUs after the one
+/// that ended the scan do not run in it.
+pub(super) const SCAN_END: &str = "SCAN_END";
+
 /// The POU's own variables the translation needs.
 #[derive(Default)]
 pub(super) struct Locals {
@@ -199,7 +203,7 @@ impl Pou<'_> {
                 let (s, r) = need(&arg)?;
                 self.need_cr(rung, line, fr.clone(), first)?;
                 let (il, ty) = self.operand(line, &s, r.clone())?;
-                if ty != Ty::Bool || il.contains('.') && !il.ends_with(".P") {
+                if ty != Ty::Bool || block_output(&il) {
                     return Err(bad(
                         line,
                         r,
@@ -255,7 +259,38 @@ impl Pou<'_> {
                 })?;
                 self.w.gen_at(&format!("{label}:\n"), all);
             }
-            "END" | "ENDC" | "ENDCN" | "CAL" | "RET" | "RETC" | "RETCN" | "MULTIFB" => {
+            "END" | "ENDC" | "ENDCN" => {
+                if op != "END" {
+                    self.need_cr(rung, line, fr.clone(), first)?;
+                }
+                if !rung.parens.is_empty() || rung.blk.is_some() {
+                    return Err(bad(
+                        line,
+                        fr.clone(),
+                        format!("`{first}` inside `(` or a `BLK`"),
+                    ));
+                }
+                self.flush(rung, true, all.clone());
+                self.locals.used.insert(SCAN_END.to_string());
+                match op.as_str() {
+                    "END" => {
+                        self.put("LD TRUE", all.clone());
+                        self.put(&format!("ST {SCAN_END}"), all.clone());
+                        self.put("RET", all);
+                    }
+                    "ENDC" => {
+                        self.put(&format!("S {SCAN_END}"), all.clone());
+                        self.put("RETC", all);
+                    }
+                    _ => {
+                        self.put("NOT", all.clone());
+                        self.put(&format!("S {SCAN_END}"), all.clone());
+                        self.put("RETC", all.clone());
+                        self.put("NOT", all);
+                    }
+                }
+            }
+            "CAL" | "RET" | "RETC" | "RETCN" | "MULTIFB" => {
                 return Err(Box::new(
                     Diagnostic::error(
                         UNSUPPORTED,
@@ -505,6 +540,14 @@ fn self_temp(l: &mut Locals, t: Ty) -> String {
     let name = format!("_x{}", l.temps.len() + 1);
     l.temps.insert(name.clone(), t.name());
     name
+}
+
+/// Whether an operand is an output of a block (`TM0.Q`, `C1.D`), which the
+/// program reads only.
+fn block_output(il: &str) -> bool {
+    let (obj, member) = il.split_once('.').unwrap_or((il, ""));
+    let kind = obj.trim_end_matches(|c: char| c.is_ascii_digit());
+    matches!(kind, "TM" | "C") && member != "P"
 }
 
 /// `1`/`0` as a bit operand (`LD 1`) are TRUE and FALSE.

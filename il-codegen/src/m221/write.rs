@@ -8,9 +8,9 @@ use std::collections::HashSet;
 use std::ops::Range;
 
 use super::codes::{BAD_LINE, SYSTEM_OBJECT, UNSUPPORTED};
-use super::objects::Objects;
+use super::objects::{Global, Objects};
 use super::read::{self, Pou as XmlPou, Project, span};
-use super::rung::{Locals, Pou, Rung, bad, label_name};
+use super::rung::{Locals, Pou, Rung, SCAN_END, bad, label_name};
 use crate::diag::Diagnostic;
 use crate::plcopen::PouInfo;
 use crate::plcopen::map::Writer;
@@ -35,15 +35,48 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
     let mut pous = Vec::new();
     let mut programs: Vec<(String, String, Range<usize>)> = Vec::new();
     let mut taken = HashSet::new();
-    for pou in &p.pous {
+    // `END`/`ENDC`/`ENDCN` end the scan: a flag the first POU clears and
+    // every POU tests first.
+    let ends = p
+        .pous
+        .iter()
+        .flat_map(|x| &x.rungs)
+        .flat_map(|r| &r.lines)
+        .any(|l| {
+            let w = l.text.split_whitespace().next().unwrap_or("");
+            ["END", "ENDC", "ENDCN"]
+                .iter()
+                .any(|e| w.eq_ignore_ascii_case(e))
+        });
+    if ends {
+        objs.globals.insert(
+            SCAN_END.to_string(),
+            Global {
+                decl: "BOOL".into(),
+                ty: "BOOL".into(),
+                constant: false,
+                system: false,
+                at: root.range().start..root.range().start + 1,
+            },
+        );
+    }
+    for (k, pou) in p.pous.iter().enumerate() {
         let ty = format!("POU_{}", ident(&pou.name));
         let ty = unique(ty, &mut taken);
         // First pass: which globals and locals the body needs.
-        let locals = body(&p, &mut objs, &mut Writer::default(), &mut Vec::new(), pou);
+        let mut locals = body(&p, &mut objs, &mut Writer::default(), &mut Vec::new(), pou);
+        if ends {
+            locals.used.insert(SCAN_END.to_string());
+        }
         let at = pou.at.start..pou.at.start + 1;
         w.gen_at(&format!("PROGRAM {ty}\n"), at.clone());
         externals(&mut w, &objs, &locals, at.clone());
         own_vars(&mut w, &locals, at.clone());
+        if ends && k == 0 {
+            w.gen_at(&format!("    LD FALSE\n    ST {SCAN_END}\n"), at.clone());
+        } else if ends {
+            w.gen_at(&format!("    LD {SCAN_END}\n    RETC\n"), at.clone());
+        }
         body(&p, &mut objs, &mut w, &mut diags, pou);
         w.gen_at("END_PROGRAM\n\n", at.clone());
         pous.push(PouInfo {
