@@ -171,10 +171,10 @@ pub(super) fn read(root: Node, xml: &str, diags: &mut Vec<Diagnostic>) -> Projec
         }
     }
     for c in kids(sw, "ConstantWords").flat_map(|n| kids(n, "ConstantWord")) {
-        if let (Some(i), Some(v)) = (index(c), kid(c, "Value")) {
-            if let Ok(v) = text_of(v).parse::<i64>() {
-                p.constants.insert(i, v.clamp(-32768, 32767));
-            }
+        if let (Some(i), Some(v)) = (index(c), kid(c, "Value"))
+            && let Ok(v) = text_of(v).parse::<i64>()
+        {
+            p.constants.insert(i, v.clamp(-32768, 32767));
         }
     }
     p
