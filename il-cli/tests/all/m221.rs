@@ -181,6 +181,20 @@ fn malformed_xml_is_a_located_error_not_a_panic() {
     let err = text(&o.stderr);
     assert!(err.contains(&format!("--> {}:", p.display())), "{err}");
     assert!(!err.contains("panicked"), "{err}");
+    // A protected project: one error at its root, saying why.
+    let p = temp(
+        "protected.smbp",
+        "\u{feff}<?xml version=\"1.0\"?>\n<CryptedProject><Crypted>AAAA</Crypted></CryptedProject>\n",
+    );
+    let o = ilc(&["check", &p.display().to_string()]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.starts_with("error[IL0435]: this is a protected Machine Expert Basic project"),
+        "{err}"
+    );
+    assert!(err.contains(&format!("--> {}:2:1", p.display())), "{err}");
+    assert_eq!(err.matches("error[").count(), 1, "{err}");
 }
 
 #[test]

@@ -44,18 +44,20 @@ pub mod codes {
         "On the M221 `%MDn` and `%MFn` occupy the words `%MWn` and `%MWn+1`, so `%MF1` and `%MW2`, or `%MF1` and `%MF2`, share memory. The import keeps each object in a variable of its own type and does not reproduce the sharing, so a project that uses two overlapping objects is refused, with one error naming both and the rung of the first. Use distinct words (`%MF10` for a float, `%MW1` and `%MW2` for words).\n\n    LD [ %MF1 >= %MF2 ]    (* %MF1 is %MW1..2, %MF2 is %MW2..3 *)";
     BAD_CONFIG = "IL0433", "M221 object configuration the import cannot read",
         "An element of the project's configuration of an object (a `<TimerTM>`'s `<Preset>`, `<Base>` or `<Type>`, a `<CounterCT>`'s `<Preset>`, a `<ConstantWord>`'s `<Value>`) holds a value the import does not know: a preset that is not a number from 0 to 32767, a time base other than `OneMillisecond`, `TenMilliseconds`, `HundredMilliseconds`, `OneSecond`, `OneMinute`, a timer type other than `TON`, `TOF`, `TP`. The object takes its default (`TON`, one minute, preset 9999) with this error.\n\n    <TimerTM><Address>%TM0</Address><Base>Fortnight</Base></TimerTM>";
+    BAD_PROJECT = "IL0435", "M221 project the import cannot read",
+        "The XML's root is Machine Expert Basic's, but the file holds no program the import can read: a protected project (`<CryptedProject>`: its program is encrypted; save it without protection in Machine Expert Basic), or a `<ProjectDescriptor>` without `<SoftwareConfiguration><Pous>`. One error; nothing is compiled.\n\n    <CryptedProject><ProjectVersion>2.0.0.0</ProjectVersion><Crypted>...</Crypted></CryptedProject>";
     SYSTEM_OBJECT = "IL0434", "M221 system bit or word set by the host",
         "A rung uses a system bit `%Sn` or a system word `%SWn`. The import declares it as a global of the configuration (`S0`, `SW7`) that starts at 0 and that the host (or `ilc run --set S0=TRUE`) sets; the controller's own behaviour of the object (the first-scan bit `%S0`, the clock bits `%S4` .. `%S7`) is not simulated. One warning per object.\n\n    LD %S6     (* the controller's 1 s clock *)";
     }
 }
 pub use codes::CODES;
 
-/// Whether an XML root is an M221 project's: `<ProjectDescriptor>` in no
-/// namespace.
+/// Whether an XML root is an M221 project's: `<ProjectDescriptor>`, or a
+/// protected project's `<CryptedProject>`, in no namespace.
 #[cfg(feature = "plcopen")]
 pub(crate) fn is_root(root: roxmltree::Node) -> bool {
     let tag = root.tag_name();
-    tag.namespace().is_none() && tag.name() == "ProjectDescriptor"
+    tag.namespace().is_none() && matches!(tag.name(), "ProjectDescriptor" | "CryptedProject")
 }
 
 #[cfg(feature = "plcopen")]

@@ -7,7 +7,7 @@ use std::ops::Range;
 
 use roxmltree::Node;
 
-use super::codes::BAD_CONFIG;
+use super::codes::{BAD_CONFIG, BAD_PROJECT};
 use crate::ast::Span;
 use crate::diag::Diagnostic;
 use crate::plcopen::text::content_range;
@@ -119,7 +119,18 @@ pub(super) fn span(r: &Range<usize>) -> Span {
 /// Read the project whose root is `root` (a `<ProjectDescriptor>`).
 pub(super) fn read(root: Node, xml: &str, diags: &mut Vec<Diagnostic>) -> Project {
     let mut p = Project::default();
-    let Some(sw) = kid(root, "SoftwareConfiguration") else {
+    let pous = kid(root, "SoftwareConfiguration").filter(|sw| kid(*sw, "Pous").is_some());
+    let Some(sw) = pous.filter(|_| is(&root, "ProjectDescriptor")) else {
+        let tag = crate::plcopen::text::start_tag(xml, root.range());
+        let what = if is(&root, "CryptedProject") {
+            "a protected Machine Expert Basic project: its program is encrypted (save it without protection)"
+        } else {
+            "an M221 project without `<SoftwareConfiguration><Pous>`: no program to compile"
+        };
+        diags.push(
+            Diagnostic::error(BAD_PROJECT, span(&tag), format!("this is {what}"))
+                .with_label("nothing to compile"),
+        );
         return p;
     };
     for (k, pou) in kids(sw, "Pous")
