@@ -102,6 +102,24 @@ const FUNCTIONS: &[(&str, Option<Ty>)] = &[
     ("REAL_TO_INT", Some(Ty::Int)),
     ("REAL_TO_DINT", Some(Ty::Dint)),
     ("TRUNC", Some(Ty::Dint)),
+    // On words as bit strings: the INT is converted to WORD and back.
+    ("SHL", None),
+    ("SHR", None),
+    ("ROL", None),
+    ("ROR", None),
+    ("BTI", None),
+    ("ITB", None),
+];
+
+/// The functions of [`FUNCTIONS`] that IEC defines on a bit string (WORD)
+/// or a BCD word, with the IEC function: the M221 applies them to an INT.
+const ON_WORDS: &[(&str, &str)] = &[
+    ("SHL", "SHL"),
+    ("SHR", "SHR"),
+    ("ROL", "ROL"),
+    ("ROR", "ROR"),
+    ("BTI", "BCD_TO_INT"),
+    ("ITB", "INT_TO_BCD"),
 ];
 
 struct Parser<'a> {
@@ -407,10 +425,19 @@ pub(super) fn emit(e: &Expr, ctx: Ty, out: &mut Vec<String>, temp: &mut dyn FnMu
                 Some(a) => emit(a, arg_ctx, out, temp),
                 None => out.push(format!("LD {}", typed("0", Ty::IntLit, arg_ctx))),
             }
+            let word = ON_WORDS.iter().find(|(m, _)| m == f);
+            let name = word.map_or(*f, |(_, iec)| iec);
+            // BCD_TO_INT gives an INT itself; the others give a WORD.
+            if word.is_some() && name != "INT_TO_BCD" {
+                out.push("INT_TO_WORD".into());
+            }
             if rest.is_empty() {
-                out.push((*f).to_string());
+                out.push(name.to_string());
             } else {
-                out.push(format!("{f} {}", rest.join(", ")));
+                out.push(format!("{name} {}", rest.join(", ")));
+            }
+            if word.is_some() && name != "BCD_TO_INT" {
+                out.push("WORD_TO_INT".into());
             }
         }
     }

@@ -330,6 +330,14 @@ impl Objects {
                 self.plain(&name, "BOOL", at, kind == "S");
                 ok(name, Ty::Bool)
             }
+            "IWE" | "QWE" | "IWM" | "QWM" => {
+                // EtherNet/IP and Modbus TCP exchange words: the host
+                // reads and writes them.
+                let n = num(tail).ok_or(NotObject::Unknown)?;
+                let name = format!("{kind}{n}");
+                self.plain(&name, "INT", at, true);
+                ok(name, Ty::Int)
+            }
             "SW" => {
                 if let Some((w, b)) = tail.split_once(":X") {
                     let (Some(n), Some(k)) = (num(w), num(b)) else {
@@ -402,6 +410,15 @@ fn split_kind(rest: &str) -> (&str, &str) {
 fn not_block(up: &str) -> NotObject {
     let rest = up.trim_start_matches('%');
     let (kind, _) = split_kind(rest);
+    let kind = if rest.starts_with("READ_VAR")
+        || rest.starts_with("WRITE_VAR")
+        || rest.starts_with("WRITE_READ_VAR")
+        || rest.starts_with("SEND_RECV")
+    {
+        "MSG"
+    } else {
+        kind
+    };
     let what = match kind {
         "DR" => "a drum",
         "R" => "a FIFO/LIFO register",

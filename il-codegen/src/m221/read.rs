@@ -240,17 +240,18 @@ fn timer(xml: &str, t: Node, diags: &mut Vec<Diagnostic>) -> Timer {
         out.preset = p;
     }
     if let Some(b) = kid(t, "Base") {
-        // The editor writes the plural and the singular.
-        match text_of(b).trim_end_matches('s') {
-            "OneMillisecond" => out.base_ms = 1,
-            "TenMillisecond" => out.base_ms = 10,
-            "HundredMillisecond" => out.base_ms = 100,
-            "OneSecond" => out.base_ms = 1000,
-            "OneMinute" => out.base_ms = 60_000,
-            other => diags.push(bad(
+        // Editors spell it `HundredMilliseconds`, `OneHundredMilliSecond` ...
+        let b_text = text_of(b).to_ascii_lowercase();
+        match b_text.trim_end_matches('s').trim_start_matches("one") {
+            "millisecond" => out.base_ms = 1,
+            "tenmillisecond" => out.base_ms = 10,
+            "hundredmillisecond" => out.base_ms = 100,
+            "second" => out.base_ms = 1000,
+            "minute" => out.base_ms = 60_000,
+            _ => diags.push(bad(
                 xml,
                 b,
-                format!("`<Base>` holds `{}`, not a time base", shown(other)),
+                format!("`<Base>` holds `{}`, not a time base", shown(text_of(b))),
             )),
         }
     }

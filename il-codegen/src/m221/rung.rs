@@ -462,15 +462,24 @@ impl Pou<'_> {
             ) => {
                 let ctx = Ty::join(dest_ty, expr::ty(&value));
                 let conditional = rung.cr;
-                if !rung.parens.is_empty() {
-                    return Err(bad(
-                        line,
-                        0..open.max(1),
-                        "an operation block inside `AND(` ... `)`",
-                    ));
-                }
                 let mut temp = |t: Ty| self_temp(&mut self.locals, t);
                 expr::emit(&value, ctx, &mut lines, &mut temp);
+                if !rung.parens.is_empty() {
+                    // Inside `(`, where IEC IL has no jump: the value is
+                    // computed, and stored when the CR is 1 (SEL).
+                    let x = self_temp(&mut self.locals, dest_ty);
+                    self.locals.cr = true;
+                    self.put("ST _cr", all.clone());
+                    for il in &lines {
+                        self.put(il, all.clone());
+                    }
+                    self.put(&format!("ST {x}"), all.clone());
+                    self.put("LD _cr", all.clone());
+                    self.put(&format!("SEL {dest}, {x}"), all.clone());
+                    self.put(&format!("ST {dest}"), all.clone());
+                    self.put("LD _cr", all);
+                    return Ok(());
+                }
                 lines.push(format!("ST {dest}"));
                 if conditional {
                     self.locals.cr = true;
@@ -502,6 +511,18 @@ impl Pou<'_> {
                     "AND" | "ANDN" | "OR" | "ORN" | "XOR" | "XORN" => {
                         self.need_cr(rung, line, 0..open, h)?;
                         (Some(h), false)
+                    }
+                    "AND(" | "ANDN(" | "OR(" | "ORN(" | "XOR(" | "XORN(" => {
+                        // A parenthesis whose first term is the comparison:
+                        // left open for the lines up to its `)`.
+                        self.need_cr(rung, line, 0..open, h)?;
+                        let base = &h[..h.len() - 1];
+                        rung.parens.push(base.to_string());
+                        self.put(&format!("{base}("), all.clone());
+                        for il in &lines {
+                            self.put(il, all.clone());
+                        }
+                        return Ok(());
                     }
                     _ => {
                         return Err(bad(
