@@ -140,7 +140,7 @@ fn refusals_name_the_object_the_rung_and_why_with_the_line() {
         "refused.smbp",
         &project(&[
             &["LD %I0.0", "ST %Q0.0"],
-            &["BLK %DR0", "LD %I0.1", "U", "END_BLK"],
+            &["BLK %FC0", "LD %I0.1", "IN", "END_BLK"],
             &["LD %X0.0", "ST %Q0.1"],
             &["[ %MW3 := 1 ]"],
             &["LD [ %MF2 &gt; 1.5 ]", "ST %Q0.2"],
@@ -152,7 +152,7 @@ fn refusals_name_the_object_the_rung_and_why_with_the_line() {
     let err = text(&o.stderr);
     let f = p.display().to_string();
     for (code, at, what) in [
-        ("IL0431", "10:45", "`%DR0` is a drum"),
+        ("IL0431", "10:45", "`%FC0` is a fast or high-speed counter"),
         ("IL0430", "16:44", "`%X0.0` is not an M221 object"),
         ("IL0432", "23:41", "`%MF2` shares memory words with `%MW3`"),
         (
@@ -309,6 +309,65 @@ cycle  time  MW2  Q0_0   MW3  MW4  MW5  MW6
     4  30ms    3  TRUE     3    0    3   48
     5  40ms    4  FALSE    4    0    3   64
     6  50ms    5  FALSE    5    0    3   80
+";
+    assert_eq!(text(&o.stdout), want, "{}", text(&o.stderr));
+}
+
+#[test]
+fn shift_bit_register_fifo_step_counter_and_drum_follow_the_hand_trace() {
+    // %SBR0: CU = I0.0 (edges at scans 2, 4), R = I0.1 (scan 5); rung 2
+    // writes I0.2 into its bit 0 after the shift. %R0 (FIFO): %R0.I := MW0
+    // (10, then 20), I = I0.3 (edges at 1, 3), O = I0.4 (edge at 5), MW1 :=
+    // %R0.O. %SC0: CU = I0.5 (edges at 2, 4), Q0.0 := %SC0.1. %DR0 (not
+    // configured: 8 steps): U = I0.6 (edge at 3).
+    let p = temp(
+        "objects.smbp",
+        &project(&[
+            &["BLK %SBR0", "LD %I0.0", "CU", "LD %I0.1", "R", "END_BLK"],
+            &["LD %I0.2", "ST %SBR0.0"],
+            &["[ %R0.I := %MW0 ]"],
+            &["BLK %R0", "LD %I0.3", "I", "LD %I0.4", "O", "END_BLK"],
+            &["[ %MW1 := %R0.O ]"],
+            &["BLK %SC0", "LD %I0.5", "CU", "END_BLK"],
+            &["LD %SC0.1", "ST %Q0.0"],
+            &[
+                "BLK %DR0", "LD %I0.6", "U", "OUT_BLK", "LD F", "ST %Q0.1", "END_BLK",
+            ],
+        ]),
+    );
+    let f = p.display().to_string();
+    let mut args = vec!["run", f.as_str(), "--cycles", "6"];
+    for s in [
+        "I0_0=TRUE@2",
+        "I0_0=FALSE@3",
+        "I0_0=TRUE@4",
+        "I0_1=TRUE@5",
+        "I0_2=TRUE",
+        "I0_2=FALSE@2",
+        "MW0=10",
+        "MW0=20@2",
+        "I0_3=TRUE",
+        "I0_3=FALSE@2",
+        "I0_3=TRUE@3",
+        "I0_3=FALSE@4",
+        "I0_4=TRUE@5",
+        "I0_5=TRUE@2",
+        "I0_5=FALSE@3",
+        "I0_5=TRUE@4",
+        "I0_6=TRUE@3",
+    ] {
+        args.extend(["--set", s]);
+    }
+    args.extend(["--watch", "SBR0.X,R0.E,MW1,Q0_0,DR0.S,Q0_1"]);
+    let o = ilc(&args);
+    let want = "\
+cycle  time  SBR0.X  R0.E   MW1  Q0_0   DR0.S  Q0_1
+    1  0s         1  FALSE    0  FALSE      0  FALSE
+    2  10ms       2  FALSE    0  TRUE       0  FALSE
+    3  20ms       2  FALSE    0  TRUE       1  FALSE
+    4  30ms       4  FALSE    0  FALSE      1  FALSE
+    5  40ms       0  FALSE   10  FALSE      1  FALSE
+    6  50ms       0  FALSE   10  FALSE      1  FALSE
 ";
     assert_eq!(text(&o.stdout), want, "{}", text(&o.stderr));
 }

@@ -53,6 +53,10 @@ impl Ty {
 pub(super) enum Block {
     Timer(u32),
     Counter(u32),
+    Drum(u32),
+    Register(u32),
+    ShiftBit(u32),
+    StepCounter(u32),
 }
 
 impl Block {
@@ -60,6 +64,10 @@ impl Block {
         match self {
             Block::Timer(n) => format!("TM{n}"),
             Block::Counter(n) => format!("C{n}"),
+            Block::Drum(n) => format!("DR{n}"),
+            Block::Register(n) => format!("R{n}"),
+            Block::ShiftBit(n) => format!("SBR{n}"),
+            Block::StepCounter(n) => format!("SC{n}"),
         }
     }
     /// The inputs (pins before `OUT_BLK`) and outputs of the block.
@@ -67,6 +75,9 @@ impl Block {
         match self {
             Block::Timer(_) => (&["IN"], &["Q"]),
             Block::Counter(_) => (&["R", "S", "CU", "CD"], &["E", "D", "F"]),
+            Block::Drum(_) => (&["R", "U"], &["F"]),
+            Block::Register(_) => (&["R", "I", "O"], &["E", "F"]),
+            Block::ShiftBit(_) | Block::StepCounter(_) => (&["R", "CU", "CD"], &[]),
         }
     }
 }
@@ -249,7 +260,37 @@ impl Objects {
             });
             return Ok(Block::Counter(n));
         }
-        Err(not_block(&up))
+        let vendor = |prefix: &str| up.strip_prefix(prefix).and_then(num);
+        let (b, fb, init) = if let Some(n) = vendor("%DR") {
+            if p.configured.contains(&format!("%DR{n}")) {
+                return Err(NotObject::Unsupported(format!(
+                    "the drum `%DR{n}` is configured (steps and control bits), which the import does not read yet"
+                )));
+            }
+            // An unconfigured drum: 8 steps, no control bit assigned.
+            (Block::Drum(n), "M221_DR", " := (STEPS := 8)")
+        } else if let Some(n) = vendor("%SBR") {
+            (Block::ShiftBit(n), "M221_SBR", "")
+        } else if let Some(n) = vendor("%SC") {
+            (Block::StepCounter(n), "M221_SC", "")
+        } else if let Some(n) = vendor("%R") {
+            let lifo = p.lifo.contains(&n);
+            (
+                Block::Register(n),
+                if lifo { "M221_LIFO" } else { "M221_FIFO" },
+                "",
+            )
+        } else {
+            return Err(not_block(&up));
+        };
+        self.note(&b.name(), at, || Global {
+            decl: format!("{fb}{init}"),
+            ty: fb.to_string(),
+            constant: false,
+            system: false,
+            at: 0..0,
+        });
+        Ok(b)
     }
 
     /// An operand of a bit or word instruction, or of an expression.
@@ -267,18 +308,30 @@ impl Objects {
             return Err(NotObject::Unknown);
         };
         let ok = |il: String, ty| Ok(Operand { il, ty });
-        // Members of blocks: `%TM0.Q`, `%C1.V`.
+        // Members of blocks: `%TM0.Q`, `%C1.V`, `%DR0.S`, `%R2.I`, `%SBR0.5`.
         if let Some((obj, member)) = rest.split_once('.')
-            && (obj.starts_with("TM") || obj.starts_with('C'))
+            && ["TM", "C", "DR", "R", "SBR", "SC"].contains(&split_kind(obj).0)
             && !member.is_empty()
-            && !member.bytes().all(|b| b.is_ascii_digit())
         {
             let b = self.block(p, &format!("%{obj}"), at)?;
             let name = b.name();
+            let bit = num(member);
             return match (b, member) {
                 (Block::Timer(_), "Q") => ok(format!("{name}.Q"), Ty::Bool),
                 (Block::Counter(_), "D" | "E" | "F") => ok(format!("{name}.{member}"), Ty::Bool),
                 (Block::Counter(_), "V" | "P") => ok(format!("{name}.{member}"), Ty::Int),
+                (Block::Drum(_), "F") => ok(format!("{name}.F"), Ty::Bool),
+                (Block::Drum(_), "S") => ok(format!("{name}.S"), Ty::Int),
+                (Block::Register(_), "E" | "F") => ok(format!("{name}.{member}"), Ty::Bool),
+                (Block::Register(_), "I") => ok(format!("{name}.IW"), Ty::Int),
+                (Block::Register(_), "O") => ok(format!("{name}.OW"), Ty::Int),
+                (Block::ShiftBit(_), _) if bit.is_some_and(|j| j < 16) => {
+                    ok(format!("{name}.X.{member}"), Ty::Bool)
+                }
+                (Block::StepCounter(_), _) if bit.is_some_and(|j| j < 256) => {
+                    let j = bit.unwrap_or(0);
+                    ok(format!("{name}.X{}.{}", j / 16, j % 16), Ty::Bool)
+                }
                 (Block::Timer(_), "V" | "P") => Err(NotObject::Unsupported(format!(
                     "the timer's `%{obj}.{member}` counts in units of its time base, which the import does not keep (it times with IEC's {}); use `%{obj}.Q`",
                     "TON/TOF/TP"

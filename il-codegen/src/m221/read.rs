@@ -86,6 +86,10 @@ pub(super) struct Project {
     pub counters: HashMap<u32, u64>,
     /// `%KWn` values.
     pub constants: HashMap<u32, i64>,
+    /// Objects with a configuration the import does not read (`%DR0`).
+    pub configured: std::collections::HashSet<String>,
+    /// Registers `%Rn` configured as LIFO (the others are FIFO).
+    pub lifo: std::collections::HashSet<u32>,
     /// `<Subroutines>` that hold something, for one error.
     pub subroutines: Option<Range<usize>>,
 }
@@ -179,6 +183,22 @@ pub(super) fn read(root: Node, xml: &str, diags: &mut Vec<Diagnostic>) -> Projec
                 .and_then(|n| number(xml, n, 0, 9999, diags))
                 .unwrap_or(DEFAULT_COUNTER_PRESET);
             p.counters.insert(i, preset);
+        }
+    }
+    for d in kids(sw, "Drums").flat_map(|n| n.children().filter(|c| c.is_element())) {
+        if let Some(i) = index(d) {
+            p.configured.insert(format!("%DR{i}"));
+        }
+    }
+    // A register says LIFO in one of its elements (`<Type>Lifo</Type>`).
+    for r in kids(sw, "Registers").flat_map(|n| n.children().filter(|c| c.is_element())) {
+        let lifo = r.descendants().any(|e| {
+            e.is_text()
+                && e.text()
+                    .is_some_and(|t| t.trim().eq_ignore_ascii_case("LIFO"))
+        });
+        if let (true, Some(i)) = (lifo, index(r)) {
+            p.lifo.insert(i);
         }
     }
     for c in kids(sw, "ConstantWords").flat_map(|n| kids(n, "ConstantWord")) {

@@ -568,7 +568,12 @@ fn self_temp(l: &mut Locals, t: Ty) -> String {
 fn block_output(il: &str) -> bool {
     let (obj, member) = il.split_once('.').unwrap_or((il, ""));
     let kind = obj.trim_end_matches(|c: char| c.is_ascii_digit());
-    matches!(kind, "TM" | "C") && member != "P"
+    match kind {
+        "TM" | "C" => member != "P",
+        "DR" => member == "F",
+        "R" => matches!(member, "E" | "F"),
+        _ => false,
+    }
 }
 
 /// `1`/`0` as a bit operand (`LD 1`) are TRUE and FALSE.
