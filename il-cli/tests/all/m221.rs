@@ -371,3 +371,47 @@ cycle  time  SBR0.X  R0.E   MW1  Q0_0   DR0.S  Q0_1
 ";
     assert_eq!(text(&o.stdout), want, "{}", text(&o.stderr));
 }
+
+#[test]
+fn a_timers_value_and_preset_are_words_in_units_of_its_base() {
+    // %TM0 is not configured: TON, base one minute, preset 9999. One scan
+    // every 30 s; IN = I0.0 from scan 1. MW0 := %TM0.V (ET in minutes);
+    // from scan 3, I0.1 sets %TM0.P := 2 (after the timer ran in that scan),
+    // so Q (Q0.1) comes at ET = 2 min, scan 5; ET stops there.
+    let p = temp(
+        "timer_words.smbp",
+        &project(&[
+            &[
+                "BLK %TM0", "LD %I0.0", "IN", "OUT_BLK", "LD Q", "ST %Q0.1", "END_BLK",
+            ],
+            &["[ %MW0 := %TM0.V ]"],
+            &["LD %I0.1", "[ %TM0.P := 2 ]"],
+            &["LD [ %TM0.V &gt;= 1 ]", "ST %Q0.0"],
+            &["[ %MW1 := %TM0.P ]"],
+        ]),
+    );
+    let o = ilc(&[
+        "run",
+        &p.display().to_string(),
+        "--cycles",
+        "6",
+        "--step",
+        "30s",
+        "--set",
+        "I0_0=TRUE",
+        "--set",
+        "I0_1=TRUE@3",
+        "--watch",
+        "MW0,Q0_0,MW1,Q0_1",
+    ]);
+    let want = "\
+cycle  time   MW0  Q0_0    MW1  Q0_1
+    1  0s       0  FALSE  9999  FALSE
+    2  30s      0  FALSE  9999  FALSE
+    3  1m       1  TRUE      2  FALSE
+    4  1m30s    1  TRUE      2  FALSE
+    5  2m       2  TRUE      2  TRUE
+    6  2m30s    2  TRUE      2  TRUE
+";
+    assert_eq!(text(&o.stdout), want, "{}", text(&o.stderr));
+}

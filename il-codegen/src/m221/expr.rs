@@ -6,7 +6,7 @@
 use std::ops::Range;
 
 use super::objects::{NotObject, Objects, Ty};
-use super::read::Project;
+use super::read::{DEFAULT_TIMER, Project};
 
 /// A token of an expression and its byte range in the line.
 #[derive(Clone, Debug)]
@@ -59,7 +59,15 @@ fn tokens(text: &str, base: usize) -> Vec<Tok> {
 /// An expression tree; leaves are IL operands (names or literals).
 #[derive(Debug)]
 pub(super) enum Expr {
-    Leaf { il: String, ty: Ty },
+    Leaf {
+        il: String,
+        ty: Ty,
+    },
+    /// A value that takes IL lines to load (a timer's `%TMn.V`).
+    Load {
+        lines: Vec<String>,
+        ty: Ty,
+    },
     Bin(Box<Expr>, &'static str, Box<Expr>),
     Not(Box<Expr>),
     Call(&'static str, Vec<Expr>),
@@ -252,6 +260,30 @@ impl Parser<'_> {
             return Err(err(format!("`{}` is not an operand", t.s), t.at));
         }
         let xml_at = (self.xml)(t.at.clone());
+        if let Some((n, member)) = timer_member(&up) {
+            // `%TMn.V`, `%TMn.P`: ET and PT in units of the time base.
+            if let Err(e) = self.objs.block(self.p, &format!("%TM{n}"), &xml_at) {
+                let _ = e;
+                return Err(err(format!("`{}` is not a timer", t.s), t.at));
+            }
+            let base = self
+                .p
+                .timers
+                .get(&n)
+                .copied()
+                .unwrap_or(DEFAULT_TIMER)
+                .base_ms;
+            let field = if member == "V" { "ET" } else { "PT" };
+            return Ok(Expr::Load {
+                lines: vec![
+                    format!("LD TM{n}.{field}"),
+                    "TIME_TO_DINT".into(),
+                    format!("DIV DINT#{base}"),
+                    "DINT_TO_INT".into(),
+                ],
+                ty: Ty::Int,
+            });
+        }
         match self.objs.operand(self.p, &t.s, &xml_at) {
             Ok(o) => Ok(Expr::Leaf { il: o.il, ty: o.ty }),
             Err(NotObject::Unknown) => Err(err(
@@ -272,10 +304,20 @@ impl Parser<'_> {
     }
 }
 
+/// `%TM3.V` → (3, "V"); also `.P`.
+pub(super) fn timer_member(up: &str) -> Option<(u32, &str)> {
+    let (obj, member) = up.strip_prefix("%TM")?.split_once('.')?;
+    let n = obj
+        .parse()
+        .ok()
+        .filter(|_| obj.len() < 6 && obj.bytes().all(|b| b.is_ascii_digit()))?;
+    matches!(member, "V" | "P").then_some((n, member))
+}
+
 /// The type of an expression's value.
 pub(super) fn ty(e: &Expr) -> Ty {
     match e {
-        Expr::Leaf { ty, .. } => *ty,
+        Expr::Leaf { ty, .. } | Expr::Load { ty, .. } => *ty,
         Expr::Bin(l, op, r) => {
             if matches!(*op, "EQ" | "NE" | "LT" | "LE" | "GT" | "GE") {
                 Ty::Bool
@@ -295,11 +337,19 @@ pub(super) fn ty(e: &Expr) -> Ty {
 /// A parsed block: an assignment `dest := expr` or a comparison.
 pub(super) enum Parsed {
     Assign {
-        dest: String,
+        dest: Dest,
         dest_ty: Ty,
         value: Expr,
     },
     Compare(Expr),
+}
+
+/// Where an operation block stores.
+pub(super) enum Dest {
+    /// An object: `ST dest`.
+    Plain(String),
+    /// A timer's preset `%TMn.P`, in units of its base (ms): `PT`.
+    Preset { timer: String, base_ms: u64 },
 }
 
 /// Parse the text between `[` and `]` (starting at byte `base` of the line).
@@ -323,6 +373,27 @@ pub(super) fn parse(
     if ps.toks.get(1).is_some_and(|t| t.s == ":=") {
         let d = ps.primary()?;
         ps.k += 1;
+        if let Some((n, m)) = timer_member(&ps.toks[0].s.to_ascii_uppercase()) {
+            if m == "V" {
+                return Err(err(
+                    "a timer's current value `.V` is read only",
+                    ps.toks[0].at.clone(),
+                ));
+            }
+            let value = ps.sum()?;
+            if ps.k < ps.toks.len() {
+                return Err(err("unexpected text after the expression", ps.here()));
+            }
+            let base_ms = p.timers.get(&n).copied().unwrap_or(DEFAULT_TIMER).base_ms;
+            return Ok(Parsed::Assign {
+                dest: Dest::Preset {
+                    timer: format!("TM{n}"),
+                    base_ms,
+                },
+                dest_ty: Ty::Int,
+                value,
+            });
+        }
         let Expr::Leaf { il, ty } = d else {
             return Err(err("the left of `:=` is an object", base..base + 1));
         };
@@ -337,7 +408,7 @@ pub(super) fn parse(
             return Err(err("unexpected text after the expression", ps.here()));
         }
         return Ok(Parsed::Assign {
-            dest: il,
+            dest: Dest::Plain(il),
             dest_ty: ty,
             value,
         });
@@ -380,6 +451,7 @@ fn typed(il: &str, ty: Ty, ctx: Ty) -> String {
 pub(super) fn emit(e: &Expr, ctx: Ty, out: &mut Vec<String>, temp: &mut dyn FnMut(Ty) -> String) {
     match e {
         Expr::Leaf { il, ty } => out.push(format!("LD {}", typed(il, *ty, ctx))),
+        Expr::Load { lines, .. } => out.extend(lines.iter().cloned()),
         Expr::Bin(l, op, r) => {
             // A comparison's sides have their own type.
             let ctx = if matches!(*op, "EQ" | "NE" | "LT" | "LE" | "GT" | "GE") {

@@ -333,8 +333,7 @@ impl Objects {
                     ok(format!("{name}.X{}.{}", j / 16, j % 16), Ty::Bool)
                 }
                 (Block::Timer(_), "V" | "P") => Err(NotObject::Unsupported(format!(
-                    "the timer's `%{obj}.{member}` counts in units of its time base, which the import does not keep (it times with IEC's {}); use `%{obj}.Q`",
-                    "TON/TOF/TP"
+                    "the timer's `%{obj}.{member}` is a word, for operation and comparison blocks (`[ %MW0 := %{obj}.{member} ]`)"
                 ))),
                 _ => Err(NotObject::Unknown),
             };

@@ -18,7 +18,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 
 use super::codes::{BAD_LINE, OVERLAP, UNSUPPORTED};
-use super::expr::{self, Parsed};
+use super::expr::{self, Dest, Parsed};
 use super::objects::{Block, NotObject, Objects, Ty};
 use super::read::{Line, Project, span};
 use crate::diag::Diagnostic;
@@ -467,6 +467,13 @@ impl Pou<'_> {
                 if !rung.parens.is_empty() {
                     // Inside `(`, where IEC IL has no jump: the value is
                     // computed, and stored when the CR is 1 (SEL).
+                    let Dest::Plain(dest) = dest else {
+                        return Err(bad(
+                            line,
+                            open..text.len(),
+                            "a timer's preset set inside `(` ... `)`",
+                        ));
+                    };
                     let x = self_temp(&mut self.locals, dest_ty);
                     self.locals.cr = true;
                     self.put("ST _cr", all.clone());
@@ -480,7 +487,16 @@ impl Pou<'_> {
                     self.put("LD _cr", all);
                     return Ok(());
                 }
-                lines.push(format!("ST {dest}"));
+                match dest {
+                    Dest::Plain(d) => lines.push(format!("ST {d}")),
+                    Dest::Preset { timer, base_ms } => {
+                        let x = self_temp(&mut self.locals, Ty::Int);
+                        lines.push(format!("ST {x}"));
+                        lines.push(format!("LD T#{base_ms}ms"));
+                        lines.push(format!("MUL {x}"));
+                        lines.push(format!("ST {timer}.PT"));
+                    }
+                }
                 if conditional {
                     self.locals.cr = true;
                     self.locals.ops += 1;
