@@ -102,6 +102,11 @@ fn main() {
         .out_dir(out.join("m221"))
         .compile()
         .unwrap_or_else(|e| panic!("\n{e}"));
+    il_codegen::Builder::new()
+        .file("m221/ends.smbp")
+        .out_dir(out.join("m221_ends"))
+        .compile()
+        .unwrap_or_else(|e| panic!("\n{e}"));
 
     let corpus = Path::new("../../shared/corpus");
     let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));

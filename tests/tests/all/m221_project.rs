@@ -62,3 +62,45 @@ fn the_project_runs_through_build_rs() {
 fn the_project_runs_through_il() {
     scans!(m221_macro);
 }
+
+/// `m221/ends.smbp` through build.rs: ENDC in the first POU ends the scan
+/// (the second POU does not run), ENDCN in the second skips its last rung,
+/// `%MW2:X1` and `%MW4:X0` are bits of words. The trace of il-cli's test.
+#[test]
+fn the_end_of_scan_project_runs_through_build_rs() {
+    use il_tests::m221_ends::M221;
+    // (I0.0, I0.1, I0.2) per scan, and (MW2, Q0.0, MW3, MW4, MW5, MW6) after.
+    let inputs = [
+        (F, F, T),
+        (F, T, T),
+        (T, T, T),
+        (F, F, T),
+        (F, F, F),
+        (F, F, F),
+    ];
+    let want: [(i16, bool, i16, i16, i16, i16); 6] = [
+        (1, F, 1, 0, 1, 16),
+        (2, T, 2, 1, 2, 32),
+        (2, T, 2, 1, 2, 32),
+        (3, T, 3, 0, 3, 48),
+        (4, F, 4, 0, 3, 64),
+        (5, F, 5, 0, 3, 80),
+    ];
+    let mut ctx = Cycle::new();
+    let mut p = M221::default();
+    for (k, ((a, b, c), want)) in inputs.iter().zip(want).enumerate() {
+        ctx.io.set_bit(Area::Input, 0, 0, *a);
+        ctx.io.set_bit(Area::Input, 0, 1, *b);
+        ctx.io.set_bit(Area::Input, 0, 2, *c);
+        p.run(&mut ctx);
+        let got = (
+            p.MW2,
+            ctx.io.bit(Area::Output, 0, 0),
+            p.MW3,
+            p.MW4,
+            p.MW5,
+            p.MW6,
+        );
+        assert_eq!(got, want, "scan {}", k + 1);
+    }
+}
