@@ -415,3 +415,39 @@ cycle  time   MW0  Q0_0    MW1  Q0_1
 ";
     assert_eq!(text(&o.stdout), want, "{}", text(&o.stderr));
 }
+
+#[test]
+fn logic_on_words_is_bitwise() {
+    // AND/OR/XOR/NOT on %MW and %MD words, as the M221 computes them:
+    // 16#1234 AND 16#FF = 16#34; NOT 16#1234 = 16#EDCB (-4661 as INT);
+    // (16#1234 OR 1) XOR 3 = 16#1236; 1000 AND 255 = 232.
+    let p = temp(
+        "words.smbp",
+        &project(&[
+            &["[ %MW1 := %MW2 AND 16#FF ]"],
+            &["[ %MW3 := NOT %MW2 ]"],
+            &["[ %MW4 := %MW2 OR 1 XOR %MW5 ]"],
+            &["LD [ NOT %MW2 = -4661 ]", "ST %Q0.0"],
+            &["[ %MD10 := %MD12 AND 255 ]"],
+        ]),
+    );
+    let o = ilc(&[
+        "run",
+        &p.display().to_string(),
+        "--cycles",
+        "1",
+        "--set",
+        "MW2=16#1234",
+        "--set",
+        "MW5=3",
+        "--set",
+        "MD12=1000",
+        "--watch",
+        "MW1,MW3,MW4,Q0_0,MD10",
+    ]);
+    let want = "\
+cycle  time  MW1    MW3   MW4  Q0_0  MD10
+    1  0s     52  -4661  4662  TRUE   232
+";
+    assert_eq!(text(&o.stdout), want, "{}", text(&o.stderr));
+}

@@ -436,6 +436,16 @@ pub(super) fn parse(
     Ok(Parsed::Compare(Expr::Bin(Box::new(l), op, Box::new(r))))
 }
 
+/// The conversions to and from the bit string of an integer type (`NOT`,
+/// `AND` ... on a word).
+fn bit_string(t: Ty) -> Option<(&'static str, &'static str)> {
+    match t {
+        Ty::Int | Ty::IntLit => Some(("INT_TO_WORD", "WORD_TO_INT")),
+        Ty::Dint => Some(("DINT_TO_DWORD", "DWORD_TO_DINT")),
+        _ => None,
+    }
+}
+
 /// A literal written with the type of its context (`INT#1`, `REAL#2.0`).
 fn typed(il: &str, ty: Ty, ctx: Ty) -> String {
     match (ty, ctx) {
@@ -459,6 +469,18 @@ pub(super) fn emit(e: &Expr, ctx: Ty, out: &mut Vec<String>, temp: &mut dyn FnMu
             } else {
                 ctx
             };
+            // AND/OR/XOR of words: IEC has them on bit strings only.
+            if let (true, Some((to, back))) = (matches!(*op, "AND" | "OR" | "XOR"), bit_string(ctx))
+            {
+                emit(l, ctx, out, temp);
+                out.push(to.into());
+                out.push(format!("{op}("));
+                emit(r, ctx, out, temp);
+                out.push(to.into());
+                out.push(")".into());
+                out.push(back.into());
+                return;
+            }
             emit(l, ctx, out, temp);
             match &**r {
                 Expr::Leaf { il, ty } => out.push(format!("{op} {}", typed(il, *ty, ctx))),
@@ -471,7 +493,10 @@ pub(super) fn emit(e: &Expr, ctx: Ty, out: &mut Vec<String>, temp: &mut dyn FnMu
         }
         Expr::Not(x) => {
             emit(x, ctx, out, temp);
-            out.push("NOT".into());
+            match bit_string(ctx) {
+                Some((to, back)) => out.extend([to.to_string(), "NOT".into(), back.into()]),
+                None => out.push("NOT".into()),
+            }
         }
         Expr::Call(f, args) => {
             let arg_ctx = args.first().map_or(ctx, |a| Ty::join(ty(a), ctx));
