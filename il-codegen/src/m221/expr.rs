@@ -194,24 +194,20 @@ impl Parser<'_> {
 
     fn unary(&mut self) -> Result<Expr, Error> {
         if self.eat("-") {
-            let at = self.here();
             let x = self.unary()?;
             return Ok(match x {
                 Expr::Leaf { il, ty } if matches!(ty, Ty::IntLit | Ty::RealLit) => Expr::Leaf {
                     il: format!("-{il}"),
                     ty,
                 },
-                x => {
-                    let _ = at;
-                    Expr::Bin(
-                        Box::new(Expr::Leaf {
-                            il: "0".into(),
-                            ty: Ty::IntLit,
-                        }),
-                        "SUB",
-                        Box::new(x),
-                    )
-                }
+                x => Expr::Bin(
+                    Box::new(Expr::Leaf {
+                        il: "0".into(),
+                        ty: Ty::IntLit,
+                    }),
+                    "SUB",
+                    Box::new(x),
+                ),
             });
         }
         if self.eat("NOT") {
@@ -262,8 +258,11 @@ impl Parser<'_> {
         let xml_at = (self.xml)(t.at.clone());
         if let Some((n, member)) = timer_member(&up) {
             // `%TMn.V`, `%TMn.P`: ET and PT in units of the time base.
-            if let Err(e) = self.objs.block(self.p, &format!("%TM{n}"), &xml_at) {
-                let _ = e;
+            if self
+                .objs
+                .block(self.p, &format!("%TM{n}"), &xml_at)
+                .is_err()
+            {
                 return Err(err(format!("`{}` is not a timer", t.s), t.at));
             }
             let base = self

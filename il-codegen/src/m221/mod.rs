@@ -11,7 +11,8 @@
 //! instruction line it comes from:
 //! - each POU of the master task (`<Pous>`) as a PROGRAM, its rungs in
 //!   order, each instruction line translated to IEC IL (`rung`, `blocks`,
-//!   `expr`);
+//!   `brackets` for operation and comparison blocks, whose expressions
+//!   `expr` parses and writes);
 //! - the objects the program uses (`%I0.3`, `%M5`, `%MW2`, `%TM0` ...) as
 //!   globals of one CONFIGURATION `M221` (`objects`, `write`), the timers
 //!   and counters configured from `<Timers>` / `<Counters>` (`read`).
@@ -22,6 +23,8 @@
 
 #[cfg(feature = "plcopen")]
 mod blocks;
+#[cfg(feature = "plcopen")]
+mod brackets;
 #[cfg(feature = "plcopen")]
 mod expr;
 #[cfg(feature = "plcopen")]

@@ -7,7 +7,7 @@
 use std::collections::HashSet;
 use std::ops::Range;
 
-use super::codes::{BAD_LINE, OVERLAP, SYSTEM_OBJECT, UNSUPPORTED};
+use super::codes::{OVERLAP, SYSTEM_OBJECT, UNSUPPORTED};
 use super::objects::{Global, Objects};
 use super::read::{self, Pou as XmlPou, Project, span};
 use super::rung::{Locals, Pou, Rung, SCAN_END, bad, label_name};
@@ -213,7 +213,6 @@ fn body(
             None => t.flush(&mut rung, false, at),
         }
     }
-    let _ = BAD_LINE;
     t.locals
 }
 
