@@ -7,7 +7,7 @@
 
 use std::ops::Range;
 
-use super::codes::{BAD_LINE, OVERLAP, UNSUPPORTED};
+use super::codes::{BAD_LINE, UNSUPPORTED};
 use super::expr::{self, Dest, Parsed};
 use super::objects::Ty;
 use super::read::{Line, span};
@@ -42,19 +42,7 @@ impl Pou<'_> {
             Ok(p) => p,
             Err(e) => {
                 let at = span(&line.xml(e.at.clone()));
-                let d = if let Some((o, first)) = e.overlap {
-                    Diagnostic::error(
-                        OVERLAP,
-                        at,
-                        format!(
-                            "{}, which the project also uses; the import keeps them apart",
-                            e.what
-                        ),
-                    )
-                    .with_label("overlaps another object")
-                    .with_secondary(span(&first), format!("`%{o}` used here"))
-                    .with_note("`%MDn` and `%MFn` are the words `%MWn` and `%MWn+1`")
-                } else if e.unsupported {
+                let d = if e.unsupported {
                     Diagnostic::error(UNSUPPORTED, at, e.what).with_label("not compiled")
                 } else {
                     Diagnostic::error(BAD_LINE, at, e.what)
@@ -108,6 +96,35 @@ impl Pou<'_> {
                         lines.push(format!("LD T#{base_ms}ms"));
                         lines.push(format!("MUL {x}"));
                         lines.push(format!("ST {timer}.PT"));
+                    }
+                    Dest::Words { n, real } => {
+                        // The value's bits into the two words, low first.
+                        let x = self_temp(&mut self.locals, dest_ty);
+                        let d = self_temp(&mut self.locals, Ty::Dword);
+                        lines.push(format!("ST {x}"));
+                        lines.push(format!("LD {x}"));
+                        lines.push(
+                            if real {
+                                "REAL_AS_DWORD"
+                            } else {
+                                "DINT_TO_DWORD"
+                            }
+                            .into(),
+                        );
+                        lines.push(format!("ST {d}"));
+                        lines.extend([
+                            "DWORD_TO_WORD".into(),
+                            "WORD_TO_INT".into(),
+                            format!("ST MW{n}"),
+                            format!("LD {d}"),
+                            "SHR 16".into(),
+                            "DWORD_TO_WORD".into(),
+                            "WORD_TO_INT".into(),
+                            format!("ST MW{}", n + 1),
+                        ]);
+                        for w in [n, n + 1] {
+                            let _ = self.objs.operand(self.p, &format!("%MW{w}"), &all);
+                        }
                     }
                 }
                 if conditional {

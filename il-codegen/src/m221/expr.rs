@@ -78,7 +78,6 @@ pub(super) struct Error {
     pub what: String,
     pub at: Range<usize>,
     pub unsupported: bool,
-    pub overlap: Option<(String, Range<usize>)>,
 }
 
 fn err(what: impl Into<String>, at: Range<usize>) -> Error {
@@ -86,7 +85,6 @@ fn err(what: impl Into<String>, at: Range<usize>) -> Error {
         what: what.into(),
         at,
         unsupported: false,
-        overlap: None,
     }
 }
 
@@ -256,6 +254,33 @@ impl Parser<'_> {
             return Err(err(format!("`{}` is not an operand", t.s), t.at));
         }
         let xml_at = (self.xml)(t.at.clone());
+        if let Some((real, n)) = word_view(self.p, &up) {
+            // `%MDn`/`%MFn` over `%MWn` (low word) and `%MWn+1`.
+            for w in [n, n + 1] {
+                let _ = self.objs.operand(self.p, &format!("%MW{w}"), &xml_at);
+            }
+            let mut lines = vec![
+                format!("LD MW{}", n + 1),
+                "INT_TO_WORD".into(),
+                "WORD_TO_DWORD".into(),
+                "SHL 16".into(),
+                "OR(".into(),
+                format!("LD MW{n}"),
+                "INT_TO_WORD".into(),
+                "WORD_TO_DWORD".into(),
+                ")".into(),
+            ];
+            lines.push(
+                if real {
+                    "DWORD_AS_REAL"
+                } else {
+                    "DWORD_TO_DINT"
+                }
+                .into(),
+            );
+            let ty = if real { Ty::Real } else { Ty::Dint };
+            return Ok(Expr::Load { lines, ty });
+        }
         if let Some((n, member)) = timer_member(&up) {
             // `%TMn.V`, `%TMn.P`: ET and PT in units of the time base.
             if self
@@ -294,13 +319,23 @@ impl Parser<'_> {
                 e.unsupported = true;
                 Err(e)
             }
-            Err(NotObject::Overlap(o, r)) => {
-                let mut e = err(format!("`{}` shares memory words with `%{o}`", t.s), t.at);
-                e.overlap = Some((o, r));
-                Err(e)
-            }
         }
     }
+}
+
+/// In a project whose memory objects share words: `%MF4` → (true, 4),
+/// `%MD2` → (false, 2); `None` otherwise.
+pub(super) fn word_view(p: &Project, up: &str) -> Option<(bool, u32)> {
+    if !p.shared_words {
+        return None;
+    }
+    let (real, n) = match (up.strip_prefix("%MF"), up.strip_prefix("%MD")) {
+        (Some(n), _) => (true, n),
+        (_, Some(n)) => (false, n),
+        _ => return None,
+    };
+    let ok = !n.is_empty() && n.len() < 6 && n.bytes().all(|b| b.is_ascii_digit());
+    Some((real, n.parse().ok().filter(|_| ok)?))
 }
 
 /// `%TM3.V` → (3, "V"); also `.P`.
@@ -349,6 +384,8 @@ pub(super) enum Dest {
     Plain(String),
     /// A timer's preset `%TMn.P`, in units of its base (ms): `PT`.
     Preset { timer: String, base_ms: u64 },
+    /// `%MFn` (`real`) or `%MDn` over the words `%MWn` (low) and `%MWn+1`.
+    Words { n: u32, real: bool },
 }
 
 /// Parse the text between `[` and `]` (starting at byte `base` of the line).
@@ -372,6 +409,17 @@ pub(super) fn parse(
     if ps.toks.get(1).is_some_and(|t| t.s == ":=") {
         let d = ps.primary()?;
         ps.k += 1;
+        if let Some((real, n)) = word_view(p, &ps.toks[0].s.to_ascii_uppercase()) {
+            let value = ps.sum()?;
+            if ps.k < ps.toks.len() {
+                return Err(err("unexpected text after the expression", ps.here()));
+            }
+            return Ok(Parsed::Assign {
+                dest: Dest::Words { n, real },
+                dest_ty: if real { Ty::Real } else { Ty::Dint },
+                value,
+            });
+        }
         if let Some((n, m)) = timer_member(&ps.toks[0].s.to_ascii_uppercase()) {
             if m == "V" {
                 return Err(err(

@@ -7,7 +7,10 @@
 //! bits `%IX`/`%QX` of byte `4i + j/8`, bit `j mod 8` (four bytes per
 //! module, 32 channels); the analog channels `%IWi.j`/`%QWi.j` are the words
 //! `%IW`/`%QW` number `64 + 8i + j` (bytes 128 to 255, 8 modules of 8
-//! channels). Memory objects are globals of their own type.
+//! channels). Memory objects are globals of their own type, except in a
+//! project where two of them share a word (`%MF1` and `%MW2`): there every
+//! `%MDn`/`%MFn` is a view of `%MWn` and `%MWn+1` that `expr` reads and
+//! writes.
 
 use std::collections::BTreeMap;
 use std::ops::Range;
@@ -21,6 +24,8 @@ pub(super) enum Ty {
     Int,
     Dint,
     Real,
+    /// A DWORD, for temporaries only (the bits of a `%MD`/`%MF` view).
+    Dword,
     /// An integer literal, of the type of the other operand.
     IntLit,
     /// A real literal.
@@ -34,6 +39,7 @@ impl Ty {
             Ty::Int | Ty::IntLit => "INT",
             Ty::Dint => "DINT",
             Ty::Real | Ty::RealLit => "REAL",
+            Ty::Dword => "DWORD",
         }
     }
 
@@ -96,13 +102,10 @@ pub(super) struct Global {
     pub at: Range<usize>,
 }
 
-/// The globals used so far, by IL name; and the memory words each `%MD`,
-/// `%MF` and `%MW` occupies, for the overlap check.
+/// The globals used so far, by IL name.
 #[derive(Default)]
 pub(super) struct Objects {
     pub globals: BTreeMap<String, Global>,
-    /// Word `n` → the object that occupies it and where.
-    pub words: BTreeMap<u32, (String, Range<usize>)>,
     /// The globals named since the caller last took them: the POU that
     /// names them declares them VAR_EXTERNAL.
     pub touched: Vec<String>,
@@ -172,9 +175,6 @@ pub(super) enum NotObject {
     Unknown,
     /// An object the import does not compile, and why.
     Unsupported(String),
-    /// A memory object that shares words with another the project uses:
-    /// the other, and where it is used.
-    Overlap(String, Range<usize>),
 }
 
 fn time_literal(ms: u64) -> String {
@@ -199,30 +199,6 @@ impl Objects {
             system,
             at: 0..0,
         });
-    }
-
-    /// Note that `obj` (`%MW3`, `%MF1` ...) occupies memory words `first`
-    /// and on; the object already there when two differ.
-    pub fn occupy(
-        &mut self,
-        obj: &str,
-        first: u32,
-        count: u32,
-        at: &Range<usize>,
-    ) -> Option<(String, Range<usize>)> {
-        let mut clash = None;
-        for w in first..first.saturating_add(count) {
-            match self.words.get(&w) {
-                Some((o, r)) if o != obj => {
-                    clash.get_or_insert((o.clone(), r.clone()));
-                }
-                Some(_) => {}
-                None => {
-                    self.words.insert(w, (obj.to_string(), at.clone()));
-                }
-            }
-        }
-        clash
     }
 
     /// The block a `BLK` operand names, its instance declared.
@@ -424,11 +400,13 @@ impl Objects {
                     "MD" => ("DINT", Ty::Dint),
                     _ => ("REAL", Ty::Real),
                 };
-                let name = format!("{kind}{n}");
-                let words = if kind == "MW" { 1 } else { 2 };
-                if let Some((other, r)) = self.occupy(&name, n, words, at) {
-                    return Err(NotObject::Overlap(other, r));
+                if kind != "MW" && p.shared_words {
+                    // Views of two words: `expr` reads and writes them.
+                    return Err(NotObject::Unsupported(format!(
+                        "`%{kind}{n}` is a double word or float, for operation and comparison blocks"
+                    )));
                 }
+                let name = format!("{kind}{n}");
                 self.plain(&name, ty, at, false);
                 ok(name, t)
             }

@@ -90,6 +90,9 @@ pub(super) struct Project {
     pub configured: std::collections::HashSet<String>,
     /// Registers `%Rn` configured as LIFO (the others are FIFO).
     pub lifo: std::collections::HashSet<u32>,
+    /// Whether two memory objects share a word (`%MF1` and `%MW2`): then
+    /// every `%MDn`/`%MFn` is a view of the words `%MWn`, `%MWn+1`.
+    pub shared_words: bool,
     /// `<Subroutines>` that hold something, for one error.
     pub subroutines: Option<Range<usize>>,
 }
@@ -169,6 +172,7 @@ pub(super) fn read(root: Node, xml: &str, diags: &mut Vec<Diagnostic>) -> Projec
             rungs,
         });
     }
+    p.shared_words = shared_words(&p);
     if let Some(s) = kid(sw, "Subroutines").filter(|s| s.children().any(|c| c.is_element())) {
         p.subroutines = Some(s.range());
     }
@@ -288,4 +292,37 @@ fn timer(xml: &str, t: Node, diags: &mut Vec<Diagnostic>) -> Timer {
         }
     }
     out
+}
+
+/// Whether the project names two memory objects that share a word: `%MWn`
+/// is word n, `%MDn` and `%MFn` words n and n+1.
+fn shared_words(p: &Project) -> bool {
+    let mut words: HashMap<u32, String> = HashMap::new();
+    for l in p.pous.iter().flat_map(|x| &x.rungs).flat_map(|r| &r.lines) {
+        let up = l.text.to_ascii_uppercase();
+        for (i, _) in up.match_indices("%M") {
+            let rest = &up[i + 2..];
+            let (kind, count) = match rest.as_bytes().first() {
+                Some(b'W') => ('W', 1),
+                Some(b'D') => ('D', 2),
+                Some(b'F') => ('F', 2),
+                _ => continue,
+            };
+            let digits: String = rest[1..].chars().take_while(char::is_ascii_digit).collect();
+            let Ok(n) = digits.parse::<u32>() else {
+                continue;
+            };
+            let obj = format!("{kind}{n}");
+            for w in n..n.saturating_add(count) {
+                match words.get(&w) {
+                    Some(o) if *o != obj => return true,
+                    Some(_) => {}
+                    None => {
+                        words.insert(w, obj.clone());
+                    }
+                }
+            }
+        }
+    }
+    false
 }

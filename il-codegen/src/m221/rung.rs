@@ -17,7 +17,7 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 
-use super::codes::{BAD_LINE, OVERLAP, UNSUPPORTED};
+use super::codes::{BAD_LINE, UNSUPPORTED};
 use super::objects::{Block, NotObject, Objects, Ty};
 use super::read::{Line, Project, span};
 use crate::diag::Diagnostic;
@@ -123,18 +123,6 @@ impl Pou<'_> {
             ),
             NotObject::Unsupported(why) => Box::new(
                 Diagnostic::error(UNSUPPORTED, at, why).with_label("not compiled"),
-            ),
-            NotObject::Overlap(other, first) => Box::new(
-                Diagnostic::error(
-                    OVERLAP,
-                    at,
-                    format!(
-                        "`{s}` shares memory words with `%{other}`, which the project also uses; the import keeps them apart"
-                    ),
-                )
-                .with_label("overlaps another object")
-                .with_secondary(span(&first), format!("`%{other}` used here"))
-                .with_note("`%MDn` and `%MFn` are the words `%MWn` and `%MWn+1`"),
             ),
         }
     }

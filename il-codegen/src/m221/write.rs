@@ -7,7 +7,7 @@
 use std::collections::HashSet;
 use std::ops::Range;
 
-use super::codes::{OVERLAP, SYSTEM_OBJECT, UNSUPPORTED};
+use super::codes::{SYSTEM_OBJECT, UNSUPPORTED};
 use super::objects::{Global, Objects};
 use super::read::{self, Pou as XmlPou, Project, span};
 use super::rung::{Locals, Pou, Rung, SCAN_END, bad, label_name};
@@ -104,7 +104,6 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
             );
         }
     }
-    let diags = one_per_overlap(diags);
     let (text, map) = w.finish();
     Translation {
         text,
@@ -114,30 +113,6 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
         folders: Vec::new(),
         globals: HashSet::new(),
     }
-}
-
-/// One IL0432 per pair of overlapping objects: the rungs of the others
-/// (left out all the same) are named in its notes.
-fn one_per_overlap(diags: Vec<Diagnostic>) -> Vec<Diagnostic> {
-    let mut out: Vec<Diagnostic> = Vec::new();
-    for d in diags {
-        let first = (d.code == OVERLAP)
-            .then(|| {
-                out.iter_mut()
-                    .find(|o| o.code == OVERLAP && o.message == d.message)
-            })
-            .flatten();
-        match first {
-            Some(o) => o.notes.extend(
-                d.notes
-                    .iter()
-                    .filter(|n| n.starts_with("rung "))
-                    .map(|n| n.replace("rung ", "the same overlap: rung ")),
-            ),
-            None => out.push(d),
-        }
-    }
-    out
 }
 
 /// Translate the rungs of `pou` into `w`; the locals they need.
