@@ -94,6 +94,20 @@ fn main() {
         .compile()
         .unwrap_or_else(|e| panic!("\n{e}"));
 
+    // A Modicon M221 project (.smbp): its rungs' Instruction List and its
+    // objects as a CONFIGURATION (tests/m221.rs).
+    println!("cargo:rerun-if-changed=m221");
+    il_codegen::Builder::new()
+        .file("m221/groups.smbp")
+        .out_dir(out.join("m221"))
+        .compile()
+        .unwrap_or_else(|e| panic!("\n{e}"));
+    il_codegen::Builder::new()
+        .file("m221/ends.smbp")
+        .out_dir(out.join("m221_ends"))
+        .compile()
+        .unwrap_or_else(|e| panic!("\n{e}"));
+
     let corpus = Path::new("../../shared/corpus");
     let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));
     if corpus.join("beremiz_matiec_cmd_monitor_il.txt").exists() {

@@ -97,12 +97,15 @@ fn choose(r: &Request, checked: &il_codegen::Checked) -> Result<Loaded, String> 
     // A CONFIGURATION is run when named, or when no program is named and
     // the only CONFIGURATION is the one thing to run (a file with one
     // PROGRAM runs that program, as it did before configurations could
-    // run). A CODESYS project with a task configuration runs it, as the PLC does.
+    // run). A CODESYS project with a task configuration runs it, as the PLC
+    // does, and so does an M221 project.
     let exp_tasks = checked.inputs().iter().any(|i| match i {
         il_codegen::Input::Exp(e) => e
             .objects()
             .iter()
             .any(|ob| ob.kind == il_codegen::exp::ObjectKind::Tasks),
+        // A Modicon M221 project runs its POUs, in order, as one task.
+        il_codegen::Input::PlcOpen(i) => il_codegen::m221::is_project(&i.xml.text),
         _ => false,
     });
     let chosen = match (r.config, r.program, prog.configs.as_slice()) {

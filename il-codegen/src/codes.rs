@@ -15,6 +15,7 @@ pub fn all() -> impl Iterator<Item = &'static CodeInfo> {
         .chain(crate::plcopen::CODES)
         .chain(crate::exp::CODES)
         .chain(crate::logiclab::CODES)
+        .chain(crate::m221::CODES)
         .chain(crate::dialect::CODES)
 }
 

@@ -63,6 +63,7 @@ pub mod exp;
 pub mod format;
 pub mod ir;
 pub mod logiclab;
+pub mod m221;
 pub mod plcopen;
 pub mod read;
 pub mod step_counter;

@@ -121,6 +121,21 @@ pub mod exp_macro {
     }
 }
 
+/// `m221/groups.smbp`: a Modicon M221 project through build.rs.
+pub mod m221_build {
+    include!(concat!(env!("OUT_DIR"), "/m221/groups.rs"));
+}
+
+/// The same project through `il!`.
+pub mod m221_macro {
+    il_macros::il!(file = "m221/groups.smbp");
+}
+
+/// `m221/ends.smbp`: two POUs, `ENDC`/`ENDCN`, bits of words.
+pub mod m221_ends {
+    include!(concat!(env!("OUT_DIR"), "/m221_ends/ends.rs"));
+}
+
 /// `logiclab/project.plcprj`: a `LogicLab` / Arduino PLC IDE project through
 /// build.rs. Its `FUNCTION_BLOCK` `Scale` is in Structured Text, so its body
 /// is the crate's.

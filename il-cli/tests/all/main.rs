@@ -13,6 +13,7 @@ mod explain;
 mod fmt;
 mod logiclab;
 mod lsp;
+mod m221;
 mod plcopen;
 mod run;
 mod run_config;

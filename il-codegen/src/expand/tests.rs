@@ -243,11 +243,11 @@ fn a_file_is_xml_by_its_text() {
         <pou name=\"Blink\" pouType=\"functionBlock\"><interface><localVars>\
         <variable name=\"lamp\"><type><BOOL/></type></variable></localVars></interface>\
         <body><IL><p><![CDATA[LD lamp\nSTN lamp]]></p></IL></body></pou></pous></types></project>\n";
-    let (il, smbp) = (dir.join("blink.il"), dir.join("Counters1.smbp"));
+    let (il, tcpou) = (dir.join("blink.il"), dir.join("Main.TcPOU"));
     std::fs::write(&il, project).unwrap();
-    std::fs::write(&smbp, "<?xml version=\"1.0\"?>\n<ProjectDescriptor/>\n").unwrap();
+    std::fs::write(&tcpou, "<?xml version=\"1.0\"?>\n<TcPlcObject/>\n").unwrap();
     let file = |f: &std::path::Path| expand(&[id("file"), p('='), s(&f.display().to_string())]);
-    let (imported, other) = (file(&il), file(&smbp));
+    let (imported, other) = (file(&il), file(&tcpou));
     let _ = std::fs::remove_dir_all(&dir);
     if cfg!(feature = "plcopen") {
         assert!(imported.errors.is_empty(), "{}", text(&imported));
@@ -259,7 +259,7 @@ fn a_file_is_xml_by_its_text() {
         assert_eq!(other.errors.len(), 1, "{}", text(&other));
         assert!(other.errors[0].0.contains("IL0202"), "{}", text(&other));
         assert!(
-            other.errors[0].0.contains("`<ProjectDescriptor>`"),
+            other.errors[0].0.contains("`<TcPlcObject>`"),
             "{}",
             text(&other)
         );

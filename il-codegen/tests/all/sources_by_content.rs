@@ -21,7 +21,7 @@ STN lamp]]></p></IL></body>
 </project>
 "#;
 
-const SMBP: &str = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<ProjectDescriptor xmlns:xsd=\"http://www.w3.org/2001/XMLSchema\">\n  <Name>Counters1</Name>\n  <InstructionLines>LD %I0.0 ; &lt;x&gt;</InstructionLines>\n</ProjectDescriptor>\n";
+const OTHER: &str = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  <POU Name=\"Main\">\n  <Declaration>LD %I0.0 ; &lt;x&gt;</Declaration></POU>\n</TcPlcObject>\n";
 
 fn diagnostics(name: &str, text: &str) -> (Input, Vec<Diagnostic>) {
     let checked = Program::new().source(SourceFile::new(name, text)).check();
@@ -82,13 +82,13 @@ fn an_error_in_the_il_points_into_the_file_after_blank_lines() {
 
 #[test]
 fn other_xml_is_one_error_that_names_its_root() {
-    for name in ["Counters1.smbp", "Counters1.il", "Counters1.xml"] {
-        let (input, d) = diagnostics(name, SMBP);
+    for name in ["Main.TcPOU", "Main.il", "Main.xml"] {
+        let (input, d) = diagnostics(name, OTHER);
         assert_eq!(d.len(), 1, "{name}: {d:?}");
         assert_eq!(d[0].code, "IL0202");
         assert!(
             d[0].message
-                .contains("its root element is `<ProjectDescriptor>` (no namespace)"),
+                .contains("its root element is `<TcPlcObject>` (no namespace)"),
             "{}",
             d[0].message
         );
@@ -96,7 +96,7 @@ fn other_xml_is_one_error_that_names_its_root() {
             input
                 .source()
                 .snippet(d[0].span)
-                .starts_with("<ProjectDescriptor"),
+                .starts_with("<TcPlcObject"),
             "{d:?}"
         );
         assert!(
@@ -167,9 +167,9 @@ fn builder_file_reads_xml_by_its_text() {
     assert!(written[1].ends_with("main.rs"), "{written:?}");
     assert!(code.contains("// 9: STN lamp"), "{code}");
 
-    std::fs::write(dir.join("Counters1.smbp"), format!("\u{feff}{SMBP}")).unwrap();
+    std::fs::write(dir.join("Main.TcPOU"), format!("\u{feff}{OTHER}")).unwrap();
     let e = Builder::new()
-        .file(dir.join("Counters1.smbp"))
+        .file(dir.join("Main.TcPOU"))
         .out_dir(dir.join("out2"))
         .cargo_directives(false)
         .compile()
@@ -177,9 +177,9 @@ fn builder_file_reads_xml_by_its_text() {
         .to_string();
     assert_eq!(e.matches("error[").count(), 1, "{e}");
     assert!(e.contains("error[IL0202]"), "{e}");
-    assert!(e.contains("`<ProjectDescriptor>`"), "{e}");
-    assert!(e.contains("Counters1.smbp:2:1"), "{e}");
-    assert!(!dir.join("out2").join("Counters1.rs").exists());
+    assert!(e.contains("`<TcPlcObject>`"), "{e}");
+    assert!(e.contains("Main.TcPOU:2:1"), "{e}");
+    assert!(!dir.join("out2").join("Main.rs").exists());
 
     // UTF-16 (here by its byte order mark) is read for XML as for IL.
     let utf16: Vec<u8> = [0xFF, 0xFE]

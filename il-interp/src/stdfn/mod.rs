@@ -460,6 +460,13 @@ fn conversion(c: &Conversion, name: &str, args: &[Value]) -> Result<Value, Strin
             };
             Ok(Value::Int(wrap(r, to), to))
         }
+        ConvKind::Bits => match (x, to) {
+            (Value::Int(b, _), Elem::REAL) => Ok(Value::Real(f32::from_bits(*b as u32))),
+            (Value::Int(b, _), Elem::LREAL) => Ok(Value::LReal(f64::from_bits(*b as u64))),
+            (Value::Real(r), _) => Ok(Value::Int(i128::from(r.to_bits()), to)),
+            (Value::LReal(r), _) => Ok(Value::Int(i128::from(r.to_bits()), to)),
+            _ => Err(bad()),
+        },
         ConvKind::Value => convert(from, to, x).ok_or_else(|| unsupported(name)),
     }
 }

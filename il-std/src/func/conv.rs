@@ -140,6 +140,14 @@ macro_rules! conv_fn {
         /// `DT_TO_DATE`: the date part of a date and time.
         pub fn $name(IN: $s) -> $d { IN.date() }
     };
+    (bits_to_real, $name:ident, $s:ident, $d:ident) => {
+        #[doc = concat!("`", stringify!($name), "`: the bits of `IN` as an IEEE 754 number (no conversion of the value: a vendor's view of two memory words as a float).")]
+        pub fn $name(IN: $s) -> $d { <$d>::from_bits(IN) }
+    };
+    (real_to_bits, $name:ident, $s:ident, $d:ident) => {
+        #[doc = concat!("`", stringify!($name), "`: the IEEE 754 bits of `IN` (no conversion of the value).")]
+        pub fn $name(IN: $s) -> $d { IN.to_bits() }
+    };
     (bcd_to, $name:ident, $s:ident, $d:ident) => {
         #[doc = concat!("`", stringify!($name), "`: decodes packed BCD (`16#1234` → 1234); an invalid digit gives 0.")]
         pub fn $name(IN: $s) -> $d { crate::conv::bcd_decode_checked(IN as u64).0 as $d }
@@ -248,6 +256,15 @@ mod tests {
 
     fn st(s: &str) -> STRING {
         STRING::from_str_truncating(s).0
+    }
+
+    #[test]
+    fn bits_views_keep_the_bits() {
+        assert_eq!(DWORD_AS_REAL(0x3F80_0000), 1.0);
+        assert_eq!(REAL_AS_DWORD(-2.0), 0xC000_0000);
+        assert_eq!(LWORD_AS_LREAL(0x3FF0_0000_0000_0000), 1.0);
+        assert_eq!(LREAL_AS_LWORD(0.5), 0x3FE0_0000_0000_0000);
+        assert!(DWORD_AS_REAL(0x7FC0_0000).is_nan());
     }
 
     #[test]

@@ -358,6 +358,10 @@ macro_rules! conversions {
             STRING_TO_DT: STRING => DT, str_to_dt;
             STRING_TO_WSTRING: STRING => WSTRING, str_wstr;
             WSTRING_TO_STRING: WSTRING => STRING, wstr_str;
+            DWORD_AS_REAL: DWORD => REAL, bits_to_real;
+            REAL_AS_DWORD: REAL => DWORD, real_to_bits;
+            LWORD_AS_LREAL: LWORD => LREAL, bits_to_real;
+            LREAL_AS_LWORD: LREAL => LWORD, real_to_bits;
         }
     };
 }

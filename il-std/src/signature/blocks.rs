@@ -60,6 +60,7 @@ macro_rules! std_function_blocks {
             TON (IN: BOOL, PT: TIME) -> (Q: BOOL, ET: TIME);
             TOF (IN: BOOL, PT: TIME) -> (Q: BOOL, ET: TIME);
             RTC (IN: BOOL, PDT: DT) -> (Q: BOOL, CDT: DT);
+            M221_C (R: BOOL, S: BOOL, CU: BOOL, CD: BOOL, P: INT) -> (E: BOOL, D: BOOL, F: BOOL, V: INT);
             M221_DR (R: BOOL, U: BOOL, S: INT, STEPS: INT, P0: WORD, P1: WORD, P2: WORD, P3: WORD, P4: WORD, P5: WORD, P6: WORD, P7: WORD) -> (F: BOOL, CTRL: WORD, UPD: BOOL);
             M221_FIFO (R: BOOL, I: BOOL, O: BOOL, IW: INT, OW: INT) -> (E: BOOL, F: BOOL);
             M221_LIFO (R: BOOL, I: BOOL, O: BOOL, IW: INT, OW: INT) -> (E: BOOL, F: BOOL);

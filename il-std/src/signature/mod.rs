@@ -285,6 +285,9 @@ pub enum ConvKind {
     ToBcd,
     /// A binary-coded decimal to an integer (`BCD_TO_INT`).
     FromBcd,
+    /// The same bits seen as the other type, a bit string as a real or a
+    /// real as a bit string (`DWORD_AS_REAL`, `REAL_AS_DWORD`).
+    Bits,
 }
 
 /// The [`ConvKind`] of a conversion, by its kind in [`conversions`].
@@ -297,6 +300,12 @@ macro_rules! conv_kind {
     };
     (bcd_to) => {
         ConvKind::FromBcd
+    };
+    (bits_to_real) => {
+        ConvKind::Bits
+    };
+    (real_to_bits) => {
+        ConvKind::Bits
     };
     ($other:ident) => {
         ConvKind::Value

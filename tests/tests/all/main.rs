@@ -26,6 +26,7 @@ mod jumps;
 mod labels_parens;
 mod logiclab;
 mod m221_blocks;
+mod m221_project;
 mod misc_lang;
 mod motor;
 mod new_user;

@@ -146,7 +146,8 @@ fn not_plcopen(root: Node, at: Span) -> Diagnostic {
     .with_note(
         "the IL compiler reads IL source text, PLCopen TC6 XML projects \
          (`<project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">`, as Beremiz, OpenPLC and CODESYS export them) \
-         and LogicLab / Arduino PLC IDE projects (`<plcProject>`, `.plcprj`); \
+         LogicLab / Arduino PLC IDE projects (`<plcProject>`, `.plcprj`) \
+         and Modicon M221 projects (`<ProjectDescriptor>`, `.smbp`); \
          a file whose text starts with `<` is read as XML whatever its name",
     )
 }
@@ -169,6 +170,11 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
     // schema, its own translation (same parser, limits and map).
     if crate::logiclab::is_root(root) {
         return crate::logiclab::translate(doc, xml);
+    }
+    // A Modicon M221 project (Machine Expert Basic `.smbp`): its rungs'
+    // Instruction List, translated to IEC IL.
+    if crate::m221::is_root(root) {
+        return crate::m221::translate(doc, xml);
     }
     if !is_plcopen_root(root) {
         let at = t.tag(root);

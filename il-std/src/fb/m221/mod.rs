@@ -15,11 +15,13 @@
 //! lets the program write (`%DRn.S`, `%Rn.I`, `%Rn.O`, `%SBRn.j`, `%SCn.j`) is an *input* field
 //! that the block also updates, so the checker lets the program store to it.
 
+mod counter;
 mod drum;
 mod register;
 mod shift_bit;
 mod step_counter;
 
+pub use counter::M221_C;
 pub use drum::M221_DR;
 pub use register::{M221_FIFO, M221_LIFO};
 pub use shift_bit::M221_SBR;

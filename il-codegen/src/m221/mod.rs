@@ -1,0 +1,85 @@
+//! Schneider Modicon M221 projects (Machine Expert Basic / SoMachine Basic,
+//! `.smbp`, XML root `<ProjectDescriptor>`).
+//!
+//! Every rung of an M221 program, even one drawn in ladder, is stored with
+//! its Instruction List (`<InstructionLines>`), and the timers, counters and
+//! constants it uses are configured in the same file. The XML is parsed by
+//! the PLCopen import's parser (same limits, same located errors for
+//! malformed XML), which hands a `<ProjectDescriptor>` root to `translate`.
+//! It writes one IEC IL text, mapped back into the XML
+//! ([`crate::plcopen::SpanMap`]), so every diagnostic points at the
+//! instruction line it comes from:
+//! - each POU of the master task (`<Pous>`) as a PROGRAM, its rungs in
+//!   order, each instruction line translated to IEC IL (`rung`, `blocks`,
+//!   `brackets` for operation and comparison blocks, whose expressions
+//!   `expr` parses and writes);
+//! - the objects the program uses (`%I0.3`, `%M5`, `%MW2`, `%TM0` ...) as
+//!   globals of one CONFIGURATION `M221` (`objects`, `write`), the timers
+//!   and counters configured from `<Timers>` / `<Counters>` (`read`).
+//!
+//! docs/semantics.md, "Modicon M221 dialect", says what each object and
+//! instruction means and which choices are made where the manuals are
+//! silent.
+
+#[cfg(feature = "plcopen")]
+mod blocks;
+#[cfg(feature = "plcopen")]
+mod brackets;
+#[cfg(feature = "plcopen")]
+mod expr;
+#[cfg(feature = "plcopen")]
+mod objects;
+#[cfg(feature = "plcopen")]
+mod read;
+#[cfg(feature = "plcopen")]
+mod rung;
+#[cfg(feature = "plcopen")]
+mod write;
+
+/// The codes of the M221 import.
+pub mod codes {
+    crate::diag::codes::codes! {
+    BAD_LINE = "IL0430", "M221 instruction line the import cannot read",
+        "An `<InstructionLine>` of a Modicon M221 project (`.smbp`) is not an instruction of the M221's Instruction List as the import reads it: an unknown instruction, a missing or extra operand, an operand that is no M221 object (`%I0.1`, `%M3`, `%MW10`, `%TM0` ...), a `)` without its `AND(`/`OR(`, an `OUT_BLK` outside `BLK ... END_BLK`. The rung is left out of the program, with this error; the other rungs are still translated, so every such line is reported at once.\n\n    <InstructionLine>LD %X0.0</InstructionLine>";
+    UNSUPPORTED = "IL0431", "M221 object or instruction the import does not compile",
+        "A rung uses an object or instruction of the M221 that the import does not compile yet (a fast counter `%FCn`, a PID, a communication block `%WRITE_VARn`, a subroutine call ...), or one whose configuration it does not read (a configured drum `%DRn`). The message names the object, the rung and why. The rung is left out of the program.\n\n    <InstructionLine>BLK %FC0</InstructionLine>";
+    BAD_CONFIG = "IL0433", "M221 object configuration the import cannot read",
+        "An element of the project's configuration of an object (a `<TimerTM>`'s `<Preset>`, `<Base>` or `<Type>`, a `<CounterCT>`'s `<Preset>`, a `<ConstantWord>`'s `<Value>`) holds a value the import does not know: a preset that is not a number from 0 to 32767, a time base other than `OneMillisecond`, `TenMilliseconds`, `HundredMilliseconds`, `OneSecond`, `OneMinute`, a timer type other than `TON`, `TOF`, `TP`. The object takes its default (`TON`, one minute, preset 9999) with this error.\n\n    <TimerTM><Address>%TM0</Address><Base>Fortnight</Base></TimerTM>";
+    BAD_PROJECT = "IL0435", "M221 project the import cannot read",
+        "The XML's root is Machine Expert Basic's, but the file holds no program the import can read: a protected project (`<CryptedProject>`: its program is encrypted; save it without protection in Machine Expert Basic), or a `<ProjectDescriptor>` without `<SoftwareConfiguration><Pous>`. One error; nothing is compiled.\n\n    <CryptedProject><ProjectVersion>2.0.0.0</ProjectVersion><Crypted>...</Crypted></CryptedProject>";
+    SYSTEM_OBJECT = "IL0434", "M221 system or network object set by the host",
+        "A rung uses a system bit `%Sn`, a system word `%SWn`, or a word exchanged with a network master (EtherNet/IP `%IWEn`/`%QWEn`, Modbus TCP `%IWMn`/`%QWMn`). The import declares it as a global of the configuration (`S0`, `SW7`, `QWE0`) that starts at 0 and that the host (or `ilc run --set S0=TRUE`) sets or reads; the controller's own behaviour of the object (the first-scan bit `%S0`, the clock bits `%S4` .. `%S7`, the network exchange) is not simulated. One warning per object.\n\n    LD %S6     (* the controller's 1 s clock *)";
+    }
+}
+pub use codes::CODES;
+
+/// Whether an XML root is an M221 project's: `<ProjectDescriptor>`, or a
+/// protected project's `<CryptedProject>`, in no namespace.
+#[cfg(feature = "plcopen")]
+pub(crate) fn is_root(root: roxmltree::Node) -> bool {
+    let tag = root.tag_name();
+    tag.namespace().is_none() && matches!(tag.name(), "ProjectDescriptor" | "CryptedProject")
+}
+
+#[cfg(feature = "plcopen")]
+pub(crate) use write::translate;
+
+/// Whether an XML text is an M221 project: its root element, after the
+/// prolog and comments, is `<ProjectDescriptor>` (for `ilc run`, which runs
+/// such a project's configuration, as the controller runs its POUs).
+pub fn is_project(xml: &str) -> bool {
+    let mut rest = xml.trim_start_matches('\u{feff}');
+    loop {
+        rest = rest.trim_start();
+        if let Some(r) = rest.strip_prefix("<?").or_else(|| rest.strip_prefix("<!")) {
+            match r.find('>') {
+                Some(k) => rest = &r[k + 1..],
+                None => return false,
+            }
+        } else {
+            return rest.strip_prefix("<ProjectDescriptor").is_some_and(|r| {
+                r.starts_with(|c: char| c.is_whitespace() || c == '>' || c == '/')
+            });
+        }
+    }
+}
