@@ -336,7 +336,7 @@ impl Objects {
             }
             "IW" | "QW" => {
                 let (m, c) = pair(tail).ok_or(NotObject::Unknown)?;
-                if m == 0 && (100..108).contains(&c) || m == 0 && (200..208).contains(&c) {
+                if m == 0 && ((100..108).contains(&c) || (200..208).contains(&c)) {
                     // A cartridge's channel (`%IW0.100`): a global the host
                     // binds, beside the image.
                     let name = format!("{kind}{m}_{c}");
