@@ -404,17 +404,12 @@ pub(super) fn parse(
         let int = |t: Ty| matches!(t, Ty::Int | Ty::Dint);
         let narrowing = *dest_ty == Ty::Int && v == Ty::Dint;
         if real(*dest_ty) && int(v) || int(*dest_ty) && real(v) || narrowing {
-            let how = match (dest_ty, v) {
-                (Ty::Real, Ty::Int) => "INT_TO_REAL",
-                (Ty::Real, _) => "DINT_TO_REAL",
-                (Ty::Int, Ty::Dint) => "a word: the value is a double word",
-                (Ty::Int, _) => "REAL_TO_INT",
-                _ => "REAL_TO_DINT or TRUNC",
-            };
-            let what = if narrowing {
-                format!("the object assigned is {how}")
-            } else {
-                format!("convert with {how}")
+            let what = match (dest_ty, v) {
+                (Ty::Real, Ty::Int) => "convert with INT_TO_REAL",
+                (Ty::Real, _) => "convert with DINT_TO_REAL",
+                (Ty::Int, Ty::Dint) => "a double word does not fit a word (DINT_TO_INT)",
+                (Ty::Int, _) => "convert with REAL_TO_INT",
+                _ => "convert with REAL_TO_DINT or TRUNC",
             };
             return Err(err(
                 format!(
