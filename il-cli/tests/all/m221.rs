@@ -515,3 +515,28 @@ cycle  time  MW0  MW1  QW0_100
 ";
     assert_eq!(text(&o.stdout), want, "{}", text(&o.stderr));
 }
+
+#[test]
+fn assigning_a_real_to_a_word_says_which_conversion() {
+    let p = temp(
+        "types.smbp",
+        &project(&[&["[ %MW1 := %MF10 * 2.0 ]"], &["[ %MF12 := %MW1 ]"]]),
+    );
+    let o = ilc(&["check", &p.display().to_string()]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains(
+            "error[IL0430]: the value is REAL, the object assigned is INT: convert with REAL_TO_INT"
+        ),
+        "{err}"
+    );
+    assert!(
+        err.contains(
+            "error[IL0430]: the value is INT, the object assigned is REAL: convert with INT_TO_REAL"
+        ),
+        "{err}"
+    );
+    assert!(err.contains(&format!("--> {}:6:42", p.display())), "{err}");
+    assert!(!err.contains("_x"), "no temporary named: {err}");
+}
