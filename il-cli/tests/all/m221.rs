@@ -474,3 +474,69 @@ cycle  time  MW10   MW11  Q0_0  MW7  MW8  MW12  MW13   MW20   MW21
 ";
     assert_eq!(text(&o.stdout), want, "{}", text(&o.stderr));
 }
+
+#[test]
+fn edge_blocks_of_the_rung_condition_and_cartridge_channels() {
+    // RISING0 / FALLING1 are the ladder's edge blocks on the condition so
+    // far (I0.0: rises at scans 2 and 5, falls at 4); MW0 and MW1 count
+    // them. %IW0.100 / %QW0.100 are a cartridge's channels, host globals.
+    let p = temp(
+        "edge_blocks.smbp",
+        &project(&[
+            &["LD %I0.0", "RISING0", "[ %MW0 := %MW0 + 1 ]"],
+            &["LD %I0.0", "FALLING1", "[ %MW1 := %MW1 + 1 ]"],
+            &["[ %QW0.100 := %IW0.100 * 2 ]"],
+        ]),
+    );
+    let o = ilc(&[
+        "run",
+        &p.display().to_string(),
+        "--cycles",
+        "6",
+        "--set",
+        "I0_0=TRUE@2",
+        "--set",
+        "I0_0=FALSE@4",
+        "--set",
+        "I0_0=TRUE@5",
+        "--set",
+        "IW0_100=21",
+        "--watch",
+        "MW0,MW1,QW0_100",
+    ]);
+    let want = "\
+cycle  time  MW0  MW1  QW0_100
+    1  0s      0    0       42
+    2  10ms    1    0       42
+    3  20ms    1    0       42
+    4  30ms    1    1       42
+    5  40ms    2    1       42
+    6  50ms    2    1       42
+";
+    assert_eq!(text(&o.stdout), want, "{}", text(&o.stderr));
+}
+
+#[test]
+fn assigning_a_real_to_a_word_says_which_conversion() {
+    let p = temp(
+        "types.smbp",
+        &project(&[&["[ %MW1 := %MF10 * 2.0 ]"], &["[ %MF12 := %MW1 ]"]]),
+    );
+    let o = ilc(&["check", &p.display().to_string()]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains(
+            "error[IL0430]: the value is REAL, the object assigned is INT: convert with REAL_TO_INT"
+        ),
+        "{err}"
+    );
+    assert!(
+        err.contains(
+            "error[IL0430]: the value is INT, the object assigned is REAL: convert with INT_TO_REAL"
+        ),
+        "{err}"
+    );
+    assert!(err.contains(&format!("--> {}:6:42", p.display())), "{err}");
+    assert!(!err.contains("_x"), "no temporary named: {err}");
+}

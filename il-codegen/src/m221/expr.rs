@@ -396,6 +396,42 @@ pub(super) fn parse(
     base: usize,
     xml: &dyn Fn(Range<usize>) -> Range<usize>,
 ) -> Result<Parsed, Error> {
+    let parsed = parse_block(p, objs, text, base, xml)?;
+    if let Parsed::Assign { dest_ty, value, .. } = &parsed {
+        // The M221 assigns within a type; IEC widens INT to DINT only.
+        let v = ty(value);
+        let real = |t: Ty| matches!(t, Ty::Real | Ty::RealLit);
+        let int = |t: Ty| matches!(t, Ty::Int | Ty::Dint);
+        let narrowing = *dest_ty == Ty::Int && v == Ty::Dint;
+        if real(*dest_ty) && int(v) || int(*dest_ty) && real(v) || narrowing {
+            let what = match (dest_ty, v) {
+                (Ty::Real, Ty::Int) => "convert with INT_TO_REAL",
+                (Ty::Real, _) => "convert with DINT_TO_REAL",
+                (Ty::Int, Ty::Dint) => "a double word does not fit a word (DINT_TO_INT)",
+                (Ty::Int, _) => "convert with REAL_TO_INT",
+                _ => "convert with REAL_TO_DINT or TRUNC",
+            };
+            return Err(err(
+                format!(
+                    "the value is {}, the object assigned is {}: {what}",
+                    v.name(),
+                    dest_ty.name()
+                ),
+                base..base + text.len(),
+            ));
+        }
+    }
+    Ok(parsed)
+}
+
+/// [`parse`] before the check of an assignment's types.
+fn parse_block(
+    p: &Project,
+    objs: &mut Objects,
+    text: &str,
+    base: usize,
+    xml: &dyn Fn(Range<usize>) -> Range<usize>,
+) -> Result<Parsed, Error> {
     let toks = tokens(text, base);
     let end = base + text.len()..base + text.len();
     let mut ps = Parser {

@@ -336,6 +336,13 @@ impl Objects {
             }
             "IW" | "QW" => {
                 let (m, c) = pair(tail).ok_or(NotObject::Unknown)?;
+                if m == 0 && ((100..108).contains(&c) || (200..208).contains(&c)) {
+                    // A cartridge's channel (`%IW0.100`): a global the host
+                    // binds, beside the image.
+                    let name = format!("{kind}{m}_{c}");
+                    self.plain(&name, "INT", at, false);
+                    return ok(name, Ty::Int);
+                }
                 if m >= 8 || c >= 8 {
                     return Err(NotObject::Unsupported(format!(
                         "`%{kind}{m}.{c}` lies outside the process image the import maps (analog modules 0 to 7, channels 0 to 7)"

@@ -217,6 +217,22 @@ impl Pou<'_> {
                     self.put(")", all);
                 }
             }
+            _ if edge_block(&op) && arg.is_none() => {
+                // `RISINGn`/`FALLINGn`: an edge of the rung's condition so
+                // far (the ladder's edge block n), with its own memory.
+                self.need_cr(rung, line, fr.clone(), first)?;
+                self.locals.edges += 1;
+                let k = self.locals.edges;
+                if op.starts_with("RISING") {
+                    self.put(&format!("ST _t{k}"), all.clone());
+                    self.put(&format!("ANDN _e{k}"), all);
+                } else {
+                    self.put("NOT", all.clone());
+                    self.put(&format!("STN _t{k}"), all.clone());
+                    self.put(&format!("AND _e{k}"), all);
+                }
+                rung.pending.push(k);
+            }
             "N" | "NOT" => {
                 self.need_cr(rung, line, fr.clone(), first)?;
                 self.put("NOT", all);
@@ -427,6 +443,15 @@ fn bit_literal(il: &str, ty: Ty) -> String {
         (Ty::IntLit, "0") => "FALSE".into(),
         _ => il.to_string(),
     }
+}
+
+/// `RISING0`, `FALLING3`: the ladder's edge blocks.
+fn edge_block(op: &str) -> bool {
+    let n = op
+        .strip_prefix("RISING")
+        .or_else(|| op.strip_prefix("FALLING"))
+        .unwrap_or("");
+    !n.is_empty() && n.len() < 6 && n.bytes().all(|b| b.is_ascii_digit())
 }
 
 /// `%L5` → `L5`.
