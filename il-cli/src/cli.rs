@@ -180,7 +180,7 @@ pub fn command() -> Command {
                         .help("IL source file, or a PLCopen XML project (known by its text), or the .EXP files (or folder) of a CODESYS project, read as one program"),
                 )
                 .arg(Arg::new("program").long("program").value_name("NAME").help(
-                    "The PROGRAM (or FUNCTION_BLOCK) to run; default: the file's only CONFIGURATION, else its only PROGRAM",
+                    "The PROGRAM (or FUNCTION_BLOCK) to run; default: the only PROGRAM; with several PROGRAMs or none (or in a CODESYS project with tasks, or an M221 project), the only CONFIGURATION",
                 ))
                 .arg(Arg::new("config").long("config").value_name("NAME").help(
                     "The CONFIGURATION to run: its tasks decide which programs each scan runs",

@@ -69,8 +69,44 @@ pub fn load(r: &Request) -> (String, Result<Loaded, String>) {
         return (String::new(), Err("no source file to run".into()));
     }
     let checked = r.front.program(files).check();
-    let rendered = checked.render(r.color);
-    (rendered, choose(r, &checked))
+    let mut rendered = checked.render(r.color);
+    let loaded = choose(r, &checked);
+    if let (Ok(l), None) = (&loaded, r.program) {
+        rendered.push_str(&alone_note(l, r.names.1));
+    }
+    (rendered, loaded)
+}
+
+/// A PROGRAM chosen to run alone in a program that has a CONFIGURATION:
+/// its VAR_EXTERNALs start at their types' defaults, not at the globals'
+/// initial values, which the user is told (with the option that runs the
+/// configuration) rather than left to find in the values.
+fn alone_note(l: &Loaded, c_opt: &str) -> String {
+    let (Chosen::Pou(name), [config]) = (&l.chosen, l.prog.configs.as_slice()) else {
+        return String::new();
+    };
+    let Some(pou) = l
+        .prog
+        .pous
+        .iter()
+        .find(|p| p.name.eq_ignore_ascii_case(name))
+    else {
+        return String::new();
+    };
+    let externals: Vec<&str> = (pou.vars.iter())
+        .filter(|v| v.kind == il_codegen::ast::VarKind::External)
+        .map(|v| v.name.as_str())
+        .collect();
+    if externals.is_empty() {
+        return String::new();
+    }
+    format!(
+        "note: PROGRAM `{name}` runs alone: its VAR_EXTERNALs ({}) start at their types' \
+         defaults, not at the initial values of CONFIGURATION `{c}`'s globals; \
+         {c_opt} {c} runs the configuration as the PLC does\n",
+        externals.join(", "),
+        c = config.name,
+    )
 }
 
 fn choose(r: &Request, checked: &il_codegen::Checked) -> Result<Loaded, String> {

@@ -309,7 +309,6 @@ fn a_plcopen_project_under_any_name_is_imported() {
     assert!(stderr(&o).contains("warning[IL0203]"), "{}", stderr(&o));
 }
 
-
 /// A PLCopen project whose IL body divides by zero on XML line 16.
 const RATIO: &str = r#"<?xml version="1.0" encoding="utf-8"?>
 <project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">

@@ -36,7 +36,13 @@ pub(crate) fn file(name: &str, text: &str) -> String {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("ilc_run");
     std::fs::create_dir_all(&dir).unwrap();
     let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
+    // Tests that share a file name run in parallel: a write in place could
+    // be read half-done by another test's ilc, a rename is seen whole.
+    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let tmp = dir.join(format!("{name}.{}.{n}.tmp", std::process::id()));
+    std::fs::write(&tmp, text).unwrap();
+    std::fs::rename(&tmp, &p).unwrap();
     p.display().to_string()
 }
 
@@ -409,4 +415,41 @@ fn a_negative_number_into_a_word_address_says_how() {
     assert!(err.contains("(`--set %IW2=65531`)"), "{err}");
     let o = ilc(&["run", &f, "--cycles", "1", "--set", "%IW2=65531"]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+}
+
+/// A PROGRAM run alone from a file whose CONFIGURATION declares the globals
+/// it uses: its externals start at their defaults, and the user is told so
+/// with the option that runs the configuration (whose values differ).
+#[test]
+fn a_program_run_alone_says_its_externals_miss_the_globals_values() {
+    let f = file(
+        "alone_externals.il",
+        "PROGRAM Main\nVAR_EXTERNAL g : INT; END_VAR\nVAR x : INT; END_VAR\n  LD g\n  ADD 1\n  ST x\nEND_PROGRAM\n\
+         CONFIGURATION Plant\n  VAR_GLOBAL g : INT := 5; END_VAR\n  RESOURCE Cpu ON PLC\n\
+         TASK t (INTERVAL := T#10ms, PRIORITY := 1);\n    PROGRAM m WITH t : Main;\n  END_RESOURCE\nEND_CONFIGURATION\n",
+    );
+    let o = ilc(&["run", &f, "--cycles", "1", "--watch", "x"]);
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let (out, err) = (text(&o.stdout), text(&o.stderr));
+    assert!(
+        err.contains("note: PROGRAM `Main` runs alone: its VAR_EXTERNALs (g)")
+            && err.contains("--config Plant runs the configuration"),
+        "{err}"
+    );
+    assert!(
+        out.lines().nth(1).is_some_and(|l| l.ends_with(" 1")),
+        "{out}"
+    );
+    let o = ilc(&[
+        "run", &f, "--cycles", "1", "--config", "Plant", "--watch", "Cpu.m.x",
+    ]);
+    let (out, err) = (text(&o.stdout), text(&o.stderr));
+    assert!(!err.contains("note:"), "{err}");
+    assert!(
+        out.lines().nth(1).is_some_and(|l| l.ends_with(" 6")),
+        "{out}"
+    );
+    // Named, the program runs alone without the note: the user chose it.
+    let o = ilc(&["run", &f, "--cycles", "1", "--program", "Main"]);
+    assert!(!text(&o.stderr).contains("note:"), "{}", text(&o.stderr));
 }
