@@ -82,4 +82,4 @@ pub use builder::{Builder, Error, output_paths, write_if_changed};
 pub use diag::{Diagnostic, SourceFile};
 pub use dialect::Standard;
 pub use emit::Options as EmitOptions;
-pub use pipeline::{Checked, Emitted, Input, Program};
+pub use pipeline::{Checked, Emitted, Input, Program, Session};

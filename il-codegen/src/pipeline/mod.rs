@@ -11,9 +11,19 @@
 #[cfg(feature = "build")]
 pub(crate) mod file;
 mod input;
+mod session;
 pub mod snippet;
 
 pub use input::{Input, is_xml};
+pub use session::Session;
+
+/// What parsing one IL text gives: the tree, the syntax diagnostics, and
+/// the comments that hold a `(*` (for naming the checker's errors after them).
+type Parsed = (
+    crate::ast::CompilationUnit,
+    Vec<Diagnostic>,
+    Vec<syntax::lexer::comments::InnerOpen>,
+);
 
 #[cfg(feature = "build")]
 use crate::diag::render;
@@ -99,7 +109,17 @@ impl Program {
     }
 
     /// Parse and check every input.
-    pub fn check(mut self) -> Checked {
+    pub fn check(self) -> Checked {
+        self.check_with(|_, f, standard| syntax::parse_noted(f, standard))
+    }
+
+    /// [`Program::check`] with each input's IL text parsed by `parse` (a
+    /// [`Session`] parses again only what changed); `parse` must give what
+    /// `syntax::parse_noted` gives.
+    fn check_with(
+        mut self,
+        mut parse: impl FnMut(&Input, &SourceFile, crate::dialect::Standard) -> Parsed,
+    ) -> Checked {
         one_guess_per_program(&mut self.inputs);
         // The CODESYS exports of the program are one project: their
         // global lists and task configuration are read together.
@@ -118,8 +138,8 @@ impl Program {
         let mut units = Vec::new();
         let mut diags: Vec<Vec<Diagnostic>> = Vec::new();
         let mut inner_opens = Vec::new();
-        for f in &files {
-            let (u, d, n) = syntax::parse_noted(f, self.standard);
+        for (input, f) in self.inputs.iter().zip(&files) {
+            let (u, d, n) = parse(input, f, self.standard);
             units.push(u);
             diags.push(d);
             inner_opens.push(n);
@@ -182,6 +202,7 @@ impl Program {
             table.map(|t| to_inputs(t, &clean, &self.inputs))
         };
         Checked {
+            standard: self.standard,
             inputs: self.inputs,
             diagnostics,
             ir,
@@ -281,6 +302,7 @@ fn without_broken_items(
 /// A checked program: every diagnostic of every input, and the checked IR.
 #[derive(Debug)]
 pub struct Checked {
+    standard: crate::dialect::Standard,
     inputs: Vec<Input>,
     diagnostics: Vec<Vec<Diagnostic>>,
     ir: Vec<sema::ir::Program>,

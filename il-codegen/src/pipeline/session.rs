@@ -1,0 +1,119 @@
+//! A program checked again after every edit (an editor's): [`Session`].
+
+use std::collections::HashMap;
+use std::ops::Range;
+
+use super::{Checked, Input, Parsed, Program};
+use crate::ast::CompilationUnit;
+use crate::diag::SourceFile;
+use crate::syntax::{self, lexer::comments::InnerOpen};
+
+/// Checks a program again and again as its texts change, and keeps the
+/// last [`Checked`]: an IL file is then parsed again only in the top-level
+/// items (POUs, TYPE blocks, CONFIGURATIONs) that an edit touches, the
+/// other items' trees are kept with their positions moved. The result is
+/// the one [`Program::check`] gives for the same sources, diagnostics and
+/// spans included; where that is not sure (the last parse of the file had
+/// diagnostics, the edit crosses an item's line, the part parsed again has
+/// an error) the file is parsed whole.
+///
+/// Files are matched with the last check's by their name ([`SourceFile::name`]).
+///
+/// ```
+/// use il_codegen::{pipeline::Session, Program, SourceFile};
+/// let a = "FUNCTION_BLOCK A\nVAR x : INT; END_VAR\n    LD x\n    ST x\nEND_FUNCTION_BLOCK\n";
+/// let b = "FUNCTION_BLOCK B\nVAR y : INT; END_VAR\n    LD y\n    ST y\nEND_FUNCTION_BLOCK\n";
+/// let mut session = Session::new();
+/// let text = format!("{a}{b}");
+/// session.check(Program::new().il(SourceFile::new("m.il", text.clone())));
+/// // An edit in B: A's tree is kept, B is parsed again.
+/// let edited = text.replace("    LD y", "    LD nosuch");
+/// let checked = session.check(Program::new().il(SourceFile::new("m.il", edited)));
+/// assert_eq!(checked.diagnostics()[0].len(), 1);
+/// assert_eq!(session.reparsed()[0], Some(a.len()..a.len() + b.len() + 5));
+/// ```
+#[derive(Debug, Default)]
+pub struct Session {
+    last: Option<Checked>,
+    /// Per input of `last`: its comments that hold a `(*` when its parse
+    /// gave no diagnostic (then its tree can be kept), `None` otherwise.
+    clean: Vec<Option<Vec<InnerOpen>>>,
+    reparsed: Vec<Option<Range<usize>>>,
+}
+
+impl Session {
+    /// A session that has checked nothing yet.
+    pub fn new() -> Self {
+        Session::default()
+    }
+
+    /// Check `program` as [`Program::check`] does, reusing the trees of
+    /// the last check's files where their text is unchanged but for the
+    /// edit; the result stays in the session until the next check.
+    pub fn check(&mut self, program: Program) -> &Checked {
+        let mut trees = self.take_trees(&program);
+        let mut clean = Vec::new();
+        let mut reparsed = Vec::new();
+        let checked = program.check_with(|input, file, standard| {
+            let kept = match input {
+                Input::Il(_) => trees.remove(&file.name),
+                _ => None,
+            };
+            let again = kept.and_then(|(old, unit, opens)| {
+                syntax::reparse::reparse(&old.text, unit, opens, file, standard)
+            });
+            let parsed: Parsed = match again {
+                Some(r) => {
+                    reparsed.push(Some(r.parsed));
+                    (r.unit, Vec::new(), r.inner_opens)
+                }
+                None => {
+                    reparsed.push(None);
+                    syntax::parse_noted(file, standard)
+                }
+            };
+            let keep = matches!(input, Input::Il(_)) && parsed.1.is_empty();
+            clean.push(keep.then(|| parsed.2.clone()));
+            parsed
+        });
+        self.clean = clean;
+        self.reparsed = reparsed;
+        self.last.insert(checked)
+    }
+
+    /// The last check's result.
+    pub fn last(&self) -> Option<&Checked> {
+        self.last.as_ref()
+    }
+
+    /// For each input of the last check, the byte range of its IL text
+    /// that was parsed (`Some(0..0)`: the text was unchanged; `None`: it
+    /// was parsed whole).
+    pub fn reparsed(&self) -> &[Option<Range<usize>>] {
+        &self.reparsed
+    }
+
+    /// The last check's IL texts that parsed without a diagnostic, with
+    /// their trees, by name (when `program` is checked under the same
+    /// standard); the rest of the last check is dropped.
+    fn take_trees(
+        &mut self,
+        program: &Program,
+    ) -> HashMap<String, (SourceFile, CompilationUnit, Vec<InnerOpen>)> {
+        let mut trees = HashMap::new();
+        let Some(mut last) = self.last.take() else {
+            return trees;
+        };
+        if last.standard != program.standard {
+            return trees;
+        }
+        let units = std::mem::take(&mut last.units);
+        let inputs = std::mem::take(&mut last.inputs);
+        for ((input, unit), clean) in inputs.into_iter().zip(units).zip(self.clean.drain(..)) {
+            if let (Input::Il(f), Some(opens)) = (input, clean) {
+                trees.insert(f.name.clone(), (f, unit, opens));
+            }
+        }
+        trees
+    }
+}
