@@ -39,6 +39,10 @@ pub struct Session {
     /// gave no diagnostic (then its tree can be kept), `None` otherwise.
     clean: Vec<Option<Vec<InnerOpen>>>,
     reparsed: Vec<Option<Range<usize>>>,
+    /// What a check left of the one before (its IR, diagnostics,
+    /// resolutions), until [`Session::release`].
+    spent: Option<Checked>,
+    parse_time: std::time::Duration,
 }
 
 impl Session {
@@ -54,7 +58,9 @@ impl Session {
         let mut trees = self.take_trees(&program);
         let mut clean = Vec::new();
         let mut reparsed = Vec::new();
+        let mut parse_time = std::time::Duration::ZERO;
         let checked = program.check_with(|input, file, standard| {
+            let start = std::time::Instant::now();
             let kept = match input {
                 Input::Il(_) => trees.remove(&file.name),
                 _ => None,
@@ -74,8 +80,10 @@ impl Session {
             };
             let keep = matches!(input, Input::Il(_)) && parsed.1.is_empty();
             clean.push(keep.then(|| parsed.2.clone()));
+            parse_time += start.elapsed();
             parsed
         });
+        self.parse_time = parse_time;
         self.clean = clean;
         self.reparsed = reparsed;
         self.last.insert(checked)
@@ -114,6 +122,20 @@ impl Session {
                 trees.insert(f.name.clone(), (f, unit, opens));
             }
         }
+        self.spent = Some(last);
         trees
+    }
+
+    /// Drop what the last check kept of the one before it (without this,
+    /// the next check does it). For a caller that has time after a check,
+    /// as a language server once it has published the diagnostics.
+    pub fn release(&mut self) {
+        self.spent = None;
+    }
+
+    /// How long the last check spent parsing (the rest of
+    /// [`Session::check`] is the semantic check).
+    pub fn parse_time(&self) -> std::time::Duration {
+        self.parse_time
     }
 }
