@@ -200,6 +200,18 @@ fn main() {
             .collect::<Vec<_>>()
             .join(" ")
     );
+    // The server's memory: what it holds between edits (VmRSS) and at most.
+    let status =
+        std::fs::read_to_string(format!("/proc/{}/status", child.id())).unwrap_or_default();
+    let mem: Vec<&str> = status
+        .lines()
+        .filter(|l| l.starts_with("VmRSS") || l.starts_with("VmHWM"))
+        .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
+        .map(|l| &*l.leak())
+        .collect();
+    if !mem.is_empty() {
+        println!("server memory: {}", mem.join(", "));
+    }
     s.request("shutdown", Value::Null);
     s.notify("exit", Value::Null);
     let _ = child.wait();

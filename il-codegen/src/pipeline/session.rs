@@ -6,6 +6,7 @@ use std::ops::Range;
 use super::{Checked, Input, Parsed, Program};
 use crate::ast::CompilationUnit;
 use crate::diag::SourceFile;
+use crate::sema;
 use crate::syntax::{self, lexer::comments::InnerOpen};
 
 /// Checks a program again and again as its texts change, and keeps the
@@ -43,6 +44,72 @@ pub struct Session {
     /// resolutions), until [`Session::release`].
     spent: Option<Checked>,
     parse_time: std::time::Duration,
+    /// Each POU's results of the last check (see `sema/reuse.rs`).
+    cache: sema::reuse::Cache,
+    /// What the last check was asked: the cache serves only the same.
+    settings: Option<Settings>,
+}
+
+#[derive(Debug, PartialEq)]
+struct Settings {
+    standard: crate::dialect::Standard,
+    cr_steps: bool,
+    resolutions: bool,
+    names: Vec<String>,
+}
+
+/// What parsing an input again found (see `syntax::reparse::Reparsed`).
+struct Edit {
+    parsed: Range<usize>,
+    items: Range<usize>,
+    replaced: Vec<crate::ast::Item>,
+    change: (usize, usize),
+    delta: i64,
+    same_lines: bool,
+}
+
+/// What the check of the new texts may reuse of the last one's: every
+/// POU's results but the edited one's, when every file was parsed again in
+/// part, and one POU alone changed, inside, keeping its declarations and
+/// its number of lines (see `sema/reuse.rs`).
+fn reuse(edits: &[Option<Edit>], parsed: &[Parsed]) -> Option<sema::reuse::Reuse> {
+    use crate::ast::Item;
+    let mut changed = edits
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| e.as_ref().is_none_or(|e| !e.parsed.is_empty()));
+    let Some((file, edit)) = changed.next() else {
+        // Nothing changed: everything is reused.
+        return Some(sema::reuse::Reuse {
+            file: 0,
+            pou: usize::MAX,
+            change: (u32::MAX, u32::MAX),
+            delta: 0,
+        });
+    };
+    let e = edit.as_ref()?;
+    if changed.next().is_some() || !e.same_lines || e.items.len() != 1 {
+        return None;
+    }
+    let items = &parsed[file].0.items;
+    let (Some(Item::Pou(new)), [Item::Pou(old)]) = (items.get(e.items.start), &e.replaced[..])
+    else {
+        return None;
+    };
+    let inside = (old.span.lo as usize) < e.change.0 && e.change.1 < old.span.hi as usize;
+    if !inside || !sema::reuse::same_interface(old, new) {
+        return None;
+    }
+    let pou = items[..e.items.start]
+        .iter()
+        .filter(|i| matches!(i, Item::Pou(_)))
+        .count();
+    Some(sema::reuse::Reuse {
+        file,
+        pou,
+        change: (e.change.0 as u32, e.change.1 as u32),
+        delta: e.delta,
+    })
 }
 
 impl Session {
@@ -53,14 +120,25 @@ impl Session {
 
     /// Check `program` as [`Program::check`] does, reusing the trees of
     /// the last check's files where their text is unchanged but for the
-    /// edit; the result stays in the session until the next check.
-    pub fn check(&mut self, program: Program) -> &Checked {
-        let mut trees = self.take_trees(&program);
+    /// edit, and the other POUs' results when the edit changed one POU's
+    /// body only; the result stays in the session until the next check.
+    pub fn check(&mut self, mut program: Program) -> &Checked {
+        let start = std::time::Instant::now();
+        let settings = Settings {
+            standard: program.standard,
+            cr_steps: program.cr_steps,
+            resolutions: program.resolutions,
+            names: program
+                .inputs
+                .iter()
+                .map(|i| i.il_text().name.clone())
+                .collect(),
+        };
+        let same = self.settings.as_ref() == Some(&settings);
+        let mut trees = self.take_trees(&program, same);
         let mut clean = Vec::new();
-        let mut reparsed = Vec::new();
-        let mut parse_time = std::time::Duration::ZERO;
-        let checked = program.check_with(|input, file, standard| {
-            let start = std::time::Instant::now();
+        let mut edits = Vec::new();
+        let parsed = program.parse_with(|input, file, standard| {
             let kept = match input {
                 Input::Il(_) => trees.remove(&file.name),
                 _ => None,
@@ -70,23 +148,42 @@ impl Session {
             });
             let parsed: Parsed = match again {
                 Some(r) => {
-                    reparsed.push(Some(r.parsed));
-                    (r.unit, Vec::new(), r.inner_opens)
+                    let p = (r.unit, Vec::new(), r.inner_opens);
+                    edits.push(Some(Edit {
+                        parsed: r.parsed,
+                        items: r.items,
+                        replaced: r.replaced,
+                        change: r.change,
+                        delta: r.delta,
+                        same_lines: r.same_lines,
+                    }));
+                    p
                 }
                 None => {
-                    reparsed.push(None);
+                    edits.push(None);
                     syntax::parse_noted(file, standard)
                 }
             };
             let keep = matches!(input, Input::Il(_)) && parsed.1.is_empty();
             clean.push(keep.then(|| parsed.2.clone()));
-            parse_time += start.elapsed();
             parsed
         });
-        self.parse_time = parse_time;
+        self.parse_time = start.elapsed();
+        self.cache.reuse = if same { reuse(&edits, &parsed) } else { None };
+        if self.cache.reuse.is_none() {
+            self.cache.old_ir.clear();
+        }
+        let checked = program.check_parsed(parsed, Some(&mut self.cache));
+        self.settings = Some(settings);
         self.clean = clean;
-        self.reparsed = reparsed;
+        self.reparsed = edits.into_iter().map(|e| e.map(|e| e.parsed)).collect();
         self.last.insert(checked)
+    }
+
+    /// How many POUs the last check checked: the others' results were
+    /// those of the check before (see [`Session`]).
+    pub fn pous_checked(&self) -> usize {
+        self.cache.checked
     }
 
     /// The last check's result.
@@ -107,6 +204,7 @@ impl Session {
     fn take_trees(
         &mut self,
         program: &Program,
+        same: bool,
     ) -> HashMap<String, (SourceFile, CompilationUnit, Vec<InnerOpen>)> {
         let mut trees = HashMap::new();
         let Some(mut last) = self.last.take() else {
@@ -114,6 +212,13 @@ impl Session {
         };
         if last.standard != program.standard {
             return trees;
+        }
+        if same {
+            // The IR of the POUs the next check may reuse.
+            self.cache.old_ir = std::mem::take(&mut last.ir)
+                .into_iter()
+                .map(|p| p.pous.into_iter().map(Some).collect())
+                .collect();
         }
         let units = std::mem::take(&mut last.units);
         let inputs = std::mem::take(&mut last.inputs);

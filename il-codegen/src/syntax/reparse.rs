@@ -7,16 +7,16 @@
 //! otherwise (`None`):
 //! - the old text parsed without any diagnostic (after an error the
 //!   parser's recovery may have placed the item boundaries anywhere);
-//! - the part parsed again runs from a line start to a line start, with
-//!   only spaces and tabs between a kept item and those line breaks: the
-//!   lexer starts each line between items in the same state as a fresh
-//!   lexer does at the start of a file;
+//! - the part parsed again runs from the start of an item's line to the
+//!   start of another's (or the end), with only blanks before those items
+//!   on their lines: the lexer starts such a line in the state a fresh
+//!   lexer starts a file in;
 //! - that part parses alone without any diagnostic (an unclosed comment, a
 //!   lost `END_`, an `{extern}` before a kept POU all give one).
 
 use super::lexer::comments::InnerOpen;
 use super::spans::shift;
-use crate::ast::{CompilationUnit, Item, Span};
+use crate::ast::{CompilationUnit, Item};
 use crate::diag::SourceFile;
 
 /// A tree parsed again: the tree of the whole new text, the comments that
@@ -25,28 +25,39 @@ pub(crate) struct Reparsed {
     pub unit: CompilationUnit,
     pub inner_opens: Vec<InnerOpen>,
     pub parsed: std::ops::Range<usize>,
+    /// The items parsed again (their numbers in `unit.items`) and the old
+    /// items they replace (in the old text's positions).
+    pub items: std::ops::Range<usize>,
+    pub replaced: Vec<Item>,
+    /// The old bytes the edit replaced, and how many bytes longer the new
+    /// text is.
+    pub change: (usize, usize),
+    pub delta: i64,
+    /// Whether the edit kept the number of lines.
+    pub same_lines: bool,
 }
 
-fn item_span(item: &Item) -> Option<Span> {
+/// Where an item starts: its keyword (a TYPE block's tree starts at its
+/// first declaration: the `TYPE` before it is found in the text, right
+/// before it but for blanks; `None` when something else stands between).
+fn item_start(b: &[u8], item: &Item) -> Option<usize> {
     match item {
-        Item::Pou(p) => Some(p.span),
-        Item::Configuration(c) => Some(c.span),
-        Item::Types(t) => Some(t.first()?.span.to(t.last()?.span)),
+        Item::Pou(p) => Some(p.span.lo as usize),
+        Item::Configuration(c) => Some(c.span.lo as usize),
+        Item::Types(t) => {
+            let mut i = t.first()?.span.lo as usize;
+            while i > 0 && b[i - 1].is_ascii_whitespace() {
+                i -= 1;
+            }
+            let kw = i.checked_sub(4)?;
+            let bounded = kw == 0 || !(b[kw - 1].is_ascii_alphanumeric() || b[kw - 1] == b'_');
+            (b[kw..i].eq_ignore_ascii_case(b"TYPE") && bounded).then_some(kw)
+        }
     }
 }
 
 fn blank(b: u8) -> bool {
     b == b' ' || b == b'\t'
-}
-
-/// The start of the line after the item that ends at `hi`, if only spaces
-/// and tabs (or a `\r`) stand between.
-fn line_after(b: &[u8], hi: usize) -> Option<usize> {
-    let mut i = hi;
-    while i < b.len() && (blank(b[i]) || b[i] == b'\r') {
-        i += 1;
-    }
-    (b.get(i) == Some(&b'\n')).then_some(i + 1)
 }
 
 /// The start of the line of the item that starts at `lo`, if only spaces
@@ -104,36 +115,42 @@ pub(crate) fn reparse(
             unit,
             inner_opens,
             parsed: 0..0,
+            items: 0..0,
+            replaced: Vec::new(),
+            change: (0, 0),
+            delta: 0,
+            same_lines: true,
         });
     }
     // The edit replaced old[prefix..old_end] by new[prefix..new_end].
     let old_end = o.len() - suffix;
-    let spans: Vec<Span> = unit.items.iter().map(item_span).collect::<Option<_>>()?;
-    // Kept before: the items whose line ends before the edit.
-    let mut before = 0;
-    let mut lo = 0;
-    for s in &spans {
-        match line_after(o, s.hi as usize) {
-            Some(next) if next <= prefix => {
-                before += 1;
-                lo = next;
-            }
-            _ => break,
+    // Each item's boundary: the start of its line, when only blanks stand
+    // before it there. The text from one boundary to the next is an item
+    // and what follows it (comments, blank lines, a TYPE block's END_TYPE).
+    let starts: Vec<Option<usize>> = (unit.items.iter())
+        .map(|it| line_of(o, item_start(o, it)?))
+        .collect();
+    // Kept before: the items before the last boundary before the edit.
+    let (mut before, mut lo) = (0, 0);
+    for (i, s) in starts.iter().enumerate().skip(1) {
+        if let Some(s) = *s
+            && s <= prefix
+        {
+            (before, lo) = (i, s);
         }
     }
-    // Kept after: the items whose line starts after the edit.
-    let mut after = spans.len();
-    let mut old_hi = o.len();
-    for s in spans[before..].iter().rev() {
-        match line_of(o, s.lo as usize) {
-            Some(start) if start >= old_end && start > lo => {
-                after -= 1;
-                old_hi = start;
-            }
-            _ => break,
+    // Kept after: the items from the first boundary after the edit on.
+    let (mut after, mut old_hi) = (starts.len(), o.len());
+    for (i, s) in starts.iter().enumerate().skip(before + 1) {
+        if let Some(s) = *s
+            && s >= old_end
+            && s > lo
+        {
+            (after, old_hi) = (i, s);
+            break;
         }
     }
-    if before == 0 && after == spans.len() {
+    if before == 0 && after == starts.len() {
         // Nothing kept: a full parse is the same work.
         return None;
     }
@@ -148,8 +165,9 @@ pub(crate) fn reparse(
     }
     shift(&mut part.items, lo as i64);
     let mut tail = unit.items.split_off(after);
-    unit.items.truncate(before);
+    let replaced = unit.items.split_off(before);
     shift(&mut tail, delta);
+    let items = before..before + part.items.len();
     unit.items.append(&mut part.items);
     unit.items.append(&mut tail);
     for c in &mut opens {
@@ -173,9 +191,16 @@ pub(crate) fn reparse(
     }
     out.extend(opens);
     out.extend(kept_after);
+    let new_end = (old_end as i64 + delta) as usize;
+    let lines = |b: &[u8]| b.iter().filter(|&&c| c == b'\n').count();
     Some(Reparsed {
         unit,
         inner_opens: out,
         parsed: lo..hi,
+        items,
+        replaced,
+        change: (prefix, old_end),
+        delta,
+        same_lines: lines(&o[prefix..old_end]) == lines(&n[prefix..new_end]),
     })
 }

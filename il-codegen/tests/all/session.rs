@@ -124,7 +124,7 @@ fn position(rng: &mut Rng, text: &str) -> usize {
 
 fn edit(rng: &mut Rng, text: &str, history: &[String]) -> String {
     let mut t = text.to_string();
-    match rng.below(12) {
+    match rng.below(14) {
         0..=3 => {
             let at = position(rng, &t);
             t.insert_str(at, PIECES[rng.below(PIECES.len())]);
@@ -138,14 +138,14 @@ fn edit(rng: &mut Rng, text: &str, history: &[String]) -> String {
             }
             t.replace_range(lo..hi, "");
         }
-        7 => {
+        7..=9 => {
             // An operand renamed: a semantic error, not a syntax one.
             let at = position(rng, &t);
             if let Some(i) = t[at..].find("    LD   ") {
                 t.insert_str(at + i + 9, "un");
             }
         }
-        8 => {
+        10 => {
             // Duplicate a line.
             let at = position(rng, &t);
             let end = t[at..].find('\n').map_or(t.len(), |i| at + i + 1);
@@ -167,8 +167,9 @@ fn program(names: &[&str], texts: &[String]) -> Program {
 }
 
 /// Check `files` through the session and from scratch; they must agree.
-/// Returns how many files the session parsed only in part.
-fn compare(session: &mut Session, names: &[&str], texts: &[String], what: &str) -> usize {
+/// Returns how many files the session parsed only in part, and whether it
+/// checked one POU alone (the others' results reused).
+fn compare(session: &mut Session, names: &[&str], texts: &[String], what: &str) -> (usize, bool) {
     let fresh = program(names, texts).check();
     let again = session.check(program(names, texts));
     assert_eq!(
@@ -187,14 +188,17 @@ fn compare(session: &mut Session, names: &[&str], texts: &[String], what: &str) 
         format!("{:?}", fresh.partial_ir()),
         "{what}: IR"
     );
-    session
+    let partial = session
         .reparsed()
         .iter()
         .zip(texts)
         .filter(|(r, text)| r.as_ref().is_some_and(|r| r.len() < text.len()))
-        .count()
+        .count();
+    (partial, session.pous_checked() == 1)
 }
 
+/// Runs `edits` random edits; returns how many times the session parsed a
+/// file in part, and how many times it checked one POU alone.
 fn run(seed: u64, start: &[(&str, String)], edits: usize) -> (usize, usize) {
     let mut rng = Rng(seed);
     let mut texts: Vec<String> = start.iter().map(|(_, t)| t.clone()).collect();
@@ -202,58 +206,67 @@ fn run(seed: u64, start: &[(&str, String)], edits: usize) -> (usize, usize) {
     let mut history = vec![texts.clone()];
     let mut session = Session::new();
     compare(&mut session, &names, &texts, "the first check");
-    let mut partial = 0;
+    let (mut partial, mut fast) = (0, 0);
     for step in 0..edits {
+        if rng.below(6) == 0 {
+            // Every file back to its first text (a program without errors).
+            texts = history[0].clone();
+        }
         let k = rng.below(texts.len());
         let earlier: Vec<String> = history.iter().map(|h| h[k].clone()).collect();
         texts[k] = edit(&mut rng, &texts[k], &earlier);
         history.push(texts.clone());
         let what = format!("seed {seed}, edit {step} of file {}", names[k]);
-        partial += compare(&mut session, &names, &texts, &what);
+        let (p, f) = compare(&mut session, &names, &texts, &what);
+        partial += p;
+        fast += usize::from(f);
     }
-    (partial, edits)
+    (partial, fast)
 }
 
 #[test]
 fn random_edits_check_as_a_fresh_check_does() {
     let clean = program(&["plc/main.il"], &[BASE.to_string()]).check();
     assert_eq!(clean.diagnostics()[0], [], "the starting text is clean");
-    let mut partial = 0;
-    let mut total = 0;
+    let (mut partial, mut fast) = (0, 0);
+    let total = 12 * 60;
     for seed in 1..=12u64 {
-        let (p, n) = run(
+        let (p, f) = run(
             seed.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             &[("plc/main.il", BASE.to_string())],
             60,
         );
         partial += p;
-        total += n;
+        fast += f;
     }
-    // The short way is taken often (most random edits break the syntax,
+    // The short ways are taken often (most random edits break the syntax,
     // and the edit after a syntax error parses the file whole), or the test
     // would prove nothing.
     assert!(
         partial * 10 > total,
         "parsed in part {partial} of {total} times"
     );
+    assert!(fast * 60 > total, "one POU checked {fast} of {total} times");
 }
 
 #[test]
 fn random_edits_in_a_program_of_two_files() {
     let (types, rest) = BASE.split_at(BASE.find("FUNCTION Twice").unwrap());
-    let mut partial = 0;
+    let (mut partial, mut fast) = (0, 0);
     for seed in 100..106 {
-        partial += run(
+        let (p, f) = run(
             seed,
             &[
                 ("plc/types.il", types.to_string()),
                 ("plc/pous.il", rest.to_string()),
             ],
             50,
-        )
-        .0;
+        );
+        partial += p;
+        fast += f;
     }
     assert!(partial > 20, "parsed in part {partial} times");
+    assert!(fast >= 5, "one POU checked {fast} times");
 }
 
 /// The IL files of the corpus (real programs, vendor forms), edited.
@@ -298,8 +311,21 @@ fn an_edit_inside_a_pou_parses_that_pou_only() {
     // Only the 21st replacement differs from `text` with 20 replaced.
     let base = text.replacen("    LD a\n", "    LD nosuch\n", 20);
     compare(&mut session, &big, &[base], "twenty edits at once");
-    compare(&mut session, &big, &[edited], "one edit");
+    compare(
+        &mut session,
+        &big,
+        std::slice::from_ref(&edited),
+        "one edit",
+    );
+    assert_eq!(
+        session.pous_checked(),
+        1,
+        "the other POUs' results are reused"
+    );
     let len = fb(20).len() + "nosuch".len() - 1;
     let at = at + 20 * ("nosuch".len() - 1);
     assert_eq!(session.reparsed(), [Some(at..at + len)]);
+    // The same text again: nothing is checked again.
+    compare(&mut session, &big, &[edited], "no edit");
+    assert_eq!(session.pous_checked(), 0);
 }
