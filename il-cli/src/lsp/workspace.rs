@@ -172,6 +172,8 @@ pub struct Times {
     pub index: Duration,
     /// The line tables of the documents.
     pub lines: Duration,
+    /// The POUs checked (the others' results were reused).
+    pub pous: usize,
 }
 
 /// The name of a document's file with a Windows drive letter in upper case.
@@ -378,6 +380,7 @@ impl Workspace {
             indexes.push(index);
             times.index += indexing.elapsed();
             times.parse += session.parse_time();
+            times.pous += session.pous_checked();
         }
         times.check = times.check.saturating_sub(times.parse);
         self.times = times;
