@@ -266,7 +266,8 @@ pub(crate) fn table(
 #[derive(Default)]
 struct Table {
     out: Resolutions,
-    ids: HashMap<Key, SymbolId>,
+    // Fx: the table looks up every name of the program here.
+    ids: rustc_hash::FxHashMap<Key, SymbolId>,
     /// Global name (upper case) → its first symbol, for VAR_EXTERNALs.
     globals: HashMap<String, SymbolId>,
     externals: Vec<(SymbolId, String)>,
