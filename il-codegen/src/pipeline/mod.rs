@@ -6,7 +6,9 @@
 //! without syntax errors are checked together (a FUNCTION_BLOCK of one is
 //! usable in another); diagnostics are moved into the file the user wrote
 //! (an XML project's lines), sorted by position and limited per file; code
-//! is emitted only when no input has an error.
+//! is emitted only when no input has an error. A [`Session`] runs the same
+//! pipeline again after each edit, parsing and checking only what the edit
+//! touched.
 
 #[cfg(feature = "build")]
 pub(crate) mod file;

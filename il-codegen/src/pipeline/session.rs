@@ -12,11 +12,19 @@ use crate::syntax::{self, lexer::comments::InnerOpen};
 /// Checks a program again and again as its texts change, and keeps the
 /// last [`Checked`]: an IL file is then parsed again only in the top-level
 /// items (POUs, TYPE blocks, CONFIGURATIONs) that an edit touches, the
-/// other items' trees are kept with their positions moved. The result is
-/// the one [`Program::check`] gives for the same sources, diagnostics and
-/// spans included; where that is not sure (the last parse of the file had
-/// diagnostics, the edit crosses an item's line, the part parsed again has
-/// an error) the file is parsed whole.
+/// other items' trees are kept with their positions moved; and when the
+/// edit changed one POU's body alone (its declarations, its use of `ENO`
+/// and its number of lines kept), only that POU is checked again: the
+/// others' checked IR, diagnostics and resolved names are the last
+/// check's, moved. The declarations and the program-wide rules are
+/// checked every time.
+///
+/// The result is the one [`Program::check`] gives for the same sources,
+/// diagnostics and spans included; where that is not sure the longer way
+/// is taken: a file whose last parse had diagnostics, an edit that crosses
+/// an item's line or leaves an error in the part parsed again, is parsed
+/// whole; any other edit, or a change of the inputs or of the options,
+/// checks the whole program.
 ///
 /// Files are matched with the last check's by their name ([`SourceFile::name`]).
 ///

@@ -88,7 +88,7 @@ pub(crate) fn check_recorded(
     // The names noted by the declarations' passes, then by each POU.
     let mut pre: Vec<Noted> = cxs
         .iter_mut()
-        .map(|c| c.names.replace(Vec::new()).unwrap_or_default())
+        .map(|c| c.names.as_mut().map(std::mem::take).unwrap_or_default())
         .collect();
     let (mut old, mut old_ir, reuse) = match cache.as_deref_mut() {
         Some(c) => (
@@ -180,9 +180,14 @@ pub(crate) fn check_recorded(
                 None => {
                     checked += 1;
                     let before = cxs[f].diags.len();
-                    let saved = cxs[f].names.replace(Vec::new());
+                    // Its names apart (`None`: none are noted).
+                    let saved = cxs[f].names.as_mut().map(std::mem::take);
                     let pou_ir = flow::check_pou(&mut cxs[f], &env, pou, sig);
-                    let noted = std::mem::replace(&mut cxs[f].names, saved).unwrap_or_default();
+                    let noted = match saved {
+                        Some(s) => std::mem::replace(&mut cxs[f].names, Some(s)),
+                        None => None,
+                    }
+                    .unwrap_or_default();
                     // A duplicate's errors are reported; the program has an error anyway.
                     let ir = pou_ir.filter(|_| main.is_some()).map(|p| {
                         program.pous.push(p);
