@@ -15,7 +15,7 @@ use lsp_types::Uri;
 
 use super::convert::{LineIndex, path_to_uri, uri_to_name};
 use super::diagnostics;
-use super::index::Index;
+use super::index::{Index, Step};
 
 /// One document.
 #[derive(Debug)]
@@ -55,6 +55,9 @@ pub struct Analysis {
     pub indexes: Vec<Index>,
     /// Each document's program: an index into `indexes`.
     pub program_of: Vec<usize>,
+    /// Each program's folder (its session's key) and the session's
+    /// generation its index was built from.
+    pub checks: Vec<(String, u64)>,
 }
 
 impl Analysis {
@@ -201,6 +204,22 @@ impl Workspace {
         Some((k, lines.offset(&self.docs[k].text, pos)))
     }
 
+    /// What the checker recorded at `step` of document `k`'s program (from
+    /// the check its index was built from, kept by the program's session).
+    pub fn cr_step(&self, k: usize, step: &Step) -> Option<&il_codegen::ir::CrStep> {
+        let (dir, generation) = self
+            .analysis
+            .checks
+            .get(*self.analysis.program_of.get(k)?)?;
+        let session = self.sessions.get(dir)?;
+        if session.generation() != *generation {
+            return None;
+        }
+        let ir = session.last()?.partial_ir();
+        let pou = ir.get(step.file as usize)?.pous.get(step.pou as usize)?;
+        pou.cr_steps.get(step.at as usize)
+    }
+
     /// The LSP range of a span of document `k`.
     pub fn range(&self, k: usize, span: il_codegen::ast::Span) -> lsp_types::Range {
         match (self.docs.get(k), self.analysis.lines.get(k)) {
@@ -338,6 +357,7 @@ impl Workspace {
         let mut indexes = Vec::new();
         let mut program_of = vec![0; self.docs.len()];
         let mut sessions = HashMap::new();
+        let mut checks = Vec::new();
         for (dir, group) in programs(&self.docs) {
             let session: &mut Session = sessions
                 .entry(dir.clone())
@@ -381,6 +401,7 @@ impl Workspace {
             times.index += indexing.elapsed();
             times.parse += session.parse_time();
             times.pous += session.pous_checked();
+            checks.push((dir, session.generation()));
         }
         times.check = times.check.saturating_sub(times.parse);
         self.times = times;
@@ -394,6 +415,7 @@ impl Workspace {
                 fixes,
                 indexes,
                 program_of,
+                checks,
             },
         ));
     }

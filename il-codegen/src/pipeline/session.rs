@@ -56,6 +56,7 @@ pub struct Session {
     cache: sema::reuse::Cache,
     /// What the last check was asked: the cache serves only the same.
     settings: Option<Settings>,
+    generation: u64,
 }
 
 #[derive(Debug, PartialEq)]
@@ -183,9 +184,17 @@ impl Session {
         }
         let checked = program.check_parsed(parsed, Some(&mut self.cache));
         self.settings = Some(settings);
+        self.generation += 1;
         self.clean = clean;
         self.reparsed = edits.into_iter().map(|e| e.map(|e| e.parsed)).collect();
         self.last.insert(checked)
+    }
+
+    /// How many checks the session has run: tells the last check's
+    /// results from an earlier one's (for a tool that keeps positions in
+    /// them, such as an editor's index).
+    pub fn generation(&self) -> u64 {
+        self.generation
     }
 
     /// How many POUs the last check checked: the others' results were
