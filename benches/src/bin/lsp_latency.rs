@@ -203,11 +203,10 @@ fn main() {
     // The server's memory: what it holds between edits (VmRSS) and at most.
     let status =
         std::fs::read_to_string(format!("/proc/{}/status", child.id())).unwrap_or_default();
-    let mem: Vec<&str> = status
+    let mem: Vec<String> = status
         .lines()
         .filter(|l| l.starts_with("VmRSS") || l.starts_with("VmHWM"))
         .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
-        .map(|l| &*l.leak())
         .collect();
     if !mem.is_empty() {
         println!("server memory: {}", mem.join(", "));

@@ -184,7 +184,7 @@ pub(crate) fn check_recorded(
                     let saved = cxs[f].names.as_mut().map(std::mem::take);
                     let pou_ir = flow::check_pou(&mut cxs[f], &env, pou, sig);
                     let noted = match saved {
-                        Some(s) => std::mem::replace(&mut cxs[f].names, Some(s)),
+                        Some(s) => cxs[f].names.replace(s),
                         None => None,
                     }
                     .unwrap_or_default();

@@ -305,7 +305,7 @@ fn an_edit_inside_a_pou_parses_that_pou_only() {
     let text: String = (0..50).map(fb).collect();
     let mut session = Session::new();
     let big = ["big.il"];
-    compare(&mut session, &big, &[text.clone()], "open");
+    compare(&mut session, &big, std::slice::from_ref(&text), "open");
     let at = text.find("FUNCTION_BLOCK Fb20\n").unwrap();
     let edited = text.replacen("    LD a\n", "    LD nosuch\n", 21);
     // Only the 21st replacement differs from `text` with 20 replaced.
