@@ -13,11 +13,12 @@ use crate::syntax::{self, lexer::comments::InnerOpen};
 /// last [`Checked`]: an IL file is then parsed again only in the top-level
 /// items (POUs, TYPE blocks, CONFIGURATIONs) that an edit touches, the
 /// other items' trees are kept with their positions moved; and when the
-/// edit changed one POU's body alone (its declarations, its use of `ENO`
-/// and its number of lines kept), only that POU is checked again: the
-/// others' checked IR, diagnostics and resolved names are the last
-/// check's, moved. The declarations and the program-wide rules are
-/// checked every time.
+/// edit changed one POU's body alone (its declarations and its use of
+/// `ENO` kept), only that POU is checked again, with the POUs after it in
+/// its file if the edit changed the number of lines (their messages name
+/// their lines): the others' checked IR, diagnostics and resolved names
+/// are the last check's, moved. The declarations and the program-wide
+/// rules are checked every time.
 ///
 /// The result is the one [`Program::check`] gives for the same sources,
 /// diagnostics and spans included; where that is not sure the longer way
@@ -78,9 +79,10 @@ struct Edit {
 }
 
 /// What the check of the new texts may reuse of the last one's: every
-/// POU's results but the edited one's, when every file was parsed again in
-/// part, and one POU alone changed, inside, keeping its declarations and
-/// its number of lines (see `sema/reuse.rs`).
+/// POU's results but the edited one's (and those after it if the edit
+/// changed the number of lines), when every file was parsed again in part,
+/// and one POU alone changed, inside, keeping its declarations (see
+/// `sema/reuse.rs`).
 fn reuse(edits: &[Option<Edit>], parsed: &[Parsed]) -> Option<sema::reuse::Reuse> {
     use crate::ast::Item;
     let mut changed = edits
@@ -94,10 +96,11 @@ fn reuse(edits: &[Option<Edit>], parsed: &[Parsed]) -> Option<sema::reuse::Reuse
             pou: usize::MAX,
             change: (u32::MAX, u32::MAX),
             delta: 0,
+            after_too: true,
         });
     };
     let e = edit.as_ref()?;
-    if changed.next().is_some() || !e.same_lines || e.items.len() != 1 {
+    if changed.next().is_some() || e.items.len() != 1 {
         return None;
     }
     let items = &parsed[file].0.items;
@@ -118,6 +121,7 @@ fn reuse(edits: &[Option<Edit>], parsed: &[Parsed]) -> Option<sema::reuse::Reuse
         pou,
         change: (e.change.0 as u32, e.change.1 as u32),
         delta: e.delta,
+        after_too: e.same_lines,
     })
 }
 

@@ -112,7 +112,7 @@ pub(crate) fn check_recorded(
             && old.get(r.file).is_some_and(|pous| {
                 pous.iter()
                     .enumerate()
-                    .filter(|(k, _)| *k != r.pou)
+                    .filter(|(k, _)| r.reuses(r.file, *k))
                     .flat_map(|(_, p)| p.iter().flat_map(|p| &p.diags))
                     .all(|d| r.move_diag(&mut d.clone()))
             })
@@ -154,7 +154,7 @@ pub(crate) fn check_recorded(
                 continue;
             };
             let kept = reuse
-                .filter(|r| (r.file, r.pou) != (f, k))
+                .filter(|r| r.reuses(f, k))
                 .and_then(|r| Some((r, old.get_mut(f)?.get_mut(k)?.take()?)));
             let result = match kept {
                 Some((r, mut res)) => {

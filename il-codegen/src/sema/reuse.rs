@@ -9,8 +9,9 @@
 //! others' results stand when the edited POU's declarations are unchanged,
 //! text and positions alike: its name, kind, result type, VAR blocks, and
 //! what its body adds to its interface (a FUNCTION's `ENO`). The edit must
-//! keep the number of lines (the messages name lines) and lie inside the
-//! POU (the comment lines above a POU are its documentation).
+//! lie inside the POU (the comment lines above a POU are its
+//! documentation). A POU's messages and IR name its own lines only: those
+//! before the edit keep theirs.
 
 use super::flow::Noted;
 use crate::ast::{self, Span};
@@ -40,6 +41,10 @@ pub(crate) struct Reuse {
     pub pou: usize,
     pub change: (u32, u32),
     pub delta: i64,
+    /// The edit kept the number of lines: the POUs after the edited one
+    /// are reused too (else their lines, which their messages and IR name,
+    /// moved: they are checked again).
+    pub after_too: bool,
 }
 
 /// The per-POU results of the last check, and what the next may reuse.
@@ -70,6 +75,11 @@ pub(crate) fn same_interface(old: &ast::Pou, new: &ast::Pou) -> bool {
 }
 
 impl Reuse {
+    /// Whether POU `k` of file `f` is reused.
+    pub fn reuses(&self, f: usize, k: usize) -> bool {
+        f != self.file || k < self.pou || (k > self.pou && self.after_too)
+    }
+
     /// Span `s` of the old text in the new one; `None` when it overlaps
     /// the bytes the edit replaced (or is empty where text was inserted):
     /// then where it belongs is not known.

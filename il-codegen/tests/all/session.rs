@@ -167,9 +167,9 @@ fn program(names: &[&str], texts: &[String]) -> Program {
 }
 
 /// Check `files` through the session and from scratch; they must agree.
-/// Returns how many files the session parsed only in part, and whether it
-/// checked one POU alone (the others' results reused).
-fn compare(session: &mut Session, names: &[&str], texts: &[String], what: &str) -> (usize, bool) {
+/// Returns how many files the session parsed only in part, and how many
+/// POUs it checked (the others' results reused).
+fn compare(session: &mut Session, names: &[&str], texts: &[String], what: &str) -> (usize, usize) {
     let fresh = program(names, texts).check();
     let again = session.check(program(names, texts));
     assert_eq!(
@@ -194,19 +194,20 @@ fn compare(session: &mut Session, names: &[&str], texts: &[String], what: &str) 
         .zip(texts)
         .filter(|(r, text)| r.as_ref().is_some_and(|r| r.len() < text.len()))
         .count();
-    (partial, session.pous_checked() == 1)
+    (partial, session.pous_checked())
 }
 
 /// Runs `edits` random edits; returns how many times the session parsed a
-/// file in part, and how many times it checked one POU alone.
-fn run(seed: u64, start: &[(&str, String)], edits: usize) -> (usize, usize) {
+/// file in part, checked one POU alone, and checked 2 or 3 POUs (of the
+/// 4 of `BASE`: an edit that added or removed a line).
+fn run(seed: u64, start: &[(&str, String)], edits: usize) -> (usize, usize, usize) {
     let mut rng = Rng(seed);
     let mut texts: Vec<String> = start.iter().map(|(_, t)| t.clone()).collect();
     let names: Vec<&str> = start.iter().map(|(n, _)| *n).collect();
     let mut history = vec![texts.clone()];
     let mut session = Session::new();
     compare(&mut session, &names, &texts, "the first check");
-    let (mut partial, mut fast) = (0, 0);
+    let (mut partial, mut fast, mut some) = (0, 0, 0);
     for step in 0..edits {
         if rng.below(6) == 0 {
             // Every file back to its first text (a program without errors).
@@ -219,25 +220,27 @@ fn run(seed: u64, start: &[(&str, String)], edits: usize) -> (usize, usize) {
         let what = format!("seed {seed}, edit {step} of file {}", names[k]);
         let (p, f) = compare(&mut session, &names, &texts, &what);
         partial += p;
-        fast += usize::from(f);
+        fast += usize::from(f == 1);
+        some += usize::from(f == 2 || f == 3);
     }
-    (partial, fast)
+    (partial, fast, some)
 }
 
 #[test]
 fn random_edits_check_as_a_fresh_check_does() {
     let clean = program(&["plc/main.il"], &[BASE.to_string()]).check();
     assert_eq!(clean.diagnostics()[0], [], "the starting text is clean");
-    let (mut partial, mut fast) = (0, 0);
+    let (mut partial, mut fast, mut some) = (0, 0, 0);
     let total = 12 * 60;
     for seed in 1..=12u64 {
-        let (p, f) = run(
+        let (p, f, s) = run(
             seed.wrapping_mul(0x9E37_79B9_7F4A_7C15),
             &[("plc/main.il", BASE.to_string())],
             60,
         );
         partial += p;
         fast += f;
+        some += s;
     }
     // The short ways are taken often (most random edits break the syntax,
     // and the edit after a syntax error parses the file whole), or the test
@@ -247,6 +250,7 @@ fn random_edits_check_as_a_fresh_check_does() {
         "parsed in part {partial} of {total} times"
     );
     assert!(fast * 60 > total, "one POU checked {fast} of {total} times");
+    assert!(some > 5, "2 or 3 POUs checked {some} times");
 }
 
 #[test]
@@ -254,7 +258,7 @@ fn random_edits_in_a_program_of_two_files() {
     let (types, rest) = BASE.split_at(BASE.find("FUNCTION Twice").unwrap());
     let (mut partial, mut fast) = (0, 0);
     for seed in 100..106 {
-        let (p, f) = run(
+        let (p, f, _) = run(
             seed,
             &[
                 ("plc/types.il", types.to_string()),
@@ -325,6 +329,27 @@ fn an_edit_inside_a_pou_parses_that_pou_only() {
     let len = fb(20).len() + "nosuch".len() - 1;
     let at = at + 20 * ("nosuch".len() - 1);
     assert_eq!(session.reparsed(), [Some(at..at + len)]);
+    // A line added: the POUs from the edited one on are checked again.
+    let fb20 = edited.find("FUNCTION_BLOCK Fb20\n").unwrap();
+    let mut longer = edited.clone();
+    longer.insert_str(
+        fb20 + edited[fb20..].find("    ST q\n").unwrap(),
+        "    ST q\n",
+    );
+    compare(
+        &mut session,
+        &big,
+        std::slice::from_ref(&longer),
+        "a new line",
+    );
+    assert_eq!(session.pous_checked(), 30, "FB20 to FB49");
+    compare(
+        &mut session,
+        &big,
+        std::slice::from_ref(&edited),
+        "the line removed",
+    );
+    assert_eq!(session.pous_checked(), 30);
     // The same text again: nothing is checked again.
     compare(&mut session, &big, &[edited], "no edit");
     assert_eq!(session.pous_checked(), 0);
