@@ -1,4 +1,4 @@
-//! `lsp_latency [ILC] [--fbs N] [--lines L] [--edits E] [--full] [--times]`:
+//! `lsp_latency [ILC] [--fbs N] [--lines L] [--edits E] [--full] [--new-line] [--times]`:
 //! the language server's latency as an editor sees it, on one generated
 //! file of N FUNCTION_BLOCKs of L lines (default 500 x 200: 100 000 lines).
 //! Starts `ILC lsp` (default `target/release/ilc`), opens the file, then
@@ -10,6 +10,8 @@
 //!
 //! Each edit is sent as the range it replaces (incremental sync, as editors
 //! do when the server asks for it); `--full` sends the whole text instead.
+//! `--new-line` makes each error a line of its own, inserted and deleted
+//! again (edits that change the number of lines).
 //! `--times` prints the medians of where the server says its time went
 //! (`ILC_LSP_TIMES`: parse, check, index, ...).
 
@@ -114,6 +116,7 @@ fn main() {
     let text = program(fbs, lines);
     let uri = format!("file://{}", path.display());
     let full = args.iter().any(|a| a == "--full");
+    let new_line = args.iter().any(|a| a == "--new-line");
     let times = args.iter().any(|a| a == "--times");
     let mut child = Command::new(&ilc)
         .arg("lsp")
@@ -159,17 +162,27 @@ fn main() {
     let line = text[..at].lines().count() as u64;
     let mut spent = Vec::new();
     for i in 0..edits {
-        // `ADD  1` <-> `ADD  nosuch`: column 9 of the line.
-        let (new, end, put) = if i % 2 == 0 {
-            let new = format!("{}    ADD  nosuch\n{}", &text[..at], &text[at + 11..]);
-            (new, 10, "nosuch")
-        } else {
-            (text.clone(), 15, "1")
+        // `ADD  1` <-> `ADD  nosuch`: column 9 of the line; or a line
+        // `ADD  nosuch` inserted before it and deleted.
+        let pos = |l: u64, c: u64| json!({"line": l, "character": c});
+        let (new, range, put) = match (new_line, i % 2 == 0) {
+            (false, true) => (
+                format!("{}    ADD  nosuch\n{}", &text[..at], &text[at + 11..]),
+                (pos(line, 9), pos(line, 10)),
+                "nosuch",
+            ),
+            (false, false) => (text.clone(), (pos(line, 9), pos(line, 15)), "1"),
+            (true, true) => (
+                format!("{}    ADD  nosuch\n{}", &text[..at], &text[at..]),
+                (pos(line, 0), pos(line, 0)),
+                "    ADD  nosuch\n",
+            ),
+            (true, false) => (text.clone(), (pos(line, 0), pos(line + 1, 0)), ""),
         };
         let change = if full {
             json!({"text": new})
         } else {
-            json!({"range": {"start": {"line": line, "character": 9}, "end": {"line": line, "character": end}}, "text": put})
+            json!({"range": {"start": range.0, "end": range.1}, "text": put})
         };
         let t = Instant::now();
         s.notify(
