@@ -36,7 +36,9 @@
 //! Tools that need more than generated files (an editor, a checker) run the
 //! pipeline themselves: [`Program`] of sources → [`Program::check`] →
 //! [`Checked`], with every [`Diagnostic`] and, when there is no error, the
-//! code ([`Checked::emit`], [`Checked::files`]). [`codes`] lists every
+//! code ([`Checked::emit`], [`Checked::files`]). A tool that checks again
+//! after every edit (an editor) checks through a [`Session`], which parses
+//! and checks again only what an edit touched. [`codes`] lists every
 //! diagnostic code with its explanation.
 //!
 //! # The modules, by who needs them
@@ -44,7 +46,7 @@
 //! | who | modules |
 //! | --- | --- |
 //! | a build script | [`Builder`] (re-exported at the root) |
-//! | a tool (editor, checker, interpreter) | [`pipeline`] ([`Program`] → [`Checked`]), [`ir`] (the checked program: the contract between the checker and every consumer), [`diag`], [`codes`], [`format`](mod@format) (`ilc fmt`'s layout), [`read`] (reading a source file in its encoding), [`ast`] (the syntax tree, for outlines), [`dialect`], [`plcopen`] |
+//! | a tool (editor, checker, interpreter) | [`pipeline`] ([`Program`] → [`Checked`], [`Session`]), [`ir`] (the checked program: the contract between the checker and every consumer), [`diag`], [`codes`], [`format`](mod@format) (`ilc fmt`'s layout), [`read`] (reading a source file in its encoding), [`ast`] (the syntax tree, for outlines), [`dialect`], [`plcopen`] |
 //! | the `il!` macro | [`expand`] (what `il-macros` calls: its input tokens to Rust tokens) |
 //! | this crate's own tests | [`step_counter`] (the front end's work, counted for the scaling tests) |
 //!
@@ -83,4 +85,4 @@ pub use builder::{Builder, Error, output_paths, write_if_changed};
 pub use diag::{Diagnostic, SourceFile};
 pub use dialect::Standard;
 pub use emit::Options as EmitOptions;
-pub use pipeline::{Checked, Emitted, Input, Program};
+pub use pipeline::{Checked, Emitted, Input, Program, Session};

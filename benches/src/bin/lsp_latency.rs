@@ -1,11 +1,19 @@
-//! `lsp_latency [ILC] [--fbs N] [--lines L] [--edits E]`: the language
-//! server's latency as an editor sees it, on one generated file of N
-//! FUNCTION_BLOCKs of L lines (default 500 x 200: 100 000 lines). Starts
-//! `ILC lsp` (default `target/release/ilc`), opens the file, then edits one
-//! line in the middle POU E times, alternately making and fixing an error
-//! (so every edit changes the published diagnostics), and times each edit
-//! from `didChange` to its `publishDiagnostics`; then times E hovers on an
-//! instruction. Prints the medians and the spread, and the machine's load.
+//! `lsp_latency [ILC] [--fbs N] [--lines L] [--edits E] [--full] [--new-line] [--times]`:
+//! the language server's latency as an editor sees it, on one generated
+//! file of N FUNCTION_BLOCKs of L lines (default 500 x 200: 100 000 lines).
+//! Starts `ILC lsp` (default `target/release/ilc`), opens the file, then
+//! edits one line in the middle POU E times, alternately making and fixing
+//! an error (so every edit changes the published diagnostics), and times
+//! each edit from `didChange` to its `publishDiagnostics`; then times E
+//! hovers on an instruction. Prints the medians and the spread, and the
+//! machine's load.
+//!
+//! Each edit is sent as the range it replaces (incremental sync, as editors
+//! do when the server asks for it); `--full` sends the whole text instead.
+//! `--new-line` makes each error a line of its own, inserted and deleted
+//! again (edits that change the number of lines).
+//! `--times` prints the medians of where the server says its time went
+//! (`ILC_LSP_TIMES`: parse, check, index, ...).
 
 use serde_json::{Value, json};
 use std::io::BufReader;
@@ -107,13 +115,24 @@ fn main() {
     let path = dir.join("big.il");
     let text = program(fbs, lines);
     let uri = format!("file://{}", path.display());
+    let full = args.iter().any(|a| a == "--full");
+    let new_line = args.iter().any(|a| a == "--new-line");
+    let times = args.iter().any(|a| a == "--times");
     let mut child = Command::new(&ilc)
         .arg("lsp")
+        .env("ILC_LSP_TIMES", "1")
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
-        .stderr(Stdio::null())
+        .stderr(if times { Stdio::piped() } else { Stdio::null() })
         .spawn()
         .unwrap_or_else(|e| panic!("cannot start `{ilc} lsp`: {e}"));
+    let log = child.stderr.take().map(|e| {
+        std::thread::spawn(move || {
+            std::io::BufRead::lines(BufReader::new(e))
+                .map_while(Result::ok)
+                .collect::<Vec<String>>()
+        })
+    });
     let mut s = Server {
         stdin: child.stdin.take().unwrap(),
         out: BufReader::new(child.stdout.take().unwrap()),
@@ -140,24 +159,41 @@ fn main() {
         .find(&format!("FUNCTION_BLOCK Fb{}\n", fbs / 2))
         .unwrap();
     let at = mid + text[mid..].find("    ADD  1\n").unwrap();
-    let mut times = Vec::new();
+    let line = text[..at].lines().count() as u64;
+    let mut spent = Vec::new();
     for i in 0..edits {
-        let new = if i % 2 == 0 {
-            format!("{}    ADD  nosuch\n{}", &text[..at], &text[at + 11..])
+        // `ADD  1` <-> `ADD  nosuch`: column 9 of the line; or a line
+        // `ADD  nosuch` inserted before it and deleted.
+        let pos = |l: u64, c: u64| json!({"line": l, "character": c});
+        let (new, range, put) = match (new_line, i % 2 == 0) {
+            (false, true) => (
+                format!("{}    ADD  nosuch\n{}", &text[..at], &text[at + 11..]),
+                (pos(line, 9), pos(line, 10)),
+                "nosuch",
+            ),
+            (false, false) => (text.clone(), (pos(line, 9), pos(line, 15)), "1"),
+            (true, true) => (
+                format!("{}    ADD  nosuch\n{}", &text[..at], &text[at..]),
+                (pos(line, 0), pos(line, 0)),
+                "    ADD  nosuch\n",
+            ),
+            (true, false) => (text.clone(), (pos(line, 0), pos(line + 1, 0)), ""),
+        };
+        let change = if full {
+            json!({"text": new})
         } else {
-            text.clone()
+            json!({"range": {"start": range.0, "end": range.1}, "text": put})
         };
         let t = Instant::now();
         s.notify(
             "textDocument/didChange",
-            json!({"textDocument": {"uri": uri, "version": i + 2}, "contentChanges": [{"text": new}]}),
+            json!({"textDocument": {"uri": uri, "version": i + 2}, "contentChanges": [change]}),
         );
         let n = s.diagnostics(&uri);
-        times.push(t.elapsed());
+        spent.push(t.elapsed());
         assert_eq!(n, usize::from(i % 2 == 0));
     }
-    stats("edit inside one POU to fresh diagnostics", times);
-    let line = text[..at].lines().count() as u64;
+    stats("edit inside one POU to fresh diagnostics", spent);
     let mut times = Vec::new();
     for _ in 0..edits {
         let t = Instant::now();
@@ -177,8 +213,53 @@ fn main() {
             .collect::<Vec<_>>()
             .join(" ")
     );
+    // The server's memory: what it holds between edits (VmRSS) and at most.
+    let status =
+        std::fs::read_to_string(format!("/proc/{}/status", child.id())).unwrap_or_default();
+    let mem: Vec<String> = status
+        .lines()
+        .filter(|l| l.starts_with("VmRSS") || l.starts_with("VmHWM"))
+        .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
+        .collect();
+    if !mem.is_empty() {
+        println!("server memory: {}", mem.join(", "));
+    }
     s.request("shutdown", Value::Null);
     s.notify("exit", Value::Null);
     let _ = child.wait();
+    if let Some(log) = log {
+        server_times(&log.join().unwrap_or_default(), edits);
+    }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The medians of the server's own times of the last `edits` checks (its
+/// lines `ilc lsp: times: parse 1.0 check 2.0 ... ms`).
+fn server_times(log: &[String], edits: usize) {
+    let rows: Vec<Vec<(String, f64)>> = log
+        .iter()
+        .filter_map(|l| l.strip_prefix("ilc lsp: times: "))
+        .map(|l| {
+            let w: Vec<&str> = l.trim_end_matches(" ms").split_whitespace().collect();
+            w.chunks(2)
+                .filter_map(|p| Some((p[0].to_string(), p.get(1)?.parse().ok()?)))
+                .collect()
+        })
+        .collect();
+    let last = &rows[rows.len().saturating_sub(edits)..];
+    let Some(first) = last.first() else {
+        println!("the server printed no times");
+        return;
+    };
+    let medians: Vec<String> = (0..first.len())
+        .map(|k| {
+            let mut v: Vec<f64> = last.iter().filter_map(|r| Some(r.get(k)?.1)).collect();
+            v.sort_by(f64::total_cmp);
+            format!("{} {:.1}", first[k].0, v[v.len() / 2])
+        })
+        .collect();
+    println!(
+        "inside the server, per edit (median ms): {}",
+        medians.join(", ")
+    );
 }

@@ -5,21 +5,22 @@
 
 use lsp_types::{Hover, HoverContents, MarkupContent, MarkupKind, Position, Uri};
 
-use super::index::{Index, Kind, Step, fb_signature};
+use super::index::{Index, Kind, fb_signature};
 use super::workspace::Workspace;
 use il_codegen::ast::{self, PouKind};
-use il_codegen::ir::{CrState, SymbolId, SymbolKind};
+use il_codegen::ir::{CrState, CrStep, SymbolId, SymbolKind};
 use il_interp::il_std::signature::{self as sig, Class, Ext, ParamTy, Signature};
 
 pub fn hover(ws: &Workspace, uri: &Uri, pos: Position) -> Option<Hover> {
     let (k, off) = ws.locate(uri, pos)?;
     let ix = ws.analysis.index(k)?;
     let named = ix.name_at(k, off).and_then(|(span, s)| {
-        let mut text = symbol_text(ix, s)?;
+        let mut text = symbol_text(ws, ix, s)?;
         // A user FUNCTION called as an operator: the CR it takes and gives.
         if matches!(ix.table.symbols[s].kind, SymbolKind::Pou(PouKind::Function))
             && ix.table.symbols[s].decl.is_none_or(|d| d.span != span)
             && let Some(step) = ix.step_at(k, off).filter(|st| !st.label)
+            && let Some(step) = ws.cr_step(k, step)
         {
             text.push_str(&format!(
                 "\n\n---\n\nCalled here with the current result as its first input: CR before: {}, CR after (its result): {}",
@@ -33,7 +34,7 @@ pub fn hover(ws: &Workspace, uri: &Uri, pos: Position) -> Option<Hover> {
         Some(n) => n,
         None => {
             let s = ix.step_at(k, off)?;
-            (s.span, step_text(s))
+            (s.span, step_text(ws.cr_step(k, s)?))
         }
     };
     Some(Hover {
@@ -47,7 +48,7 @@ pub fn hover(ws: &Workspace, uri: &Uri, pos: Position) -> Option<Hover> {
 
 /// What symbol `s` of the table is: its declaration as written, or a
 /// standard function's or block's signature.
-fn symbol_text(ix: &Index, s: SymbolId) -> Option<String> {
+fn symbol_text(ws: &Workspace, ix: &Index, s: SymbolId) -> Option<String> {
     let t = &ix.table.symbols[s];
     Some(match t.kind {
         SymbolKind::StdFunction => fn_signature(sig::lookup(&t.name)?),
@@ -69,7 +70,7 @@ fn symbol_text(ix: &Index, s: SymbolId) -> Option<String> {
             None => other_text(ix, s),
         },
         _ => match ix.declared(s) {
-            Some(d) => declaration_text(ix, d),
+            Some(d) => declaration_text(ws, ix, d),
             None => other_text(ix, s),
         },
     })
@@ -146,7 +147,7 @@ fn function_text(ix: &Index, f: super::index::SymId) -> String {
 
 /// A declared name: its declaration as written, and for a label the CR
 /// there.
-fn declaration_text(ix: &Index, s: super::index::SymId) -> String {
+fn declaration_text(ws: &Workspace, ix: &Index, s: super::index::SymId) -> String {
     let sym = &ix.symbols[s];
     let mut out = format!("```il\n{}\n```", sym.decl);
     if !sym.note.is_empty() {
@@ -157,6 +158,7 @@ fn declaration_text(ix: &Index, s: super::index::SymId) -> String {
         && let Some(step) = ix
             .step_at(sym.file, sym.span.lo as usize)
             .filter(|s| s.label)
+        && let Some(step) = ws.cr_step(sym.file, step)
     {
         out.push_str("\n\n");
         out.push_str(&step_text(step));
@@ -171,7 +173,7 @@ fn cr(s: &CrState) -> String {
     }
 }
 
-fn step_text(s: &Step) -> String {
+fn step_text(s: &CrStep) -> String {
     if s.label {
         let mut out = format!("CR at this label: {}", cr(&s.after));
         if let Some(p) = &s.paths {

@@ -7,7 +7,7 @@ use lsp_types::{InlayHint, InlayHintKind, InlayHintLabel, Range, Uri};
 
 use super::index::Step;
 use super::workspace::Workspace;
-use il_codegen::ir::CrState;
+use il_codegen::ir::{CrState, CrStep};
 
 pub fn hints(ws: &Workspace, uri: &Uri, range: Range) -> Vec<InlayHint> {
     if !ws.settings.cr_type_hints {
@@ -29,21 +29,24 @@ pub fn hints(ws: &Workspace, uri: &Uri, range: Range) -> Vec<InlayHint> {
     let hi = lines.offset(&doc.text, range.end) as u32;
     // Per line, the outermost instruction ending there (a group's `)` line
     // shows the group's result, not its last inner instruction's).
-    let mut by_line: BTreeMap<usize, &Step> = BTreeMap::new();
+    let mut by_line: BTreeMap<usize, (&Step, &CrStep)> = BTreeMap::new();
     let first = steps.partition_point(|s| s.span.lo < lo);
     for s in steps[first..].iter().take_while(|s| s.span.lo <= hi) {
-        if s.label || s.after == CrState::Dead {
+        let Some(cr) = ws.cr_step(k, s) else {
+            continue;
+        };
+        if s.label || cr.after == CrState::Dead {
             continue;
         }
         let line = lines.line_of(s.span.hi as usize);
-        let e = by_line.entry(line).or_insert(s);
-        if s.span.hi - s.span.lo > e.span.hi - e.span.lo {
-            *e = s;
+        let e = by_line.entry(line).or_insert((s, cr));
+        if s.span.hi - s.span.lo > e.0.span.hi - e.0.span.lo {
+            *e = (s, cr);
         }
     }
     by_line
         .into_iter()
-        .map(|(line, s)| {
+        .map(|(line, (_, s))| {
             let (_, end) = lines.line_range(&doc.text, line);
             let label = match &s.after {
                 CrState::Typed(t) => t.to_string(),

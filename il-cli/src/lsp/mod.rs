@@ -60,7 +60,9 @@ pub fn run(encoding: il_codegen::read::Encoding) -> u8 {
 
 fn capabilities() -> ServerCapabilities {
     ServerCapabilities {
-        text_document_sync: Some(TextDocumentSyncCapability::Kind(TextDocumentSyncKind::FULL)),
+        text_document_sync: Some(TextDocumentSyncCapability::Kind(
+            TextDocumentSyncKind::INCREMENTAL,
+        )),
         hover_provider: Some(HoverProviderCapability::Simple(true)),
         definition_provider: Some(OneOf::Left(true)),
         references_provider: Some(OneOf::Left(true)),
@@ -193,12 +195,31 @@ fn serve(conn: &Connection, encoding: il_codegen::read::Encoding) -> Fallible<()
 /// Check again and publish the diagnostics that changed. A panic in the
 /// checker is caught: the last analysis stays.
 fn recheck(conn: &Connection, ws: &mut Workspace) -> Fallible<()> {
+    let start = std::time::Instant::now();
     if catch_unwind(AssertUnwindSafe(|| ws.check())).is_err() {
         eprintln!("ilc lsp: the check panicked; keeping the last results");
         return Ok(());
     }
+    let checked = start.elapsed();
     for (uri, diagnostics) in ws.take_changed_diagnostics() {
         publish(conn, uri, diagnostics)?;
+    }
+    let published = start.elapsed();
+    ws.release();
+    if std::env::var_os("ILC_LSP_TIMES").is_some() {
+        // Where an edit's time goes, for BENCHMARKS.md (`lsp_latency --times`).
+        let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
+        let t = &ws.times;
+        eprintln!(
+            "ilc lsp: times: pous {} parse {:.1} check {:.1} index {:.1} lines {:.1} publish {:.1} release {:.1} ms",
+            t.pous,
+            ms(t.parse),
+            ms(t.check),
+            ms(t.index),
+            ms(t.lines),
+            ms(published - checked),
+            ms(start.elapsed() - published)
+        );
     }
     Ok(())
 }
@@ -233,14 +254,15 @@ fn notification(conn: &Connection, ws: &mut Workspace, n: Notification) -> Falli
             let p: lsp_types::DidChangeTextDocumentParams =
                 n.extract(note::DidChangeTextDocument::METHOD)?;
             let uri = p.text_document.uri;
+            // Taken, not copied: the text of a large file is megabytes.
             let mut text = ws
                 .doc(&uri)
-                .map(|k| ws.docs[k].text.clone())
+                .map(|k| std::mem::take(&mut ws.docs[k].text))
                 .unwrap_or_default();
             for c in p.content_changes {
                 match c.range {
                     None => text = c.text,
-                    // We ask for full sync; a client sending ranges anyway is served too.
+                    // Incremental sync: the editor sends the edit, not the text.
                     Some(r) => {
                         let lines = convert::LineIndex::new(&text);
                         let lo = lines.offset(&text, r.start);

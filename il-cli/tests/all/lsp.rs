@@ -754,3 +754,44 @@ fn workspace_files_are_read_in_the_encoding_of_the_options() {
         let _ = std::fs::remove_dir_all(&dir);
     }
 }
+
+/// The CR shown at a label and at a user FUNCTION called as an operator,
+/// before and after an edit of another POU (whose check alone is redone:
+/// the hover reads the CR steps the server kept of the others).
+#[test]
+fn hover_shows_the_cr_at_labels_and_function_calls_after_edits() {
+    let dir = temp_dir("cr-hover");
+    let main = uri(&dir.join("f.il"));
+    let text = "FUNCTION Twice : INT\nVAR_INPUT v : INT; END_VAR\n    LD v\n    MUL 2\n    ST Twice\nEND_FUNCTION\n\nPROGRAM p\nVAR x : INT; b : BOOL; END_VAR\n    LD x\n    Twice\n    ST x\nagain:\n    LD b\n    JMPC again\nEND_PROGRAM\n";
+    let mut c = Client::start(&[]);
+    c.initialize(&dir, json!({}));
+    c.notify(
+        "textDocument/didOpen",
+        json!({"textDocument": {"uri": main, "languageId": "il", "version": 1, "text": text}}),
+    );
+    assert_eq!(c.diagnostics_for(&main), Vec::<Value>::new());
+    let check = |c: &mut Client| {
+        let call = hover_text(&c.result("textDocument/hover", at(&main, text, "    Twice", 5)));
+        assert!(
+            call.contains("CR before: `INT`, CR after (its result): `INT`"),
+            "{call}"
+        );
+        let label = hover_text(&c.result("textDocument/hover", at(&main, text, "again:", 1)));
+        assert!(label.contains("CR at this label"), "{label}");
+    };
+    check(&mut c);
+    // `MUL 2` -> `MUL 3` inside the FUNCTION, sent as a range.
+    let (line, col) = find(text, "MUL 2", 4);
+    c.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": main, "version": 2}, "contentChanges": [{"range": {"start": {"line": line, "character": col}, "end": {"line": line, "character": col + 1}}, "text": "3"}]}),
+    );
+    check(&mut c);
+    let symbols = c.result(
+        "textDocument/documentSymbol",
+        json!({"textDocument": {"uri": main}}),
+    );
+    assert_eq!(symbols.as_array().map(Vec::len), Some(2), "{symbols}");
+    c.finish();
+    let _ = std::fs::remove_dir_all(&dir);
+}

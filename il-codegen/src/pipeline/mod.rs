@@ -6,14 +6,26 @@
 //! without syntax errors are checked together (a FUNCTION_BLOCK of one is
 //! usable in another); diagnostics are moved into the file the user wrote
 //! (an XML project's lines), sorted by position and limited per file; code
-//! is emitted only when no input has an error.
+//! is emitted only when no input has an error. A [`Session`] runs the same
+//! pipeline again after each edit, parsing and checking only what the edit
+//! touched.
 
 #[cfg(feature = "build")]
 pub(crate) mod file;
 mod input;
+mod session;
 pub mod snippet;
 
 pub use input::{Input, is_xml};
+pub use session::Session;
+
+/// What parsing one IL text gives: the tree, the syntax diagnostics, and
+/// the comments that hold a `(*` (for naming the checker's errors after them).
+type Parsed = (
+    crate::ast::CompilationUnit,
+    Vec<Diagnostic>,
+    Vec<syntax::lexer::comments::InnerOpen>,
+);
 
 #[cfg(feature = "build")]
 use crate::diag::render;
@@ -100,6 +112,16 @@ impl Program {
 
     /// Parse and check every input.
     pub fn check(mut self) -> Checked {
+        let parsed = self.parse_with(|_, f, standard| syntax::parse_noted(f, standard));
+        self.check_parsed(parsed, None)
+    }
+
+    /// Parse each input's IL text with `parse` (a [`Session`] parses again
+    /// only what changed), which must give what `syntax::parse_noted` gives.
+    fn parse_with(
+        &mut self,
+        mut parse: impl FnMut(&Input, &SourceFile, crate::dialect::Standard) -> Parsed,
+    ) -> Vec<Parsed> {
         one_guess_per_program(&mut self.inputs);
         // The CODESYS exports of the program are one project: their
         // global lists and task configuration are read together.
@@ -114,12 +136,22 @@ impl Program {
         if exps.len() > 1 {
             crate::exp::assemble(&mut exps);
         }
+        let standard = self.standard;
+        self.inputs
+            .iter()
+            .map(|input| parse(input, input.il_text(), standard))
+            .collect()
+    }
+
+    /// Check the inputs parsed by [`Program::parse_with`]; with a `cache`,
+    /// each POU's results are kept in it, and the POUs its `reuse` allows
+    /// are not checked again (see `sema/reuse.rs`).
+    fn check_parsed(self, parsed: Vec<Parsed>, cache: Option<&mut sema::reuse::Cache>) -> Checked {
         let files: Vec<&SourceFile> = self.inputs.iter().map(Input::il_text).collect();
         let mut units = Vec::new();
         let mut diags: Vec<Vec<Diagnostic>> = Vec::new();
         let mut inner_opens = Vec::new();
-        for f in &files {
-            let (u, d, n) = syntax::parse_noted(f, self.standard);
+        for (u, d, n) in parsed {
             units.push(u);
             diags.push(d);
             inner_opens.push(n);
@@ -150,11 +182,22 @@ impl Program {
             .map(|&i| (files[i], pruned[i].as_ref().unwrap_or(&units[i])))
             .collect();
         let broken = clean.len() < files.len();
+        // The POUs' results are kept only when every file is checked (the
+        // cache numbers them by file); pruned files are not.
+        let cache = cache.and_then(|c| {
+            if broken || pruned.iter().any(Option::is_some) {
+                *c = Default::default();
+                None
+            } else {
+                Some(c)
+            }
+        });
         let (programs, more, table) = sema::check_recorded(
             &pairs,
             self.standard,
             self.cr_steps,
             self.resolutions && !broken,
+            cache,
         );
         let mut ir: Vec<sema::ir::Program> = files.iter().map(|_| Default::default()).collect();
         for ((&i, p), mut m) in clean.iter().zip(programs).zip(more) {
@@ -176,12 +219,13 @@ impl Program {
             // does it for its stubs), whose diagnostics and IR go unused.
             let every: Vec<usize> = (0..files.len()).collect();
             let all: Vec<_> = every.iter().map(|&i| (files[i], &units[i])).collect();
-            let (_, _, t) = sema::check_recorded(&all, self.standard, false, true);
+            let (_, _, t) = sema::check_recorded(&all, self.standard, false, true, None);
             t.map(|t| to_inputs(t, &every, &self.inputs))
         } else {
             table.map(|t| to_inputs(t, &clean, &self.inputs))
         };
         Checked {
+            standard: self.standard,
             inputs: self.inputs,
             diagnostics,
             ir,
@@ -281,6 +325,7 @@ fn without_broken_items(
 /// A checked program: every diagnostic of every input, and the checked IR.
 #[derive(Debug)]
 pub struct Checked {
+    standard: crate::dialect::Standard,
     inputs: Vec<Input>,
     diagnostics: Vec<Vec<Diagnostic>>,
     ir: Vec<sema::ir::Program>,

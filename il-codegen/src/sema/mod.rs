@@ -18,6 +18,7 @@ mod nesting;
 mod partial_address;
 mod recursion;
 mod resolve;
+pub(crate) mod reuse;
 mod stdfb;
 mod stdfn;
 mod typedecls;
@@ -31,6 +32,7 @@ use crate::diag::{Diagnostic, SourceFile};
 pub(crate) use crate::ir::{self, types};
 pub use address::parse_address;
 pub use codes::CODES;
+use flow::Noted;
 
 /// Whether `name` (any case) is a standard function block or function of
 /// il-std: a POU of that name is refused (IL0104), so the LogicLab import,
@@ -51,17 +53,20 @@ pub fn check_all(
     standard: crate::dialect::Standard,
     cr_steps: bool,
 ) -> (Vec<ir::Program>, Vec<Vec<Diagnostic>>) {
-    let (programs, diags, _) = check_recorded(units, standard, cr_steps, false);
+    let (programs, diags, _) = check_recorded(units, standard, cr_steps, false, None);
     (programs, diags)
 }
 
 /// [`check_all`], and with `resolutions` the resolution table (spans in
-/// each unit's IL text; `None` when not asked).
+/// each unit's IL text; `None` when not asked). With a `cache`, each POU's
+/// results are kept in it, and those its `reuse` allows are taken from it
+/// instead of checking their POUs again (see `reuse.rs`).
 pub(crate) fn check_recorded(
     units: &[(&SourceFile, &ast::CompilationUnit)],
     standard: crate::dialect::Standard,
     cr_steps: bool,
     resolutions: bool,
+    mut cache: Option<&mut reuse::Cache>,
 ) -> (
     Vec<ir::Program>,
     Vec<Vec<Diagnostic>>,
@@ -80,6 +85,40 @@ pub(crate) fn check_recorded(
     let asts: Vec<&ast::CompilationUnit> = units.iter().map(|(_, u)| *u).collect();
     let mut env = decls::collect(&mut cxs, &asts);
     heap_arrays::mark_heap(&mut cxs, &mut env, &asts);
+    // The names noted by the declarations' passes, then by each POU.
+    let mut pre: Vec<Noted> = cxs
+        .iter_mut()
+        .map(|c| c.names.as_mut().map(std::mem::take).unwrap_or_default())
+        .collect();
+    let (mut old, mut old_ir, reuse) = match cache.as_deref_mut() {
+        Some(c) => (
+            std::mem::take(&mut c.results),
+            std::mem::take(&mut c.old_ir),
+            c.reuse.take(),
+        ),
+        None => Default::default(),
+    };
+    // Every diagnostic of the edited file that is reused must have a place
+    // in the new text, or nothing is reused.
+    let pou_count = |u: &ast::CompilationUnit| {
+        u.items
+            .iter()
+            .filter(|i| matches!(i, ast::Item::Pou(_)))
+            .count()
+    };
+    let reuse = reuse.filter(|r| {
+        old.len() == asts.len()
+            && old.iter().zip(&asts).all(|(o, u)| o.len() == pou_count(u))
+            && old.get(r.file).is_some_and(|pous| {
+                pous.iter()
+                    .enumerate()
+                    .filter(|(k, _)| r.reuses(r.file, *k))
+                    .flat_map(|(_, p)| p.iter().flat_map(|p| &p.diags))
+                    .all(|d| r.move_diag(&mut d.clone()))
+            })
+    });
+    let mut results: Vec<Vec<Option<reuse::PouResult>>> = Vec::with_capacity(asts.len());
+    let mut checked = 0;
     let mut programs = Vec::new();
     for (f, unit) in asts.iter().enumerate() {
         let types = env
@@ -101,20 +140,69 @@ pub(crate) fn check_recorded(
             pous: Vec::new(),
             configs,
         };
-        for pou in unit.items.iter().filter_map(|i| match i {
+        let mut mine = Vec::new();
+        let pous = unit.items.iter().filter_map(|i| match i {
             ast::Item::Pou(p) => Some(p),
             _ => None,
-        }) {
+        });
+        for (k, pou) in pous.enumerate() {
             let this = |s: &&env::PouSig| s.file == f && s.span == pou.name.span;
-            if let Some(sig) = env.pou(&pou.name.name).filter(this) {
-                if let Some(checked) = flow::check_pou(&mut cxs[f], &env, pou, sig) {
-                    program.pous.push(checked);
+            let main = env.pou(&pou.name.name).filter(this);
+            let sig = main.or_else(|| env.duplicates.iter().find(this));
+            let Some(sig) = sig else {
+                mine.push(None);
+                continue;
+            };
+            let kept = reuse
+                .filter(|r| r.reuses(f, k))
+                .and_then(|r| Some((r, old.get_mut(f)?.get_mut(k)?.take()?)));
+            let result = match kept {
+                Some((r, mut res)) => {
+                    // Its checked IR, if it had one, comes back from the last check.
+                    let mut ir = match res.ir {
+                        Some(i) => old_ir.get_mut(f).and_then(|v| v.get_mut(i)?.take()),
+                        None => None,
+                    };
+                    if f == r.file {
+                        if k > r.pou {
+                            r.move_pou(&mut res, ir.as_mut());
+                        } else {
+                            r.move_pou_diags(&mut res);
+                        }
+                    }
+                    cxs[f].diags.extend(res.diags.iter().cloned());
+                    res.ir = ir.map(|p| {
+                        program.pous.push(p);
+                        program.pous.len() - 1
+                    });
+                    res
                 }
-            } else if let Some(sig) = env.duplicates.iter().find(this) {
-                // Its errors are reported; the program has an error anyway.
-                let _ = flow::check_pou(&mut cxs[f], &env, pou, sig);
-            }
+                None => {
+                    checked += 1;
+                    let before = cxs[f].diags.len();
+                    // Its names apart (`None`: none are noted).
+                    let saved = cxs[f].names.as_mut().map(std::mem::take);
+                    let pou_ir = flow::check_pou(&mut cxs[f], &env, pou, sig);
+                    let noted = match saved {
+                        Some(s) => cxs[f].names.replace(s),
+                        None => None,
+                    }
+                    .unwrap_or_default();
+                    // A duplicate's errors are reported; the program has an error anyway.
+                    let ir = pou_ir.filter(|_| main.is_some()).map(|p| {
+                        program.pous.push(p);
+                        program.pous.len() - 1
+                    });
+                    reuse::PouResult {
+                        diags: cxs[f].diags[before..].to_vec(),
+                        noted,
+                        ir,
+                    }
+                }
+            };
+            mine.push(Some(result));
         }
+        results.push(mine);
         programs.push(program);
     }
     recursion::check_recursion(&mut cxs, &env, &asts);
@@ -122,12 +210,21 @@ pub(crate) fn check_recorded(
     // Before the signatures give their variables away (the table numbers
     // variables by them).
     let table = resolutions.then(|| {
-        let noted = cxs
+        let post: Vec<Noted> = cxs
             .iter_mut()
             .map(|c| c.names.take().unwrap_or_default())
             .collect();
-        flow::table(&env, &asts, noted)
+        let noted: Vec<Vec<&[(Span, flow::Key)]>> = (0..asts.len())
+            .map(|f| {
+                std::iter::once(&pre[f][..])
+                    .chain(results[f].iter().flatten().map(|r| &r.noted[..]))
+                    .chain(std::iter::once(&post[f][..]))
+                    .collect()
+            })
+            .collect();
+        flow::table(&env, &asts, &noted)
     });
+    pre.clear();
     // Nothing reads the signatures any more: each checked POU takes its
     // variables from its own (a checked POU is pushed only for the
     // signature its name finds).
@@ -135,6 +232,10 @@ pub(crate) fn check_recorded(
         if let Some(sig) = env.pous.get_mut(&p.name.to_ascii_uppercase()) {
             p.vars = std::mem::take(&mut sig.vars);
         }
+    }
+    if let Some(c) = cache {
+        c.results = results;
+        c.checked = checked;
     }
     (programs, cxs.into_iter().map(|c| c.diags).collect(), table)
 }

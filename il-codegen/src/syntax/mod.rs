@@ -13,6 +13,8 @@ pub mod errors;
 mod host;
 pub mod lexer;
 mod literal_message;
+pub(crate) mod reparse;
+mod spans;
 
 #[allow(clippy::all, clippy::pedantic, unused, unused_parens, unused_qualifications, non_snake_case, dead_code)]
 #[rustfmt::skip]

@@ -49,6 +49,7 @@ mod sema_hostile_names;
 mod sema_literals;
 mod sema_std_blocks;
 mod sema_types;
+mod session;
 #[cfg(feature = "plcopen")]
 mod sources_by_content;
 mod syntax_comments;

@@ -13,8 +13,8 @@ use std::collections::HashMap;
 use il_codegen::Checked;
 use il_codegen::Input;
 use il_codegen::ast::{self, Span, TypeSpec};
+use il_codegen::ir;
 use il_codegen::ir::types::Ty;
-use il_codegen::ir::{self, CrState};
 use il_interp::il_std::signature::{self as sig, FbSignature};
 use lsp_types::SymbolKind;
 
@@ -58,14 +58,18 @@ pub enum Member {
     Std,
 }
 
-/// The CR at one instruction or label ([`ir::CrStep`] in the user's file).
-#[derive(Debug)]
+/// Where the checker recorded the CR at one instruction or label: its
+/// place in the user's file, and which [`ir::CrStep`] of the checked
+/// program it is (`Workspace::cr_step` reads it there: copied here, the
+/// steps of a large program cost a third of the index).
+#[derive(Debug, Clone, Copy)]
 pub struct Step {
     pub span: Span,
     pub label: bool,
-    pub before: CrState,
-    pub after: CrState,
-    pub paths: Option<String>,
+    /// The program's file, the POU among its checked ones, the step.
+    pub file: u32,
+    pub pou: u32,
+    pub at: u32,
 }
 
 /// One entry of a file's outline (document symbols).
@@ -136,14 +140,14 @@ impl Index {
             let b = Builder { input, f };
             b.declare(&mut ix, unit, &ir_pous);
             if let Some(p) = irs.get(f) {
-                for c in &p.pous {
-                    for s in &c.cr_steps {
+                for (pou, c) in p.pous.iter().enumerate() {
+                    for (at, s) in c.cr_steps.iter().enumerate() {
                         ix.files[f].steps.push(Step {
                             span: b.map(s.span),
                             label: s.label,
-                            before: s.before.clone(),
-                            after: s.after.clone(),
-                            paths: s.paths.clone(),
+                            file: f as u32,
+                            pou: pou as u32,
+                            at: at as u32,
                         });
                     }
                 }

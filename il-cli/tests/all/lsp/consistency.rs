@@ -2,7 +2,8 @@
 //! sequence (characters and lines deleted, IL words and broken syntax
 //! inserted), what the server last published for the document equals what
 //! `ilc check --message-format json` says of the same text (code, line,
-//! column, message), also once incremental checking lands.
+//! column, message): the server parses again only the POUs an edit
+//! touches, and applies the edits the editor sends (incremental sync).
 
 use super::*;
 
@@ -35,6 +36,14 @@ fn from_lsp(text: &str, d: &Value) -> Key {
         chars as u64 + 1,
         message,
     )
+}
+
+/// The LSP position of byte `off` of `text`.
+fn lsp_pos(text: &str, off: usize) -> Value {
+    let line = text[..off].matches('\n').count();
+    let start = text[..off].rfind('\n').map_or(0, |i| i + 1);
+    let character: usize = text[start..off].chars().map(char::len_utf16).sum();
+    json!({"line": line, "character": character})
 }
 
 fn from_check(dir: &Path, text: &str) -> Vec<Key> {
@@ -119,21 +128,31 @@ fn after_random_edits_the_server_says_what_ilc_check_says() {
             i
         };
         let at = floor(&text, rand(text.len() + 1));
-        match rand(3) {
+        // The edits go as an editor with incremental sync sends them: the
+        // range replaced (line, UTF-16 column) and its new text.
+        let change = match rand(3) {
             0 => {
                 let end = floor(&text, (at + 1 + rand(6)).min(text.len()));
+                let range = json!({"start": lsp_pos(&text, at), "end": lsp_pos(&text, end)});
                 text.replace_range(at..end, "");
+                json!({"range": range, "text": ""})
             }
-            1 => text.insert_str(at, inserts[rand(inserts.len())]),
+            1 => {
+                let new = inserts[rand(inserts.len())];
+                let range = json!({"start": lsp_pos(&text, at), "end": lsp_pos(&text, at)});
+                text.insert_str(at, new);
+                json!({"range": range, "text": new})
+            }
             _ => {
                 // Undo towards the original now and then, so that the
                 // sequence also passes through programs without errors.
                 text = format!("{LIB}{MAIN}");
+                json!({"text": text})
             }
-        }
+        };
         c.notify(
             "textDocument/didChange",
-            json!({"textDocument": {"uri": m, "version": version}, "contentChanges": [{"text": text}]}),
+            json!({"textDocument": {"uri": m, "version": version}, "contentChanges": [change]}),
         );
         // A request after the change: its answer comes after the change's
         // diagnostics, if it published any (only changed ones are).

@@ -28,7 +28,7 @@ mod places;
 mod subscripts;
 mod values;
 
-pub(crate) use names::{Noted, table};
+pub(crate) use names::{Key, Noted, table};
 pub use operators::default_const;
 use operators::*;
 

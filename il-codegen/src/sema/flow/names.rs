@@ -214,7 +214,13 @@ fn operands_of<'i>(i: &'i ast::Instr, out: &mut Vec<&'i ast::VarRef>) {
 /// as a use of its symbol. `spans` moves a span of input `f`'s IL text to
 /// the file the user wrote (the pipeline's business: see
 /// [`crate::Checked::resolutions`]).
-pub(crate) fn table(env: &Env, units: &[&ast::CompilationUnit], noted: Vec<Noted>) -> Resolutions {
+/// `noted`: per file, the names noted, in pieces (the declarations', each
+/// POU's), in the order they were noted.
+pub(crate) fn table(
+    env: &Env,
+    units: &[&ast::CompilationUnit],
+    noted: &[Vec<&[(Span, Key)]>],
+) -> Resolutions {
     let mut t = Table::default();
     t.out.uses = vec![Vec::new(); units.len()];
     for (f, unit) in units.iter().enumerate() {
@@ -239,15 +245,15 @@ pub(crate) fn table(env: &Env, units: &[&ast::CompilationUnit], noted: Vec<Noted
     }
     t.externals();
     let late = std::mem::take(&mut t.late);
-    let noted = noted
-        .into_iter()
-        .enumerate()
-        .flat_map(|(f, l)| l.into_iter().map(move |(s, k)| (f, s, k)));
-    for (f, span, key) in late.into_iter().chain(noted) {
-        {
-            if let Some(id) = t.id(key) {
-                t.out.uses[f].push((span, id));
-            }
+    let noted = noted.iter().enumerate().flat_map(|(f, pieces)| {
+        pieces
+            .iter()
+            .flat_map(|l| l.iter())
+            .map(move |(s, k)| (f, *s, k))
+    });
+    for (f, span, key) in late.iter().map(|(f, s, k)| (*f, *s, k)).chain(noted) {
+        if let Some(id) = t.id(key) {
+            t.out.uses[f].push((span, id));
         }
     }
     for u in &mut t.out.uses {
@@ -260,7 +266,8 @@ pub(crate) fn table(env: &Env, units: &[&ast::CompilationUnit], noted: Vec<Noted
 #[derive(Default)]
 struct Table {
     out: Resolutions,
-    ids: HashMap<Key, SymbolId>,
+    // Fx: the table looks up every name of the program here.
+    ids: rustc_hash::FxHashMap<Key, SymbolId>,
     /// Global name (upper case) → its first symbol, for VAR_EXTERNALs.
     globals: HashMap<String, SymbolId>,
     externals: Vec<(SymbolId, String)>,
@@ -296,15 +303,15 @@ impl Table {
     }
 
     /// The symbol of a key; a standard one is made on its first use.
-    fn id(&mut self, key: Key) -> Option<SymbolId> {
-        if let Some(&id) = self.ids.get(&key) {
+    fn id(&mut self, key: &Key) -> Option<SymbolId> {
+        if let Some(&id) = self.ids.get(key) {
             return Some(id);
         }
-        let (name, kind) = match key {
+        let (name, kind) = match *key {
             Key::StdFn(n) => (n, SymbolKind::StdFunction),
             Key::StdFb(n) => (n, SymbolKind::StdBlock),
             Key::StdMember(b, m) => {
-                let block = self.id(Key::StdFb(b))?;
+                let block = self.id(&Key::StdFb(b))?;
                 let input = il_std::signature::lookup_fb(b)
                     .is_some_and(|s| s.inputs.iter().any(|p| p.name == m));
                 (m, SymbolKind::StdMember { block, input })
@@ -317,7 +324,7 @@ impl Table {
             kind,
             decl: None,
         });
-        self.ids.insert(key, id);
+        self.ids.insert(key.clone(), id);
         Some(id)
     }
 
