@@ -53,7 +53,7 @@ impl Here<'_> {
     pub fn now(&self) -> il_std::TIME {
         self.ctx.now()
     }
-    /// The runtime fault the statement just recorded ([`Hook::after`]).
+    /// The runtime fault the statement just recorded ([`super::Hook::after`]).
     pub fn fault(&self) -> Option<&Fault> {
         self.fault.as_ref()
     }
