@@ -104,7 +104,7 @@ pub struct PassedExternal {
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Member {
     /// As declared.
-    pub name: String,
+    pub name: Box<str>,
     /// As above.
     pub index: u32,
 }

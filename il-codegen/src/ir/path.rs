@@ -255,7 +255,7 @@ fn member(
     text: &str,
 ) -> Result<(super::Member, Ty, Option<(i128, i128)>), String> {
     let at = |name: &str, index: usize| super::Member {
-        name: name.to_string(),
+        name: name.into(),
         index: index as u32,
     };
     let none = |names: Vec<&str>, of: &str| {

@@ -181,7 +181,7 @@ pub(crate) fn init_value(
                 };
                 if let Some(Init::Const(c)) = init_value(cx, types, v, &Ty::Elem(*e), None) {
                     let m = crate::ir::Member {
-                        name: iec.to_string(),
+                        name: (*iec).into(),
                         index: i as u32,
                     };
                     out.push((m, c));

@@ -23,7 +23,7 @@ pub(crate) struct ProgArgs {
 /// Variable `index` of the program, named `name`.
 pub(super) fn member(index: usize, name: &str) -> Member {
     Member {
-        name: name.to_string(),
+        name: name.into(),
         index: index as u32,
     }
 }
@@ -180,7 +180,7 @@ pub(crate) fn program_args(
     // Every VAR_IN_OUT is bound, in declaration order (the order of `call`'s
     // reference parameters).
     for v in sig.vars.iter().filter(|v| v.kind == VarKind::InOut) {
-        match inouts.iter().position(|(n, _)| n.name == v.name) {
+        match inouts.iter().position(|(n, _)| *n.name == *v.name) {
             Some(i) => out.inouts.push(inouts.swap_remove(i)),
             // A refused binding has its own error already.
             None if !named.iter().any(|n| n.eq_ignore_ascii_case(&v.name)) => {

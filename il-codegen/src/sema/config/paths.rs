@@ -379,7 +379,7 @@ type Member = (
 
 fn member_at(name: &str, index: usize) -> crate::ir::Member {
     crate::ir::Member {
-        name: name.to_string(),
+        name: name.into(),
         index: index as u32,
     }
 }

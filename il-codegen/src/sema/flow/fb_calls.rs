@@ -105,7 +105,7 @@ impl Walk<'_, '_> {
             return cr;
         }
         let input = ir::Member {
-            name,
+            name: name.into(),
             index: index as u32,
         };
         self.push(Op::CallFb(Box::new(crate::sema::ir::FbCall {
@@ -306,7 +306,7 @@ impl Walk<'_, '_> {
             }
             CallArgs::NonFormal(list) => {
                 let member = |name: &str, index: usize| ir::Member {
-                    name: name.to_string(),
+                    name: name.into(),
                     index: index as u32,
                 };
                 let inputs: Vec<(ir::Member, Ty)> = if let Some(s) = stdfb::lookup(fb) {

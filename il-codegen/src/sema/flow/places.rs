@@ -150,7 +150,7 @@ impl Walk<'_, '_> {
                         Some((i, field)) => {
                             range = field.range;
                             let m = ir::Member {
-                                name: field.name.clone(),
+                                name: field.name.as_str().into(),
                                 index: i as u32,
                             };
                             (m, field.ty.clone(), true)
@@ -340,7 +340,7 @@ impl Walk<'_, '_> {
     /// with its index ([`ir::Member`]).
     pub(super) fn find_member(&self, fb: &str, name: &str) -> Option<(ir::Member, Ty, bool)> {
         let member = |name: &str, index: usize| ir::Member {
-            name: name.to_string(),
+            name: name.into(),
             index: index as u32,
         };
         if let Some(s) = stdfb::lookup(fb) {
