@@ -19,6 +19,7 @@ mod declare_fix;
 mod fb_calls;
 mod fn_calls;
 mod instr;
+mod join;
 pub(crate) mod keys;
 mod names;
 mod operands;
@@ -28,6 +29,7 @@ mod places;
 mod subscripts;
 mod values;
 
+use join::{join, push_edge};
 pub(crate) use names::{Key, Noted, table};
 pub use operators::default_const;
 use operators::*;
@@ -312,81 +314,6 @@ fn output_size(body: &[ast::Stmt]) -> (usize, usize) {
     })
 }
 
-/// The CR after a label, from the CR on every edge into it.
-/// Add an edge into a label. Most labels have one or two (the fall-through
-/// and a jump): a first push of `Vec` reserved room for four, half the
-/// checker's memory per label beside the IR (edges are kept across rounds,
-/// cleared but not freed).
-fn push_edge(edges: &mut Vec<(Span, Class, u32)>, e: (Span, Class, u32)) {
-    if edges.capacity() == 0 {
-        edges.reserve_exact(2);
-    }
-    edges.push(e);
-}
-
-fn join(edges: &[(Span, Class, u32)]) -> Cr {
-    let Some((_, first, _)) = edges.first() else {
-        return Cr::Dead;
-    };
-    if edges.iter().any(|(_, c, _)| *c == Class::Error) {
-        return Cr::Undef(Why::Error);
-    }
-    let mut ty: Option<Ty> = None;
-    let mut lit: Option<Class> = None;
-    let mut lits: Vec<&Class> = Vec::new();
-    let mut bad = false;
-    for (_, c, _) in edges {
-        match c {
-            Class::Val(t) => match &ty {
-                None => ty = Some(t.clone()),
-                Some(u) if u == t => {}
-                Some(_) => bad = true,
-            },
-            Class::Undef(_) => bad = true,
-            l => {
-                // Literals of one kind join (their values may differ).
-                match &lit {
-                    None => lit = Some(l.clone()),
-                    Some(m) if std::mem::discriminant(m) == std::mem::discriminant(l) => {}
-                    Some(_) => bad = true,
-                }
-                lits.push(l);
-            }
-        }
-    }
-    if !bad {
-        match (ty, lit) {
-            (Some(t), None) => return Cr::Val(t),
-            (Some(t), Some(_)) if lits.iter().all(|l| lit_fits(l, &t)) => return Cr::Val(t),
-            (None, Some(Class::LitInt(_))) => return Cr::Val(Ty::Elem(Elem::DINT)),
-            (None, Some(Class::LitReal)) => return Cr::Val(Ty::Elem(Elem::LREAL)),
-            (None, Some(Class::LitStr(w))) => {
-                return Cr::Val(Ty::Str {
-                    wide: w,
-                    len: super::types::DEFAULT_STRING_LEN,
-                });
-            }
-            _ => {}
-        }
-    }
-    let _ = first;
-    let paths: Vec<String> = edges
-        .iter()
-        .map(|(_, c, line)| {
-            let what = match c {
-                Class::Val(t) => t.to_string(),
-                Class::LitInt(v) => format!("the integer literal {v}"),
-                Class::LitReal => "a real literal".into(),
-                Class::LitStr(_) => "a string literal".into(),
-                Class::Undef(why) => format!("undefined ({why})"),
-                Class::Error => "an error".into(),
-            };
-            format!("{what} from line {line}")
-        })
-        .collect();
-    Cr::Undef(Why::Mixed(paths.join(", ")))
-}
-
 /// The CR as tools see it ([`ir::CrState`]).
 fn cr_state(cr: &Cr) -> ir::CrState {
     match cr {
@@ -402,19 +329,6 @@ fn cr_state(cr: &Cr) -> ir::CrState {
         }),
         Cr::Lit(l, _) => ir::CrState::Literal(describe(l)),
         Cr::Val(t) => ir::CrState::Typed(t.clone()),
-    }
-}
-
-fn lit_fits(c: &Class, t: &Ty) -> bool {
-    match (c, t) {
-        // BOOL takes 0 and 1 in a store, but a label joining an integer path
-        // with a BOOL path is more likely a mistake: keep them apart.
-        (Class::LitInt(v), Ty::Elem(e)) if *e != Elem::BOOL => {
-            coerce(&LitClass::Int(*v), t).is_ok()
-        }
-        (Class::LitReal, Ty::Elem(e)) => e.is_real(),
-        (Class::LitStr(w), Ty::Str { wide, .. }) => w == wide,
-        _ => false,
     }
 }
 
