@@ -94,23 +94,7 @@ fn excluded(n: &Node) -> bool {
         .is_some_and(|v| v.eq_ignore_ascii_case("TRUE"))
 }
 
-pub(super) fn is(n: &Node, name: &str) -> bool {
-    n.is_element() && n.tag_name().name() == name
-}
-
-pub(super) fn kids<'a, 'i>(
-    n: Node<'a, 'i>,
-    name: &'static str,
-) -> impl Iterator<Item = Node<'a, 'i>> {
-    n.children().filter(move |c| {
-        crate::step_counter::add(1);
-        is(c, name)
-    })
-}
-
-pub(super) fn kid<'a, 'i>(n: Node<'a, 'i>, name: &'static str) -> Option<Node<'a, 'i>> {
-    kids(n, name).next()
-}
+pub(super) use crate::plcopen::nodes::{is, kid, kids};
 
 /// The span of an element's start tag.
 pub(super) fn tag(xml: &str, n: Node) -> Span {

@@ -97,23 +97,7 @@ pub(super) struct Project {
     pub subroutines: Option<Range<usize>>,
 }
 
-pub(super) fn is(n: &Node, name: &str) -> bool {
-    n.is_element() && n.tag_name().name() == name
-}
-
-pub(super) fn kids<'a, 'i>(
-    n: Node<'a, 'i>,
-    name: &'static str,
-) -> impl Iterator<Item = Node<'a, 'i>> {
-    n.children().filter(move |c| {
-        crate::step_counter::add(1);
-        is(c, name)
-    })
-}
-
-pub(super) fn kid<'a, 'i>(n: Node<'a, 'i>, name: &'static str) -> Option<Node<'a, 'i>> {
-    kids(n, name).next()
-}
+pub(super) use crate::plcopen::nodes::{is, kid, kids};
 
 fn text_of<'a>(n: Node<'a, '_>) -> &'a str {
     n.text().unwrap_or("").trim()

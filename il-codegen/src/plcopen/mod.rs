@@ -30,6 +30,8 @@
 mod limits;
 pub(crate) mod map;
 #[cfg(feature = "plcopen")]
+pub(crate) mod nodes;
+#[cfg(feature = "plcopen")]
 pub(crate) mod text;
 #[cfg(feature = "plcopen")]
 pub(crate) mod translate;

@@ -91,21 +91,7 @@ struct Tr<'a, 'i> {
     left_out: LeftOut,
 }
 
-fn is(n: &Node, name: &str) -> bool {
-    n.is_element() && n.tag_name().name() == name
-}
-
-fn kids<'a, 'i>(n: Node<'a, 'i>, name: &'static str) -> impl Iterator<Item = Node<'a, 'i>> {
-    // One step per child our code looks at (roxmltree's parse is not ours).
-    n.children().filter(move |c| {
-        crate::step_counter::add(1);
-        is(c, name)
-    })
-}
-
-fn kid<'a, 'i>(n: Node<'a, 'i>, name: &'static str) -> Option<Node<'a, 'i>> {
-    kids(n, name).next()
-}
+use super::nodes::{is, kid, kids};
 
 fn first_element<'a, 'i>(n: Node<'a, 'i>) -> Option<Node<'a, 'i>> {
     n.children().find(|c| {
