@@ -29,7 +29,8 @@
 //!   whatever its name: that needs the `plcopen` feature, off by
 //!   default so that crates reading only IL compile no XML parser
 //!   (`il-macros = { version = "0.1", features = ["plcopen"] }`; without it
-//!   the call fails with IL0210, which says so).
+//!   the call fails with IL0210, which says so). A CODESYS V2.3 export
+//!   (`.exp`) needs the `exp` feature the same way (IL0410 without it).
 //! - `il!(files = ["plc/types.il", "plc/tank.il"])`: several files as one
 //!   program.
 //!

@@ -26,16 +26,29 @@
 //! - libraries, visualisations, the PLC configuration and other objects
 //!   that are no code are skipped ([`Import::objects`] lists them).
 
+#[cfg(feature = "exp")]
 mod actions;
+#[cfg(feature = "exp")]
 mod config;
+#[cfg(feature = "exp")]
 mod decls;
+#[cfg(feature = "exp")]
 mod facts;
+#[cfg(feature = "exp")]
 mod project;
+#[cfg(feature = "exp")]
 mod scan;
+#[cfg(feature = "exp")]
 mod split;
+#[cfg(feature = "exp")]
 mod write;
 
+#[cfg(feature = "exp")]
 pub(crate) use project::assemble;
+
+/// Without the `exp` feature there is nothing to read together.
+#[cfg(not(feature = "exp"))]
+pub(crate) fn assemble(_: &mut [&mut Import]) {}
 
 use std::ops::Range;
 
@@ -62,6 +75,8 @@ pub mod codes {
         "A global of a CODESYS export is located at an address the compiler does not bind: one whose size letter IEC 61131-3 does not have (OWEN's targets write `%IR3.0` for a REAL input), or a hierarchical one (`%IX1.0.3`, `%QW9.1.0`: module, channel ...); the compiler binds `%IXbyte.bit`, `%IXbit`, `%IBn`, `%IWn`, `%IDn`, `%ILn` and the same for %Q and %M. The variable is compiled as a global without an address, with this warning: the host reads or writes it as a field of the configuration, and binds it to the target's I/O itself.\n\n    VAR_GLOBAL\n        AI_0 AT %IR3.0 : REAL;\n    END_VAR";
     NOT_GLOBALS = "IL0409", "block of a CODESYS global variable list not compiled",
         "A global variable list of a CODESYS export is compiled as the VAR_GLOBAL blocks of the generated CONFIGURATION. Another block in it (CODESYS writes `VAR_CONFIG` in the object `Variable_Configuration`, which gives addresses to variables of program and block instances) is left out with this warning.\n\n    (* @GLOBAL_VARIABLE_LIST := 'Variable_Configuration' *)\n    VAR_CONFIG\n        PLC_PRG.motor.q AT %QX0.0 : BOOL;\n    END_VAR";
+    NOT_BUILT = "IL0410", "CODESYS export import not built in",
+        "A CODESYS V2.3 export (a `.exp` name, or text that starts with an object header such as `(* @NESTEDCOMMENTS := 'Yes' *)`) reached a build of the compiler without its `exp` feature, which reads exports. `il-codegen` (build.rs, `ilc`) has the feature by default; `il-macros` leaves it out by default, so that the many crates whose `il!` calls read only IL text do not compile the export reader. A crate that reads an export in `il!` names the feature:\n\n    il-macros = { version = \"0.1\", features = [\"exp\"] }";
     ACTION = "IL0407", "ACTION after a FUNCTION",
         "CODESYS 2.3 FUNCTION_BLOCKs and PROGRAMs can have actions (`ACTION name: ... END_ACTION` after the POU): code that runs on the POU's variables, called as `CAL inst.name` or, inside the POU, `CAL name`. A FUNCTION has no variables that last, so no actions: an ACTION after a FUNCTION is this error, at its `ACTION` keyword, and the rest of the project is still checked.\n\n    FUNCTION Twice : INT ... END_FUNCTION\n    ACTION Reset:\n    LD 0\n    ST Twice\n    END_ACTION";
     }
@@ -117,6 +132,7 @@ pub enum ObjectKind {
 }
 
 impl ObjectKind {
+    #[cfg(feature = "exp")]
     fn describe(&self) -> String {
         match self {
             ObjectKind::Pou(k) => k.keyword().to_string(),
@@ -186,6 +202,7 @@ pub struct Import {
     /// Objects left out of the IL text (duplicates), by index.
     left_out: Vec<bool>,
     /// The diagnostics of reading the objects (before the project's).
+    #[cfg_attr(not(feature = "exp"), allow(dead_code))]
     split_diags: Vec<Diagnostic>,
     /// IL ranges of globals declared in another file, with a note saying
     /// where (the generated CONFIGURATION holds the whole project's).
@@ -222,6 +239,7 @@ pub fn is_exp(name: &str, text: &str) -> bool {
 impl Import {
     /// Read an export's objects and translate them on their own (a program
     /// of several files translates them again, together: `assemble`).
+    #[cfg(feature = "exp")]
     pub fn new(exp: SourceFile) -> Import {
         let (mut objects, split_diags) = split::split(&exp.text);
         for o in &mut objects {
@@ -248,6 +266,36 @@ impl Import {
         let mut one = [&mut i];
         assemble(&mut one);
         i
+    }
+
+    /// Without the `exp` feature: no IL, one error at the file's start.
+    #[cfg(not(feature = "exp"))]
+    pub fn new(exp: SourceFile) -> Import {
+        let first = exp.text.chars().next().map_or(0, char::len_utf8);
+        let error = Diagnostic::error(
+            codes::NOT_BUILT,
+            Span::new(0, first),
+            format!(
+                "`{}` is a CODESYS export (.EXP), and this build of the IL compiler cannot read exports",
+                exp.name
+            ),
+        )
+        .with_label("CODESYS export")
+        .with_note(
+            "turn on the `exp` feature: `il-macros = { version = \"0.1\", features = [\"exp\"] }` (il-codegen has it by default)",
+        );
+        Import {
+            il: SourceFile::new(exp.name.clone(), String::new()),
+            exp,
+            diagnostics: vec![error],
+            map: SpanMap::default(),
+            objects: Vec::new(),
+            left_out: Vec::new(),
+            split_diags: Vec::new(),
+            foreign: Vec::new(),
+            globals: Default::default(),
+            library_pous: Default::default(),
+        }
     }
 
     /// The objects of the file, in order (skipped ones included: their
@@ -321,10 +369,33 @@ impl Import {
     }
 
     /// A span of the `.EXP` text.
+    #[cfg(feature = "exp")]
     fn span(r: &Range<usize>) -> Span {
         Span::new(r.start, r.end)
     }
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "exp"))]
 mod tests;
+
+/// A build without the import (`il!`'s default) says which feature reads
+/// an export, at the file's start (CI: `cargo test -p il-codegen
+/// --no-default-features --lib`).
+#[cfg(all(test, not(feature = "exp")))]
+mod without_feature {
+    #[test]
+    fn an_export_is_one_error_naming_the_feature() {
+        let exp = crate::diag::SourceFile::new(
+            "project.EXP",
+            "(* @NESTEDCOMMENTS := 'Yes' *)\nPROGRAM P\nEND_PROGRAM\n",
+        );
+        let i = super::Import::new(exp);
+        assert!(i.il.text.is_empty());
+        let [d] = &i.diagnostics[..] else {
+            panic!("{:?}", i.diagnostics)
+        };
+        assert_eq!((d.code, d.span.lo), ("IL0410", 0));
+        assert!(d.message.contains("project.EXP"), "{}", d.message);
+        assert!(d.notes.iter().any(|n| n.contains("features = [\"exp\"]")));
+    }
+}
