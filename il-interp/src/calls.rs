@@ -135,7 +135,6 @@ impl Machine {
             inputs,
             outputs,
             inouts,
-            inout_vars,
             inouts_in_instance,
             externals,
             cond: _,
@@ -145,7 +144,7 @@ impl Machine {
             ins.push((n.index as usize, self.value(f, v, ctx, line)?));
         }
         // In-outs and the globals the block uses: copied in, and out after the call.
-        let mut places: Vec<Place> = inouts.clone();
+        let mut places: Vec<Place> = inouts.iter().map(|(_, p)| p.clone()).collect();
         for e in externals {
             let k = e.caller as usize;
             let var = (self.prog.pous[f.pou].vars.get(k))
@@ -158,7 +157,7 @@ impl Machine {
             });
         }
         // The FB's variable each place is bound to, as the checker decided.
-        let vars = inout_vars.iter().chain(externals.iter().map(|e| &e.callee));
+        let vars = (inouts.iter().map(|(k, _)| k)).chain(externals.iter().map(|e| &e.callee));
         let refs: Vec<(usize, &Place)> = vars.map(|&k| k as usize).zip(&places).collect();
         let back = self.call_fb_at(f, inst, ins, (&refs, *inouts_in_instance), ctx, line)?;
         for (p, v) in places.iter().zip(back) {

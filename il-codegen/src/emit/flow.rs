@@ -551,12 +551,15 @@ impl PouEmitter<'_> {
                     inputs,
                     outputs,
                     inouts,
-                    inout_vars: _,
                     inouts_in_instance: _,
                     externals,
                     cond,
                 } = &**c;
-                let (io_lets, io_args, io_back) = self.bind_inouts(inouts, Some(inst), line);
+                let (io_lets, io_args, io_back) = self.bind_inouts(
+                    &inouts.iter().map(|(_, p)| p).collect::<Vec<_>>(),
+                    Some(inst),
+                    line,
+                );
                 let ext = (!externals.is_empty()).then(|| {
                     let Ty::Fb(fb) = &inst.ty else {
                         return String::new();

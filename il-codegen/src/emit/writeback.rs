@@ -41,7 +41,7 @@ pub(crate) fn stores(pou: &crate::ir::CheckedPou, s: &Stmt, written: &mut impl F
         Op::CallFb(c) => {
             place(&c.inst);
             c.outputs.iter().for_each(|(_, p, _, _)| place(p));
-            c.inouts.iter().for_each(&mut place);
+            c.inouts.iter().for_each(|(_, p)| place(p));
         }
         Op::SetCr {
             expr: Expr::CallUser(c),

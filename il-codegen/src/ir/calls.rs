@@ -65,11 +65,10 @@ pub struct FbCall {
     /// Outputs copied after the call: (output, target, complemented,
     /// widened to the target's type).
     pub outputs: Vec<(Member, Place, bool, Option<Widen>)>,
-    /// Places bound to the FB's VAR_IN_OUTs, in their declaration order.
-    pub inouts: Vec<Place>,
-    /// The index of each of those VAR_IN_OUTs in the FB's
-    /// [`super::CheckedPou::vars`], in the same order.
-    pub inout_vars: Vec<u32>,
+    /// Places bound to the FB's VAR_IN_OUTs, in their declaration order,
+    /// each with the index of its VAR_IN_OUT in the FB's
+    /// [`super::CheckedPou::vars`].
+    pub inouts: Vec<(u32, Place)>,
     /// Some in-out is bound to a place under the instance's own root
     /// (`CAL b(x := i, io := b.x)`): in-outs are references, so each is
     /// read after the inputs are set and sees them.

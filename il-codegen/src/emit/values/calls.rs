@@ -22,7 +22,8 @@ impl PouEmitter<'_> {
             .map(|(k, a)| format!("let __a{k} = {};", self.value(a, line)))
             .collect();
         let args = tail((0..args.len()).map(|k| format!("__a{k}")));
-        let (io_lets, io_args, io_back) = self.bind_inouts(inouts, None, line);
+        let (io_lets, io_args, io_back) =
+            self.bind_inouts(&inouts.iter().collect::<Vec<_>>(), None, line);
         let io_args = tail(io_args);
         if out_types.is_empty() {
             if arg_lets.is_empty() && inouts.is_empty() {
@@ -62,7 +63,7 @@ impl PouEmitter<'_> {
     /// call (array elements, the process image, aliased variables).
     pub(crate) fn bind_inouts(
         &self,
-        places: &[Place],
+        places: &[&Place],
         avoid: Option<&Place>,
         line: u32,
     ) -> (String, Vec<String>, String) {

@@ -113,7 +113,6 @@ impl Walk<'_, '_> {
             inputs: vec![(input, value)],
             outputs: Vec::new(),
             inouts: Vec::new(),
-            inout_vars: Vec::new(),
             inouts_in_instance: false,
             externals,
             cond: None,

@@ -406,23 +406,22 @@ impl Walk<'_, '_> {
                     return Cr::Undef(Why::AfterCal(self.line));
                 }
                 // In declaration order, with the FB's variable of each.
-                let (inouts, inout_vars): (Vec<Place>, Vec<u32>) = inouts_decl
+                let inouts: Vec<(u32, Place)> = inouts_decl
                     .iter()
                     .filter_map(|(n, _, k)| {
                         inouts
                             .iter()
                             .find(|(m, _)| m.eq_ignore_ascii_case(n))
-                            .map(|(_, p)| (p.clone(), *k))
+                            .map(|(_, p)| (*k, p.clone()))
                     })
-                    .unzip();
-                let inouts_in_instance = inouts.iter().any(|p: &Place| p.root == inst.root);
+                    .collect();
+                let inouts_in_instance = inouts.iter().any(|(_, p)| p.root == inst.root);
                 self.push(Op::CallFb(Box::new(crate::sema::ir::FbCall {
                     inouts_in_instance,
                     inst,
                     inputs,
                     outputs,
                     inouts,
-                    inout_vars,
                     externals,
                     cond: cond_v,
                 })));
