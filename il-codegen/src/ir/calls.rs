@@ -75,7 +75,9 @@ pub struct FbCall {
     pub inouts_in_instance: bool,
     /// The FB's (non-located) VAR_EXTERNALs, in declaration order: the
     /// caller passes its own externals of the same names.
-    pub externals: Vec<PassedExternal>,
+    /// (A boxed slice: built once, and 8 bytes smaller than a `Vec` in
+    /// every checked CAL.)
+    pub externals: Box<[PassedExternal]>,
     /// `CALC` / `CALCN`: call only when the condition holds.
     pub cond: Condition,
 }

@@ -124,13 +124,13 @@ impl Walk<'_, '_> {
     /// that the caller passes (the located ones need no passing), each with
     /// its index in the FB's variables.
     #[allow(clippy::type_complexity)]
-    pub(super) fn fb_refs(&self, fb: &str) -> (Vec<(String, Ty, u32)>, Vec<ir::PassedExternal>) {
+    pub(super) fn fb_refs(&self, fb: &str) -> (Vec<(String, Ty, u32)>, Box<[ir::PassedExternal]>) {
         let Some(sig) = self
             .env
             .pou(fb)
             .filter(|s| s.kind == PouKind::FunctionBlock)
         else {
-            return (Vec::new(), Vec::new());
+            return (Vec::new(), Box::default());
         };
         let inouts = (sig.vars.iter().enumerate())
             .filter(|(_, v)| v.kind == ast::VarKind::InOut)
