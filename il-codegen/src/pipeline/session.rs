@@ -14,11 +14,11 @@ use crate::syntax::{self, lexer::comments::InnerOpen};
 /// items (POUs, TYPE blocks, CONFIGURATIONs) that an edit touches, the
 /// other items' trees are kept with their positions moved; and when the
 /// edit changed one POU's body alone (its declarations and its use of
-/// `ENO` kept), only that POU is checked again, with the POUs after it in
-/// its file if the edit changed the number of lines (their messages name
-/// their lines): the others' checked IR, diagnostics and resolved names
-/// are the last check's, moved. The declarations and the program-wide
-/// rules are checked every time.
+/// `ENO` kept), only that POU is checked again: the others' checked IR,
+/// diagnostics and resolved names are the last check's, their bytes and
+/// lines moved (a POU whose messages name a line in their text is checked
+/// again when the lines after the edit moved). The declarations and the
+/// program-wide rules are checked every time.
 ///
 /// The result is the one [`Program::check`] gives for the same sources,
 /// diagnostics and spans included; where that is not sure the longer way
@@ -75,12 +75,11 @@ struct Edit {
     replaced: Vec<crate::ast::Item>,
     change: (usize, usize),
     delta: i64,
-    same_lines: bool,
+    lines: i64,
 }
 
 /// What the check of the new texts may reuse of the last one's: every
-/// POU's results but the edited one's (and those after it if the edit
-/// changed the number of lines), when every file was parsed again in part,
+/// POU's results but the edited one's, when every file was parsed again in part,
 /// and one POU alone changed, inside, keeping its declarations (see
 /// `sema/reuse.rs`).
 fn reuse(edits: &[Option<Edit>], parsed: &[Parsed]) -> Option<sema::reuse::Reuse> {
@@ -96,7 +95,7 @@ fn reuse(edits: &[Option<Edit>], parsed: &[Parsed]) -> Option<sema::reuse::Reuse
             pou: usize::MAX,
             change: (u32::MAX, u32::MAX),
             delta: 0,
-            after_too: true,
+            lines: 0,
         });
     };
     let e = edit.as_ref()?;
@@ -121,7 +120,7 @@ fn reuse(edits: &[Option<Edit>], parsed: &[Parsed]) -> Option<sema::reuse::Reuse
         pou,
         change: (e.change.0 as u32, e.change.1 as u32),
         delta: e.delta,
-        after_too: e.same_lines,
+        lines: e.lines,
     })
 }
 
@@ -168,7 +167,7 @@ impl Session {
                         replaced: r.replaced,
                         change: r.change,
                         delta: r.delta,
-                        same_lines: r.same_lines,
+                        lines: r.lines,
                     }));
                     p
                 }
