@@ -15,6 +15,7 @@ mod code_actions;
 mod consistency;
 mod folders;
 mod formatting;
+mod moved_lines;
 mod semantic;
 mod table;
 
