@@ -211,8 +211,9 @@ fn recheck(conn: &Connection, ws: &mut Workspace) -> Fallible<()> {
         let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
         let t = &ws.times;
         eprintln!(
-            "ilc lsp: times: pous {} parse {:.1} check {:.1} index {:.1} lines {:.1} publish {:.1} release {:.1} ms",
+            "ilc lsp: times: pous {} moved {} parse {:.1} check {:.1} index {:.1} lines {:.1} publish {:.1} release {:.1} ms",
             t.pous,
+            t.moved,
             ms(t.parse),
             ms(t.check),
             ms(t.index),

@@ -177,6 +177,8 @@ pub struct Times {
     pub lines: Duration,
     /// The POUs checked (the others' results were reused).
     pub pous: usize,
+    /// The programs whose index was moved, not built (`index/moved.rs`).
+    pub moved: usize,
 }
 
 /// The name of a document's file with a Windows drive letter in upper case.
@@ -372,7 +374,13 @@ impl Workspace {
                         p.source(f)
                     });
             let checking = Instant::now();
-            let checked = session.check(program);
+            session.check(program);
+            // What the check moved, before `checked` borrows the session.
+            let moved = session.moved();
+            let before = session.generation().checked_sub(1);
+            let Some(checked) = session.last() else {
+                continue;
+            };
             let indexing = Instant::now();
             times.check += indexing - checking;
             for (&k, ds) in group.iter().zip(checked.diagnostics()) {
@@ -395,8 +403,22 @@ impl Workspace {
                     .collect();
                 program_of[k] = indexes.len();
             }
-            let mut index = Index::build(checked);
-            index.relocate(group);
+            // The index of the check before, moved, when the session moved
+            // that check's results (see `index/moved.rs`); else built. The
+            // old one is taken from the analysis this check replaces.
+            let old = (self.analysis.checks.iter())
+                .position(|(d, g)| *d == dir && Some(*g) == before)
+                .and_then(|i| self.analysis.indexes.get_mut(i))
+                .map(std::mem::take);
+            let index = moved
+                .zip(old)
+                .and_then(|(m, old)| old.moved(checked, &m, &group))
+                .inspect(|_| times.moved += 1)
+                .unwrap_or_else(|| {
+                    let mut index = Index::build(checked);
+                    index.relocate(group);
+                    index
+                });
             indexes.push(index);
             times.index += indexing.elapsed();
             times.parse += session.parse_time();

@@ -68,6 +68,22 @@ struct Settings {
     names: Vec<String>,
 }
 
+/// How a check moved the results of the one before ([`Session::moved`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Moved {
+    /// The input that changed (no other did).
+    pub input: usize,
+    /// The POU checked again, by its number among the input's POUs
+    /// (`None`: no text changed, every result was taken as it was).
+    pub pou: Option<usize>,
+    /// The bytes of the input's old text that the edit replaced, all
+    /// inside that POU: a position before `change.start` stays, one at
+    /// or after `change.end` moves by `delta` bytes.
+    pub change: Range<usize>,
+    /// How many bytes longer the new text is.
+    pub delta: i64,
+}
+
 /// What parsing an input again found (see `syntax::reparse::Reparsed`).
 struct Edit {
     parsed: Range<usize>,
@@ -204,6 +220,22 @@ impl Session {
     /// those of the check before (see [`Session`]).
     pub fn pous_checked(&self) -> usize {
         self.cache.checked
+    }
+
+    /// How the last check's positions relate to the one before's, when it
+    /// checked again only the POU an edit changed, inside its body, and
+    /// took the others' results, moved (`None`: it checked the whole
+    /// program). A tool that keeps what it built from the check before (an
+    /// editor's index) may move it likewise: every other POU's syntax,
+    /// declarations and checked IR are the same, moved.
+    pub fn moved(&self) -> Option<Moved> {
+        let r = self.cache.applied?;
+        Some(Moved {
+            input: r.file,
+            pou: (r.pou != usize::MAX).then_some(r.pou),
+            change: r.change.0 as usize..r.change.1 as usize,
+            delta: r.delta,
+        })
     }
 
     /// The last check's result.

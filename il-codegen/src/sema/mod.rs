@@ -241,6 +241,7 @@ pub(crate) fn check_recorded(
     if let Some(c) = cache {
         c.results = results;
         c.checked = checked;
+        c.applied = reuse;
     }
     (programs, cxs.into_iter().map(|c| c.diags).collect(), table)
 }

@@ -70,6 +70,8 @@ pub(crate) struct Cache {
     pub old_ir: Vec<Vec<Option<CheckedPou>>>,
     /// Set for the next check: what it may reuse (`None`: nothing).
     pub reuse: Option<Reuse>,
+    /// What the last check reused (`None`: it checked every POU).
+    pub applied: Option<Reuse>,
     /// How many POUs the last check checked (the others were reused).
     pub checked: usize,
 }

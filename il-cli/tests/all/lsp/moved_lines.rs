@@ -3,7 +3,8 @@
 //! that hover names). After each edit of a seeded random sequence, what it
 //! answers for the edited document (diagnostics, hover on every line,
 //! inlay hints, the outline) equals what it answers for the same text
-//! opened fresh in a folder of its own (a program checked from scratch).
+//! opened fresh in another server (a program checked from scratch),
+//! and most edits moved the server's index instead of building it.
 
 use super::*;
 
@@ -95,20 +96,45 @@ fn answers(c: &mut Client, uri: &str, text: &str, diagnostics: Vec<Value>) -> Ve
     out.into_iter().map(|s| s.replace(uri, "URI")).collect()
 }
 
+/// The diagnostics of `uri` once the server has checked the last edit:
+/// those it published since `last`, or `last` if it published none (an
+/// edit that left them as they were). A request makes it check first.
+fn current(c: &mut Client, uri: &str, last: Vec<Value>) -> Vec<Value> {
+    c.result(
+        "textDocument/documentSymbol",
+        json!({"textDocument": {"uri": uri}}),
+    );
+    let mut now = last;
+    c.notes.retain(|n| {
+        let this = n["method"] == "textDocument/publishDiagnostics" && n["params"]["uri"] == uri;
+        if this {
+            now = n["params"]["diagnostics"].as_array().unwrap().clone();
+        }
+        !this
+    });
+    now
+}
+
 #[test]
 fn after_lines_added_and_removed_the_server_answers_as_for_a_fresh_text() {
     let dir = temp_dir("moved-lines");
     let m = uri(&dir.join("edited/m.il"));
     let mut text = TEXT.to_string();
-    let mut c = Client::start(&[]);
+    // The server logs where each check's time went (`moved 1`: the index
+    // of the edited program was moved, not built).
+    let mut c = Client::start(&[("ILC_LSP_TIMES", "1")]);
     c.initialize(&dir, json!({}));
+    // Another server: each text opened fresh, in a folder of its own.
+    let mut other = Client::start(&[]);
+    other.initialize(&dir, json!({}));
     c.notify(
         "textDocument/didOpen",
         json!({"textDocument": {"uri": m, "languageId": "il", "version": 1, "text": text}}),
     );
     // Messages that name lines: a CR used after a CAL (twice), and paths
     // into `mixed` that disagree.
-    assert_eq!(c.diagnostics_for(&m).len(), 3);
+    let mut shown = c.diagnostics_for(&m);
+    assert_eq!(shown.len(), 3);
     let mut seed: u64 = 0x2545_F491_4F6C_DD1D;
     let mut rand = |n: usize| {
         seed ^= seed << 13;
@@ -119,45 +145,41 @@ fn after_lines_added_and_removed_the_server_answers_as_for_a_fresh_text() {
     let mut shown_after_cal = 0;
     for version in 2..32 {
         let lines: Vec<&str> = text.split_inclusive('\n').collect();
-        // A line inside a body (not a POU's first four lines or its END).
-        let bodies: Vec<usize> = (0..lines.len())
-            .filter(|&n| {
-                lines[n].starts_with("    ")
-                    && !lines[n].contains("END_")
-                    && (n < 4 || !lines[n - 4].starts_with("FUNCTION_BLOCK"))
-            })
-            .collect();
+        // A line of a body: an instruction (indented) or a label.
+        let label = |l: &str| !l.starts_with(' ') && l.trim_end().ends_with(':');
+        let body = |l: &str| (l.starts_with("    ") || label(l)) && !l.contains("END_");
+        let bodies: Vec<usize> = (0..lines.len()).filter(|&n| body(lines[n])).collect();
         let n = bodies[rand(bodies.len())];
-        let (range, new) = if rand(2) == 0 || lines.len() < 40 {
-            let add = LINES[rand(LINES.len())];
-            let at = json!({"line": n, "character": 0});
-            (json!({"start": at, "end": at}), add)
-        } else {
-            let range = json!({"start": {"line": n, "character": 0}, "end": {"line": n + 1, "character": 0}});
-            (range, "")
-        };
         let start: usize = lines[..n].iter().map(|l| l.len()).sum();
-        let end = if new.is_empty() {
-            start + lines[n].len()
-        } else {
-            start
+        // Replace lines `n..n + k` with `new`.
+        let (k, new) = match rand(3) {
+            0 => (0, LINES[rand(LINES.len())].to_string()),
+            1 if lines.len() > 40 => (1, String::new()),
+            // Swap two lines (a label moves among instructions).
+            _ if lines.get(n + 1).is_some_and(|l| body(l)) => {
+                (2, format!("{}{}", lines[n + 1], lines[n]))
+            }
+            _ => (0, LINES[rand(LINES.len())].to_string()),
         };
-        text.replace_range(start..end, new);
+        let end = start + lines[n..n + k].iter().map(|l| l.len()).sum::<usize>();
+        let range =
+            json!({"start": {"line": n, "character": 0}, "end": {"line": n + k, "character": 0}});
+        text.replace_range(start..end, &new);
         c.notify(
             "textDocument/didChange",
             json!({"textDocument": {"uri": m, "version": version}, "contentChanges": [{"range": range, "text": new}]}),
         );
-        let published = c.diagnostics_for(&m);
-        let edited = answers(&mut c, &m, &text, published);
+        shown = current(&mut c, &m, shown);
+        let edited = answers(&mut c, &m, &text, shown.clone());
         // The same text in a folder of its own: checked from scratch.
         let f = uri(&dir.join(format!("fresh{version}/m.il")));
-        c.notify(
+        other.notify(
             "textDocument/didOpen",
             json!({"textDocument": {"uri": f, "languageId": "il", "version": 1, "text": text}}),
         );
-        let published = c.diagnostics_for(&f);
-        let fresh = answers(&mut c, &f, &text, published);
-        c.notify("textDocument/didClose", json!({"textDocument": {"uri": f}}));
+        let published = other.diagnostics_for(&f);
+        let fresh = answers(&mut other, &f, &text, published);
+        other.notify("textDocument/didClose", json!({"textDocument": {"uri": f}}));
         for (a, b) in edited.iter().zip(&fresh) {
             assert_eq!(a, b, "edit {version}:\n{text}");
         }
@@ -169,6 +191,9 @@ fn after_lines_added_and_removed_the_server_answers_as_for_a_fresh_text() {
     }
     // The CR after a CAL names its line: the moved lines were compared.
     assert!(shown_after_cal > 30, "{shown_after_cal}");
-    c.finish();
+    let log = c.finish_with_log();
+    let moved = log.matches(" moved 1 ").count();
+    assert!(moved >= 15, "the index moved {moved} times of 30:\n{log}");
+    other.finish();
     let _ = std::fs::remove_dir_all(&dir);
 }
