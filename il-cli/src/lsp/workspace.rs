@@ -422,7 +422,9 @@ impl Workspace {
             }
             // The index of the check before, moved, when the session moved
             // that check's results (see `index/moved.rs`); else built. The
-            // old one is taken from the analysis this check replaces.
+            // old one is taken from the analysis this check replaces (were
+            // the check to panic, that analysis would stay without it
+            // until the next check).
             let old = (self.analysis.checks.iter())
                 .position(|(d, g)| *d == dir && Some(*g) == before)
                 .and_then(|i| self.analysis.indexes.get_mut(i))

@@ -90,7 +90,8 @@ pub(crate) fn same_interface(old: &ast::Pou, new: &ast::Pou) -> bool {
 }
 
 impl Reuse {
-    /// Whether POU `k` of file `f` is reused (if its results, `r`, allow).
+    /// Whether POU `k` of file `f` may be reused (its results then decide:
+    /// [`Reuse::takes`]).
     pub fn reuses(&self, f: usize, k: usize) -> bool {
         f != self.file || k != self.pou
     }
