@@ -51,7 +51,7 @@ pub fn hints(ws: &Workspace, uri: &Uri, range: Range) -> Vec<InlayHint> {
             let label = match &s.after {
                 CrState::Typed(t) => t.to_string(),
                 // The reason is in the hover; the line stays short.
-                CrState::Undefined(_) => "undefined".to_string(),
+                CrState::Undefined(_) | CrState::AfterCal(_) => "undefined".to_string(),
                 other => other.to_string(),
             };
             InlayHint {

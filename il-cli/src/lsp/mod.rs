@@ -211,8 +211,9 @@ fn recheck(conn: &Connection, ws: &mut Workspace) -> Fallible<()> {
         let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
         let t = &ws.times;
         eprintln!(
-            "ilc lsp: times: pous {} parse {:.1} check {:.1} index {:.1} lines {:.1} publish {:.1} release {:.1} ms",
+            "ilc lsp: times: pous {} moved {} parse {:.1} check {:.1} index {:.1} lines {:.1} publish {:.1} release {:.1} ms",
             t.pous,
+            t.moved,
             ms(t.parse),
             ms(t.check),
             ms(t.index),
@@ -254,24 +255,29 @@ fn notification(conn: &Connection, ws: &mut Workspace, n: Notification) -> Falli
             let p: lsp_types::DidChangeTextDocumentParams =
                 n.extract(note::DidChangeTextDocument::METHOD)?;
             let uri = p.text_document.uri;
-            // Taken, not copied: the text of a large file is megabytes.
-            let mut text = ws
-                .doc(&uri)
-                .map(|k| std::mem::take(&mut ws.docs[k].text))
-                .unwrap_or_default();
+            // Taken, not copied: the text of a large file is megabytes; and
+            // its line table, moved through the edits.
+            let (mut text, mut lines) = match ws.doc(&uri) {
+                Some(k) => (
+                    std::mem::take(&mut ws.docs[k].text),
+                    ws.docs[k].lines.take(),
+                ),
+                None => Default::default(),
+            };
             for c in p.content_changes {
                 match c.range {
-                    None => text = c.text,
+                    None => (text, lines) = (c.text, None),
                     // Incremental sync: the editor sends the edit, not the text.
                     Some(r) => {
-                        let lines = convert::LineIndex::new(&text);
-                        let lo = lines.offset(&text, r.start);
-                        let hi = lines.offset(&text, r.end).max(lo);
+                        let ix = lines.get_or_insert_with(|| convert::LineIndex::new(&text));
+                        let lo = ix.offset(&text, r.start);
+                        let hi = ix.offset(&text, r.end).max(lo);
                         text.replace_range(lo..hi, &c.text);
+                        ix.edit(&text, lo, hi, c.text.len());
                     }
                 }
             }
-            ws.change(&uri, text);
+            ws.change(&uri, text, lines);
             Ok(true)
         }
         note::DidCloseTextDocument::METHOD => {

@@ -15,6 +15,7 @@ mod code_actions;
 mod consistency;
 mod folders;
 mod formatting;
+mod moved_lines;
 mod semantic;
 mod table;
 
@@ -153,12 +154,22 @@ impl Client {
         r
     }
 
-    fn finish(mut self) {
+    fn finish(self) {
+        self.finish_with_log();
+    }
+
+    /// Shut the server down; what it wrote to stderr (its log).
+    fn finish_with_log(mut self) -> String {
         let r = self.request("shutdown", Value::Null);
         assert_eq!(r["result"], Value::Null, "{r}");
         self.notify("exit", Value::Null);
+        let mut log = String::new();
+        if let Some(mut e) = self.child.stderr.take() {
+            let _ = std::io::Read::read_to_string(&mut e, &mut log);
+        }
         let status = self.child.wait().unwrap();
         assert!(status.success(), "{status}");
+        log
     }
 }
 

@@ -178,8 +178,13 @@ pub struct CrStep {
 pub enum CrState {
     /// No path reaches here (after JMP or RET, no label).
     Dead,
-    /// No usable value, and why (`no value loaded`, `after CAL on line 4`).
+    /// No usable value, and why (`no value loaded`, `the paths into
+    /// `done` disagree`).
     Undefined(String),
+    /// No usable value after the `CAL` on this line (1-based): a block's
+    /// call leaves the CR undefined. Shown as `undefined (after CAL on
+    /// line 4)`.
+    AfterCal(u32),
     /// An untyped literal (described: `the integer literal 5`): it takes its
     /// type from its first typed use.
     Literal(String),
@@ -192,6 +197,7 @@ impl std::fmt::Display for CrState {
         match self {
             CrState::Dead => f.write_str("unreachable"),
             CrState::Undefined(why) => write!(f, "undefined ({why})"),
+            CrState::AfterCal(line) => write!(f, "undefined (after CAL on line {line})"),
             CrState::Literal(what) => f.write_str(what),
             CrState::Typed(t) => write!(f, "{t}"),
         }

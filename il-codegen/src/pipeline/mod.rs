@@ -17,7 +17,7 @@ mod session;
 pub mod snippet;
 
 pub use input::{Input, is_xml};
-pub use session::Session;
+pub use session::{Moved, Session};
 
 /// What parsing one IL text gives: the tree, the syntax diagnostics, and
 /// the comments that hold a `(*` (for naming the checker's errors after them).

@@ -14,11 +14,11 @@ use crate::syntax::{self, lexer::comments::InnerOpen};
 /// items (POUs, TYPE blocks, CONFIGURATIONs) that an edit touches, the
 /// other items' trees are kept with their positions moved; and when the
 /// edit changed one POU's body alone (its declarations and its use of
-/// `ENO` kept), only that POU is checked again, with the POUs after it in
-/// its file if the edit changed the number of lines (their messages name
-/// their lines): the others' checked IR, diagnostics and resolved names
-/// are the last check's, moved. The declarations and the program-wide
-/// rules are checked every time.
+/// `ENO` kept), only that POU is checked again: the others' checked IR,
+/// diagnostics and resolved names are the last check's, their bytes and
+/// lines moved (a POU whose messages name a line in their text is checked
+/// again when the lines after the edit moved). The declarations and the
+/// program-wide rules are checked every time.
 ///
 /// The result is the one [`Program::check`] gives for the same sources,
 /// diagnostics and spans included; where that is not sure the longer way
@@ -68,6 +68,22 @@ struct Settings {
     names: Vec<String>,
 }
 
+/// How a check moved the results of the one before ([`Session::moved`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Moved {
+    /// The input that changed (no other did).
+    pub input: usize,
+    /// The POU checked again, by its number among the input's POUs
+    /// (`None`: no text changed, every result was taken as it was).
+    pub pou: Option<usize>,
+    /// The bytes of the input's old text that the edit replaced, all
+    /// inside that POU: a position before `change.start` stays, one at
+    /// or after `change.end` moves by `delta` bytes.
+    pub change: Range<usize>,
+    /// How many bytes longer the new text is.
+    pub delta: i64,
+}
+
 /// What parsing an input again found (see `syntax::reparse::Reparsed`).
 struct Edit {
     parsed: Range<usize>,
@@ -75,12 +91,11 @@ struct Edit {
     replaced: Vec<crate::ast::Item>,
     change: (usize, usize),
     delta: i64,
-    same_lines: bool,
+    lines: i64,
 }
 
 /// What the check of the new texts may reuse of the last one's: every
-/// POU's results but the edited one's (and those after it if the edit
-/// changed the number of lines), when every file was parsed again in part,
+/// POU's results but the edited one's, when every file was parsed again in part,
 /// and one POU alone changed, inside, keeping its declarations (see
 /// `sema/reuse.rs`).
 fn reuse(edits: &[Option<Edit>], parsed: &[Parsed]) -> Option<sema::reuse::Reuse> {
@@ -96,7 +111,7 @@ fn reuse(edits: &[Option<Edit>], parsed: &[Parsed]) -> Option<sema::reuse::Reuse
             pou: usize::MAX,
             change: (u32::MAX, u32::MAX),
             delta: 0,
-            after_too: true,
+            lines: 0,
         });
     };
     let e = edit.as_ref()?;
@@ -121,7 +136,7 @@ fn reuse(edits: &[Option<Edit>], parsed: &[Parsed]) -> Option<sema::reuse::Reuse
         pou,
         change: (e.change.0 as u32, e.change.1 as u32),
         delta: e.delta,
-        after_too: e.same_lines,
+        lines: e.lines,
     })
 }
 
@@ -168,7 +183,7 @@ impl Session {
                         replaced: r.replaced,
                         change: r.change,
                         delta: r.delta,
-                        same_lines: r.same_lines,
+                        lines: r.lines,
                     }));
                     p
                 }
@@ -205,6 +220,22 @@ impl Session {
     /// those of the check before (see [`Session`]).
     pub fn pous_checked(&self) -> usize {
         self.cache.checked
+    }
+
+    /// How the last check's positions relate to the one before's, when it
+    /// checked again only the POU an edit changed, inside its body, and
+    /// took the others' results, moved (`None`: it checked the whole
+    /// program). A tool that keeps what it built from the check before (an
+    /// editor's index) may move it likewise: every other POU's syntax,
+    /// declarations and checked IR are the same, moved.
+    pub fn moved(&self) -> Option<Moved> {
+        let r = self.cache.applied?;
+        Some(Moved {
+            input: r.file,
+            pou: (r.pou != usize::MAX).then_some(r.pou),
+            change: r.change.0 as usize..r.change.1 as usize,
+            delta: r.delta,
+        })
     }
 
     /// The last check's result.

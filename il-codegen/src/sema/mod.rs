@@ -155,7 +155,8 @@ pub(crate) fn check_recorded(
             };
             let kept = reuse
                 .filter(|r| r.reuses(f, k))
-                .and_then(|r| Some((r, old.get_mut(f)?.get_mut(k)?.take()?)));
+                .and_then(|r| Some((r, old.get_mut(f)?.get_mut(k)?.take()?)))
+                .filter(|(r, res)| r.takes(res));
             let result = match kept {
                 Some((r, mut res)) => {
                     // Its checked IR, if it had one, comes back from the last check.
@@ -193,10 +194,14 @@ pub(crate) fn check_recorded(
                         program.pous.push(p);
                         program.pous.len() - 1
                     });
+                    let diags = cxs[f].diags[before..].to_vec();
+                    let lines_in_text =
+                        reuse::lines_in_text(&diags, ir.and_then(|i| program.pous.get(i)));
                     reuse::PouResult {
-                        diags: cxs[f].diags[before..].to_vec(),
+                        diags,
                         noted,
                         ir,
+                        lines_in_text,
                     }
                 }
             };
@@ -236,6 +241,7 @@ pub(crate) fn check_recorded(
     if let Some(c) = cache {
         c.results = results;
         c.checked = checked;
+        c.applied = reuse;
     }
     (programs, cxs.into_iter().map(|c| c.diags).collect(), table)
 }

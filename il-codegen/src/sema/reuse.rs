@@ -10,13 +10,26 @@
 //! text and positions alike: its name, kind, result type, VAR blocks, and
 //! what its body adds to its interface (a FUNCTION's `ENO`). The edit must
 //! lie inside the POU (the comment lines above a POU are its
-//! documentation). A POU's messages and IR name its own lines only: those
-//! before the edit keep theirs.
+//! documentation).
+//!
+//! An edit that adds or removes lines moves every line after it: the
+//! reused POUs' results are moved in place (spans by the bytes, the IR's
+//! lines by the lines), not kept relative to their POU and rebased on use,
+//! because every consumer (the emitter's comments, the interpreter's
+//! debugger, the language server) reads the IR's absolute lines, and the
+//! move costs one addition per statement of the POUs after the edit (a
+//! check costs hundreds of instructions per statement). The lines that
+//! the checker wrote into text (`after the CAL on line 4` in a message,
+//! `INT from line 3` at a label) are not moved: a POU whose results name a
+//! line in their text is checked again instead ([`PouResult::lines_in_text`];
+//! rare: a CR used undefined, a label whose paths disagree). Columns do not
+//! change: the items after the edit start on lines of their own, which the
+//! parse again keeps whole (`syntax/reparse.rs`).
 
 use super::flow::Noted;
 use crate::ast::{self, Span};
 use crate::diag::Diagnostic;
-use crate::ir::CheckedPou;
+use crate::ir::{CheckedPou, CrState};
 
 /// What one POU's check gave.
 #[derive(Debug, Default)]
@@ -30,21 +43,21 @@ pub(crate) struct PouResult {
     ///
     /// [`ir::Program::pous`]: crate::ir::Program::pous
     pub ir: Option<usize>,
+    /// Its diagnostics or its IR's texts name a line (`on line 4`): they
+    /// cannot be moved when lines are added or removed before it.
+    pub lines_in_text: bool,
 }
 
 /// The edit that allows reuse: in file `file`, POU `pou` (its number among
 /// the file's POUs) changed; the old bytes `change` became `delta` bytes
-/// more (or fewer).
+/// more (or fewer), and `lines` lines more (or fewer).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Reuse {
     pub file: usize,
     pub pou: usize,
     pub change: (u32, u32),
     pub delta: i64,
-    /// The edit kept the number of lines: the POUs after the edited one
-    /// are reused too (else their lines, which their messages and IR name,
-    /// moved: they are checked again).
-    pub after_too: bool,
+    pub lines: i64,
 }
 
 /// The per-POU results of the last check, and what the next may reuse.
@@ -57,6 +70,8 @@ pub(crate) struct Cache {
     pub old_ir: Vec<Vec<Option<CheckedPou>>>,
     /// Set for the next check: what it may reuse (`None`: nothing).
     pub reuse: Option<Reuse>,
+    /// What the last check reused (`None`: it checked every POU).
+    pub applied: Option<Reuse>,
     /// How many POUs the last check checked (the others were reused).
     pub checked: usize,
 }
@@ -75,9 +90,16 @@ pub(crate) fn same_interface(old: &ast::Pou, new: &ast::Pou) -> bool {
 }
 
 impl Reuse {
-    /// Whether POU `k` of file `f` is reused.
+    /// Whether POU `k` of file `f` may be reused (its results then decide:
+    /// [`Reuse::takes`]).
     pub fn reuses(&self, f: usize, k: usize) -> bool {
-        f != self.file || k < self.pou || (k > self.pou && self.after_too)
+        f != self.file || k != self.pou
+    }
+
+    /// Whether the results `r` of a POU that [`Reuse::reuses`] can be
+    /// taken: not when lines moved and their text names a line.
+    pub fn takes(&self, r: &PouResult) -> bool {
+        self.lines == 0 || !r.lines_in_text
     }
 
     /// Span `s` of the old text in the new one; `None` when it overlaps
@@ -134,18 +156,59 @@ impl Reuse {
     }
 
     /// A reused POU's results moved to the new text (its own spans lie
-    /// outside the edited POU: they only move).
+    /// outside the edited POU: they only move, and so do its lines).
     pub fn move_pou(&self, r: &mut PouResult, ir: Option<&mut CheckedPou>) {
         for (s, _) in &mut r.noted {
             *s = self.moved(*s).unwrap_or(*s);
         }
         if let Some(p) = ir {
+            let line = |l: &mut u32| *l = (i64::from(*l) + self.lines) as u32;
             for c in &mut p.cr_steps {
                 c.span = self.moved(c.span).unwrap_or(c.span);
+                for s in [&mut c.before, &mut c.after] {
+                    if let CrState::AfterCal(l) = s {
+                        line(l);
+                    }
+                }
+            }
+            if self.lines != 0 {
+                for s in &mut p.body {
+                    line(&mut s.line);
+                }
             }
         }
         for d in &mut r.diags {
             self.move_diag(d);
         }
     }
+}
+
+/// Whether a POU's diagnostics or IR name a line in their text (see
+/// [`PouResult::lines_in_text`]): any `line` followed by a number, in any
+/// text the checker wrote, so that a message added later is covered too.
+pub(crate) fn lines_in_text(diags: &[Diagnostic], ir: Option<&CheckedPou>) -> bool {
+    let names = |s: &str| {
+        s.match_indices("line ")
+            .any(|(i, m)| s[i + m.len()..].starts_with(|c: char| c.is_ascii_digit()))
+    };
+    let diag = |d: &Diagnostic| {
+        names(&d.message)
+            || names(&d.label)
+            || d.secondary.iter().any(|(_, l)| names(l))
+            || d.notes.iter().any(|n| names(n))
+            || d.help.as_deref().is_some_and(names)
+            || d.fixes
+                .iter()
+                .any(|f| names(&f.title) || f.edits.iter().any(|(_, t)| names(t)))
+    };
+    let state = |s: &CrState| match s {
+        CrState::Undefined(t) | CrState::Literal(t) => names(t),
+        _ => false,
+    };
+    diags.iter().any(diag)
+        || ir.is_some_and(|p| {
+            p.cr_steps.iter().any(|c| {
+                state(&c.before) || state(&c.after) || c.paths.as_deref().is_some_and(names)
+            })
+        })
 }

@@ -33,8 +33,9 @@ pub(crate) struct Reparsed {
     /// text is.
     pub change: (usize, usize),
     pub delta: i64,
-    /// Whether the edit kept the number of lines.
-    pub same_lines: bool,
+    /// How many lines longer the new text is (every line from the first
+    /// kept item after the edit on moved by this many).
+    pub lines: i64,
 }
 
 /// Where an item starts: its keyword (a TYPE block's tree starts at its
@@ -119,7 +120,7 @@ pub(crate) fn reparse(
             replaced: Vec::new(),
             change: (0, 0),
             delta: 0,
-            same_lines: true,
+            lines: 0,
         });
     }
     // The edit replaced old[prefix..old_end] by new[prefix..new_end].
@@ -192,7 +193,7 @@ pub(crate) fn reparse(
     out.extend(opens);
     out.extend(kept_after);
     let new_end = (old_end as i64 + delta) as usize;
-    let lines = |b: &[u8]| b.iter().filter(|&&c| c == b'\n').count();
+    let lines = |b: &[u8]| b.iter().filter(|&&c| c == b'\n').count() as i64;
     Some(Reparsed {
         unit,
         inner_opens: out,
@@ -201,6 +202,6 @@ pub(crate) fn reparse(
         replaced,
         change: (prefix, old_end),
         delta,
-        same_lines: lines(&o[prefix..old_end]) == lines(&n[prefix..new_end]),
+        lines: lines(&n[prefix..new_end]) - lines(&o[prefix..old_end]),
     })
 }

@@ -7,6 +7,7 @@
 //! and the CR the checker proved at every instruction.
 
 mod declare;
+mod moved;
 
 use std::collections::HashMap;
 

@@ -318,14 +318,14 @@ fn output_size(body: &[ast::Stmt]) -> (usize, usize) {
 fn cr_state(cr: &Cr) -> ir::CrState {
     match cr {
         Cr::Dead => ir::CrState::Dead,
-        Cr::Undef(why) => ir::CrState::Undefined(match why {
-            Why::Start => "no value loaded".into(),
-            Why::Error => "after an error".into(),
-            Why::AfterCal(line) => format!("after CAL on line {line}"),
-            Why::Mixed(m) => match m.split_once('\u{0}') {
-                Some((label, _)) => format!("the paths into `{label}` disagree"),
-                None => m.clone(),
-            },
+        // A line as data: a check that reuses this POU's results after an
+        // edit that moved its lines moves it (see `sema/reuse.rs`).
+        Cr::Undef(Why::AfterCal(line)) => ir::CrState::AfterCal(*line),
+        Cr::Undef(Why::Start) => ir::CrState::Undefined("no value loaded".into()),
+        Cr::Undef(Why::Error) => ir::CrState::Undefined("after an error".into()),
+        Cr::Undef(Why::Mixed(m)) => ir::CrState::Undefined(match m.split_once('\u{0}') {
+            Some((label, _)) => format!("the paths into `{label}` disagree"),
+            None => m.clone(),
         }),
         Cr::Lit(l, _) => ir::CrState::Literal(describe(l)),
         Cr::Val(t) => ir::CrState::Typed(t.clone()),
