@@ -141,7 +141,7 @@ fn choose(r: &Request, checked: &il_codegen::Checked) -> Result<Loaded, String> 
             .iter()
             .any(|ob| ob.kind == il_codegen::exp::ObjectKind::Tasks),
         // A Modicon M221 project runs its POUs, in order, as one task.
-        il_codegen::Input::PlcOpen(i) => il_codegen::m221::is_project(&i.xml.text),
+        il_codegen::Input::PlcOpen(i) => i.is_m221(),
         _ => false,
     });
     let chosen = match (r.config, r.program, prog.configs.as_slice()) {

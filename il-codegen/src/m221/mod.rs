@@ -28,6 +28,8 @@ mod brackets;
 #[cfg(feature = "plcopen")]
 mod expr;
 #[cfg(feature = "plcopen")]
+mod listing;
+#[cfg(feature = "plcopen")]
 mod objects;
 #[cfg(feature = "plcopen")]
 mod read;
@@ -47,6 +49,8 @@ pub mod codes {
         "An element of the project's configuration of an object (a `<TimerTM>`'s `<Preset>`, `<Base>` or `<Type>`, a `<CounterCT>`'s `<Preset>`, a `<ConstantWord>`'s `<Value>`) holds a value the import does not know: a preset that is not a number from 0 to 32767, a time base other than `OneMillisecond`, `TenMilliseconds`, `HundredMilliseconds`, `OneSecond`, `OneMinute`, a timer type other than `TON`, `TOF`, `TP`. The object takes its default (`TON`, one minute, preset 9999) with this error.\n\n    <TimerTM><Address>%TM0</Address><Base>Fortnight</Base></TimerTM>";
     BAD_PROJECT = "IL0435", "M221 project the import cannot read",
         "The XML's root is Machine Expert Basic's, but the file holds no program the import can read: a protected project (`<CryptedProject>`: its program is encrypted; save it without protection in Machine Expert Basic), or a `<ProjectDescriptor>` without `<SoftwareConfiguration><Pous>`. One error; nothing is compiled.\n\n    <CryptedProject><ProjectVersion>2.0.0.0</ProjectVersion><Crypted>...</Crypted></CryptedProject>";
+    UNCONFIGURED = "IL0436", "M221 listing object without its configuration",
+        "A text listing (`--dialect m221`) holds only the program: the timers' types, time bases and presets, the counters' presets and the constant words' values that a `.smbp` project configures are not in it. A listing gives each `%TMn`, `%Cn` and `%KWn` it uses in a configuration comment, one object per comment, anywhere in the file:\n\n    (*@ %TM0 TON BASE=100ms PRESET=50 *)   (* TON, TOF or TP; BASE 1ms, 10ms, 100ms, 1s or 1min; PRESET 0 to 32767 *)\n    (*@ %C0 PRESET=10 *)                   (* 0 to 9999 *)\n    (*@ %KW3 VALUE=-12 *)                  (* -32768 to 32767 *)\n    (*@ %R1 LIFO *)                        (* a register is a FIFO without it *)\n\nAn object used without one is this error at its first use in each rung (the rung is left out), whose message gives the comment to add. A configuration comment the import cannot read is IL0433.";
     SYSTEM_OBJECT = "IL0434", "M221 system or network object set by the host",
         "A rung uses a system bit `%Sn`, a system word `%SWn`, or a word exchanged with a network master (EtherNet/IP `%IWEn`/`%QWEn`, Modbus TCP `%IWMn`/`%QWMn`). The import declares it as a global of the configuration (`S0`, `SW7`, `QWE0`) that starts at 0 and that the host (or `ilc run --set S0=TRUE`) sets or reads; the controller's own behaviour of the object (the first-scan bit `%S0`, the clock bits `%S4` .. `%S7`, the network exchange) is not simulated. One warning per object.\n\n    LD %S6     (* the controller's 1 s clock *)";
     }
@@ -61,6 +65,8 @@ pub(crate) fn is_root(root: roxmltree::Node) -> bool {
     tag.namespace().is_none() && matches!(tag.name(), "ProjectDescriptor" | "CryptedProject")
 }
 
+#[cfg(feature = "plcopen")]
+pub(crate) use listing::translate as translate_listing;
 #[cfg(feature = "plcopen")]
 pub(crate) use write::translate;
 

@@ -45,9 +45,12 @@ pub(super) struct Rung {
     pub label: Option<Line>,
 }
 
-/// A `<ProgramOrganizationUnits>` of `<Pous>`.
+/// A `<ProgramOrganizationUnits>` of `<Pous>`, or a listing's main
+/// program or subroutine.
 pub(super) struct Pou {
     pub name: String,
+    /// The subroutine's number (`SR3`), for a subroutine.
+    pub sr: Option<u32>,
     pub at: Range<usize>,
     pub rungs: Vec<Rung>,
 }
@@ -95,6 +98,10 @@ pub(super) struct Project {
     pub shared_words: bool,
     /// `<Subroutines>` that hold something, for one error.
     pub subroutines: Option<Range<usize>>,
+    /// A text listing (`--dialect m221`): its timers, counters and constant
+    /// words must be configured (`(*@ %TM0 ... *)`), there is no editor's
+    /// default to fall back on.
+    pub listing: bool,
 }
 
 pub(super) use crate::plcopen::nodes::{is, kid, kids};
@@ -152,6 +159,7 @@ pub(super) fn read(root: Node, xml: &str, diags: &mut Vec<Diagnostic>) -> Projec
             .collect();
         p.pous.push(Pou {
             name,
+            sr: None,
             at: pou.range(),
             rungs,
         });
@@ -280,7 +288,7 @@ fn timer(xml: &str, t: Node, diags: &mut Vec<Diagnostic>) -> Timer {
 
 /// Whether the project names two memory objects that share a word: `%MWn`
 /// is word n, `%MDn` and `%MFn` words n and n+1.
-fn shared_words(p: &Project) -> bool {
+pub(super) fn shared_words(p: &Project) -> bool {
     let mut words: HashMap<u32, String> = HashMap::new();
     for l in p.pous.iter().flat_map(|x| &x.rungs).flat_map(|r| &r.lines) {
         let up = l.text.to_ascii_uppercase();
