@@ -37,6 +37,9 @@ pub struct Loaded {
     pub prog: Program,
     pub map: SourceMap,
     pub chosen: Chosen,
+    /// A Modicon M221 program (`.smbp`, `--dialect m221`): `%` names are
+    /// its objects (`%I0.3`, `%MW1`), [`il_codegen::m221::il_name`].
+    pub m221: bool,
 }
 
 /// The checked programs of several files as one.
@@ -144,6 +147,10 @@ fn choose(r: &Request, checked: &il_codegen::Checked) -> Result<Loaded, String> 
         il_codegen::Input::PlcOpen(i) => i.is_m221(),
         _ => false,
     });
+    let m221 = checked.inputs().iter().any(|i| match i {
+        il_codegen::Input::PlcOpen(i) => i.is_m221(),
+        _ => false,
+    });
     let chosen = match (r.config, r.program, prog.configs.as_slice()) {
         (Some(c), _, _) => Chosen::Config(c.to_string()),
         (None, None, [one]) if programs.len() != 1 || exp_tasks => Chosen::Config(one.name.clone()),
@@ -173,5 +180,6 @@ fn choose(r: &Request, checked: &il_codegen::Checked) -> Result<Loaded, String> 
         prog,
         map: SourceMap::of(checked),
         chosen,
+        m221,
     })
 }

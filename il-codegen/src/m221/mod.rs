@@ -70,6 +70,29 @@ pub(crate) use listing::translate as translate_listing;
 #[cfg(feature = "plcopen")]
 pub(crate) use write::translate;
 
+/// The IL name the import gives an M221 object written as in the program
+/// (`%I0.3` → `I0_3`, `%MW4:X3` → `MW4.3`, `%C0.V` → `C0.V`, `%SBR0.5` →
+/// `SBR0.X.5`): what `ilc run --set/--watch` look up for a name that starts
+/// with `%` in an M221 program. `None` for what is no M221 object (an IEC
+/// address such as `%IX0.5` is then looked up as it is). The import's own
+/// mapping ([`objects`]), so the two cannot differ.
+pub fn il_name(object: &str) -> Option<String> {
+    #[cfg(feature = "plcopen")]
+    {
+        if !object.starts_with('%') {
+            return None;
+        }
+        let p = read::Project::default();
+        let mut objs = objects::Objects::default();
+        objs.operand(&p, object.trim(), &(0..0)).ok().map(|o| o.il)
+    }
+    #[cfg(not(feature = "plcopen"))]
+    {
+        let _ = object;
+        None
+    }
+}
+
 /// Whether an XML text is an M221 project: its root element, after the
 /// prolog and comments, is `<ProjectDescriptor>` (for `ilc run`, which runs
 /// such a project's configuration, as the controller runs its POUs).
