@@ -25,9 +25,10 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
             Diagnostic::error(
                 UNSUPPORTED,
                 span(&(r.start..r.start + "<Subroutines>".len())),
-                "the project's subroutines (`SRn`) are not compiled yet",
+                "the project's `<Subroutines>` are not all `<ProgramOrganizationUnits>` with a `<SectionNumber>` or a name `SRn` (one each), the layout the import reads",
             )
-            .with_label("not compiled"),
+            .with_label("not compiled")
+            .with_note("no subroutine of the project is compiled; a `CAL SRn` is an error"),
         );
     }
     write(&p, root.range(), diags)
