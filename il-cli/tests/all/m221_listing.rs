@@ -182,3 +182,48 @@ fn ret_belongs_in_a_subroutine() {
     );
     assert!(err.contains(&format!("--> {}:3:1", p.display())), "{err}");
 }
+
+#[test]
+fn system_bits_the_controller_sets_are_simulated() {
+    // %S0 and %S13 are 1 in the first scan only; %S6 (1 s) and %S5
+    // (100 ms) are 0 in the first half of their period, 1 in the second:
+    // with 250 ms scans, %S6 is 1 at 500 and 750 ms, rising at 500 ms and
+    // at 1.5 s; %S5 (period 100 ms) is sampled at 0, 250, 500 ... ms: 0
+    // at whole tenths, 1 at 250 and 750 ms. %S8 is the host's (IL0434).
+    let p = temp(
+        "system.il",
+        "LD %S0\nST %M0\n\nLD %S13\n[ %MW0 := %MW0 + 1 ]\n\nLDR %S6\n[ %MW1 := %MW1 + 1 ]\n\nLD %S5\nST %Q0.0\n\nLD %S8\nST %Q0.1\n",
+    );
+    let f = p.display().to_string();
+    let o = ilc(&[
+        "run",
+        "--dialect",
+        "m221",
+        &f,
+        "--cycles",
+        "8",
+        "--step",
+        "250ms",
+        "--watch",
+        "%M0,%MW0,%S6,%MW1,%Q0.0",
+    ]);
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(0), "{err}");
+    let want = "\
+cycle  time     %M0    %MW0  %S6    %MW1  %Q0.0
+    1  0s       TRUE      1  FALSE     0  FALSE
+    2  250ms    FALSE     1  FALSE     0  TRUE
+    3  500ms    FALSE     1  TRUE      1  FALSE
+    4  750ms    FALSE     1  TRUE      1  TRUE
+    5  1s       FALSE     1  FALSE     1  FALSE
+    6  1s250ms  FALSE     1  FALSE     1  TRUE
+    7  1s500ms  FALSE     1  TRUE      2  FALSE
+    8  1s750ms  FALSE     1  TRUE      2  TRUE
+";
+    assert_eq!(text(&o.stdout), want);
+    assert!(
+        err.contains("warning[IL0434]: system object: `S8` is a global the host sets"),
+        "{err}"
+    );
+    assert_eq!(err.matches("warning[IL0434]").count(), 1, "{err}");
+}

@@ -109,7 +109,13 @@ pub(super) struct Objects {
     /// The globals named since the caller last took them: the POU that
     /// names them declares them VAR_EXTERNAL.
     pub touched: Vec<String>,
+    /// The system bits the controller sets that the program uses (`%S0`,
+    /// `%S4` .. `%S7`, `%S13`): il-std's `M221_SYS` computes them.
+    pub sys_bits: std::collections::BTreeSet<u32>,
 }
+
+/// The system bits `M221_SYS` computes.
+pub(super) const SYS_BITS: [u32; 6] = [0, 4, 5, 6, 7, 13];
 
 /// An operand: its IL text and type.
 pub(super) struct Operand {
@@ -391,7 +397,11 @@ impl Objects {
             "M" | "S" => {
                 let n = num(tail).ok_or(NotObject::Unknown)?;
                 let name = format!("{kind}{n}");
-                self.plain(&name, "BOOL", at, kind == "S");
+                let simulated = kind == "S" && SYS_BITS.contains(&n);
+                if simulated {
+                    self.sys_bits.insert(n);
+                }
+                self.plain(&name, "BOOL", at, kind == "S" && !simulated);
                 ok(name, Ty::Bool)
             }
             "IWE" | "QWE" | "IWM" | "QWM" => {

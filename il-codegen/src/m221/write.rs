@@ -84,10 +84,30 @@ pub(super) fn write(p: &Project, root: Range<usize>, mut diags: Vec<Diagnostic>)
         })
         .collect();
     called_globals(p, &mut firsts);
+    // The system bits the controller sets: one `M221_SYS` the first POU
+    // runs at the start of every scan, its outputs copied into the bits.
+    let sys: Vec<u32> = objs.sys_bits.iter().copied().collect();
+    if !sys.is_empty() {
+        objs.globals.insert(
+            SYS.to_string(),
+            Global {
+                decl: "M221_SYS".into(),
+                ty: "M221_SYS".into(),
+                constant: false,
+                system: false,
+                at: root.start..root.start + 1,
+            },
+        );
+    }
     let mut k = 0;
     for (pou, mut locals) in p.pous.iter().zip(firsts) {
         if ends {
             locals.used.insert(SCAN_END.to_string());
+        }
+        let first = pou.sr.is_none() && k == 0;
+        if first && !sys.is_empty() {
+            locals.used.insert(SYS.to_string());
+            locals.used.extend(sys.iter().map(|n| format!("S{n}")));
         }
         let at = pou.at.start..pou.at.start + 1;
         let (ty, kind) = match pou.sr {
@@ -100,7 +120,13 @@ pub(super) fn write(p: &Project, root: Range<usize>, mut diags: Vec<Diagnostic>)
         w.gen_at(&format!("{kind} {ty}\n"), at.clone());
         externals(&mut w, &objs, &locals, at.clone());
         own_vars(&mut w, &locals, at.clone());
-        if pou.sr.is_none() && ends && k == 0 {
+        if first && !sys.is_empty() {
+            w.gen_at(&format!("    CAL {SYS}\n"), at.clone());
+            for n in &sys {
+                w.gen_at(&format!("    LD {SYS}.S{n}\n    ST S{n}\n"), at.clone());
+            }
+        }
+        if first && ends {
             w.gen_at(&format!("    LD FALSE\n    ST {SCAN_END}\n"), at.clone());
         } else if pou.sr.is_none() && ends {
             w.gen_at(&format!("    LD {SCAN_END}\n    RETC\n"), at.clone());
@@ -146,6 +172,9 @@ pub(super) fn write(p: &Project, root: Range<usize>, mut diags: Vec<Diagnostic>)
         globals: HashSet::new(),
     }
 }
+
+/// The instance of il-std's `M221_SYS` that computes the system bits.
+const SYS: &str = "SYSTEM_BITS";
 
 /// Translate the rungs of `pou` into `w`; the locals they need.
 fn body(
