@@ -136,7 +136,7 @@ pub mod m221_ends {
     include!(concat!(env!("OUT_DIR"), "/m221_ends/ends.rs"));
 }
 
-/// `m221/listing.il`: a Modicon M221 / TwidoSuite text listing through
+/// `m221/listing.il`: a Modicon M221 / `TwidoSuite` text listing through
 /// build.rs (`Builder::dialect`).
 pub mod m221_listing_build {
     include!(concat!(env!("OUT_DIR"), "/m221_listing/listing.rs"));
