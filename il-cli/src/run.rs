@@ -198,6 +198,10 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
 /// object as the program writes it (`%I0.3`, `%C0.V`) is the import's
 /// global (`I0_3`, `C0.V`); anything else is looked up as written.
 fn run_name(name: &str, m221: bool) -> std::borrow::Cow<'_, str> {
+    // A bit of a word (`%MW4:X3`) is no variable the run can name.
+    if m221 && name.to_ascii_uppercase().contains(":X") {
+        return std::borrow::Cow::Borrowed(name);
+    }
     match m221.then(|| il_codegen::m221::il_name(name)).flatten() {
         Some(il) => std::borrow::Cow::Owned(il),
         None => std::borrow::Cow::Borrowed(name),
@@ -259,6 +263,12 @@ fn scan_table<T: Target>(
     };
     let mut watch = Vec::with_capacity(watch_names.len());
     for w in &watch_names {
+        if m221 && w.to_ascii_uppercase().contains(":X") {
+            let word = &w[..w.to_ascii_uppercase().find(":X").unwrap_or(w.len())];
+            return Err(format!(
+                "--watch {w}: a bit of a word is not watched on its own; watch the word `{word}`"
+            ));
+        }
         let place = m
             .lookup(&run_name(w, m221))
             .map_err(|e| format!("--watch {w}: {e}"))?;

@@ -227,3 +227,31 @@ cycle  time     %M0    %MW0  %S6    %MW1  %Q0.0
     );
     assert_eq!(err.matches("warning[IL0434]").count(), 1, "{err}");
 }
+
+#[test]
+fn a_bit_of_a_word_is_watched_through_its_word() {
+    let p = temp("bit.il", "LD %I0.0\nST %MW4:X3\n");
+    let f = p.display().to_string();
+    let run = |watch: &str| {
+        ilc(&[
+            "run",
+            "--dialect",
+            "m221",
+            &f,
+            "--cycles",
+            "1",
+            "--set",
+            "%I0.0=TRUE",
+            "--watch",
+            watch,
+        ])
+    };
+    let o = run("%MW4:X3");
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(
+        text(&o.stderr),
+        "error: --watch %MW4:X3: a bit of a word is not watched on its own; watch the word `%MW4`\n"
+    );
+    let o = run("%MW4");
+    assert_eq!(text(&o.stdout), "cycle  time  %MW4\n    1  0s       8\n");
+}
