@@ -30,6 +30,10 @@ Cycles are numbered from 1; scan k runs at time (k-1) * step. A --set without
 @CYCLE is written before scan 1. Names are variables with members and elements
 (tank.level, valves[2].open, m[1,2]), located variables and direct addresses
 (%IX0.0, %IW2, %QD1), which are the process image the program reads and writes.
+In a Modicon M221 program (an .smbp project, or a listing with --dialect m221)
+its objects are named as the program writes them, through the import's mapping:
+  ilc run --dialect m221 listing.il --set %I0.3=TRUE@2 --watch %Q0.0,%MW1,%C0.V,%TM0.Q
+(%I0.3 is the global I0_3, %C0.V is C0.V; the mangled names work too).
 Values are IL literals (TRUE, 42, 16#FF, 1.5, T#10ms, 'text', TankState#Filling).
 The table shows every watched variable after each scan; faults (division by
 zero, index out of range) are reported on stderr.
