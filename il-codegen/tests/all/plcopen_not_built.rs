@@ -59,7 +59,9 @@ fn an_m221_listing_is_one_error_that_names_the_feature() {
     assert_eq!(diags.len(), 1, "{diags:?}");
     assert_eq!(diags[0].code, NOT_BUILT);
     assert!(
-        diags[0].message.contains("an M221 listing (`--dialect m221`)"),
+        diags[0]
+            .message
+            .contains("an M221 listing (`--dialect m221`)"),
         "{}",
         diags[0].message
     );
