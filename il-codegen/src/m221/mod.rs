@@ -17,6 +17,16 @@
 //!   globals of one CONFIGURATION `M221` (`objects`, `write`), the timers
 //!   and counters configured from `<Timers>` / `<Counters>` (`read`).
 //!
+//! - each subroutine (`<Subroutines>`) as a FUNCTION_BLOCK `SUB_SRn` with
+//!   one global instance `SRn`, which `CAL SRn` calls;
+//! - the system bits the controller sets (`%S0`, `%S13`, the clocks `%S4`
+//!   .. `%S7`) from il-std's `M221_SYS`, run at the start of every scan.
+//!
+//! A text listing (`--dialect m221`, [`crate::Dialect::M221`]) is read by
+//! `listing` into the same project (its configuration from `(*@ ... *)`
+//! comments), so an instruction line has one translation whichever file
+//! holds it.
+//!
 //! docs/semantics.md, "Modicon M221 dialect", says what each object and
 //! instruction means and which choices are made where the manuals are
 //! silent.
@@ -75,7 +85,7 @@ pub(crate) use write::translate;
 /// `SBR0.X.5`): what `ilc run --set/--watch` look up for a name that starts
 /// with `%` in an M221 program. `None` for what is no M221 object (an IEC
 /// address such as `%IX0.5` is then looked up as it is). The import's own
-/// mapping ([`objects`]), so the two cannot differ.
+/// mapping (its `objects` module), so the two cannot differ.
 pub fn il_name(object: &str) -> Option<String> {
     #[cfg(feature = "plcopen")]
     {
