@@ -107,6 +107,13 @@ fn main() {
         .out_dir(out.join("m221_ends"))
         .compile()
         .unwrap_or_else(|e| panic!("\n{e}"));
+    // A TwidoSuite / Machine Expert Basic text listing (`Builder::dialect`).
+    il_codegen::Builder::new()
+        .file("m221/listing.il")
+        .dialect(il_codegen::Dialect::M221)
+        .out_dir(out.join("m221_listing"))
+        .compile()
+        .unwrap_or_else(|e| panic!("\n{e}"));
 
     let corpus = Path::new("../../shared/corpus");
     let out = PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR"));

@@ -25,11 +25,12 @@ function activate(context) {
     {
       documentSelector,
       // Read by the server at start (`inlayHints.crType`, `encoding`: how
-      // the workspace files that are not UTF-8 are read) and sent again
+      // the workspace files that are not UTF-8 are read, `dialect`) and sent again
       // whenever the `ilc` settings change.
       initializationOptions: {
         inlayHints: { crType: config.get("inlayHints.crType", true) },
         ...(config.get("encoding") ? { encoding: config.get("encoding") } : {}),
+        dialect: config.get("dialect", "iec"),
       },
       synchronize: { configurationSection: "ilc" },
     },

@@ -2,7 +2,7 @@
 
 use clap::{Arg, ArgAction, Command, builder::PossibleValuesParser};
 
-use crate::input::{encoding_arg, snippet_arg, std_arg};
+use crate::input::{dialect_arg, encoding_arg, snippet_arg, std_arg};
 
 const ABOUT: &str = "Check IEC 61131-3 Instruction List (IL) sources and compile them to Rust";
 
@@ -136,6 +136,7 @@ pub fn command() -> Command {
                         .help("Also list what was not compiled: the objects of a CODESYS export (.EXP) that are no code, one note each"),
                 )
                 .arg(std_arg())
+                .arg(dialect_arg())
                 .arg(snippet_arg()),
         )
         .subcommand(
@@ -166,6 +167,7 @@ pub fn command() -> Command {
                         .default_value("auto"),
                 )
                 .arg(std_arg())
+                .arg(dialect_arg())
                 .arg(snippet_arg()),
         )
         .subcommand(
@@ -243,6 +245,7 @@ pub fn command() -> Command {
                         .default_value("auto"),
                 )
                 .arg(std_arg())
+                .arg(dialect_arg())
                 .arg(snippet_arg()),
         )
         .subcommand(

@@ -1,6 +1,6 @@
 //! What every command reads: its sources (a path, or `-` for standard
 //! input) and how they are read and become a program (`--encoding`,
-//! `--std` and `--snippet`: the arguments and their values).
+//! `--std`, `--dialect` and `--snippet`: the arguments and their values).
 
 use std::io;
 use std::path::Path;
@@ -68,6 +68,26 @@ pub fn std_arg() -> Arg {
         .default_value("iec2013")
 }
 
+/// `--dialect m221`: the text sources are Modicon M221 / TwidoSuite
+/// Instruction List listings.
+pub fn dialect_arg() -> Arg {
+    Arg::new("dialect")
+        .long("dialect")
+        .value_name("DIALECT")
+        .help("Instruction List of the text sources: `iec` (the default) or `m221`")
+        .long_help(
+            "Instruction List the text sources are written in: `iec` (the default), IEC \
+             61131-3 IL; `m221`, a Modicon M221 (Machine Expert Basic, SoMachine Basic) or \
+             Twido (TwidoSuite) listing as the IDE shows it: one instruction a line \
+             (`LD %I0.1`, `BLK %TM0`, `[ %MW1 := %MW2 + 1 ]`), rungs apart by blank lines \
+             or comments, `%L1:` labels, `SR1:` subroutines, and the timers, counters and \
+             constant words configured in comments `(*@ %TM0 TON BASE=100ms PRESET=50 *)`. \
+             XML sources (`.smbp` projects too) are read by their content either way",
+        )
+        .value_parser(PossibleValuesParser::new(["iec", "m221"]))
+        .default_value("iec")
+}
+
 /// `--snippet`: the file is a bare instruction list.
 pub fn snippet_arg() -> Arg {
     Arg::new("snippet")
@@ -110,6 +130,8 @@ pub struct Front {
     pub standard: il_codegen::Standard,
     /// `--snippet`: each file is the body of a PROGRAM.
     pub snippet: bool,
+    /// `--dialect`: the Instruction List of the text sources.
+    pub dialect: il_codegen::Dialect,
 }
 
 impl Front {
@@ -125,6 +147,10 @@ impl Front {
                 .and_then(|s| il_codegen::Standard::from_name(s))
                 .unwrap_or_default(),
             snippet: m.get_flag("snippet"),
+            dialect: m
+                .get_one::<String>("dialect")
+                .and_then(|s| il_codegen::Dialect::from_name(s))
+                .unwrap_or_default(),
         }
     }
 
@@ -143,7 +169,7 @@ impl Front {
                 if self.snippet && !il_codegen::pipeline::is_xml(&f.name, &f.text) {
                     p.snippet(f)
                 } else {
-                    p.source(f)
+                    p.input(self.dialect.input(f))
                 }
             },
         )

@@ -37,6 +37,9 @@ pub struct Loaded {
     pub prog: Program,
     pub map: SourceMap,
     pub chosen: Chosen,
+    /// A Modicon M221 program (`.smbp`, `--dialect m221`): `%` names are
+    /// its objects (`%I0.3`, `%MW1`), [`il_codegen::m221::il_name`].
+    pub m221: bool,
 }
 
 /// The checked programs of several files as one.
@@ -141,7 +144,11 @@ fn choose(r: &Request, checked: &il_codegen::Checked) -> Result<Loaded, String> 
             .iter()
             .any(|ob| ob.kind == il_codegen::exp::ObjectKind::Tasks),
         // A Modicon M221 project runs its POUs, in order, as one task.
-        il_codegen::Input::PlcOpen(i) => il_codegen::m221::is_project(&i.xml.text),
+        il_codegen::Input::PlcOpen(i) => i.is_m221(),
+        _ => false,
+    });
+    let m221 = checked.inputs().iter().any(|i| match i {
+        il_codegen::Input::PlcOpen(i) => i.is_m221(),
         _ => false,
     });
     let chosen = match (r.config, r.program, prog.configs.as_slice()) {
@@ -173,5 +180,6 @@ fn choose(r: &Request, checked: &il_codegen::Checked) -> Result<Loaded, String> 
         prog,
         map: SourceMap::of(checked),
         chosen,
+        m221,
     })
 }

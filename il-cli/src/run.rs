@@ -30,6 +30,10 @@ Cycles are numbered from 1; scan k runs at time (k-1) * step. A --set without
 @CYCLE is written before scan 1. Names are variables with members and elements
 (tank.level, valves[2].open, m[1,2]), located variables and direct addresses
 (%IX0.0, %IW2, %QD1), which are the process image the program reads and writes.
+In a Modicon M221 program (an .smbp project, or a listing with --dialect m221)
+its objects are named as the program writes them, through the import's mapping:
+  ilc run --dialect m221 listing.il --set %I0.3=TRUE@2 --watch %Q0.0,%MW1,%C0.V,%TM0.Q
+(%I0.3 is the global I0_3, %C0.V is C0.V; the mangled names work too).
 Values are IL literals (TRUE, 42, 16#FF, 1.5, T#10ms, 'text', TankState#Filling).
 The table shows every watched variable after each scan; faults (division by
 zero, index out of range) are reported on stderr.
@@ -174,25 +178,48 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
         color: o.color,
     });
     let _ = write!(err, "{rendered}");
-    let crate::load::Loaded { prog, map, chosen } = loaded?;
+    let crate::load::Loaded {
+        prog,
+        map,
+        chosen,
+        m221,
+    } = loaded?;
     match chosen {
         crate::load::Chosen::Config(c) => {
             let mut m = ConfigMachine::new(&prog, &c)?;
             m.set_locate(map.locator());
-            scan_table(o, (&prog, &map), &mut m, out, err)
+            scan_table(o, (&prog, &map, m221), &mut m, out, err)
         }
         crate::load::Chosen::Pou(name) => {
             let mut m = Machine::new(&prog, &name)?;
             m.set_locate(map.locator());
-            scan_table(o, (&prog, &map), &mut m, out, err)
+            scan_table(o, (&prog, &map, m221), &mut m, out, err)
         }
+    }
+}
+
+/// The name to look up for one the user wrote: in an M221 program an
+/// object as the program writes it (`%I0.3`, `%C0.V`) is the import's
+/// global (`I0_3`, `C0.V`); anything else is looked up as written.
+fn run_name(name: &str, m221: bool) -> std::borrow::Cow<'_, str> {
+    // A bit of a word (`%MW4:X3`) is no variable the run can name.
+    if m221 && name.to_ascii_uppercase().contains(":X") {
+        return std::borrow::Cow::Borrowed(name);
+    }
+    match m221.then(|| il_codegen::m221::il_name(name)).flatten() {
+        Some(il) => std::borrow::Cow::Owned(il),
+        None => std::borrow::Cow::Borrowed(name),
     }
 }
 
 /// Scan `m` `o.cycles` times and print the table (and the waves).
 fn scan_table<T: Target>(
     o: &Options,
-    (prog, map): (&il_codegen::ir::Program, &crate::source_map::SourceMap),
+    (prog, map, m221): (
+        &il_codegen::ir::Program,
+        &crate::source_map::SourceMap,
+        bool,
+    ),
     m: &mut T,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -220,7 +247,7 @@ fn scan_table<T: Target>(
     let mut sets: Vec<(u64, T::Place, Value)> = Vec::new();
     for s in &o.sets {
         let place = m
-            .lookup(&s.var)
+            .lookup(&run_name(&s.var, m221))
             .map_err(|e| format!("--set {}={}: {e}", s.var, s.value))?;
         let v = m
             .parse_for(&place, &s.value)
@@ -240,7 +267,15 @@ fn scan_table<T: Target>(
     };
     let mut watch = Vec::with_capacity(watch_names.len());
     for w in &watch_names {
-        let place = m.lookup(w).map_err(|e| format!("--watch {w}: {e}"))?;
+        if m221 && w.to_ascii_uppercase().contains(":X") {
+            let word = &w[..w.to_ascii_uppercase().find(":X").unwrap_or(w.len())];
+            return Err(format!(
+                "--watch {w}: a bit of a word is not watched on its own; watch the word `{word}`"
+            ));
+        }
+        let place = m
+            .lookup(&run_name(w, m221))
+            .map_err(|e| format!("--watch {w}: {e}"))?;
         if matches!(m.describe(&place).1, Ty::Fb(_)) {
             return Err(format!(
                 "--watch {w}: `{w}` is a function block instance; watch its members, e.g. `{w}.Q`"
@@ -248,11 +283,18 @@ fn scan_table<T: Target>(
         }
         watch.push(place);
     }
+    // An M221 object keeps the name the user wrote (`%MW1`, not `MW1`).
     let described: Vec<(String, Ty)> = watch
         .iter()
-        .map(|p| {
+        .zip(&watch_names)
+        .map(|(p, w)| {
             let (t, ty) = m.describe(p);
-            (t.to_string(), ty.clone())
+            let shown = if run_name(w, m221) != w.as_str() {
+                w.clone()
+            } else {
+                t.to_string()
+            };
+            (shown, ty.clone())
         })
         .collect();
 

@@ -31,6 +31,8 @@ pub struct Builder {
     cargo_directives: Option<bool>,
     serde: bool,
     standard: crate::Standard,
+    /// [`Builder::dialect`].
+    dialect: crate::Dialect,
     /// [`Builder::encoding`]'s label, checked by `compile`.
     encoding: Option<String>,
 }
@@ -134,6 +136,17 @@ impl Builder {
         self
     }
 
+    /// The Instruction List the text sources are written in (default
+    /// [`Dialect::Iec`](crate::Dialect::Iec)): with
+    /// [`Dialect::M221`](crate::Dialect::M221) each file that is not XML is
+    /// a Modicon M221 / TwidoSuite listing, translated to IEC IL as an
+    /// `.smbp` project is (docs/semantics.md, "Modicon M221 dialect").
+    /// XML files are read by their content either way.
+    pub fn dialect(mut self, dialect: crate::Dialect) -> Self {
+        self.dialect = dialect;
+        self
+    }
+
     /// The encoding of the sources that are not UTF-8: a WHATWG label such
     /// as `"windows-1251"` (Cyrillic), `"windows-1250"`, `"iso-8859-15"`;
     /// PLC IDEs on Windows export in the machine's code page. A file that is
@@ -201,7 +214,7 @@ impl Builder {
                     sources.push(if *xml {
                         Input::plcopen(file)
                     } else {
-                        Input::by_content(file)
+                        self.dialect.input(file)
                     });
                 }
                 Err(e) => failed.push_str(&format!(

@@ -83,6 +83,6 @@ mod syntax;
 #[cfg(feature = "build")]
 pub use builder::{Builder, Error, output_paths, write_if_changed};
 pub use diag::{Diagnostic, SourceFile};
-pub use dialect::Standard;
+pub use dialect::{Dialect, Standard};
 pub use emit::Options as EmitOptions;
 pub use pipeline::{Checked, Emitted, Input, Program, Session};

@@ -38,6 +38,11 @@
 //! - `, serde` after the input derives `serde::Serialize` and `Deserialize`
 //!   on the generated types (the crate depends on `serde` and enables
 //!   `il-std`'s `serde` feature).
+//! - `, dialect = "m221"`: the text is a Modicon M221 / TwidoSuite
+//!   Instruction List listing (`LD %I0.1`, `BLK %TM0`, `SR1:` ...,
+//!   timers configured in `(*@ %TM0 TON BASE=100ms PRESET=50 *)`
+//!   comments), translated to IEC IL; it needs the `plcopen` feature,
+//!   which holds the M221 translation (IL0210 without it).
 //! - `, encoding = "windows-1251"`: the encoding of the files that are not
 //!   UTF-8 (a WHATWG label: `windows-1252`, `windows-1250`, `iso-8859-15`
 //!   ...), as PLC IDEs on Windows export them. Without it such a file is

@@ -14,7 +14,7 @@
 //!   ... [`CTUD_ULINT`]), [`TP`], [`TON`], [`TOF`], [`RTC`]);
 //! * the Modicon M221's own function-block objects, which the M221 importer instantiates: the
 //!   counter [`M221_C`], the drum [`M221_DR`], the registers [`M221_FIFO`] and [`M221_LIFO`], the shift bit register
-//!   [`M221_SBR`] and the step counter [`M221_SC`] (module `fb::m221`);
+//!   [`M221_SBR`] and the step counter [`M221_SC`], and its system bits [`M221_SYS`] (module `fb::m221`);
 //! * the standard functions in [`func`], their signatures in [`signature`], and literal parsing
 //!   helpers in [`literal`] shared with the compiler.
 //!

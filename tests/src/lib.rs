@@ -136,6 +136,17 @@ pub mod m221_ends {
     include!(concat!(env!("OUT_DIR"), "/m221_ends/ends.rs"));
 }
 
+/// `m221/listing.il`: a Modicon M221 / `TwidoSuite` text listing through
+/// build.rs (`Builder::dialect`).
+pub mod m221_listing_build {
+    include!(concat!(env!("OUT_DIR"), "/m221_listing/listing.rs"));
+}
+
+/// The same listing through `il!(..., dialect = "m221")`.
+pub mod m221_listing_macro {
+    il_macros::il!(file = "m221/listing.il", dialect = "m221");
+}
+
 /// `logiclab/project.plcprj`: a `LogicLab` / Arduino PLC IDE project through
 /// build.rs. Its `FUNCTION_BLOCK` `Scale` is in Structured Text, so its body
 /// is the crate's.

@@ -45,6 +45,7 @@ const FIELDS: &[&str] = &[
     "stopOnEntry",
     "realTime",
     "std",
+    "dialect",
     "snippet",
 ];
 
@@ -195,6 +196,11 @@ pub fn parse(args: &Value, encoding: il_codegen::read::Encoding) -> Result<Launc
         Some(s) => il_codegen::Standard::from_name(s)
             .ok_or_else(|| format!("launch field `std`: `{s}` is not iec2013 or iec2003"))?,
     };
+    let dialect = match string("dialect")?.as_deref() {
+        None => il_codegen::Dialect::default(),
+        Some(s) => il_codegen::Dialect::from_name(s)
+            .ok_or_else(|| format!("launch field `dialect`: `{s}` is not iec or m221"))?,
+    };
     let pou = string("pou")?;
     let configuration = string("configuration")?;
     if pou.is_some() && configuration.is_some() {
@@ -215,6 +221,7 @@ pub fn parse(args: &Value, encoding: il_codegen::read::Encoding) -> Result<Launc
             encoding,
             standard,
             snippet: boolean("snippet")?,
+            dialect,
         },
     })
 }

@@ -44,7 +44,10 @@ impl Session {
         if self.quit {
             return Err(ENDED.into());
         }
-        let (depth, pc, line) = (at.depth(), at.pc(), at.line());
+        // Lines are the user's file's: an M221 listing's operation block
+        // is several IL statements on one line, which stops and steps once.
+        let (depth, pc) = (at.depth(), at.pc());
+        let line = self.src.line(&at.pou().name, at.line());
         // A line starts unless the previous statement was the one before
         // this in the same frame and on the same line.
         let starts = self.last != Some((depth, pc.wrapping_sub(1), line));
@@ -84,10 +87,7 @@ impl Session {
         } else {
             String::new()
         };
-        let key = {
-            let pou = &at.pou().name;
-            (self.src.file_of(pou), self.src.line(pou, line))
-        };
+        let key = (self.src.file_of(&at.pou().name), line);
         let lines = self.bps.lines.get_mut(&key).into_iter().flatten();
         let funcs = self
             .bps
@@ -218,7 +218,8 @@ impl Session {
 
     /// Requests while stopped.
     fn stopped(&mut self, at: &mut Here<'_>, seq: i64, command: &str, args: &Value) -> Resume {
-        let (depth, line, scan) = (at.depth(), at.line(), self.scan);
+        let line = self.src.line(&at.pou().name, at.line());
+        let (depth, scan) = (at.depth(), self.scan);
         let go = |s: &mut Session, mode: Mode| {
             s.mode = mode;
             s.out

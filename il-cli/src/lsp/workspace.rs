@@ -103,6 +103,9 @@ pub struct Settings {
     /// How the files read from disk that are not UTF-8 are decoded
     /// (`ilc --encoding`, or the option `{"encoding": "windows-1251"}`).
     pub encoding: il_codegen::read::Encoding,
+    /// The Instruction List of the text documents (`{"dialect": "m221"}`:
+    /// Modicon M221 / TwidoSuite listings, as `ilc --dialect m221`).
+    pub dialect: il_codegen::Dialect,
 }
 
 impl Default for Settings {
@@ -111,14 +114,16 @@ impl Default for Settings {
             cr_type_hints: true,
             hint_refresh: false,
             encoding: Default::default(),
+            dialect: Default::default(),
         }
     }
 }
 
 impl Settings {
-    /// Read `{"inlayHints": {"crType": false}, "encoding": "windows-1251"}`,
-    /// also under an `ilc` key (as VS Code sends its configuration section).
-    /// An unknown encoding is kept out, with the reason (for the log).
+    /// Read `{"inlayHints": {"crType": false}, "encoding": "windows-1251",
+    /// "dialect": "m221"}`, also under an `ilc` key (as VS Code sends its
+    /// configuration section). An unknown encoding or dialect is kept out,
+    /// with the reason (for the log).
     pub fn update(&mut self, v: &serde_json::Value) -> Result<(), String> {
         let v = v.get("ilc").unwrap_or(v);
         let mut bad = Ok(());
@@ -131,6 +136,16 @@ impl Settings {
             match il_codegen::read::Encoding::from_label(label) {
                 Ok(e) => self.encoding = e,
                 Err(e) => bad = Err(e),
+            }
+        }
+        if let Some(name) = v
+            .get("dialect")
+            .and_then(serde_json::Value::as_str)
+            .filter(|l| !l.trim().is_empty())
+        {
+            match il_codegen::Dialect::from_name(name) {
+                Some(d) => self.dialect = d,
+                None => bad = Err(format!("unknown dialect `{name}`: use `iec` or `m221`")),
             }
         }
         if let Some(b) = v
@@ -388,7 +403,7 @@ impl Workspace {
                         let d = &self.docs[k];
                         let mut f = SourceFile::new(d.name.clone(), d.text.clone());
                         f.read_diagnostics.clone_from(&d.read_diagnostics);
-                        p.source(f)
+                        p.input(self.settings.dialect.input(f))
                     });
             let checking = Instant::now();
             session.check(program);

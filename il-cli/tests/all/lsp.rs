@@ -13,6 +13,7 @@ use serde_json::{Value, json};
 mod calls;
 mod code_actions;
 mod consistency;
+mod dialect;
 mod folders;
 mod formatting;
 mod imports;

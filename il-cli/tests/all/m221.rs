@@ -540,3 +540,49 @@ fn assigning_a_real_to_a_word_says_which_conversion() {
     assert!(err.contains(&format!("--> {}:6:42", p.display())), "{err}");
     assert!(!err.contains("_x"), "no temporary named: {err}");
 }
+
+/// A project whose `<Subroutines>` hold a subroutine as `<Pous>` hold a POU
+/// (`<SectionNumber>` its number): `CAL SR0` runs it when the rung's
+/// condition is 1.
+#[test]
+fn a_projects_subroutine_runs_when_called() {
+    let mut body = project(&[&["LD %I0.0", "CAL SR0"], &["LD %M0", "ST %Q0.0"]]);
+    body = body.replace(
+        "</Pous>",
+        "</Pous>\n<Subroutines><ProgramOrganizationUnits><Name>Count</Name><SectionNumber>0</SectionNumber><Rungs>\n\
+         <RungEntity><InstructionLines>\n\
+         <InstructionLineEntity><InstructionLine>LD %I0.1</InstructionLine></InstructionLineEntity>\n\
+         <InstructionLineEntity><InstructionLine>RETCN</InstructionLine></InstructionLineEntity>\n\
+         <InstructionLineEntity><InstructionLine>[ %MW0 := %MW0 + 1 ]</InstructionLine></InstructionLineEntity>\n\
+         <InstructionLineEntity><InstructionLine>LD [ %MW0 &gt;= 2 ]</InstructionLine></InstructionLineEntity>\n\
+         <InstructionLineEntity><InstructionLine>ST %M0</InstructionLine></InstructionLineEntity>\n\
+         </InstructionLines></RungEntity>\n\
+         </Rungs></ProgramOrganizationUnits></Subroutines>",
+    );
+    let p = temp("sub.smbp", &body);
+    let f = p.display().to_string();
+    // SR0 runs in scans 2-5 (I0.0); it counts when I0.1 is 1 too (3-5);
+    // M0 (MW0 >= 2) from scan 4, Q0.0 after it in the same scan.
+    let o = ilc(&[
+        "run",
+        &f,
+        "--cycles",
+        "5",
+        "--set",
+        "%I0.0=TRUE@2",
+        "--set",
+        "%I0.1=TRUE@3",
+        "--watch",
+        "%MW0,%M0,%Q0.0",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let want = "\
+cycle  time  %MW0  %M0    %Q0.0
+    1  0s       0  FALSE  FALSE
+    2  10ms     0  FALSE  FALSE
+    3  20ms     1  FALSE  FALSE
+    4  30ms     2  TRUE   TRUE
+    5  40ms     3  TRUE   TRUE
+";
+    assert_eq!(text(&o.stdout), want);
+}

@@ -14,6 +14,7 @@ mod fmt;
 mod logiclab;
 mod lsp;
 mod m221;
+mod m221_listing;
 mod plcopen;
 mod run;
 mod run_config;

@@ -3,7 +3,9 @@
 //! widening conversions, partial bit access); [`Standard::Iec2003`] refuses
 //! each of them with an error that names the form. Each stage that accepts
 //! such a form calls [`Standard::refuse`] at that point, so the form is
-//! decided once, where it is recognised.
+//! decided once, where it is recognised. [`Dialect`] says which
+//! Instruction List a text source is in: IEC's, or a vendor's listing that
+//! is translated to it (`--dialect m221`).
 
 use crate::ast::Span;
 use crate::diag::Diagnostic;
@@ -58,6 +60,59 @@ impl std::str::FromStr for Standard {
     fn from_str(s: &str) -> Result<Self, String> {
         Standard::from_name(s)
             .ok_or_else(|| format!("unknown standard `{s}`: use `iec2003` or `iec2013`"))
+    }
+}
+
+/// The language a source that is not XML is written in: IEC 61131-3 IL
+/// (the default), or a vendor's Instruction List that is translated to it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Dialect {
+    /// IEC 61131-3 Instruction List (with the vendor forms [`Standard`]
+    /// allows).
+    #[default]
+    Iec,
+    /// A Modicon M221 (Machine Expert Basic, SoMachine Basic) or Twido
+    /// (TwidoSuite) listing: one M221 instruction a line, `%Ln:` labels,
+    /// `SRn:` subroutines, `(*@ %TM0 ... *)` configuration comments
+    /// ([`crate::m221`], docs/semantics.md "Modicon M221 dialect").
+    M221,
+}
+
+impl Dialect {
+    /// The dialect named `iec` or `m221` (also `twido`), case-insensitive,
+    /// as `--dialect` and `il!(..., dialect = "...")` take it.
+    pub fn from_name(name: &str) -> Option<Dialect> {
+        match name.to_ascii_lowercase().as_str() {
+            "iec" => Some(Dialect::Iec),
+            "m221" | "twido" => Some(Dialect::M221),
+            _ => None,
+        }
+    }
+
+    /// The name [`Dialect::from_name`] reads.
+    pub fn name(self) -> &'static str {
+        match self {
+            Dialect::Iec => "iec",
+            Dialect::M221 => "m221",
+        }
+    }
+
+    /// `file` as an input of a program: XML is read by its content, as
+    /// always ([`crate::pipeline::Input::by_content`]); other text is IEC
+    /// IL or this dialect's listing.
+    pub fn input(self, file: crate::diag::SourceFile) -> crate::pipeline::Input {
+        use crate::pipeline::{Input, is_xml};
+        match self {
+            Dialect::M221 if !is_xml(&file.name, &file.text) => Input::m221(file),
+            _ => Input::by_content(file),
+        }
+    }
+}
+
+impl std::str::FromStr for Dialect {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        Dialect::from_name(s).ok_or_else(|| format!("unknown dialect `{s}`: use `iec` or `m221`"))
     }
 }
 

@@ -85,14 +85,16 @@ pub(super) enum Input {
     Files(Vec<Lit>),
 }
 
-/// What may follow the IL: `, serde`, `, std = "iec2003"` and
-/// `, encoding = "windows-1251"`.
+/// What may follow the IL: `, serde`, `, std = "iec2003"`,
+/// `, dialect = "m221"` and `, encoding = "windows-1251"`.
 #[derive(Clone, Copy, Default)]
 pub(super) struct Flags {
     pub serde: bool,
     pub standard: Standard,
     /// The encoding of files that are not UTF-8.
     pub encoding: crate::read::Encoding,
+    /// The Instruction List of the text: `dialect = "m221"`.
+    pub dialect: crate::Dialect,
 }
 
 /// Why the input is refused, and where.
@@ -101,7 +103,7 @@ pub(super) struct Refusal {
     pub span: SpanId,
 }
 
-pub(super) const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or files relative to the crate, `il!(file = \"plc/motor.il\")` or `il!(files = [\"plc/types.il\", \"plc/tank.il\"])` (one program: a POU may use the TYPEs and FBs of every file), optionally followed by `, serde`, `, std = \"iec2003\"` and (for files that are not UTF-8) `, encoding = \"windows-1251\"`";
+pub(super) const USAGE: &str = "il! takes Instruction List as a string, `il!(r#\"...IL...\"#)`, or files relative to the crate, `il!(file = \"plc/motor.il\")` or `il!(files = [\"plc/types.il\", \"plc/tank.il\"])` (one program: a POU may use the TYPEs and FBs of every file), optionally followed by `, serde`, `, std = \"iec2003\"`, `, dialect = \"m221\"` and (for files that are not UTF-8) `, encoding = \"windows-1251\"`";
 
 fn usage(span: SpanId) -> Refusal {
     Refusal {
@@ -230,7 +232,8 @@ fn file_list(c: &mut Cursor, kw: SpanId) -> Result<Vec<Lit>, Refusal> {
     Ok(lits)
 }
 
-/// `, serde`, `, std = "iec2003"`, `, encoding = "windows-1251"`, in any
+/// `, serde`, `, std = "iec2003"`, `, dialect = "m221"`,
+/// `, encoding = "windows-1251"`, in any
 /// order, a trailing comma allowed.
 fn flags(c: &mut Cursor) -> Result<Flags, Refusal> {
     let mut flags = Flags::default();
@@ -245,6 +248,17 @@ fn flags(c: &mut Cursor) -> Result<Flags, Refusal> {
                 flags.standard = Standard::from_name(&name.value).ok_or_else(|| Refusal {
                     msg: format!(
                         "unknown standard `{}`: use `std = \"iec2003\"` (2nd edition, strict) or `std = \"iec2013\"` (the default)",
+                        name.value
+                    ),
+                    span: name.span,
+                })?;
+            }
+            Some(Tok::Ident(f, _)) if f == "dialect" => {
+                c.punct('=')?;
+                let name = c.string()?;
+                flags.dialect = crate::Dialect::from_name(&name.value).ok_or_else(|| Refusal {
+                    msg: format!(
+                        "unknown dialect `{}`: use `dialect = \"m221\"` (a Modicon M221 / TwidoSuite listing) or `dialect = \"iec\"` (the default)",
                         name.value
                     ),
                     span: name.span,

@@ -128,7 +128,7 @@ fn expand_inner(tokens: &[Tok]) -> Expansion {
     let checked = sources
         .iter()
         .fold(Program::new().standard(flags.standard), |p, (f, _)| {
-            p.source(f.clone())
+            p.input(flags.dialect.input(f.clone()))
         })
         .check();
     let mut out = Expansion {

@@ -7,7 +7,7 @@
 
 use std::ops::Range;
 
-use super::codes::{BAD_LINE, UNSUPPORTED};
+use super::codes::{BAD_LINE, UNCONFIGURED, UNSUPPORTED};
 use super::expr::{self, Dest, Parsed};
 use super::objects::Ty;
 use super::read::{Line, span};
@@ -42,8 +42,10 @@ impl Pou<'_> {
             Ok(p) => p,
             Err(e) => {
                 let at = span(&line.xml(e.at.clone()));
-                let d = if e.unsupported {
+                let d = if e.code == UNSUPPORTED {
                     Diagnostic::error(UNSUPPORTED, at, e.what).with_label("not compiled")
+                } else if e.code == UNCONFIGURED {
+                    Diagnostic::error(UNCONFIGURED, at, e.what).with_label("not configured")
                 } else {
                     Diagnostic::error(BAD_LINE, at, e.what)
                         .with_label("not an M221 expression the import reads")

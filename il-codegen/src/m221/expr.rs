@@ -5,6 +5,7 @@
 
 use std::ops::Range;
 
+use super::codes::{BAD_LINE, UNCONFIGURED, UNSUPPORTED};
 use super::objects::{NotObject, Objects, Ty};
 use super::read::{DEFAULT_TIMER, Project};
 
@@ -77,14 +78,16 @@ pub(super) enum Expr {
 pub(super) struct Error {
     pub what: String,
     pub at: Range<usize>,
-    pub unsupported: bool,
+    /// The diagnostic's code (IL0430, or IL0431/IL0436 for an object the
+    /// import knows of).
+    pub code: &'static str,
 }
 
 fn err(what: impl Into<String>, at: Range<usize>) -> Error {
     Error {
         what: what.into(),
         at,
-        unsupported: false,
+        code: BAD_LINE,
     }
 }
 
@@ -234,7 +237,7 @@ impl Parser<'_> {
                     format!("`{}` is not a function the import compiles", t.s),
                     t.at,
                 );
-                e.unsupported = true;
+                e.code = UNSUPPORTED;
                 return Err(e);
             };
             self.k += 1;
@@ -283,12 +286,14 @@ impl Parser<'_> {
         }
         if let Some((n, member)) = timer_member(&up) {
             // `%TMn.V`, `%TMn.P`: ET and PT in units of the time base.
-            if self
-                .objs
-                .block(self.p, &format!("%TM{n}"), &xml_at)
-                .is_err()
-            {
-                return Err(err(format!("`{}` is not a timer", t.s), t.at));
+            match self.objs.block(self.p, &format!("%TM{n}"), &xml_at) {
+                Ok(_) => {}
+                Err(NotObject::Unconfigured(why)) => {
+                    let mut e = err(why, t.at);
+                    e.code = UNCONFIGURED;
+                    return Err(e);
+                }
+                Err(_) => return Err(err(format!("`{}` is not a timer", t.s), t.at)),
             }
             let base = self
                 .p
@@ -316,7 +321,12 @@ impl Parser<'_> {
             )),
             Err(NotObject::Unsupported(why)) => {
                 let mut e = err(why, t.at);
-                e.unsupported = true;
+                e.code = UNSUPPORTED;
+                Err(e)
+            }
+            Err(NotObject::Unconfigured(why)) => {
+                let mut e = err(why, t.at);
+                e.code = UNCONFIGURED;
                 Err(e)
             }
         }

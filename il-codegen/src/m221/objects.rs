@@ -109,7 +109,13 @@ pub(super) struct Objects {
     /// The globals named since the caller last took them: the POU that
     /// names them declares them VAR_EXTERNAL.
     pub touched: Vec<String>,
+    /// The system bits the controller sets that the program uses (`%S0`,
+    /// `%S4` .. `%S7`, `%S13`): il-std's `M221_SYS` computes them.
+    pub sys_bits: std::collections::BTreeSet<u32>,
 }
+
+/// The system bits `M221_SYS` computes.
+pub(super) const SYS_BITS: [u32; 6] = [0, 4, 5, 6, 7, 13];
 
 /// An operand: its IL text and type.
 pub(super) struct Operand {
@@ -175,6 +181,16 @@ pub(super) enum NotObject {
     Unknown,
     /// An object the import does not compile, and why.
     Unsupported(String),
+    /// A timer, counter or constant word of a text listing without its
+    /// configuration (`(*@ %TM0 ... *)`), and the comment that gives it.
+    Unconfigured(String),
+}
+
+/// The error for an object of a text listing that has no configuration.
+fn unconfigured(obj: &str, example: &str) -> NotObject {
+    NotObject::Unconfigured(format!(
+        "`{obj}` has no configuration in this listing: add a line `(*@ {obj} {example} *)`"
+    ))
 }
 
 fn time_literal(ms: u64) -> String {
@@ -205,6 +221,9 @@ impl Objects {
     pub fn block(&mut self, p: &Project, s: &str, at: &Range<usize>) -> Result<Block, NotObject> {
         let up = s.to_ascii_uppercase();
         if let Some(n) = up.strip_prefix("%TM").and_then(num) {
+            if p.listing && !p.timers.contains_key(&n) {
+                return Err(unconfigured(&format!("%TM{n}"), "TON BASE=100ms PRESET=50"));
+            }
             let t = p.timers.get(&n).copied().unwrap_or(read::DEFAULT_TIMER);
             let fb = match t.kind {
                 TimerKind::Ton => "TON",
@@ -222,6 +241,9 @@ impl Objects {
             return Ok(Block::Timer(n));
         }
         if let Some(n) = up.strip_prefix("%C").and_then(num) {
+            if p.listing && !p.counters.contains_key(&n) {
+                return Err(unconfigured(&format!("%C{n}"), "PRESET=10"));
+            }
             let pv = p
                 .counters
                 .get(&n)
@@ -267,6 +289,19 @@ impl Objects {
             at: 0..0,
         });
         Ok(b)
+    }
+
+    /// The global instance of subroutine `n` (`SRn`, a `SUB_SRn`), declared.
+    pub fn subroutine(&mut self, n: u32, at: &Range<usize>) -> String {
+        let name = format!("SR{n}");
+        self.note(&name, at, || Global {
+            decl: format!("SUB_SR{n}"),
+            ty: format!("SUB_SR{n}"),
+            constant: false,
+            system: false,
+            at: 0..0,
+        });
+        name
     }
 
     /// An operand of a bit or word instruction, or of an expression.
@@ -362,7 +397,11 @@ impl Objects {
             "M" | "S" => {
                 let n = num(tail).ok_or(NotObject::Unknown)?;
                 let name = format!("{kind}{n}");
-                self.plain(&name, "BOOL", at, kind == "S");
+                let simulated = kind == "S" && SYS_BITS.contains(&n);
+                if simulated {
+                    self.sys_bits.insert(n);
+                }
+                self.plain(&name, "BOOL", at, kind == "S" && !simulated);
                 ok(name, Ty::Bool)
             }
             "IWE" | "QWE" | "IWM" | "QWM" => {
@@ -419,6 +458,9 @@ impl Objects {
             }
             "KW" => {
                 let n = num(tail).ok_or(NotObject::Unknown)?;
+                if p.listing && !p.constants.contains_key(&n) {
+                    return Err(unconfigured(&format!("%KW{n}"), "VALUE=0"));
+                }
                 let name = format!("KW{n}");
                 let v = p.constants.get(&n).copied().unwrap_or(0);
                 self.note(&name, at, || Global {

@@ -45,9 +45,12 @@ pub(super) struct Rung {
     pub label: Option<Line>,
 }
 
-/// A `<ProgramOrganizationUnits>` of `<Pous>`.
+/// A `<ProgramOrganizationUnits>` of `<Pous>`, or a listing's main
+/// program or subroutine.
 pub(super) struct Pou {
     pub name: String,
+    /// The subroutine's number (`SR3`), for a subroutine.
+    pub sr: Option<u32>,
     pub at: Range<usize>,
     pub rungs: Vec<Rung>,
 }
@@ -95,6 +98,10 @@ pub(super) struct Project {
     pub shared_words: bool,
     /// `<Subroutines>` that hold something, for one error.
     pub subroutines: Option<Range<usize>>,
+    /// A text listing (`--dialect m221`): its timers, counters and constant
+    /// words must be configured (`(*@ %TM0 ... *)`), there is no editor's
+    /// default to fall back on.
+    pub listing: bool,
 }
 
 pub(super) use crate::plcopen::nodes::{is, kid, kids};
@@ -128,38 +135,36 @@ pub(super) fn read(root: Node, xml: &str, diags: &mut Vec<Diagnostic>) -> Projec
         .flat_map(|n| kids(n, "ProgramOrganizationUnits"))
         .enumerate()
     {
-        let name = kid(pou, "Name").map_or(String::new(), |n| text_of(n).to_string());
-        let name = if name.is_empty() {
-            format!("POU {}", k + 1)
-        } else {
-            name
-        };
-        let rungs = kids(pou, "Rungs")
-            .flat_map(|n| kids(n, "RungEntity"))
-            .enumerate()
-            .map(|(i, r)| Rung {
-                number: i + 1,
-                at: r.range(),
-                lines: kids(r, "InstructionLines")
-                    .flat_map(|n| kids(n, "InstructionLineEntity"))
-                    .filter_map(|e| kid(e, "InstructionLine"))
-                    .map(|l| line(xml, l))
-                    .collect(),
-                label: kid(r, "Label")
-                    .map(|l| line(xml, l))
-                    .filter(|l| !l.text.trim().is_empty()),
-            })
-            .collect();
-        p.pous.push(Pou {
-            name,
-            at: pou.range(),
-            rungs,
-        });
+        p.pous.push(read_pou(xml, pou, k, None));
+    }
+    // Subroutines: the same elements as the POUs, numbered by their
+    // `<SectionNumber>` or the digits of their name (`SR3`) *(inferred: no
+    // public project with subroutines was found)*.
+    if let Some(s) = kid(sw, "Subroutines").filter(|s| s.children().any(|c| c.is_element())) {
+        let mut read_all = true;
+        for (k, el) in s.children().filter(|c| c.is_element()).enumerate() {
+            let number = kid(el, "SectionNumber")
+                .and_then(|n| text_of(n).parse::<u32>().ok())
+                .or_else(|| {
+                    kid(el, "Name")
+                        .and_then(|n| super::rung::sr_number(text_of(n).trim_start_matches('%')))
+                })
+                .filter(|n| *n < 256);
+            match (is(&el, "ProgramOrganizationUnits"), number) {
+                (true, Some(n)) if !p.pous.iter().any(|x| x.sr == Some(n)) => {
+                    let mut sub = read_pou(xml, el, k, Some(n));
+                    sub.name = format!("SR{n}");
+                    p.pous.push(sub);
+                }
+                _ => read_all = false,
+            }
+        }
+        if !read_all {
+            p.pous.retain(|x| x.sr.is_none());
+            p.subroutines = Some(s.range());
+        }
     }
     p.shared_words = shared_words(&p);
-    if let Some(s) = kid(sw, "Subroutines").filter(|s| s.children().any(|c| c.is_element())) {
-        p.subroutines = Some(s.range());
-    }
     for t in kids(sw, "Timers").flat_map(|n| kids(n, "TimerTM")) {
         if let Some(i) = index(t) {
             p.timers.insert(i, timer(xml, t, diags));
@@ -197,6 +202,38 @@ pub(super) fn read(root: Node, xml: &str, diags: &mut Vec<Diagnostic>) -> Projec
         }
     }
     p
+}
+
+/// A `<ProgramOrganizationUnits>` (the `k`th): its name and rungs.
+fn read_pou(xml: &str, pou: Node, k: usize, sr: Option<u32>) -> Pou {
+    let name = kid(pou, "Name").map_or(String::new(), |n| text_of(n).to_string());
+    let name = if name.is_empty() {
+        format!("POU {}", k + 1)
+    } else {
+        name
+    };
+    let rungs = kids(pou, "Rungs")
+        .flat_map(|n| kids(n, "RungEntity"))
+        .enumerate()
+        .map(|(i, r)| Rung {
+            number: i + 1,
+            at: r.range(),
+            lines: kids(r, "InstructionLines")
+                .flat_map(|n| kids(n, "InstructionLineEntity"))
+                .filter_map(|e| kid(e, "InstructionLine"))
+                .map(|l| line(xml, l))
+                .collect(),
+            label: kid(r, "Label")
+                .map(|l| line(xml, l))
+                .filter(|l| !l.text.trim().is_empty()),
+        })
+        .collect();
+    Pou {
+        name,
+        sr,
+        at: pou.range(),
+        rungs,
+    }
 }
 
 fn line(xml: &str, l: Node) -> Line {
@@ -280,7 +317,7 @@ fn timer(xml: &str, t: Node, diags: &mut Vec<Diagnostic>) -> Timer {
 
 /// Whether the project names two memory objects that share a word: `%MWn`
 /// is word n, `%MDn` and `%MFn` words n and n+1.
-fn shared_words(p: &Project) -> bool {
+pub(super) fn shared_words(p: &Project) -> bool {
     let mut words: HashMap<u32, String> = HashMap::new();
     for l in p.pous.iter().flat_map(|x| &x.rungs).flat_map(|r| &r.lines) {
         let up = l.text.to_ascii_uppercase();

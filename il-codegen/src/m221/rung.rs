@@ -17,7 +17,7 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::ops::Range;
 
-use super::codes::{BAD_LINE, UNSUPPORTED};
+use super::codes::{BAD_LINE, UNCONFIGURED, UNSUPPORTED};
 use super::objects::{Block, NotObject, Objects, Ty};
 use super::read::{Line, Project, span};
 use crate::diag::Diagnostic;
@@ -42,6 +42,8 @@ pub(super) struct Locals {
     pub ops: u32,
     /// The globals the POU uses.
     pub used: BTreeSet<String>,
+    /// The subroutines it calls (`CAL SR3` → 3).
+    pub calls: BTreeSet<u32>,
 }
 
 /// The translation of one POU.
@@ -51,6 +53,10 @@ pub(super) struct Pou<'a> {
     pub w: &'a mut Writer,
     pub diags: &'a mut Vec<Diagnostic>,
     pub locals: Locals,
+    /// Whether the POU is a subroutine (`SRn:` ... `RET`).
+    pub sr: bool,
+    /// Whether the program can end the scan (`END`, `ENDC`, `ENDCN`).
+    pub ends: bool,
 }
 
 /// The state of one rung.
@@ -123,6 +129,9 @@ impl Pou<'_> {
             ),
             NotObject::Unsupported(why) => Box::new(
                 Diagnostic::error(UNSUPPORTED, at, why).with_label("not compiled"),
+            ),
+            NotObject::Unconfigured(why) => Box::new(
+                Diagnostic::error(UNCONFIGURED, at, why).with_label("not configured"),
             ),
         }
     }
@@ -293,14 +302,41 @@ impl Pou<'_> {
                     }
                 }
             }
-            "CAL" | "RET" | "RETC" | "RETCN" | "MULTIFB" => {
+            "CAL" if arg.as_ref().is_some_and(|(s, _)| sr_number(s).is_some()) => {
+                let (s, r) = need(&arg)?;
+                self.call(rung, line, &s, r, all)?;
+            }
+            _ if arg.is_none() && sr_number(first).is_some() => {
+                // TwidoSuite's call: `SR3` alone.
+                self.call(rung, line, first, fr.clone(), all)?;
+            }
+            "RET" | "RETC" | "RETCN" => {
+                if !self.sr {
+                    return Err(bad(
+                        line,
+                        fr.clone(),
+                        format!("`{first}` outside a subroutine (`SRn:` ... `RET`)"),
+                    ));
+                }
+                if op != "RET" {
+                    self.need_cr(rung, line, fr.clone(), first)?;
+                }
+                if !rung.parens.is_empty() || rung.blk.is_some() {
+                    return Err(bad(
+                        line,
+                        fr.clone(),
+                        format!("`{first}` inside `(` or a `BLK`"),
+                    ));
+                }
+                self.flush(rung, true, all.clone());
+                self.put(&op, all);
+            }
+            "CAL" | "MULTIFB" => {
                 return Err(Box::new(
                     Diagnostic::error(
                         UNSUPPORTED,
                         span(&line.xml(fr.clone())),
-                        format!(
-                            "`{first}` is not compiled yet (subroutines and the end of the task)"
-                        ),
+                        format!("`{first}` is not compiled yet (only `CAL SRn` calls)"),
                     )
                     .with_label("not compiled"),
                 ));
@@ -313,6 +349,44 @@ impl Pou<'_> {
                 ));
             }
         }
+        Ok(())
+    }
+
+    /// `CAL SRn` (or `SRn`): the subroutine, when the rung's condition is
+    /// 1 (always at the start of a rung); then, when a POU can end the
+    /// scan, a return if the subroutine ended it.
+    fn call(
+        &mut self,
+        rung: &mut Rung,
+        line: &Line,
+        s: &str,
+        r: Range<usize>,
+        all: Range<usize>,
+    ) -> Result<(), Fail> {
+        let n = sr_number(s).unwrap_or(0);
+        if !self.p.pous.iter().any(|x| x.sr == Some(n)) {
+            return Err(bad(
+                line,
+                r,
+                format!("`{s}` calls no subroutine of this program (no `SR{n}:`)"),
+            ));
+        }
+        if !rung.parens.is_empty() || rung.blk.is_some() {
+            return Err(bad(line, r, format!("`{s}` called inside `(` or a `BLK`")));
+        }
+        let name = self.objs.subroutine(n, &line.xml(r));
+        self.locals.used.insert(name.clone());
+        self.locals.calls.insert(n);
+        self.flush(rung, true, all.clone());
+        let cal = if rung.cr { "CALC" } else { "CAL" };
+        self.put(&format!("{cal} {name}"), all.clone());
+        if self.ends {
+            self.locals.used.insert(SCAN_END.to_string());
+            self.put(&format!("LD {SCAN_END}"), all.clone());
+            self.put("RETC", all);
+        }
+        // What the subroutine left in the CR is no condition of this rung.
+        rung.cr = false;
         Ok(())
     }
 
@@ -452,6 +526,14 @@ fn edge_block(op: &str) -> bool {
         .or_else(|| op.strip_prefix("FALLING"))
         .unwrap_or("");
     !n.is_empty() && n.len() < 6 && n.bytes().all(|b| b.is_ascii_digit())
+}
+
+/// `SR3`, `%SR3` → 3 (subroutines 0 to 255).
+pub(super) fn sr_number(s: &str) -> Option<u32> {
+    let s = s.strip_prefix('%').unwrap_or(s);
+    let n = s.strip_prefix("SR").or_else(|| s.strip_prefix("sr"))?;
+    let ok = !n.is_empty() && n.len() < 4 && n.bytes().all(|b| b.is_ascii_digit());
+    n.parse().ok().filter(|v| ok && *v < 256)
 }
 
 /// `%L5` → `L5`.

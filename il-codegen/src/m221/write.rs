@@ -4,7 +4,7 @@
 //! object the programs use as a global and runs the programs in the order
 //! of the POUs, every scan.
 
-use std::collections::HashSet;
+use std::collections::{BTreeSet, HashSet};
 use std::ops::Range;
 
 use super::codes::{SYSTEM_OBJECT, UNSUPPORTED};
@@ -20,18 +20,25 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
     let mut diags = Vec::new();
     let root = doc.root_element();
     let p = read::read(root, xml, &mut diags);
-    let mut objs = Objects::default();
-    let mut w = Writer::default();
     if let Some(r) = &p.subroutines {
         diags.push(
             Diagnostic::error(
                 UNSUPPORTED,
                 span(&(r.start..r.start + "<Subroutines>".len())),
-                "the project's subroutines (`SRn`) are not compiled yet",
+                "the project's `<Subroutines>` are not all `<ProgramOrganizationUnits>` with a `<SectionNumber>` or a name `SRn` (one each), the layout the import reads",
             )
-            .with_label("not compiled"),
+            .with_label("not compiled")
+            .with_note("no subroutine of the project is compiled; a `CAL SRn` is an error"),
         );
     }
+    write(&p, root.range(), diags)
+}
+
+/// The IL text of a project read from an `.smbp` or a text listing;
+/// `root` is the range the configuration stands for.
+pub(super) fn write(p: &Project, root: Range<usize>, mut diags: Vec<Diagnostic>) -> Translation {
+    let mut objs = Objects::default();
+    let mut w = Writer::default();
     let mut pous = Vec::new();
     let mut programs: Vec<(String, String, Range<usize>)> = Vec::new();
     let mut taken = HashSet::new();
@@ -56,42 +63,93 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
                 ty: "BOOL".into(),
                 constant: false,
                 system: false,
-                at: root.range().start..root.range().start + 1,
+                at: root.start..root.start + 1,
             },
         );
     }
-    for (k, pou) in p.pous.iter().enumerate() {
-        let ty = format!("POU_{}", ident(&pou.name));
-        let ty = unique(ty, &mut taken);
-        // First pass: which globals and locals the body needs.
-        let mut locals = body(&p, &mut objs, &mut Writer::default(), &mut Vec::new(), pou);
+    // First pass: which globals and locals each body needs; a POU that
+    // calls a subroutine declares the globals the subroutine uses too.
+    let mut firsts: Vec<Locals> = p
+        .pous
+        .iter()
+        .map(|pou| {
+            body(
+                p,
+                &mut objs,
+                &mut Writer::default(),
+                &mut Vec::new(),
+                pou,
+                ends,
+            )
+        })
+        .collect();
+    called_globals(p, &mut firsts);
+    // The system bits the controller sets: one `M221_SYS` the first POU
+    // runs at the start of every scan, its outputs copied into the bits.
+    let sys: Vec<u32> = objs.sys_bits.iter().copied().collect();
+    if !sys.is_empty() {
+        objs.globals.insert(
+            SYS.to_string(),
+            Global {
+                decl: "M221_SYS".into(),
+                ty: "M221_SYS".into(),
+                constant: false,
+                system: false,
+                at: root.start..root.start + 1,
+            },
+        );
+    }
+    let mut k = 0;
+    for (pou, mut locals) in p.pous.iter().zip(firsts) {
         if ends {
             locals.used.insert(SCAN_END.to_string());
         }
+        let first = pou.sr.is_none() && k == 0;
+        if first && !sys.is_empty() {
+            locals.used.insert(SYS.to_string());
+            locals.used.extend(sys.iter().map(|n| format!("S{n}")));
+        }
         let at = pou.at.start..pou.at.start + 1;
-        w.gen_at(&format!("PROGRAM {ty}\n"), at.clone());
+        let (ty, kind) = match pou.sr {
+            Some(n) => (format!("SUB_SR{n}"), "FUNCTION_BLOCK"),
+            None => (
+                unique(format!("POU_{}", ident(&pou.name)), &mut taken),
+                "PROGRAM",
+            ),
+        };
+        w.gen_at(&format!("{kind} {ty}\n"), at.clone());
         externals(&mut w, &objs, &locals, at.clone());
         own_vars(&mut w, &locals, at.clone());
-        if ends && k == 0 {
+        if first && !sys.is_empty() {
+            w.gen_at(&format!("    CAL {SYS}\n"), at.clone());
+            for n in &sys {
+                w.gen_at(&format!("    LD {SYS}.S{n}\n    ST S{n}\n"), at.clone());
+            }
+        }
+        if first && ends {
             w.gen_at(&format!("    LD FALSE\n    ST {SCAN_END}\n"), at.clone());
-        } else if ends {
+        } else if pou.sr.is_none() && ends {
             w.gen_at(&format!("    LD {SCAN_END}\n    RETC\n"), at.clone());
         }
-        body(&p, &mut objs, &mut w, &mut diags, pou);
-        w.gen_at("END_PROGRAM\n\n", at.clone());
+        body(p, &mut objs, &mut w, &mut diags, pou, ends);
+        w.gen_at(&format!("END_{kind}\n\n"), at.clone());
         pous.push(PouInfo {
             name: pou.name.clone(),
-            kind: "PROGRAM",
+            kind,
             language: "IL".into(),
             translated: true,
         });
+        if pou.sr.is_some() {
+            continue;
+        }
+        k += 1;
         let mut inst = ident(&pou.name);
         if objs.globals.contains_key(&inst) || inst.eq_ignore_ascii_case(&ty) {
             inst.push_str("_1");
         }
         programs.push((unique(inst, &mut taken), ty, at));
     }
-    configuration(&mut w, &objs, &programs, root.range());
+    configuration(&mut w, &objs, &programs, root);
     for (name, g) in &objs.globals {
         if g.system {
             diags.push(
@@ -115,6 +173,9 @@ pub(crate) fn translate(doc: &roxmltree::Document, xml: &str) -> Translation {
     }
 }
 
+/// The instance of il-std's `M221_SYS` that computes the system bits.
+const SYS: &str = "SYSTEM_BITS";
+
 /// Translate the rungs of `pou` into `w`; the locals they need.
 fn body(
     p: &Project,
@@ -122,6 +183,7 @@ fn body(
     w: &mut Writer,
     diags: &mut Vec<Diagnostic>,
     pou: &XmlPou,
+    ends: bool,
 ) -> Locals {
     let mut t = Pou {
         p,
@@ -129,6 +191,8 @@ fn body(
         w,
         diags,
         locals: Locals::default(),
+        sr: pou.sr.is_some(),
+        ends,
     };
     for r in &pou.rungs {
         let mark = t.w.mark();
@@ -189,6 +253,28 @@ fn body(
         }
     }
     t.locals
+}
+
+/// Add to each POU's globals those of the subroutines it calls, directly
+/// or through another (IEC: a POU that holds or reaches a block instance
+/// declares the globals the block uses).
+fn called_globals(p: &Project, firsts: &mut [Locals]) {
+    let sr_index = |n: u32| p.pous.iter().position(|x| x.sr == Some(n));
+    for k in 0..firsts.len() {
+        let mut seen = BTreeSet::new();
+        let mut todo: Vec<u32> = firsts[k].calls.iter().copied().collect();
+        let mut extra = BTreeSet::new();
+        while let Some(n) = todo.pop() {
+            if !seen.insert(n) {
+                continue;
+            }
+            if let Some(j) = sr_index(n) {
+                extra.extend(firsts[j].used.iter().cloned());
+                todo.extend(firsts[j].calls.iter().copied());
+            }
+        }
+        firsts[k].used.extend(extra);
+    }
 }
 
 fn externals(w: &mut Writer, objs: &Objects, locals: &Locals, at: Range<usize>) {

@@ -13,8 +13,9 @@ pub enum Input {
     /// IL text.
     Il(SourceFile),
     /// An XML project translated to IL: PLCopen TC6, or a LogicLab /
-    /// Arduino PLC IDE project (`<plcProject>`, [`crate::logiclab`]), by
-    /// its root.
+    /// Arduino PLC IDE project (`<plcProject>`, [`crate::logiclab`]), or
+    /// an M221 project (`.smbp`), by its root; or an M221 text listing
+    /// ([`Input::m221`]), translated the same way.
     PlcOpen(Box<Import>),
     /// A bare instruction list, compiled as the body of a PROGRAM.
     Snippet(Box<Snippet>),
@@ -33,6 +34,12 @@ impl Input {
     /// diagnostics of the input).
     pub fn plcopen(file: SourceFile) -> Input {
         Input::PlcOpen(Box::new(Import::new(file)))
+    }
+
+    /// A Modicon M221 / TwidoSuite Instruction List listing, translated to
+    /// IEC IL as an `.smbp` project is ([`Import::m221_listing`]).
+    pub fn m221(file: SourceFile) -> Input {
+        Input::PlcOpen(Box::new(Import::m221_listing(file)))
     }
 
     /// A bare instruction list (no POU around it), compiled as the body of

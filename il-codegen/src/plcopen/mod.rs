@@ -132,6 +132,8 @@ pub struct Import {
     /// CONSTANT, which LogicLab's POUs see without VAR_EXTERNAL: a FUNCTION
     /// naming one gets a note (IEC FUNCTIONs have no VAR_EXTERNAL).
     globals: std::collections::HashSet<String>,
+    /// A Modicon M221 project or listing ([`Import::is_m221`]).
+    m221: bool,
 }
 
 /// The POUs left out (not IL) by lower-case name, as an index into the
@@ -231,6 +233,23 @@ impl Import {
     /// import with an empty IL text and an error (IL0201) in `diagnostics`.
     pub fn new(xml: SourceFile) -> Import {
         let t = Self::translate(&xml);
+        let m221 = cfg!(feature = "plcopen") && crate::m221::is_project(&xml.text);
+        Self::of(xml, t, m221)
+    }
+
+    /// A Modicon M221 / TwidoSuite Instruction List listing (the text the
+    /// IDE shows and exports, `--dialect m221`), translated to IEC IL as an
+    /// `.smbp` project's rungs are ([`crate::m221`]); `xml` is then the
+    /// listing, which diagnostics point into.
+    pub fn m221_listing(file: SourceFile) -> Import {
+        #[cfg(feature = "plcopen")]
+        let t = crate::m221::translate_listing(&file.name, &file.text);
+        #[cfg(not(feature = "plcopen"))]
+        let t = Self::not_built(&file, "an M221 listing (`--dialect m221`)");
+        Self::of(file, t, true)
+    }
+
+    fn of(xml: SourceFile, t: Translation, m221: bool) -> Import {
         let il = SourceFile::new(xml.name.clone(), t.text);
         let mut left_out = LeftOut::default();
         for (k, p) in t.pous.iter().enumerate().filter(|(_, p)| !p.translated) {
@@ -245,12 +264,25 @@ impl Import {
             left_out,
             folders: t.folders,
             globals: t.globals,
+            m221,
         }
+    }
+
+    /// Whether the source is a Modicon M221 program (an `.smbp` project or
+    /// a listing), whose POUs run in order as one task.
+    pub fn is_m221(&self) -> bool {
+        self.m221
     }
 
     /// Without the `plcopen` feature: no IL, one error at the file's start.
     #[cfg(not(feature = "plcopen"))]
     fn translate(xml: &SourceFile) -> Translation {
+        Self::not_built(xml, "XML (read as a PLCopen project)")
+    }
+
+    /// Without the `plcopen` feature: no IL, one error at the file's start.
+    #[cfg(not(feature = "plcopen"))]
+    fn not_built(xml: &SourceFile, what: &str) -> Translation {
         let first = xml.text.chars().next().map_or(0, char::len_utf8);
         Translation {
             text: String::new(),
@@ -260,7 +292,7 @@ impl Import {
                     codes::NOT_BUILT,
                     Span::new(0, first),
                     format!(
-                        "`{}` is XML (read as a PLCopen project), and this build of the IL compiler cannot read XML",
+                        "`{}` is {what}, and this build of the IL compiler cannot read it",
                         xml.name
                     ),
                 )

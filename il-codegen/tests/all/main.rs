@@ -21,6 +21,8 @@ mod ir_operators;
 mod ir_size;
 #[cfg(feature = "plcopen")]
 mod logiclab;
+#[cfg(feature = "plcopen")]
+mod m221_listing;
 mod pipeline_snippet;
 #[cfg(feature = "plcopen")]
 mod plcopen_corpus;

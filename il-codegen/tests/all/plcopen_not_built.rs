@@ -44,3 +44,33 @@ fn an_xml_source_is_one_error_that_names_the_feature() {
     );
     assert!(checked.emit(Default::default()).is_none());
 }
+
+#[test]
+fn an_m221_listing_is_one_error_that_names_the_feature() {
+    // The M221 translation is the `plcopen` feature's.
+    let listing = SourceFile::new("plc/cell.il", "LD %I0.0\nST %Q0.0\n".to_string());
+    let checked = Program::new()
+        .input(il_codegen::Dialect::M221.input(listing))
+        .check();
+    let diags: Vec<_> = checked
+        .reports()
+        .flat_map(|(_, d)| d.iter().cloned())
+        .collect();
+    assert_eq!(diags.len(), 1, "{diags:?}");
+    assert_eq!(diags[0].code, NOT_BUILT);
+    assert!(
+        diags[0]
+            .message
+            .contains("an M221 listing (`--dialect m221`)"),
+        "{}",
+        diags[0].message
+    );
+    assert!(
+        diags[0]
+            .notes
+            .iter()
+            .any(|n| n.contains("`plcopen` feature")),
+        "{:?}",
+        diags[0].notes
+    );
+}

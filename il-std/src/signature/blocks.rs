@@ -66,6 +66,7 @@ macro_rules! std_function_blocks {
             M221_LIFO (R: BOOL, I: BOOL, O: BOOL, IW: INT, OW: INT) -> (E: BOOL, F: BOOL);
             M221_SBR (R: BOOL, CU: BOOL, CD: BOOL, X: WORD) -> ();
             M221_SC (R: BOOL, CU: BOOL, CD: BOOL, X0: WORD, X1: WORD, X2: WORD, X3: WORD, X4: WORD, X5: WORD, X6: WORD, X7: WORD, X8: WORD, X9: WORD, X10: WORD, X11: WORD, X12: WORD, X13: WORD, X14: WORD, X15: WORD) -> ();
+            M221_SYS () -> (S0: BOOL, S4: BOOL, S5: BOOL, S6: BOOL, S7: BOOL, S13: BOOL);
         }
     };
 }

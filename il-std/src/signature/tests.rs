@@ -12,8 +12,8 @@ fn function_blocks_are_in_the_table() {
     assert_eq!(names(ton.inputs), [("IN", Elem::BOOL), ("PT", Elem::TIME)]);
     assert_eq!(names(ton.outputs), [("Q", Elem::BOOL), ("ET", Elem::TIME)]);
     assert_eq!(lookup_fb("CTUD_UDINT").unwrap().outputs.len(), 3);
-    // 26 IEC blocks and the 6 of the Modicon M221 (`M221_C` ... `M221_SC`).
-    assert_eq!(FB_SIGNATURES.len(), 32);
+    // 26 IEC blocks and the 7 of the Modicon M221 (`M221_C` ... `M221_SYS`).
+    assert_eq!(FB_SIGNATURES.len(), 33);
     assert_eq!(lookup_fb("m221_sbr").unwrap().outputs.len(), 0);
     // The 3rd edition's typed counters, every one of them.
     for fb in ["CTU", "CTD", "CTUD"] {

@@ -104,3 +104,49 @@ fn the_end_of_scan_project_runs_through_build_rs() {
         assert_eq!(got, want, "scan {}", k + 1);
     }
 }
+
+/// `m221/listing.il`, the text listing of il-cli's `m221_listing` test,
+/// through build.rs and `il!`: the inputs and hand-worked trace of that
+/// test. ([Q0.0, Q0.4, Q0.5, M0, M1, Q0.7, Q0.6], C0.V, MW0, MW1, MW2.)
+type ListingScan = ([bool; 7], i16, i16, i16, i16);
+
+const LISTING_TRACE: [ListingScan; 6] = [
+    ([F, F, F, F, F, F, F], 0, 0, 0, 1),
+    ([F, F, F, T, F, F, F], 1, 0, 1, 2),
+    ([T, F, F, T, F, F, F], 1, 0, 1, 3),
+    ([F, T, T, F, T, T, F], 2, 1, 1, 4),
+    ([F, T, T, T, T, T, T], 2, 2, 1, 4),
+    ([F, T, F, T, T, T, T], 0, 3, 1, 4),
+];
+
+macro_rules! listing_scans {
+    ($m:ident) => {{
+        use il_tests::$m::M221;
+        let mut ctx = Cycle::new();
+        let mut p = M221::default();
+        for (k, want) in LISTING_TRACE.iter().enumerate() {
+            ctx.set_now(TIME::from_ms(10 * k as i64));
+            ctx.io.set_byte(Area::Input, 0, INPUTS[k]);
+            p.run(&mut ctx);
+            let q = |j: u8| ctx.io.bit(Area::Output, 0, j);
+            let got = (
+                [q(0), q(4), q(5), p.M0, p.M1, q(7), q(6)],
+                p.C0.V,
+                p.MW0,
+                p.MW1,
+                p.MW2,
+            );
+            assert_eq!(got, *want, "{} scan {}", stringify!($m), k + 1);
+        }
+    }};
+}
+
+#[test]
+fn the_listing_runs_through_build_rs() {
+    listing_scans!(m221_listing_build);
+}
+
+#[test]
+fn the_listing_runs_through_il() {
+    listing_scans!(m221_listing_macro);
+}

@@ -92,3 +92,33 @@ fn a_snippet_is_debugged_on_its_own_lines() {
     d.event("terminated");
     d.finish();
 }
+
+#[test]
+fn an_m221_listing_is_debugged_on_its_own_lines() {
+    // Launch field `dialect`: the listing's lines, into a subroutine. The
+    // operation block (line 9) is several IL statements: one stop, and
+    // `next` goes to the listing's next line.
+    let path = file(
+        "count.il",
+        "LD %I0.0\nST %Q0.0\n\nLD %I0.1\nCAL SR1\n\nSR1:\nLD 1\n[ %MW0 := %MW0 + 1 ]\nRET\n",
+    );
+    let mut d = Dap::start();
+    d.launch(json!({"program": path, "dialect": "m221", "cycles": 2, "set": ["I0_1=TRUE@2"]}));
+    let bps = d.breakpoints(&path, json!([{"line": 9}]));
+    assert_eq!(
+        (bps[0]["verified"].as_bool(), bps[0]["line"].as_u64()),
+        (Some(true), Some(9))
+    );
+    d.ok("configurationDone", json!({}));
+    d.stopped();
+    let (frame, line, name) = d.top();
+    assert_eq!((line, name.as_str()), (9, "count.SR1 (SUB_SR1)"));
+    let cr = d.scope(frame, "Current result");
+    assert_eq!(var(&cr, "scan").0, "2");
+    d.ok("next", json!({"threadId": 1}));
+    d.stopped();
+    assert_eq!(d.top().1, 10);
+    d.ok("continue", json!({"threadId": 1}));
+    d.event("terminated");
+    d.finish();
+}

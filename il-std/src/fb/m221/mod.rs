@@ -1,6 +1,7 @@
 //! Function-block objects of Schneider's Modicon M221 (Machine Expert Basic / SoMachine Basic)
 //! and Twido controllers that have no IEC 61131-3 counterpart: the drum `%DRn`, the FIFO/LIFO
-//! registers `%Rn`, the shift bit register `%SBRn` and the step counter `%SCn`.
+//! registers `%Rn`, the shift bit register `%SBRn` and the step counter `%SCn`; and the
+//! system bits the controller sets (`%S0`, the clocks `%S4` .. `%S7`, `%S13`): `M221_SYS`.
 //!
 //! They are vendor blocks, kept apart from the standard ones by their `M221_` prefix: an IEC
 //! program can still declare them, which is how the M221 importer uses them (one instance per
@@ -20,12 +21,14 @@ mod drum;
 mod register;
 mod shift_bit;
 mod step_counter;
+mod system;
 
 pub use counter::M221_C;
 pub use drum::M221_DR;
 pub use register::{M221_FIFO, M221_LIFO};
 pub use shift_bit::M221_SBR;
 pub use step_counter::M221_SC;
+pub use system::M221_SYS;
 
 /// `true` once per rising edge of `input`, with `mem` the previous value.
 fn rising(input: bool, mem: &mut bool) -> bool {
