@@ -377,25 +377,3 @@ impl Import {
 
 #[cfg(all(test, feature = "exp"))]
 mod tests;
-
-/// A build without the import (`il!`'s default) says which feature reads
-/// an export, at the file's start (CI: `cargo test -p il-codegen
-/// --no-default-features --lib`).
-#[cfg(all(test, not(feature = "exp")))]
-mod without_feature {
-    #[test]
-    fn an_export_is_one_error_naming_the_feature() {
-        let exp = crate::diag::SourceFile::new(
-            "project.EXP",
-            "(* @NESTEDCOMMENTS := 'Yes' *)\nPROGRAM P\nEND_PROGRAM\n",
-        );
-        let i = super::Import::new(exp);
-        assert!(i.il.text.is_empty());
-        let [d] = &i.diagnostics[..] else {
-            panic!("{:?}", i.diagnostics)
-        };
-        assert_eq!((d.code, d.span.lo), ("IL0410", 0));
-        assert!(d.message.contains("project.EXP"), "{}", d.message);
-        assert!(d.notes.iter().any(|n| n.contains("features = [\"exp\"]")));
-    }
-}

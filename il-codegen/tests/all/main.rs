@@ -13,6 +13,7 @@ mod syntax_common;
 mod corpus_configurations;
 mod dialect;
 mod encodings;
+#[cfg(feature = "exp")]
 mod exp;
 mod format;
 mod front_end_robustness;
@@ -23,6 +24,8 @@ mod ir_size;
 mod logiclab;
 #[cfg(feature = "plcopen")]
 mod m221_listing;
+#[cfg(not(all(feature = "plcopen", feature = "exp")))]
+mod not_built;
 mod pipeline_snippet;
 #[cfg(feature = "plcopen")]
 mod plcopen_corpus;
@@ -32,8 +35,6 @@ mod plcopen_hostile;
 mod plcopen_import;
 #[cfg(feature = "plcopen")]
 mod plcopen_limits;
-#[cfg(not(feature = "plcopen"))]
-mod plcopen_not_built;
 #[cfg(feature = "plcopen")]
 mod plcopen_xml;
 mod render_golden;
