@@ -183,3 +183,17 @@ fn choose(r: &Request, checked: &il_codegen::Checked) -> Result<Loaded, String> 
         m221,
     })
 }
+
+/// The name to look up for one the user wrote: in an M221 program an
+/// object as the program writes it (`%I0.3`, `%C0.V`) is the import's
+/// global (`I0_3`, `C0.V`); anything else is looked up as written.
+pub fn program_name(name: &str, m221: bool) -> std::borrow::Cow<'_, str> {
+    // A bit of a word (`%MW4:X3`) is no variable the run can name.
+    if m221 && name.to_ascii_uppercase().contains(":X") {
+        return std::borrow::Cow::Borrowed(name);
+    }
+    match m221.then(|| il_codegen::m221::il_name(name)).flatten() {
+        Some(il) => std::borrow::Cow::Owned(il),
+        None => std::borrow::Cow::Borrowed(name),
+    }
+}

@@ -198,20 +198,6 @@ fn simulate(o: &Options, out: &mut dyn Write, err: &mut dyn Write) -> Result<(),
     }
 }
 
-/// The name to look up for one the user wrote: in an M221 program an
-/// object as the program writes it (`%I0.3`, `%C0.V`) is the import's
-/// global (`I0_3`, `C0.V`); anything else is looked up as written.
-fn run_name(name: &str, m221: bool) -> std::borrow::Cow<'_, str> {
-    // A bit of a word (`%MW4:X3`) is no variable the run can name.
-    if m221 && name.to_ascii_uppercase().contains(":X") {
-        return std::borrow::Cow::Borrowed(name);
-    }
-    match m221.then(|| il_codegen::m221::il_name(name)).flatten() {
-        Some(il) => std::borrow::Cow::Owned(il),
-        None => std::borrow::Cow::Borrowed(name),
-    }
-}
-
 /// Scan `m` `o.cycles` times and print the table (and the waves).
 fn scan_table<T: Target>(
     o: &Options,
@@ -247,7 +233,7 @@ fn scan_table<T: Target>(
     let mut sets: Vec<(u64, T::Place, Value)> = Vec::new();
     for s in &o.sets {
         let place = m
-            .lookup(&run_name(&s.var, m221))
+            .lookup(&crate::load::program_name(&s.var, m221))
             .map_err(|e| format!("--set {}={}: {e}", s.var, s.value))?;
         let v = m
             .parse_for(&place, &s.value)
@@ -274,7 +260,7 @@ fn scan_table<T: Target>(
             ));
         }
         let place = m
-            .lookup(&run_name(w, m221))
+            .lookup(&crate::load::program_name(w, m221))
             .map_err(|e| format!("--watch {w}: {e}"))?;
         if matches!(m.describe(&place).1, Ty::Fb(_)) {
             return Err(format!(
@@ -289,7 +275,7 @@ fn scan_table<T: Target>(
         .zip(&watch_names)
         .map(|(p, w)| {
             let (t, ty) = m.describe(p);
-            let shown = if run_name(w, m221) != w.as_str() {
+            let shown = if crate::load::program_name(w, m221) != w.as_str() {
                 w.clone()
             } else {
                 t.to_string()

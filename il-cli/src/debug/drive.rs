@@ -5,6 +5,7 @@
 use serde_json::{Value, json};
 
 use super::Session;
+use crate::load::program_name;
 use crate::run_target::Target;
 use il_interp::Value as V;
 use il_interp::il_std::Cycle;
@@ -19,7 +20,7 @@ pub fn drive<T: Target>(mut m: T, mut s: Session) -> Option<Session> {
     let mut sets: Vec<(u64, T::Place, V)> = Vec::new();
     for a in &l.sets {
         let r = m
-            .lookup(&a.var)
+            .lookup(&program_name(&a.var, s.m221))
             .and_then(|p| m.parse_for(&p, &a.value).map(|v| (a.cycle, p, v)));
         match r {
             Ok(x) => sets.push(x),
@@ -32,15 +33,16 @@ pub fn drive<T: Target>(mut m: T, mut s: Session) -> Option<Session> {
     }
     // Forces named wrong are reported once and released.
     let mut forces = std::mem::take(&mut s.forces);
-    forces.retain(
-        |(p, v)| match m.lookup(p).and_then(|pl| m.parse_for(&pl, v)) {
+    let m221 = s.m221;
+    forces.retain(|(p, v)| {
+        match (m.lookup(&program_name(p, m221))).and_then(|pl| m.parse_for(&pl, v)) {
             Ok(_) => true,
             Err(e) => {
                 s.out.output("stderr", &format!("force {p}={v}: {e}"));
                 false
             }
-        },
-    );
+        }
+    });
     s.forces = forces;
     m.set_hook(Some(Box::new(s)));
     let mut ctx = Cycle::new();
@@ -72,7 +74,7 @@ pub fn drive<T: Target>(mut m: T, mut s: Session) -> Option<Session> {
                 report(&mut m, &format!("set: {e}"));
             }
         }
-        force(&mut m, &mut ctx, &forces);
+        force(&mut m, &mut ctx, &forces, m221);
         let started = std::time::Instant::now();
         let r = m.scan(&mut ctx);
         // The forces as they are now: one released while stopped is not written back.
@@ -80,7 +82,7 @@ pub fn drive<T: Target>(mut m: T, mut s: Session) -> Option<Session> {
             .hook_mut::<Session>()
             .map(|s| s.forces.clone())
             .unwrap_or_default();
-        force(&mut m, &mut ctx, &forces);
+        force(&mut m, &mut ctx, &forces, m221);
         if let Err(e) = r {
             let Some(s) = m.hook_mut::<Session>() else {
                 break;
@@ -125,10 +127,10 @@ fn report<T: Target>(m: &mut T, msg: &str) {
 }
 
 /// Write every forced value (checked before the first scan).
-fn force<T: Target>(m: &mut T, ctx: &mut Cycle, forces: &[(String, String)]) {
+fn force<T: Target>(m: &mut T, ctx: &mut Cycle, forces: &[(String, String)], m221: bool) {
     for (p, v) in forces {
         let r = m
-            .lookup(p)
+            .lookup(&program_name(p, m221))
             .and_then(|pl| m.parse_for(&pl, v).and_then(|x| m.set_at(ctx, &pl, x)));
         if let Err(e) = r {
             report(m, &format!("force {p}={v}: {e}"));

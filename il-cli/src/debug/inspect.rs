@@ -210,7 +210,8 @@ impl Session {
             .get("expression")
             .and_then(Value::as_str)
             .ok_or("evaluate needs `expression`")?;
-        let (v, ty) = match at.eval(depth, e) {
+        let named = crate::load::program_name(e.trim(), self.m221);
+        let (v, ty) = match at.eval(depth, &named) {
             Ok(x) => x,
             // A comparison (`count > 5`) as a breakpoint condition reads it.
             Err(err) => match super::cond::parse(e) {

@@ -239,6 +239,9 @@ pub struct Loaded {
     pub target: Target,
     pub lines: crate::source_map::SourceMap,
     pub warnings: String,
+    /// An M221 program: `set`, `force` and `evaluate` name its objects as
+    /// it writes them (`%I0.3`, `%MW1`; [`crate::load::program_name`]).
+    pub m221: bool,
 }
 
 /// The checked program, or the diagnostics that stop it (rendered), loaded
@@ -272,6 +275,7 @@ pub fn load(l: &Launch) -> Result<Loaded, String> {
         prog: loaded.prog,
         lines: loaded.map,
         warnings: rendered,
+        m221: loaded.m221,
     })
 }
 

@@ -79,6 +79,8 @@ pub struct Session {
     launch: Option<launch::Launch>,
     target: Option<launch::Target>,
     prog: Option<Arc<Program>>,
+    /// An M221 program: its objects named as it writes them (`%MW1`).
+    m221: bool,
     /// Where the interpreter's IL lines are in the user's files.
     src: crate::source_map::SourceMap,
     /// The client's numbering (`initialize`: `linesStartAt1`,
@@ -148,6 +150,7 @@ impl Session {
             launch: None,
             target: None,
             prog: None,
+            m221: false,
             src: Default::default(),
             base: Base::default(),
             bps: Breakpoints::default(),
@@ -287,7 +290,9 @@ impl Session {
                 target,
                 lines,
                 warnings,
+                m221,
             }) => {
+                self.m221 = m221;
                 if !warnings.is_empty() {
                     self.out.output("stderr", &warnings);
                 }

@@ -57,6 +57,10 @@ fn a_plcopen_project_is_debugged_on_its_xml_lines() {
     assert_eq!(line, 14);
     let cr = d.scope(frame, "Current result");
     assert_eq!(var(&cr, "scan").0, "2");
+    // The forced input reached the output in this scan's first rung; the
+    // subroutine has not counted yet.
+    assert_eq!(d.eval(frame, "%Q0.0")["result"], "TRUE");
+    assert_eq!(d.eval(frame, "%MW0")["result"], "0");
     assert_eq!(var(&cr, "CR"), ("TRUE", "BOOL"));
     let flow = d.ok("flow", json!({}));
     assert_eq!(
@@ -103,7 +107,11 @@ fn an_m221_listing_is_debugged_on_its_own_lines() {
         "LD %I0.0\nST %Q0.0\n\nLD %I0.1\nCAL SR1\n\nSR1:\nLD 1\n[ %MW0 := %MW0 + 1 ]\nRET\n",
     );
     let mut d = Dap::start();
-    d.launch(json!({"program": path, "dialect": "m221", "cycles": 2, "set": ["I0_1=TRUE@2"]}));
+    // `set`, `force` and `evaluate` name the objects as the listing does.
+    d.launch(json!({
+        "program": path, "dialect": "m221", "cycles": 2,
+        "set": ["%I0.1=TRUE@2"], "force": {"%I0.0": true},
+    }));
     let bps = d.breakpoints(&path, json!([{"line": 9}]));
     assert_eq!(
         (bps[0]["verified"].as_bool(), bps[0]["line"].as_u64()),
@@ -115,6 +123,10 @@ fn an_m221_listing_is_debugged_on_its_own_lines() {
     assert_eq!((line, name.as_str()), (9, "count.SR1 (SUB_SR1)"));
     let cr = d.scope(frame, "Current result");
     assert_eq!(var(&cr, "scan").0, "2");
+    // The forced input reached the output in this scan's first rung; the
+    // subroutine has not counted yet.
+    assert_eq!(d.eval(frame, "%Q0.0")["result"], "TRUE");
+    assert_eq!(d.eval(frame, "%MW0")["result"], "0");
     d.ok("next", json!({"threadId": 1}));
     d.stopped();
     assert_eq!(d.top().1, 10);
