@@ -86,8 +86,12 @@ pub fn references(ws: &Workspace, uri: &Uri, pos: Position, with_decl: bool) -> 
     let Some(d) = ix.table.symbols[s].decl else {
         return Vec::new();
     };
+    // A translated source may declare a name where it is first used (an
+    // M221 listing): that place once.
+    let mut seen = std::collections::HashSet::new();
     ix.uses(s)
         .filter(|&(f, span)| with_decl || !(f == d.file && span == d.span))
+        .filter(|&(f, span)| seen.insert((f, span.lo, span.hi)))
         .filter_map(|(f, span)| ws.location(f, span))
         .collect()
 }
@@ -97,8 +101,9 @@ pub fn highlight(ws: &Workspace, uri: &Uri, pos: Position) -> Vec<DocumentHighli
     let Some((k, _, s, ix)) = symbol_at(ws, uri, pos) else {
         return Vec::new();
     };
+    let mut seen = std::collections::HashSet::new();
     ix.uses(s)
-        .filter(|&(f, _)| f == k)
+        .filter(|&(f, span)| f == k && seen.insert((span.lo, span.hi)))
         .map(|(_, span)| DocumentHighlight {
             range: ws.range(k, span),
             kind: None,
@@ -146,10 +151,28 @@ pub fn rename(
     if !is_identifier(new_name) {
         return Err(format!("`{new_name}` is not an IEC 61131-3 identifier"));
     }
+    // An import that writes a name another way (an M221 listing's `%M0` is
+    // the IL's `M0`) has no text to rename: the name is the object's address.
+    for (f, span) in ix.uses(s) {
+        let text = ws
+            .docs
+            .get(f)
+            .and_then(|d| d.text.get(span.lo as usize..span.hi as usize));
+        if let Some(t) = text.filter(|t| !t.eq_ignore_ascii_case(&sym.name)) {
+            return Err(format!(
+                "`{t}` is how this file writes `{}`, which the compiler names so; rename it in the tool the project comes from",
+                sym.name
+            ));
+        }
+    }
     // `WorkspaceEdit` is keyed by `Uri`, whose hash does not change.
     #[allow(clippy::mutable_key_type)]
     let mut changes: HashMap<Uri, Vec<TextEdit>> = HashMap::new();
-    for (f, span) in ix.uses(s) {
+    let mut seen = std::collections::HashSet::new();
+    for (f, span) in ix
+        .uses(s)
+        .filter(|&(f, span)| seen.insert((f, span.lo, span.hi)))
+    {
         if let Some(loc) = ws.location(f, span) {
             changes
                 .entry(loc.uri)

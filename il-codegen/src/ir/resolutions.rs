@@ -104,13 +104,32 @@ pub struct Resolutions {
 
 impl Resolutions {
     /// The name at byte `offset` of input `file` (a name holding it, or
-    /// ending right at it: the cursor after a name) and its symbol.
+    /// ending right at it: the cursor after a name) and its symbol. Where
+    /// an import wrote declarations that stand on a use (an M221 listing
+    /// declares each object where it is first used), the use's symbol.
     pub fn at(&self, file: usize, offset: usize) -> Option<(Span, SymbolId)> {
         let uses = self.uses.get(file)?;
         let off = offset as u32;
         let i = uses.partition_point(|(s, _)| s.lo <= off);
         let (s, id) = *uses.get(i.checked_sub(1)?)?;
-        (off >= s.lo && off <= s.hi).then_some((s, id))
+        if !(off >= s.lo && off <= s.hi) {
+            return None;
+        }
+        // A symbol written twice here is declared and used here; one
+        // written once is used here unless this is its declaration.
+        let same: Vec<&(Span, SymbolId)> = uses[..i]
+            .iter()
+            .rev()
+            .take_while(|(x, _)| *x == s)
+            .collect();
+        let twice = |id: SymbolId| same.iter().filter(|(_, y)| *y == id).count() > 1;
+        let is_decl = |id: SymbolId| {
+            (self.symbols.get(id).and_then(|x| x.decl))
+                .is_some_and(|d| d.file == file && d.span == s)
+        };
+        let best = (same.iter().find(|(_, y)| twice(*y)))
+            .or_else(|| same.iter().find(|(_, y)| !is_decl(*y)));
+        Some(best.map_or((s, id), |u| **u))
     }
 
     /// Every place symbol `id` is written, its declaration included:

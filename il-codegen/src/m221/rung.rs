@@ -107,6 +107,15 @@ impl Pou<'_> {
         self.w.gen_at(&format!("    {il}\n"), at);
     }
 
+    /// Append `op name` for the instruction at `at`, the name standing for
+    /// the operand at `name_at` alone: a diagnostic about the name, and the
+    /// language server's references and hover, point at the operand.
+    pub fn put_operand(&mut self, op: &str, name: &str, at: Range<usize>, name_at: Range<usize>) {
+        self.w.gen_at(&format!("    {op} "), at.clone());
+        self.w.gen_at(name, name_at);
+        self.w.gen_at("\n", at);
+    }
+
     /// The IL name of an operand, or the line's error.
     pub fn operand(&mut self, line: &Line, s: &str, r: Range<usize>) -> Result<(String, Ty), Fail> {
         let at = line.xml(r.clone());
@@ -184,7 +193,7 @@ impl Pou<'_> {
         match op.as_str() {
             "LD" | "LDN" | "AND" | "ANDN" | "OR" | "ORN" | "XOR" | "XORN" => {
                 let (s, r) = need(&arg)?;
-                let (il, ty) = self.operand(line, &s, r)?;
+                let (il, ty) = self.operand(line, &s, r.clone())?;
                 let il = bit_literal(&il, ty);
                 if op.starts_with("LD") {
                     if rung.parens.is_empty() {
@@ -193,7 +202,7 @@ impl Pou<'_> {
                 } else {
                     self.need_cr(rung, line, fr.clone(), first)?;
                 }
-                self.put(&format!("{op} {il}"), all);
+                self.put_operand(&op, &il, all, line.xml(r));
             }
             "ST" | "STN" | "S" | "R" => {
                 let (s, r) = need(&arg)?;
@@ -206,7 +215,7 @@ impl Pou<'_> {
                         format!("`{first}` writes a bit object, not `{s}`"),
                     ));
                 }
-                self.put(&format!("{op} {il}"), all);
+                self.put_operand(&op, &il, all, line.xml(r));
             }
             "LDR" | "LDF" | "ANDR" | "ANDF" | "ORR" | "ORF" | "XORR" | "XORF" => {
                 let (s, r) = need(&arg)?;
