@@ -339,7 +339,7 @@ fn files_in_a_named_encoding() {
 fn without_code_pages_a_file_in_one_is_an_error_naming_the_feature() {
     let dir = std::env::temp_dir().join(format!("il-expand-noenc-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("nasos.exp");
+    let path = dir.join("nasos.il");
     std::fs::write(
         &path,
         b"PROGRAM Nasos\nVAR t : BOOL; END_VAR\n    LD t (* \xCF\xF3\xF1\xEA *)\n    ST t\nEND_PROGRAM\n",
@@ -350,7 +350,7 @@ fn without_code_pages_a_file_in_one_is_an_error_naming_the_feature() {
     assert_eq!(out.errors.len(), 1, "{}", text(&out));
     let msg = &out.errors[0].0;
     assert!(msg.contains("IL0040"), "{msg}");
-    assert!(msg.contains("nasos.exp:3:13\n"), "{msg}");
+    assert!(msg.contains("nasos.il:3:13\n"), "{msg}");
     assert!(msg.contains("`encodings` feature"), "{msg}");
     let out = expand(&[
         id("file"),
