@@ -116,6 +116,26 @@ impl Pou<'_> {
         self.w.gen_at("\n", at);
     }
 
+    /// Before `END`/`RET` and their conditional forms (`conditional`: they
+    /// read the CR): not inside `(` or a `BLK`, and the rung's pending edge
+    /// memories written first, as at the rung's end.
+    fn leave(
+        &mut self,
+        rung: &mut Rung,
+        line: &Line,
+        (first, fr, conditional): (&str, Range<usize>, bool),
+        all: Range<usize>,
+    ) -> Result<(), Fail> {
+        if conditional {
+            self.need_cr(rung, line, fr.clone(), first)?;
+        }
+        if !rung.parens.is_empty() || rung.blk.is_some() {
+            return Err(bad(line, fr, format!("`{first}` inside `(` or a `BLK`")));
+        }
+        self.flush(rung, true, all);
+        Ok(())
+    }
+
     /// The IL name of an operand, or the line's error.
     pub fn operand(&mut self, line: &Line, s: &str, r: Range<usize>) -> Result<(String, Ty), Fail> {
         let at = line.xml(r.clone());
@@ -281,17 +301,7 @@ impl Pou<'_> {
                 self.w.gen_at(&format!("{label}:\n"), all);
             }
             "END" | "ENDC" | "ENDCN" => {
-                if op != "END" {
-                    self.need_cr(rung, line, fr.clone(), first)?;
-                }
-                if !rung.parens.is_empty() || rung.blk.is_some() {
-                    return Err(bad(
-                        line,
-                        fr.clone(),
-                        format!("`{first}` inside `(` or a `BLK`"),
-                    ));
-                }
-                self.flush(rung, true, all.clone());
+                self.leave(rung, line, (first, fr.clone(), op != "END"), all.clone())?;
                 self.locals.used.insert(SCAN_END.to_string());
                 match op.as_str() {
                     "END" => {
@@ -327,17 +337,7 @@ impl Pou<'_> {
                         format!("`{first}` outside a subroutine (`SRn:` ... `RET`)"),
                     ));
                 }
-                if op != "RET" {
-                    self.need_cr(rung, line, fr.clone(), first)?;
-                }
-                if !rung.parens.is_empty() || rung.blk.is_some() {
-                    return Err(bad(
-                        line,
-                        fr.clone(),
-                        format!("`{first}` inside `(` or a `BLK`"),
-                    ));
-                }
-                self.flush(rung, true, all.clone());
+                self.leave(rung, line, (first, fr.clone(), op != "RET"), all.clone())?;
                 self.put(&op, all);
             }
             "CAL" | "MULTIFB" => {
