@@ -274,6 +274,30 @@ impl Diagnostic {
             ..Self::error(code, span, message)
         }
     }
+
+    /// A source that a feature left out of this build reads: one error at
+    /// the file's start, saying `file` is `what` and which il-macros
+    /// feature reads it (`il!` builds the compiler without them).
+    #[cfg_attr(all(feature = "plcopen", feature = "exp"), allow(dead_code))]
+    pub(crate) fn not_built(
+        code: &'static str,
+        file: &SourceFile,
+        what: &str,
+        label: &str,
+        feature: &str,
+    ) -> Self {
+        let first = file.text.chars().next().map_or(0, char::len_utf8);
+        Diagnostic::error(
+            code,
+            Span::new(0, first),
+            format!("`{}` is {what}, and this build of the IL compiler cannot read it", file.name),
+        )
+        .with_label(label)
+        .with_note(format!(
+            "turn on the `{feature}` feature: `il-macros = {{ version = \"0.1\", features = [\"{feature}\"] }}` (il-codegen has it by default)"
+        ))
+    }
+
     /// With the text under the caret.
     pub fn with_label(mut self, label: impl Into<String>) -> Self {
         self.label = label.into();

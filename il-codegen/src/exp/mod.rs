@@ -52,7 +52,9 @@ pub(crate) fn assemble(_: &mut [&mut Import]) {}
 
 use std::ops::Range;
 
-use crate::ast::{PouKind, Span};
+use crate::ast::PouKind;
+#[cfg(feature = "exp")]
+use crate::ast::Span;
 use crate::diag::{Diagnostic, SourceFile};
 use crate::plcopen::SpanMap;
 
@@ -271,19 +273,8 @@ impl Import {
     /// Without the `exp` feature: no IL, one error at the file's start.
     #[cfg(not(feature = "exp"))]
     pub fn new(exp: SourceFile) -> Import {
-        let first = exp.text.chars().next().map_or(0, char::len_utf8);
-        let error = Diagnostic::error(
-            codes::NOT_BUILT,
-            Span::new(0, first),
-            format!(
-                "`{}` is a CODESYS export (.EXP), and this build of the IL compiler cannot read exports",
-                exp.name
-            ),
-        )
-        .with_label("CODESYS export")
-        .with_note(
-            "turn on the `exp` feature: `il-macros = { version = \"0.1\", features = [\"exp\"] }` (il-codegen has it by default)",
-        );
+        let what = "a CODESYS export (.EXP)";
+        let error = Diagnostic::not_built(codes::NOT_BUILT, &exp, what, "CODESYS export", "exp");
         Import {
             il: SourceFile::new(exp.name.clone(), String::new()),
             exp,

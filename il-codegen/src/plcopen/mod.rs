@@ -42,6 +42,7 @@ pub use map::SpanMap;
 
 use std::collections::HashMap;
 
+#[cfg(feature = "plcopen")]
 use crate::ast::Span;
 use crate::diag::{Diagnostic, SourceFile};
 
@@ -283,24 +284,16 @@ impl Import {
     /// Without the `plcopen` feature: no IL, one error at the file's start.
     #[cfg(not(feature = "plcopen"))]
     fn not_built(xml: &SourceFile, what: &str) -> Translation {
-        let first = xml.text.chars().next().map_or(0, char::len_utf8);
         Translation {
             text: String::new(),
             map: SpanMap::default(),
-            diags: vec![
-                Diagnostic::error(
-                    codes::NOT_BUILT,
-                    Span::new(0, first),
-                    format!(
-                        "`{}` is {what}, and this build of the IL compiler cannot read it",
-                        xml.name
-                    ),
-                )
-                .with_label("XML")
-                .with_note(
-                    "turn on the `plcopen` feature: `il-macros = { version = \"0.1\", features = [\"plcopen\"] }` (il-codegen has it by default)",
-                ),
-            ],
+            diags: vec![Diagnostic::not_built(
+                codes::NOT_BUILT,
+                xml,
+                what,
+                "XML",
+                "plcopen",
+            )],
             pous: Vec::new(),
             folders: Vec::new(),
             globals: Default::default(),
