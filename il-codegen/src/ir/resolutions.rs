@@ -117,11 +117,8 @@ impl Resolutions {
         }
         // A symbol written twice here is declared and used here; one
         // written once is used here unless this is its declaration.
-        let same: Vec<&(Span, SymbolId)> = uses[..i]
-            .iter()
-            .rev()
-            .take_while(|(x, _)| *x == s)
-            .collect();
+        let here = uses[..i].iter().rev().take_while(|(x, _)| *x == s).count();
+        let same = &uses[i - here..i];
         let twice = |id: SymbolId| same.iter().filter(|(_, y)| *y == id).count() > 1;
         let is_decl = |id: SymbolId| {
             (self.symbols.get(id).and_then(|x| x.decl))
@@ -129,7 +126,7 @@ impl Resolutions {
         };
         let best = (same.iter().find(|(_, y)| twice(*y)))
             .or_else(|| same.iter().find(|(_, y)| !is_decl(*y)));
-        Some(best.map_or((s, id), |u| **u))
+        Some(best.map_or((s, id), |u| *u))
     }
 
     /// Every place symbol `id` is written, its declaration included:
